@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages hvsph needs to build, test and plot.
+# Safe to run repeatedly: it only calls apt-get when something is missing.
+#   tools/install-deps.sh          build + test dependencies
+#   tools/install-deps.sh --docs   also python3-numpy/matplotlib for the doc plots
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev)
+if [ "${1:-}" = "--docs" ]; then pkgs+=(python3-numpy python3-matplotlib); fi
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
+    echo "install-deps: need root to install: ${missing[*]}" >&2; exit 1; fi
+else SUDO=""; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
