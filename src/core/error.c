@@ -1,0 +1,95 @@
+/* error.c — see error.h. */
+#include "core/error.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int hv_log_level = 2;
+
+void hv_error_clear(struct hv_error *err)
+{
+  if (!err) return;
+  err->code = 0;
+  err->msg[0] = '\0';
+}
+
+int hv_error_set(struct hv_error *err, int code, const char *fmt, ...)
+{
+  if (!err) return -1;
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+  va_end(ap);
+  err->code = code;
+  return -1;
+}
+
+int hv_error_prefix(struct hv_error *err, const char *fmt, ...)
+{
+  if (!err) return -1;
+  char head[1024], old[sizeof err->msg];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(head, sizeof head, fmt, ap);
+  va_end(ap);
+  memcpy(old, err->msg, sizeof old);
+  snprintf(err->msg, sizeof err->msg, "%s%s", head, old);
+  if (!err->code) err->code = HV_EXIT_RUN;
+  return -1;
+}
+
+void hv_log(int level, const char *fmt, ...)
+{
+  if (level > hv_log_level) return;
+  static const char *tag[] = {"error: ", "warning: ", "", ""};
+  fputs("hvsph: ", stderr);
+  fputs(tag[level < 0 ? 0 : (level > 3 ? 3 : level)], stderr);
+  va_list ap;
+  va_start(ap, fmt);
+  vfprintf(stderr, fmt, ap);
+  va_end(ap);
+  fputc('\n', stderr);
+}
+
+void hv_fatal(const char *file, int line, const char *func, const char *fmt, ...)
+{
+  fprintf(stderr, "hvsph: internal error at %s:%d %s(): ", file, line, func);
+  va_list ap;
+  va_start(ap, fmt);
+  vfprintf(stderr, fmt, ap);
+  va_end(ap);
+  fputc('\n', stderr);
+  exit(HV_EXIT_RUN);
+}
+
+void *hv_malloc(size_t bytes, const char *what)
+{
+  void *p = malloc(bytes ? bytes : 1);
+  if (!p) {
+    fprintf(stderr, "hvsph: out of memory allocating %zu bytes for %s\n", bytes, what);
+    exit(HV_EXIT_RUN);
+  }
+  return p;
+}
+
+void *hv_calloc(size_t n, size_t size, const char *what)
+{
+  void *p = calloc(n ? n : 1, size ? size : 1);
+  if (!p) {
+    fprintf(stderr, "hvsph: out of memory allocating %zu x %zu bytes for %s\n", n, size, what);
+    exit(HV_EXIT_RUN);
+  }
+  return p;
+}
+
+void *hv_realloc(void *p, size_t bytes, const char *what)
+{
+  void *q = realloc(p, bytes ? bytes : 1);
+  if (!q) {
+    fprintf(stderr, "hvsph: out of memory growing %s to %zu bytes\n", what, bytes);
+    exit(HV_EXIT_RUN);
+  }
+  return q;
+}

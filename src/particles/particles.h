@@ -1,0 +1,92 @@
+/* particles.h — the particle store: structure of arrays, declared once.
+ *
+ * Every field is listed once below (X-macros). The lists drive the struct, the
+ * allocation and growth, reordering, ghost copies, output and restart; adding a
+ * field is one line. Real particles occupy [0, n); boundary ghosts follow in
+ * [n, n + n_ghost) and are rebuilt every step.
+ *
+ * Columns: C type, name, SI unit, flags, description.
+ *   PF_OUT     written to particle snapshots (VTU/CSV)
+ *   PF_GHOST   copied from the parent when a ghost is made
+ *   PF_STATE   part of the physical state (checkpoint/restart, MPI migration)
+ */
+#ifndef HV_PARTICLES_H
+#define HV_PARTICLES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+enum {
+  PF_OUT = 1u << 0,
+  PF_GHOST = 1u << 1,
+  PF_STATE = 1u << 2,
+};
+
+/* Scalars */
+#define HV_PARTICLE_SCALARS(X)                                                        \
+  X(int64_t, id,    "",       PF_OUT | PF_GHOST | PF_STATE, "particle identifier")    \
+  X(int32_t, mat,   "",       PF_OUT | PF_GHOST | PF_STATE, "material index")         \
+  X(int32_t, body,  "",       PF_OUT | PF_GHOST | PF_STATE, "body index")             \
+  X(double,  m,     "kg",     PF_OUT | PF_GHOST | PF_STATE, "mass")                   \
+  X(double,  h,     "m",      PF_OUT | PF_GHOST | PF_STATE, "smoothing length")       \
+  X(double,  rho,   "kg/m3",  PF_OUT | PF_GHOST | PF_STATE, "density")                \
+  X(double,  e,     "J/kg",   PF_OUT | PF_GHOST | PF_STATE, "specific internal energy") \
+  X(double,  p,     "Pa",     PF_OUT | PF_GHOST,            "pressure")               \
+  X(double,  cs,    "m/s",    PF_OUT | PF_GHOST,            "sound speed")            \
+  X(double,  drho,  "kg/m3/s", 0,                           "density rate")           \
+  X(double,  de,    "J/kg/s", 0,                            "energy rate")            \
+  X(double,  rho0,  "kg/m3",  0,                            "density at step start")  \
+  X(double,  e0,    "J/kg",   0,                            "energy at step start")   \
+  X(double,  vsig,  "m/s",    0,                            "largest signal speed")
+
+/* Vectors (3 components: name[0..2]) */
+#define HV_PARTICLE_VECTORS(X)                                                        \
+  X(double, x,  "m",    PF_OUT | PF_GHOST | PF_STATE, "position")                    \
+  X(double, v,  "m/s",  PF_OUT | PF_GHOST | PF_STATE, "velocity")                    \
+  X(double, a,  "m/s2", PF_STATE,                     "acceleration (last step)")    \
+  X(double, v0, "m/s",  0,                            "velocity at step start")
+
+enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
+
+struct particles {
+  size_t n;        /* real particles */
+  size_t n_ghost;  /* ghosts after the reals */
+  size_t cap;      /* allocated length of every array */
+#define HV_X(type, name, unit, flags, desc) type *name;
+  HV_PARTICLE_SCALARS(HV_X)
+#undef HV_X
+#define HV_X(type, name, unit, flags, desc) type *name[3];
+  HV_PARTICLE_VECTORS(HV_X)
+#undef HV_X
+};
+
+/* A uniform view of one field, for generic loops (output, reorder, copy). */
+struct pfield {
+  const char *name, *unit, *desc;
+  enum pf_type type;
+  int ncomp;          /* 1 or 3 */
+  unsigned flags;
+  void *comp[3];      /* component arrays */
+};
+
+#define HV_MAX_FIELDS 64
+/* Fills `out` (at least HV_MAX_FIELDS entries) with every field; returns the count. */
+int particles_fields(struct particles *p, struct pfield *out);
+size_t pf_type_size(enum pf_type t);
+/* Bytes of particle storage per slot (sum over fields). */
+size_t particles_bytes_per_particle(void);
+
+void particles_init(struct particles *p);
+void particles_free(struct particles *p);
+/* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
+void particles_reserve(struct particles *p, size_t cap);
+/* Appends `count` zeroed real particles (drops ghosts); returns the first index. */
+size_t particles_add(struct particles *p, size_t count);
+/* Copies every field of slot src into slot dst (either may be a ghost slot). */
+void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask);
+/* Reorders the reals: new slot k takes old slot order[k]. `order` is a permutation of [0, n). */
+void particles_permute(struct particles *p, const uint32_t *order);
+/* Removes the reals with remove[i] != 0, keeping the others' order; returns the count removed. */
+size_t particles_remove(struct particles *p, const unsigned char *remove);
+
+#endif

@@ -1,0 +1,112 @@
+/* testlib.c — see testlib.h. */
+#include "testlib.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+int test_passed = 0, test_failed = 0;
+
+void test_check(int ok, const char *file, int line, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  if (ok) {
+    test_passed++;
+    printf("  ok    ");
+  } else {
+    test_failed++;
+    printf("  FAIL  %s:%d: ", file, line);
+  }
+  vprintf(fmt, ap);
+  printf("\n");
+  fflush(stdout);
+  va_end(ap);
+}
+
+int test_finish(void)
+{
+  printf("%d passed, %d failed\n", test_passed, test_failed);
+  return test_failed ? 1 : 0;
+}
+
+const char *test_bin(void)
+{
+  const char *b = getenv("HVSPH_BIN");
+  return b ? b : "build/hvsph";
+}
+
+const char *test_source_dir(void)
+{
+  const char *s = getenv("HVSPH_SOURCE_DIR");
+  return s ? s : ".";
+}
+
+static int mkdir_p(const char *dir)
+{
+  char buf[4096];
+  snprintf(buf, sizeof buf, "%s", dir);
+  for (char *q = buf + 1; *q; q++) {
+    if (*q == '/') {
+      *q = 0;
+      if (mkdir(buf, 0755) && errno != EEXIST) return -1;
+      *q = '/';
+    }
+  }
+  if (mkdir(buf, 0755) && errno != EEXIST) return -1;
+  return 0;
+}
+
+const char *test_tmpdir(void)
+{
+  static char dir[4096];
+  if (!dir[0]) {
+    const char *t = getenv("HVSPH_TMP");
+    snprintf(dir, sizeof dir, "%s", t ? t : "/tmp/hvsph-test");
+    if (mkdir_p(dir)) {
+      fprintf(stderr, "cannot create %s: %s\n", dir, strerror(errno));
+      exit(1);
+    }
+  }
+  return dir;
+}
+
+const char *test_write_file(const char *name, const char *text)
+{
+  static char paths[8][4096];
+  static int k = 0;
+  char *path = paths[k++ % 8];
+  snprintf(path, 4096, "%s/%s", test_tmpdir(), name);
+  FILE *f = fopen(path, "w");
+  if (!f || fputs(text, f) < 0 || fclose(f)) {
+    fprintf(stderr, "cannot write %s\n", path);
+    exit(1);
+  }
+  return path;
+}
+
+int test_run(const char *cmdline, char *output, size_t len)
+{
+  char cmd[8192];
+  snprintf(cmd, sizeof cmd, "%s 2>&1", cmdline);
+  FILE *f = popen(cmd, "r");
+  if (!f) return -1;
+  size_t k = 0;
+  char buf[4096];
+  size_t r;
+  while ((r = fread(buf, 1, sizeof buf, f)) > 0) {
+    if (output && k + 1 < len) {
+      size_t c = r < len - 1 - k ? r : len - 1 - k;
+      memcpy(output + k, buf, c);
+      k += c;
+    }
+  }
+  if (output && len) output[k] = 0;
+  int st = pclose(f);
+  if (st == -1) return -1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
