@@ -16,21 +16,21 @@ size_t pf_type_size(enum pf_type t)
   return 8;
 }
 
-#define HV_PF_TYPE(type) _Generic((type)0, int32_t: PF_INT32, int64_t: PF_INT64, double: PF_DOUBLE)
+#define HV_PF_TYPE(ctype) _Generic((ctype)0, int32_t: PF_INT32, int64_t: PF_INT64, double: PF_DOUBLE)
 
 int particles_fields(struct particles *p, struct pfield *out)
 {
   int k = 0;
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
   out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(type), .ncomp = 1, .flags = fflags,       \
+                           .type = HV_PF_TYPE(ctype), .ncomp = 1, .flags = fflags,       \
                            .comp = {p ? (void *)p->fname : NULL, NULL, NULL}};          \
   k++;
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
   out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(type), .ncomp = 3, .flags = fflags,       \
+                           .type = HV_PF_TYPE(ctype), .ncomp = 3, .flags = fflags,       \
                            .comp = {p ? (void *)p->fname[0] : NULL,                     \
                                     p ? (void *)p->fname[1] : NULL,                     \
                                     p ? (void *)p->fname[2] : NULL}};                   \
@@ -66,15 +66,15 @@ void particles_reserve(struct particles *p, size_t cap)
   if (cap <= p->cap) return;
   size_t newcap = p->cap ? p->cap : 1024;
   while (newcap < cap) newcap += newcap / 2;
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
-  p->fname = hv_realloc(p->fname, newcap * sizeof(type), "particle field " #fname);     \
-  memset(p->fname + p->cap, 0, (newcap - p->cap) * sizeof(type));
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
+  p->fname = hv_realloc(p->fname, newcap * sizeof(ctype), "particle field " #fname);     \
+  memset(p->fname + p->cap, 0, (newcap - p->cap) * sizeof(ctype));
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
   for (int c_ = 0; c_ < 3; c_++) {                                                      \
-    p->fname[c_] = hv_realloc(p->fname[c_], newcap * sizeof(type), "particle field " #fname); \
-    memset(p->fname[c_] + p->cap, 0, (newcap - p->cap) * sizeof(type));                 \
+    p->fname[c_] = hv_realloc(p->fname[c_], newcap * sizeof(ctype), "particle field " #fname); \
+    memset(p->fname[c_] + p->cap, 0, (newcap - p->cap) * sizeof(ctype));                 \
   }
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
@@ -98,11 +98,11 @@ size_t particles_add(struct particles *p, size_t count)
 
 void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask)
 {
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
   if ((fflags) & flags_mask) p->fname[dst] = p->fname[src];
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(type, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
   if ((fflags) & flags_mask) {                                                          \
     p->fname[0][dst] = p->fname[0][src];                                                \
     p->fname[1][dst] = p->fname[1][src];                                                \

@@ -1,0 +1,158 @@
+/* boundary.c — see boundary.h. */
+#include "boundary/boundary.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+
+const char *const bnd_kind_names[] = {"open", "periodic", "wall", NULL};
+
+void boundary_init(struct boundary *b)
+{
+  memset(b, 0, sizeof *b);
+  for (int d = 0; d < 3; d++) {
+    b->lo[d] = -HUGE_VAL;
+    b->hi[d] = HUGE_VAL;
+  }
+}
+
+void boundary_free(struct boundary *b)
+{
+  free(b->src);
+  boundary_init(b);
+}
+
+int boundary_any(const struct boundary *b)
+{
+  for (int d = 0; d < 3; d++)
+    if (b->kind[d][0] != BND_OPEN || b->kind[d][1] != BND_OPEN) return 1;
+  return 0;
+}
+
+int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
+{
+  static const char *face[3][2] = {{"x_min", "x_max"}, {"y_min", "y_max"}, {"z_min", "z_max"}};
+  boundary_init(b);
+  char key[128], where[256];
+  for (int d = 0; d < 3; d++) {
+    snprintf(key, sizeof key, "domain.boundary.%c", "xyz"[d]);
+    int both = BND_OPEN;
+    int has_both = cfg_has(c, key);
+    if (cfg_get_choice(c, key, "open", bnd_kind_names, &both, err)) return -1;
+    for (int s = 0; s < 2; s++) {
+      snprintf(key, sizeof key, "domain.boundary.%s", face[d][s]);
+      if (has_both && cfg_has(c, key))
+        return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.boundary.%s: give either '%c' or "
+                            "'%s', not both", cfg_where(c, key, where, sizeof where),
+                            face[d][s], "xyz"[d], face[d][s]);
+      if (cfg_get_choice(c, key, bnd_kind_names[both], bnd_kind_names, &b->kind[d][s], err))
+        return -1;
+    }
+    if ((b->kind[d][0] == BND_PERIODIC) != (b->kind[d][1] == BND_PERIODIC))
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.boundary: periodic in %c needs "
+                          "both %s and %s periodic",
+                          cfg_where(c, "domain.boundary", where, sizeof where), "xyz"[d],
+                          face[d][0], face[d][1]);
+  }
+  if (!boundary_any(b)) {
+    cfg_mark_used(c, "domain");
+    return 0;
+  }
+  double lo[3], hi[3];
+  if (cfg_get_vec3(c, "domain.min", UNIT_LENGTH, NULL, lo, err) ||
+      cfg_get_vec3(c, "domain.max", UNIT_LENGTH, NULL, hi, err))
+    return -1;
+  for (int d = 0; d < 3; d++) {
+    if (!(hi[d] > lo[d]))
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.max must exceed domain.min in %c",
+                          cfg_where(c, "domain.max", where, sizeof where), "xyz"[d]);
+    b->lo[d] = lo[d];
+    b->hi[d] = hi[d];
+  }
+  return 0;
+}
+
+void boundary_apply(const struct boundary *b, struct particles *p)
+{
+  for (int d = 0; d < 3; d++) {
+    const double lo = b->lo[d], hi = b->hi[d], L = hi - lo;
+    double *x = p->x[d], *v = p->v[d];
+    if (b->kind[d][0] == BND_PERIODIC) {
+      for (size_t i = 0; i < p->n; i++) {
+        if (x[i] < lo) x[i] += L;
+        else if (x[i] >= hi) x[i] -= L;
+      }
+      continue;
+    }
+    for (size_t i = 0; i < p->n; i++) {
+      if (b->kind[d][0] == BND_WALL && x[i] < lo) {
+        x[i] = 2.0 * lo - x[i];
+        if (v[i] < 0.0) v[i] = -v[i];
+      } else if (b->kind[d][1] == BND_WALL && x[i] > hi) {
+        x[i] = 2.0 * hi - x[i];
+        if (v[i] > 0.0) v[i] = -v[i];
+      }
+    }
+  }
+}
+
+static size_t add_ghost(struct boundary *b, struct particles *p, size_t src)
+{
+  size_t g = p->n + p->n_ghost;
+  particles_reserve(p, g + 1);
+  if (p->n_ghost + 1 > b->cap) {
+    b->cap = 2 * (p->n_ghost + 1) + 1024;
+    b->src = hv_realloc(b->src, b->cap * sizeof *b->src, "ghost sources");
+  }
+  particles_copy(p, g, src, PF_GHOST);
+  b->src[p->n_ghost] = (uint32_t)src;
+  p->n_ghost++;
+  return g;
+}
+
+int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, char *msg,
+                         size_t msglen)
+{
+  p->n_ghost = 0;
+  for (int d = 0; d < 3; d++) {
+    const double lo = b->lo[d], hi = b->hi[d], L = hi - lo;
+    const size_t nsrc = p->n + p->n_ghost;
+    if (b->kind[d][0] == BND_PERIODIC && L < 2.0 * width) {
+      snprintf(msg, msglen, "the periodic domain is %.6g m long in %c, less than two "
+               "interaction radii (2 x %.6g m)", L, "xyz"[d], width);
+      return -1;
+    }
+    for (size_t i = 0; i < nsrc; i++) {
+      const double xi = p->x[d][i];
+      for (int s = 0; s < 2; s++) {
+        const int kind = b->kind[d][s];
+        const double face = s ? hi : lo;
+        const int near = s ? (xi > hi - width) : (xi < lo + width);
+        if (kind == BND_OPEN || !near) continue;
+        if (kind == BND_PERIODIC) {
+          size_t g = add_ghost(b, p, i);
+          p->x[d][g] = xi + (s ? -L : L);
+        } else { /* wall: mirror */
+          size_t g = add_ghost(b, p, i);
+          p->x[d][g] = 2.0 * face - xi;
+          p->v[d][g] = -p->v[d][i];
+        }
+      }
+    }
+  }
+  return 0;
+}
+
+void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
+{
+  for (size_t k = 0; k < p->n_ghost; k++) {
+    size_t g = p->n + k, s = b->src[k];
+    p->rho[g] = p->rho[s];
+    p->p[g] = p->p[s];
+    p->cs[g] = p->cs[s];
+    p->e[g] = p->e[s];
+  }
+}

@@ -1,0 +1,43 @@
+/* boundary.h — faces of the domain: open, periodic, rigid wall.
+ *
+ * Periodic faces wrap the reals and copy a layer of particles across; walls reflect
+ * any real that crossed and mirror a layer of particles as ghosts (position mirrored,
+ * normal velocity reversed: a frictionless rigid wall). Ghosts are appended after the
+ * reals every step; they carry the fields their source carries, so the SPH loops
+ * need no knowledge of boundaries. Dimensions are processed x, y, z in turn and a
+ * later dimension also copies earlier ghosts, which fills edges and corners.
+ */
+#ifndef HV_BOUNDARY_H
+#define HV_BOUNDARY_H
+
+#include <stdint.h>
+
+#include "config/config.h"
+#include "particles/particles.h"
+
+enum bnd_kind { BND_OPEN = 0, BND_PERIODIC, BND_WALL, BND_KIND_COUNT };
+extern const char *const bnd_kind_names[];
+
+struct boundary {
+  int kind[3][2];        /* [dim][0 = min face, 1 = max face] */
+  double lo[3], hi[3];   /* [m] domain box */
+  size_t cap;
+  uint32_t *src;         /* [ghost] source slot of each ghost */
+};
+
+void boundary_init(struct boundary *b);
+void boundary_free(struct boundary *b);
+/* Reads domain.min, domain.max and domain.boundary.{x,y,z,x_min,...}. */
+int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err);
+/* 1 if any face is not open. */
+int boundary_any(const struct boundary *b);
+/* Wraps reals through periodic faces and reflects those that crossed a wall. */
+void boundary_apply(const struct boundary *b, struct particles *p);
+/* Rebuilds the ghosts within `width` of the faces. Returns -1 (msg) if a periodic
+ * dimension is shorter than 2 × width (ghosts would overlap their sources). */
+int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, char *msg,
+                         size_t msglen);
+/* Copies the fields that change during a step (rho, p, cs, e) from sources to ghosts. */
+void boundary_refresh_ghosts(const struct boundary *b, struct particles *p);
+
+#endif

@@ -1,0 +1,189 @@
+/* step.c — the predictor–corrector step; see step.h for the scheme. */
+#include "integrate/step.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "eos/eos.h"
+
+double step_hmax(const struct particles *p)
+{
+  double hm = 0.0;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->h[i] > hm) hm = p->h[i];
+  return hm;
+}
+
+/* p and cs of every real from its ρ and e; the first failure is reported. */
+static int update_eos(struct sim *s, struct hv_error *err)
+{
+  struct particles *p = &s->p;
+  long bad = -1;
+#pragma omp parallel for schedule(static) reduction(max : bad)
+  for (size_t i = 0; i < p->n; i++) {
+    struct eos_state st;
+    if (eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) || !isfinite(st.p) ||
+        !isfinite(st.cs)) {
+      if ((long)i > bad) bad = (long)i;
+      continue;
+    }
+    p->p[i] = st.p;
+    p->cs[i] = st.cs;
+  }
+  if (bad >= 0) {
+    size_t i = (size_t)bad;
+    return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: particle %lld (body '%s', "
+                        "material '%s'): the EOS cannot be evaluated at rho = %g kg/m3, "
+                        "e = %g J/kg", s->t, s->step, (long long)p->id[i],
+                        s->body[p->body[i]].name, s->mat[p->mat[i]].name, p->rho[i], p->e[i]);
+  }
+  return 0;
+}
+
+/* Ghosts and the cell grid at the current positions. */
+static int build_neighbours(struct sim *s, struct hv_error *err)
+{
+  char msg[512];
+  struct particles *p = &s->p;
+  double width = 2.0 * step_hmax(p);
+  if (boundary_any(&s->bnd)) {
+    boundary_apply(&s->bnd, p);
+    if (boundary_make_ghosts(&s->bnd, p, width, msg, sizeof msg))
+      return hv_error_set(err, HV_EXIT_INPUT, "domain: %s", msg);
+  } else {
+    p->n_ghost = 0;
+  }
+  const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
+  if (nbr_grid_build(&s->grid, xs, p->n + p->n_ghost, width, msg, sizeof msg))
+    return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s: neighbour grid: %s", s->t, msg);
+  return 0;
+}
+
+static void update_h(struct sim *s)
+{
+  struct particles *p = &s->p;
+  const double eta = s->sph.eta, hmin = s->sph.h_min, hmax = s->sph.h_max;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++) {
+    double h = eta * cbrt(p->m[i] / p->rho[i]);
+    p->h[i] = h < hmin ? hmin : (h > hmax ? hmax : h);
+  }
+}
+
+/* Proposes the next step from the CFL and acceleration limits. */
+static double next_dt(const struct sim *s)
+{
+  const struct particles *p = &s->p;
+  double dt = HUGE_VAL;
+#pragma omp parallel for schedule(static) reduction(min : dt)
+  for (size_t i = 0; i < p->n; i++) {
+    double d = s->tp.cfl * p->h[i] / (p->vsig[i] > 0 ? p->vsig[i] : 1e-300);
+    double a2 = p->a[0][i] * p->a[0][i] + p->a[1][i] * p->a[1][i] + p->a[2][i] * p->a[2][i];
+    if (a2 > 0) {
+      double da = s->tp.cfl_acc * sqrt(p->h[i] / sqrt(a2));
+      if (da < d) d = da;
+    }
+    if (d < dt) dt = d;
+  }
+  if (s->dt_prop > 0 && dt > s->tp.growth * s->dt_prop) dt = s->tp.growth * s->dt_prop;
+  if (dt > s->tp.dt_max) dt = s->tp.dt_max;
+  return dt;
+}
+
+/* After a step: every real finite with ρ > 0; names the first offender. */
+static int check_state(const struct sim *s, struct hv_error *err)
+{
+  const struct particles *p = &s->p;
+  long bad = -1;
+#pragma omp parallel for schedule(static) reduction(max : bad)
+  for (size_t i = 0; i < p->n; i++) {
+    int ok = p->rho[i] > 0 && isfinite(p->rho[i]) && isfinite(p->e[i]);
+    for (int k = 0; k < 3; k++) ok = ok && isfinite(p->x[k][i]) && isfinite(p->v[k][i]);
+    if (!ok && (long)i > bad) bad = (long)i;
+  }
+  if (bad < 0) return 0;
+  size_t i = (size_t)bad;
+  const char *field = !isfinite(p->rho[i]) ? "rho (NaN)" : !(p->rho[i] > 0) ? "rho (<= 0)"
+                      : !isfinite(p->e[i]) ? "e (not finite)" : "x or v (not finite)";
+  return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: particle %lld (body '%s'): "
+                      "field %s: rho = %g kg/m3, e = %g J/kg, x = (%g, %g, %g) m",
+                      s->t, s->step, (long long)p->id[i], s->body[p->body[i]].name, field,
+                      p->rho[i], p->e[i], p->x[0][i], p->x[1][i], p->x[2][i]);
+}
+
+int step_init(struct sim *s, struct hv_error *err)
+{
+  struct particles *p = &s->p;
+  if (update_eos(s, err) || build_neighbours(s, err)) return -1;
+  boundary_refresh_ghosts(&s->bnd, p);
+  sph_forces(p, &s->grid, &s->sph);
+  s->dt_prop = 0.0;
+  s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
+  return 0;
+}
+
+static void reorder(struct sim *s)
+{
+  struct particles *p = &s->p;
+  uint32_t *order = hv_malloc((p->n + 1) * sizeof *order, "reorder");
+  const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
+  if (nbr_sort_order(xs, p->n, 2.0 * step_hmax(p), order) == 0) particles_permute(p, order);
+  free(order);
+}
+
+int step_advance(struct sim *s, struct hv_error *err)
+{
+  struct particles *p = &s->p;
+  const double dt = s->dt, hdt = 0.5 * dt;
+  const size_t n = p->n;
+  if (s->reorder_every > 0 && s->step % s->reorder_every == 0) reorder(s);
+
+  /* 1. predictor: coordinates and velocities at mid-step; save the step start */
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    for (int k = 0; k < 3; k++) {
+      p->v0[k][i] = p->v[k][i];
+      p->x[k][i] += hdt * p->v[k][i];
+      p->v[k][i] += hdt * p->a[k][i];
+    }
+    p->rho0[i] = p->rho[i];
+    p->e0[i] = p->e[i];
+  }
+  if (build_neighbours(s, err)) return -1;
+
+  /* 2. density rate at mid-step; mid-step density, energy and pressure */
+  sph_density_rate(p, &s->grid, &s->sph);
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    p->rho[i] = p->rho0[i] + hdt * p->drho[i];
+    p->e[i] = p->e0[i] + hdt * p->de[i];
+  }
+  if (update_eos(s, err)) return -1;
+  boundary_refresh_ghosts(&s->bnd, p);
+
+  /* 3–5. forces and energy rate at mid-step; velocity, coordinates, energy */
+  sph_forces(p, &s->grid, &s->sph);
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    for (int k = 0; k < 3; k++) {
+      p->v[k][i] = p->v0[k][i] + dt * p->a[k][i];
+      p->x[k][i] += hdt * p->v[k][i];
+    }
+    p->rho[i] = p->rho0[i] + dt * p->drho[i];
+    p->e[i] = p->e0[i] + dt * p->de[i];
+  }
+  p->n_ghost = 0;
+  if (boundary_any(&s->bnd)) boundary_apply(&s->bnd, p);
+
+  /* 6. pressure, smoothing length, next step */
+  s->t += dt;
+  s->step++;
+  if (check_state(s, err) || update_eos(s, err)) return -1;
+  update_h(s);
+  s->dt = s->dt_prop = next_dt(s);
+  if (!(s->dt >= s->tp.dt_min))
+    return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: the time step fell to %g s, "
+                        "below time.dt_min = %g s", s->t, s->step, s->dt, s->tp.dt_min);
+  return 0;
+}

@@ -1,0 +1,51 @@
+/* kernel.h — SPH interpolation kernels in 3D, support radius 2h.
+ *
+ * Cubic B-spline M4 (Monaghan & Lattanzio 1985; the paper's "second order
+ * B-spline"):  W = σ/h³ · { 1 − 3/2 q² + 3/4 q³      0 ≤ q < 1
+ *                          { 1/4 (2 − q)³            1 ≤ q < 2,   σ = 1/π
+ * Wendland C2 (Wendland 1995; Dehnen & Aly 2012), written with support 2h:
+ *   W = σ/h³ (1 − q/2)⁴ (2q + 1),  0 ≤ q < 2,   σ = 21/(16π)
+ * q = r/h. Pair interactions use the symmetric h_ij = (h_i + h_j)/2, so a pair
+ * interacts when r < h_i + h_j.
+ */
+#ifndef HV_KERNEL_H
+#define HV_KERNEL_H
+
+#include <math.h>
+
+enum kernel_kind { KERNEL_CUBIC_SPLINE = 0, KERNEL_WENDLAND_C2 = 1 };
+
+#define HV_KERNEL_PI 3.14159265358979323846
+
+/* W(r, h) [1/m³] */
+static inline double kernel_w(enum kernel_kind k, double r, double h)
+{
+  double q = r / h, h3 = h * h * h;
+  if (q >= 2.0) return 0.0;
+  if (k == KERNEL_WENDLAND_C2) {
+    double t = 1.0 - 0.5 * q;
+    return 21.0 / (16.0 * HV_KERNEL_PI) / h3 * t * t * t * t * (2.0 * q + 1.0);
+  }
+  if (q < 1.0) return (1.0 - 1.5 * q * q + 0.75 * q * q * q) / (HV_KERNEL_PI * h3);
+  double t = 2.0 - q;
+  return 0.25 * t * t * t / (HV_KERNEL_PI * h3);
+}
+
+/* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0. */
+static inline double kernel_f(enum kernel_kind k, double r, double h)
+{
+  double q = r / h, h5 = h * h * h * h * h;
+  if (q >= 2.0) return 0.0;
+  if (k == KERNEL_WENDLAND_C2) {
+    /* dW/dq = σ/h³ · (−5 q)(1 − q/2)³ ; (1/r) dW/dr = dW/dq / (q h²) */
+    double t = 1.0 - 0.5 * q;
+    return -5.0 * 21.0 / (16.0 * HV_KERNEL_PI) / h5 * t * t * t;
+  }
+  if (q < 1.0) return (-3.0 + 2.25 * q) / (HV_KERNEL_PI * h5);
+  double t = 2.0 - q;
+  return -0.75 * t * t / (q * HV_KERNEL_PI * h5);
+}
+
+const char *kernel_name(enum kernel_kind k);
+
+#endif

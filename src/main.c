@@ -1,0 +1,115 @@
+/* main.c — the hvsph command line: subcommands run, bench, help, version. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "run/bench.h"
+#include "run/run.h"
+#include "version.h"
+
+static void usage(FILE *f)
+{
+  fprintf(f,
+          "hvsph %s — 3D SPH for hypervelocity impact\n"
+          "\n"
+          "usage:\n"
+          "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--threads N] [--quiet]\n"
+          "      run a case file; results in OUTDIR (default out/<case name>)\n"
+          "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
+          "  hvsph bench [--particles N] [--steps K] [--threads T]\n"
+          "      solver throughput on a uniform gas lattice (particle-steps per second)\n"
+          "  hvsph --version | --help\n"
+          "\n"
+          "exit status: 0 done, 1 bad command line, 2 bad input (case file, units,\n"
+          "materials, output folder), 3 failed run, 130 interrupted (state written)\n"
+          "documentation: README.md, docs/case-files.md\n",
+          HVSPH_VERSION);
+}
+
+static int parse_long(const char *s, long lo, long hi, long *out)
+{
+  char *end;
+  double v = strtod(s, &end);  /* accepts 1e6 */
+  if (end == s || *end || v < (double)lo || v > (double)hi || v != (double)(long)v) return -1;
+  *out = (long)v;
+  return 0;
+}
+
+static int cmd_run(int argc, char **argv)
+{
+  struct run_options o = {0};
+  const char **sets = calloc((size_t)argc, sizeof *sets);
+  for (int i = 0; i < argc; i++) {
+    const char *a = argv[i];
+    long v;
+    if ((!strcmp(a, "-o") || !strcmp(a, "--output")) && i + 1 < argc) o.outdir = argv[++i];
+    else if (!strcmp(a, "--set") && i + 1 < argc) sets[o.nsets++] = argv[++i];
+    else if (!strncmp(a, "--set=", 6)) sets[o.nsets++] = a + 6;
+    else if (!strcmp(a, "--threads") && i + 1 < argc) {
+      if (parse_long(argv[++i], 1, 4096, &v)) {
+        fprintf(stderr, "hvsph run: --threads needs a positive integer, not '%s'\n", argv[i]);
+        free(sets);
+        return HV_EXIT_USAGE;
+      }
+      o.threads = (int)v;
+    } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o.quiet = 1;
+    else if (a[0] == '-' || o.case_path) {
+      fprintf(stderr, "hvsph run: unexpected argument '%s' (see hvsph --help)\n", a);
+      free(sets);
+      return HV_EXIT_USAGE;
+    } else o.case_path = a;
+  }
+  if (!o.case_path) {
+    fprintf(stderr, "hvsph run: missing case file (see hvsph --help)\n");
+    free(sets);
+    return HV_EXIT_USAGE;
+  }
+  o.sets = sets;
+  int st = run_main(&o);
+  free(sets);
+  return st;
+}
+
+static int cmd_bench(int argc, char **argv)
+{
+  struct bench_options o = {.particles = 100000, .steps = 10, .threads = 0};
+  for (int i = 0; i < argc; i++) {
+    long v;
+    if (!strcmp(argv[i], "--particles") && i + 1 < argc && !parse_long(argv[i + 1], 512, 2000000000L, &v)) {
+      o.particles = v;
+      i++;
+    } else if (!strcmp(argv[i], "--steps") && i + 1 < argc && !parse_long(argv[i + 1], 1, 1000000, &v)) {
+      o.steps = v;
+      i++;
+    } else if (!strcmp(argv[i], "--threads") && i + 1 < argc && !parse_long(argv[i + 1], 1, 4096, &v)) {
+      o.threads = (int)v;
+      i++;
+    } else {
+      fprintf(stderr, "hvsph bench: bad argument '%s' (see hvsph --help)\n", argv[i]);
+      return HV_EXIT_USAGE;
+    }
+  }
+  return bench_main(&o);
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 2) {
+    usage(stderr);
+    return HV_EXIT_USAGE;
+  }
+  const char *cmd = argv[1];
+  if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+    usage(stdout);
+    return 0;
+  }
+  if (!strcmp(cmd, "--version") || !strcmp(cmd, "version")) {
+    printf("hvsph %s\n", HVSPH_VERSION);
+    return 0;
+  }
+  if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
+  if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
+  fprintf(stderr, "hvsph: unknown command '%s' (see hvsph --help)\n", cmd);
+  return HV_EXIT_USAGE;
+}

@@ -1,0 +1,241 @@
+/* grid.c — see grid.h. Morton (Z-order) keys make neighbouring cells close in
+ * memory, and sorting particles by key groups every cell into one run. */
+#include "neighbours/grid.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+
+#define GRID_BITS 21
+#define GRID_MAXC ((int64_t)1 << GRID_BITS)
+
+static uint64_t spread3(uint64_t v)
+{
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+static uint64_t morton(uint64_t i, uint64_t j, uint64_t k)
+{
+  return spread3(i) | spread3(j) << 1 | spread3(k) << 2;
+}
+
+static uint64_t hash64(uint64_t k)
+{
+  k ^= k >> 33;
+  k *= 0xff51afd7ed558ccdULL;
+  k ^= k >> 33;
+  return k;
+}
+
+void nbr_grid_init(struct nbr_grid *g) { memset(g, 0, sizeof *g); }
+
+void nbr_grid_free(struct nbr_grid *g)
+{
+  free(g->order);
+  free(g->cell_start);
+  free(g->cell_key);
+  free(g->cell_nbr);
+  free(g->hkey);
+  free(g->hval);
+  free(g->key);
+  free(g->key2);
+  free(g->idx2);
+  memset(g, 0, sizeof *g);
+}
+
+/* Stable LSD radix sort of (key, idx) by key, 11-bit digits, `bits` significant bits. */
+static void radix_sort(uint64_t *key, uint32_t *idx, uint64_t *key2, uint32_t *idx2, size_t n,
+                       int bits)
+{
+  enum { D = 11, R = 1 << D };
+  size_t count[R];
+  for (int shift = 0; shift < bits; shift += D) {
+    memset(count, 0, sizeof count);
+    for (size_t i = 0; i < n; i++) count[(key[i] >> shift) & (R - 1)]++;
+    size_t sum = 0;
+    for (int d = 0; d < R; d++) {
+      size_t c = count[d];
+      count[d] = sum;
+      sum += c;
+    }
+    for (size_t i = 0; i < n; i++) {
+      size_t dst = count[(key[i] >> shift) & (R - 1)]++;
+      key2[dst] = key[i];
+      idx2[dst] = idx[i];
+    }
+    memcpy(key, key2, n * sizeof *key);
+    memcpy(idx, idx2, n * sizeof *idx);
+  }
+}
+
+/* Keys of particles' cells; returns the significant bits, or -1 if too many cells. */
+static int compute_keys(const double *const x[3], size_t n, double cell, double origin[3],
+                        uint64_t *key, char *msg, size_t msglen)
+{
+  double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};
+  for (int d = 0; d < 3; d++)
+    for (size_t i = 0; i < n; i++) {
+      if (x[d][i] < lo[d]) lo[d] = x[d][i];
+      if (x[d][i] > hi[d]) hi[d] = x[d][i];
+    }
+  int64_t maxc = 1;
+  for (int d = 0; d < 3; d++) {
+    origin[d] = n ? lo[d] - cell : 0.0;   /* one empty layer keeps i-1 >= 0 */
+    int64_t c = n ? (int64_t)((hi[d] - origin[d]) / cell) + 2 : 1;
+    if (!(c < GRID_MAXC - 1)) {
+      snprintf(msg, msglen,
+               "particles span %.6g m in direction %c, more than 2^21 cells of %.6g m",
+               hi[d] - lo[d], "xyz"[d], cell);
+      return -1;
+    }
+    if (c > maxc) maxc = c;
+  }
+  int bits1 = 1;
+  while (((int64_t)1 << bits1) < maxc) bits1++;
+  double inv = 1.0 / cell;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    uint64_t c0 = (uint64_t)((x[0][i] - origin[0]) * inv);
+    uint64_t c1 = (uint64_t)((x[1][i] - origin[1]) * inv);
+    uint64_t c2 = (uint64_t)((x[2][i] - origin[2]) * inv);
+    key[i] = morton(c0, c1, c2);
+  }
+  return 3 * bits1;
+}
+
+static void grow(struct nbr_grid *g, size_t n)
+{
+  if (n <= g->wcap) return;
+  size_t c = n + n / 4 + 64;
+  g->order = hv_realloc(g->order, c * sizeof *g->order, "grid order");
+  g->key = hv_realloc(g->key, c * sizeof *g->key, "grid keys");
+  g->key2 = hv_realloc(g->key2, c * sizeof *g->key2, "grid keys");
+  g->idx2 = hv_realloc(g->idx2, c * sizeof *g->idx2, "grid index");
+  g->wcap = c;
+}
+
+static int32_t hash_find(const struct nbr_grid *g, uint64_t key)
+{
+  size_t mask = g->hcap - 1, s = hash64(key) & mask;
+  while (g->hval[s] >= 0) {
+    if (g->hkey[s] == key) return g->hval[s];
+    s = (s + 1) & mask;
+  }
+  return -1;
+}
+
+static void build_cells(struct nbr_grid *g)
+{
+  size_t n = g->n, nc = 0;
+  for (size_t i = 0; i < n; i++)
+    if (i == 0 || g->key[i] != g->key[i - 1]) nc++;
+  if (nc + 1 > g->ccap) {
+    size_t c = nc + nc / 4 + 64;
+    g->cell_start = hv_realloc(g->cell_start, (c + 1) * sizeof *g->cell_start, "cells");
+    g->cell_key = hv_realloc(g->cell_key, c * sizeof *g->cell_key, "cells");
+    g->cell_nbr = hv_realloc(g->cell_nbr, c * 27 * sizeof *g->cell_nbr, "cells");
+    g->ccap = c;
+  }
+  nc = 0;
+  for (size_t i = 0; i < n; i++)
+    if (i == 0 || g->key[i] != g->key[i - 1]) {
+      g->cell_start[nc] = (uint32_t)i;
+      g->cell_key[nc++] = g->key[i];
+    }
+  g->cell_start[nc] = (uint32_t)n;
+  g->ncells = nc;
+  size_t hcap = 16;
+  while (hcap < 2 * nc) hcap *= 2;
+  if (hcap != g->hcap) {
+    g->hkey = hv_realloc(g->hkey, hcap * sizeof *g->hkey, "cell hash");
+    g->hval = hv_realloc(g->hval, hcap * sizeof *g->hval, "cell hash");
+    g->hcap = hcap;
+  }
+  for (size_t s = 0; s < hcap; s++) g->hval[s] = -1;
+  for (size_t c = 0; c < nc; c++) {
+    size_t s = hash64(g->cell_key[c]) & (hcap - 1);
+    while (g->hval[s] >= 0) s = (s + 1) & (hcap - 1);
+    g->hkey[s] = g->cell_key[c];
+    g->hval[s] = (int32_t)c;
+  }
+}
+
+/* Cell coordinates back from a Morton key. */
+static uint64_t compact3(uint64_t v)
+{
+  v &= 0x1249249249249249ULL;
+  v = (v ^ (v >> 2)) & 0x10c30c30c30c30c3ULL;
+  v = (v ^ (v >> 4)) & 0x100f00f00f00f00fULL;
+  v = (v ^ (v >> 8)) & 0x1f0000ff0000ffULL;
+  v = (v ^ (v >> 16)) & 0x1f00000000ffffULL;
+  v = (v ^ (v >> 32)) & 0x1fffff;
+  return v;
+}
+
+static void link_cells(struct nbr_grid *g)
+{
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < g->ncells; c++) {
+    uint64_t k = g->cell_key[c];
+    int64_t ci = (int64_t)compact3(k), cj = (int64_t)compact3(k >> 1), ck = (int64_t)compact3(k >> 2);
+    int32_t *nb = g->cell_nbr + 27 * c;
+    int m = 0;
+    for (int dk = -1; dk <= 1; dk++)
+      for (int dj = -1; dj <= 1; dj++)
+        for (int di = -1; di <= 1; di++)
+          nb[m++] = hash_find(g, morton((uint64_t)(ci + di), (uint64_t)(cj + dj),
+                                        (uint64_t)(ck + dk)));
+  }
+}
+
+int nbr_grid_build(struct nbr_grid *g, const double *const x[3], size_t n, double cell,
+                   char *msg, size_t msglen)
+{
+  HV_CHECK(n < UINT32_MAX, "too many particles for 32-bit indices: %zu", n);
+  HV_CHECK(cell > 0 && isfinite(cell), "bad cell size %g", cell);
+  grow(g, n);
+  g->n = n;
+  g->cell = cell;
+  int bits = compute_keys(x, n, cell, g->origin, g->key, msg, msglen);
+  if (bits < 0) return -1;
+  for (size_t i = 0; i < n; i++) g->order[i] = (uint32_t)i;
+  radix_sort(g->key, g->order, g->key2, g->idx2, n, bits);
+  build_cells(g);
+  link_cells(g);
+  return 0;
+}
+
+int nbr_sort_order(const double *const x[3], size_t n, double cell, uint32_t *order)
+{
+  char msg[256];
+  double origin[3];
+  uint64_t *key = hv_malloc((n + 1) * sizeof *key, "sort keys");
+  uint64_t *key2 = hv_malloc((n + 1) * sizeof *key2, "sort keys");
+  uint32_t *idx2 = hv_malloc((n + 1) * sizeof *idx2, "sort index");
+  int bits = compute_keys(x, n, cell, origin, key, msg, sizeof msg);
+  if (bits >= 0) {
+    for (size_t i = 0; i < n; i++) order[i] = (uint32_t)i;
+    radix_sort(key, order, key2, idx2, n, bits);
+  }
+  free(key);
+  free(key2);
+  free(idx2);
+  return bits < 0 ? -1 : 0;
+}
+
+size_t nbr_grid_bytes(const struct nbr_grid *g)
+{
+  return g->wcap * (sizeof *g->order + 2 * sizeof *g->key + sizeof *g->idx2) +
+         g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + 27 * sizeof *g->cell_nbr) +
+         g->hcap * (sizeof *g->hkey + sizeof *g->hval);
+}

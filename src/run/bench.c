@@ -1,0 +1,88 @@
+/* bench.c — times full solver steps on a periodic, uniform gas lattice with small
+ * random velocities (~57 neighbours at eta = 1.2) and reports particle-steps per
+ * second and memory per particle (peak resident set / N, and the solver's arrays). */
+#include "run/bench.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "integrate/step.h"
+#include "run/run.h"
+#include "run/sim.h"
+
+static long peak_rss_kib(void)
+{
+  FILE *f = fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  long kib = -1;
+  while (fgets(line, sizeof line, f))
+    if (!strncmp(line, "VmHWM:", 6)) kib = strtol(line + 6, NULL, 10);
+  fclose(f);
+  return kib;
+}
+
+int bench_main(const struct bench_options *o)
+{
+  if (o->threads > 0) omp_set_num_threads(o->threads);
+  long side = lround(cbrt((double)o->particles));
+  if (side < 8) side = 8;
+  double dx = 1.0 / (double)side;
+  char yaml[2048];
+  snprintf(yaml, sizeof yaml,
+           "name: bench\n"
+           "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: periodic, y: periodic, z: periodic}}\n"
+           "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+           "bodies:\n"
+           "  - {name: gas, material: gas, spacing: %.17g, density: 1, pressure: 1,\n"
+           "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+           "time: {end: 1e30, max_steps: %ld}\n"
+           "output: {vtu: false}\n", dx, o->steps);
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct cfg *c = cfg_load_string(yaml, "bench", &err);
+  struct sim s;
+  if (!c || run_setup(&s, c, &err) || cfg_check_unused(c, &err)) {
+    fprintf(stderr, "hvsph bench: %s\n", err.msg);
+    return HV_EXIT_RUN;
+  }
+  /* small random velocities (deterministic) so that the viscosity branch runs */
+  srand(12345);
+  for (size_t i = 0; i < s.p.n; i++)
+    for (int k = 0; k < 3; k++) s.p.v[k][i] = 0.01 * ((double)rand() / RAND_MAX - 0.5);
+  if (step_init(&s, &err) || step_advance(&s, &err)) {   /* warm-up step */
+    fprintf(stderr, "hvsph bench: %s\n", err.msg);
+    return HV_EXIT_RUN;
+  }
+  double t0 = omp_get_wtime();
+  for (long k = 0; k < o->steps; k++)
+    if (step_advance(&s, &err)) {
+      fprintf(stderr, "hvsph bench: %s\n", err.msg);
+      return HV_EXIT_RUN;
+    }
+  double el = omp_get_wtime() - t0;
+  size_t n = s.p.n;
+  double nb = 0;
+  for (size_t i = 0; i < n; i += n / 64 + 1) nb += sph_count_neighbours(&s.p, &s.grid, i);
+  nb /= (double)((n - 1) / (n / 64 + 1) + 1);
+  size_t arrays = s.p.cap * particles_bytes_per_particle() + nbr_grid_bytes(&s.grid) +
+                  s.bnd.cap * sizeof *s.bnd.src;
+  long rss = peak_rss_kib();
+  printf("particles            %zu (%ld^3 lattice, periodic, ideal gas)\n", n, side);
+  printf("threads              %d\n", omp_get_max_threads());
+  printf("steps                %ld\n", o->steps);
+  printf("mean neighbours      %.1f\n", nb);
+  printf("wall time            %.3f s\n", el);
+  printf("particle-steps/s     %.4g\n", (double)n * (double)o->steps / el);
+  printf("us per particle-step %.3f (x %d threads = %.3f core-us)\n",
+         1e6 * el / ((double)n * (double)o->steps), omp_get_max_threads(),
+         1e6 * el * omp_get_max_threads() / ((double)n * (double)o->steps));
+  printf("bytes per particle   %.0f (solver arrays incl. ghosts and grid), %.0f (peak RSS)\n",
+         (double)arrays / (double)n, rss > 0 ? 1024.0 * (double)rss / (double)n : -1.0);
+  sim_free(&s);
+  cfg_free(c);
+  return 0;
+}

@@ -1,0 +1,13 @@
+/* bench.h — `hvsph bench`: throughput of the solver on a uniform gas lattice. */
+#ifndef HV_BENCH_H
+#define HV_BENCH_H
+
+struct bench_options {
+  long particles;   /* approximate number (a cube of side round(cbrt(N))) */
+  long steps;
+  int threads;      /* 0: OpenMP default */
+};
+
+int bench_main(const struct bench_options *o);
+
+#endif

@@ -1,0 +1,99 @@
+/* params.c — reading the solver parameters of a case file (sph, time, output,
+ * materials, domain). Every key has a documented default (docs/case-files.md). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "run/sim.h"
+
+static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
+{
+  static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
+  int k;
+  double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, inf = HUGE_VAL;
+  if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
+      cfg_get_quantity(c, "sph.eta", UNIT_NONE, &eta, 0.8, 3.0, &sp->eta, err) ||
+      cfg_get_quantity(c, "sph.h_min", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &sp->h_min, err) ||
+      cfg_get_quantity(c, "sph.h_max", UNIT_LENGTH, &inf, 0.0, HUGE_VAL, &sp->h_max, err) ||
+      cfg_get_quantity(c, "sph.viscosity.alpha", UNIT_NONE, &alpha, 0.0, 10.0, &sp->alpha, err) ||
+      cfg_get_quantity(c, "sph.viscosity.beta", UNIT_NONE, &beta, 0.0, 20.0, &sp->beta, err) ||
+      cfg_get_quantity(c, "sph.viscosity.epsilon", UNIT_NONE, &eps, 1e-6, 1.0, &sp->eps, err))
+    return -1;
+  sp->kernel = (enum kernel_kind)k;
+  return 0;
+}
+
+static int read_time(struct time_params *tp, struct cfg *c, struct hv_error *err)
+{
+  double cfl = 0.3, cfla = 0.25, zero = 0.0, inf = HUGE_VAL, dtmin = 1e-30, growth = 1.2;
+  long maxs = 0;
+  return cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &tp->end, err) ||
+         cfg_get_quantity(c, "time.cfl", UNIT_NONE, &cfl, 1e-3, 1.0, &tp->cfl, err) ||
+         cfg_get_quantity(c, "time.cfl_acceleration", UNIT_NONE, &cfla, 1e-3, 1.0,
+                          &tp->cfl_acc, err) ||
+         cfg_get_quantity(c, "time.dt_init", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_init, err) ||
+         cfg_get_quantity(c, "time.dt_max", UNIT_TIME, &inf, 0.0, HUGE_VAL, &tp->dt_max, err) ||
+         cfg_get_quantity(c, "time.dt_min", UNIT_TIME, &dtmin, 0.0, HUGE_VAL, &tp->dt_min, err) ||
+         cfg_get_quantity(c, "time.growth", UNIT_NONE, &growth, 1.0, 10.0, &tp->growth, err) ||
+         cfg_get_int(c, "time.max_steps", &maxs, 0, 1000000000L, &tp->max_steps, err)
+             ? -1 : 0;
+}
+
+static int read_output(struct output_params *op, struct cfg *c, struct hv_error *err)
+{
+  double zero = 0.0;
+  int yes = 1, no = 0;
+  long every = 100;
+  return cfg_get_quantity(c, "output.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &op->every, err) ||
+         cfg_get_bool(c, "output.vtu", &yes, &op->vtu, err) ||
+         cfg_get_bool(c, "output.csv", &no, &op->csv, err) ||
+         cfg_get_int(c, "output.log_every", &every, 1, 1000000000L, &op->log_every, err)
+             ? -1 : 0;
+}
+
+static int read_materials(struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  const char *const *names;
+  int n = cfg_keys(c, "materials", &names);
+  char where[256], path[256];
+  if (n <= 0)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: 'materials' must map material names to "
+                        "their parameters", cfg_where(c, "materials", where, sizeof where));
+  if (n > HV_MAX_MATERIALS)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: at most %d materials",
+                        cfg_where(c, "materials", where, sizeof where), HV_MAX_MATERIALS);
+  for (int i = 0; i < n; i++) {
+    snprintf(path, sizeof path, "materials.%s", names[i]);
+    if (material_read(c, path, names[i], &s->mat[i], err)) return -1;
+  }
+  s->nmat = n;
+  return 0;
+}
+
+int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  long reorder_def = 10, reorder = 10;
+  const char *name;
+  if (cfg_get_string(c, "name", "case", &name, err)) return -1;
+  snprintf(s->case_name, sizeof s->case_name, "%s", name);
+  if (read_sph(&s->sph, c, err) || read_time(&s->tp, c, err) || read_output(&s->out, c, err) ||
+      read_materials(s, c, err) || boundary_read(&s->bnd, c, err) ||
+      cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err))
+    return -1;
+  s->reorder_every = (int)reorder;
+  return 0;
+}
+
+void sim_free(struct sim *s)
+{
+  particles_free(&s->p);
+  boundary_free(&s->bnd);
+  nbr_grid_free(&s->grid);
+}
+
+int sim_material_index(const struct sim *s, const char *name)
+{
+  for (int i = 0; i < s->nmat; i++)
+    if (!strcmp(s->mat[i].name, name)) return i;
+  return -1;
+}

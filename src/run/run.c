@@ -1,0 +1,232 @@
+/* run.c — the top-level run: case → setup → step loop with outputs → finish.
+ *
+ * Outputs go to OUTDIR: used_parameters.yaml, summary.csv (one row per output
+ * time), particles_NNNNN.vtu + run.pvd, and particles_NNNNN.csv when asked. Every
+ * file is written to a temporary name and renamed. Ctrl-C ends the run after the
+ * current step and writes that state; a second Ctrl-C stops at once.
+ */
+#include "run/run.h"
+
+#include <math.h>
+#include <omp.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "config/config.h"
+#include "diag/conservation.h"
+#include "integrate/step.h"
+#include "io/afile.h"
+#include "io/snapshot.h"
+#include "run/sim.h"
+#include "setup/setup.h"
+#include "version.h"
+
+static volatile sig_atomic_t interrupted = 0;
+
+static void on_sigint(int sig)
+{
+  (void)sig;
+  interrupted = 1;
+  signal(SIGINT, SIG_DFL);   /* a second Ctrl-C stops at once */
+}
+
+static double wall_time(void) { return omp_get_wtime(); }
+
+#define SUMMARY_COLS 11
+static const char *const summary_cols[SUMMARY_COLS] = {
+    "step", "time", "dt", "n", "mass", "px", "py", "pz", "e_kin", "e_int", "e_total"};
+
+struct outputs {
+  char dir[4000];
+  int count;
+  double *times;
+  char **files;
+  double *rows;
+  int nrows;
+  const char *matnames[HV_MAX_MATERIALS];
+};
+
+static void outputs_free(struct outputs *o)
+{
+  for (int i = 0; i < o->count; i++) free(o->files[i]);
+  free(o->files);
+  free(o->times);
+  free(o->rows);
+}
+
+static int write_outputs(struct sim *s, struct outputs *o, struct hv_error *err)
+{
+  char path[4200], name[64];
+  struct totals t;
+  diag_totals(&s->p, &t);
+  o->rows = hv_realloc(o->rows, (size_t)(o->nrows + 1) * SUMMARY_COLS * sizeof(double), "summary");
+  double row[SUMMARY_COLS] = {(double)s->step, s->t, s->dt, (double)s->p.n, t.mass,
+                              t.mom[0], t.mom[1], t.mom[2], t.e_kin, t.e_int, t.e_total};
+  memcpy(o->rows + (size_t)o->nrows * SUMMARY_COLS, row, sizeof row);
+  o->nrows++;
+  struct snapshot_meta meta = {.time = s->t, .step = s->step, .version = HVSPH_VERSION,
+                               .case_name = s->case_name, .material_names = o->matnames,
+                               .nmat = s->nmat};
+  if (s->out.vtu) {
+    snprintf(name, sizeof name, "particles_%05d.vtu", o->count);
+    snprintf(path, sizeof path, "%s/%s", o->dir, name);
+    if (io_write_vtu(path, &s->p, &meta, err)) return -1;
+    o->times = hv_realloc(o->times, (size_t)(o->count + 1) * sizeof *o->times, "pvd");
+    o->files = hv_realloc(o->files, (size_t)(o->count + 1) * sizeof *o->files, "pvd");
+    o->times[o->count] = s->t;
+    o->files[o->count] = strdup(name);
+    snprintf(path, sizeof path, "%s/run.pvd", o->dir);
+    if (io_write_pvd(path, o->times, (const char *const *)o->files, o->count + 1, err)) return -1;
+  }
+  if (s->out.csv) {
+    snprintf(path, sizeof path, "%s/particles_%05d.csv", o->dir, o->count);
+    if (io_write_particles_csv(path, &s->p, &meta, err)) return -1;
+  }
+  if (!s->out.vtu) {  /* keep the count and the snapshot numbers in step */
+    o->files = hv_realloc(o->files, (size_t)(o->count + 1) * sizeof *o->files, "pvd");
+    o->files[o->count] = NULL;
+  }
+  o->count++;
+  char comment[512];
+  snprintf(comment, sizeof comment, "hvsph %s case %s: totals over the particles at each "
+           "output time (SI units)", HVSPH_VERSION, s->case_name);
+  snprintf(path, sizeof path, "%s/summary.csv", o->dir);
+  return io_write_table_csv(path, summary_cols, SUMMARY_COLS, o->rows, o->nrows, comment, err);
+}
+
+static void progress(const struct sim *s, double t0, double wall0, int tty, int final)
+{
+  double el = wall_time() - wall0, frac = (s->t - t0) / (s->tp.end - t0 > 0 ? s->tp.end - t0 : 1);
+  double eta = frac > 0 ? el * (1 - frac) / frac : 0.0;
+  char line[256];
+  snprintf(line, sizeof line, "step %ld  t = %.4e / %.4e s  dt = %.3e s  n = %zu  "
+           "elapsed %.1f s  remaining %.1f s", s->step, s->t, s->tp.end, s->dt, s->p.n, el, eta);
+  if (tty)
+    fprintf(stderr, "\r%-110s%s", line, final ? "\n" : "");
+  else
+    fprintf(stderr, "hvsph: %s\n", line);
+  fflush(stderr);
+}
+
+int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  memset(s, 0, sizeof *s);
+  particles_init(&s->p);
+  nbr_grid_init(&s->grid);
+  boundary_init(&s->bnd);
+  s->cfg = c;
+  if (sim_read_params(s, c, err) || setup_bodies(s, c, err)) return -1;
+  /* bounds on h: by default 1/10 to 10 times the initial range */
+  double hmin = HUGE_VAL, hmax = 0.0;
+  for (size_t i = 0; i < s->p.n; i++) {
+    if (s->p.h[i] < hmin) hmin = s->p.h[i];
+    if (s->p.h[i] > hmax) hmax = s->p.h[i];
+  }
+  if (s->sph.h_max == HUGE_VAL) s->sph.h_max = 10.0 * hmax;
+  if (s->sph.h_min == 0.0) s->sph.h_min = 0.1 * hmin;
+  return 0;
+}
+
+static const char *default_name(const char *path, char *buf, size_t len)
+{
+  const char *b = strrchr(path, '/');
+  snprintf(buf, len, "%s", b ? b + 1 : path);
+  char *dot = strrchr(buf, '.');
+  if (dot) *dot = 0;
+  return buf;
+}
+
+static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error *err)
+{
+  const int tty = isatty(STDERR_FILENO);
+  const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end;
+  double next_out = s->out.every > 0 ? t0 + s->out.every : tend, last_print = wall0;
+  if (next_out > tend) next_out = tend;
+  int k = 1;
+  while (s->t < tend && !interrupted) {
+    if (s->tp.max_steps && s->step >= s->tp.max_steps) break;
+    int hit = 0;
+    if (s->t + s->dt >= next_out) {
+      s->dt = next_out - s->t;
+      hit = 1;
+    }
+    if (step_advance(s, err)) return -1;
+    if (hit) {
+      s->t = next_out;
+      k++;
+      next_out = s->out.every > 0 ? t0 + k * s->out.every : tend;
+      if (next_out > tend || tend - next_out < 1e-9 * s->out.every) next_out = tend;
+      if (write_outputs(s, o, err)) return -1;
+    }
+    if (!quiet) {
+      double now = wall_time();
+      if ((tty && now - last_print > 0.25) || (!tty && s->step % s->out.log_every == 0)) {
+        progress(s, t0, wall0, tty, 0);
+        last_print = now;
+      }
+    }
+  }
+  if (!quiet) progress(s, t0, wall0, tty, 1);
+  int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * SUMMARY_COLS] == (double)s->step;
+  if (!wrote_last && write_outputs(s, o, err)) return -1;
+  return 0;
+}
+
+int run_main(const struct run_options *ro)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct sim s;
+  struct outputs o;
+  memset(&o, 0, sizeof o);
+  memset(&s, 0, sizeof s);
+  int status = HV_EXIT_OK;
+  if (ro->threads > 0) omp_set_num_threads(ro->threads);
+
+  struct cfg *c = cfg_load(ro->case_path, &err);
+  if (!c) goto fail;
+  for (int i = 0; i < ro->nsets; i++)
+    if (cfg_apply_set(c, ro->sets[i], &err)) goto fail;
+  if (run_setup(&s, c, &err) || cfg_check_unused(c, &err)) goto fail;
+
+  char nbuf[256];
+  if (ro->outdir) snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);
+  else snprintf(o.dir, sizeof o.dir, "out/%s", cfg_has(c, "name") ? s.case_name
+                : default_name(ro->case_path, nbuf, sizeof nbuf));
+  if (io_mkdir_p(o.dir, &err)) goto fail;
+  char path[4200];
+  snprintf(path, sizeof path, "%s/used_parameters.yaml", o.dir);
+  if (cfg_write_used(c, path, HVSPH_VERSION, &err)) goto fail;
+  for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
+
+  if (!ro->quiet)
+    hv_info("case %s: %zu particles, %d bodies, %d threads, t_end = %g s, output to %s",
+            ro->case_path, s.p.n, s.nbody, omp_get_max_threads(), s.tp.end, o.dir);
+  interrupted = 0;
+  signal(SIGINT, on_sigint);
+  if (step_init(&s, &err) || write_outputs(&s, &o, &err) || run_loop(&s, &o, ro->quiet, &err))
+    goto fail;
+  signal(SIGINT, SIG_DFL);
+  if (interrupted) {
+    hv_log(0, "interrupted at t = %g s (step %ld); the state at that time is written to %s",
+           s.t, s.step, o.dir);
+    status = HV_EXIT_INTERRUPTED;
+  } else if (!ro->quiet) {
+    hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
+            o.dir);
+  }
+  goto done;
+fail:
+  signal(SIGINT, SIG_DFL);
+  hv_log(0, "%s", err.msg);
+  status = err.code ? err.code : HV_EXIT_RUN;
+done:
+  outputs_free(&o);
+  sim_free(&s);
+  if (c) cfg_free(c);
+  return status;
+}

@@ -1,0 +1,24 @@
+/* run.h — `hvsph run`: read a case, set it up, step it to the end with outputs. */
+#ifndef HV_RUN_H
+#define HV_RUN_H
+
+#include "config/config.h"
+#include "core/error.h"
+
+struct run_options {
+  const char *case_path;
+  const char *outdir;           /* NULL: out/<case name> */
+  const char *const *sets;      /* --set assignments */
+  int nsets;
+  int threads;                  /* 0: OpenMP default */
+  int quiet;
+};
+
+/* Returns an exit status (enum hv_exit); prints its own messages. */
+int run_main(const struct run_options *o);
+
+/* Reads a case file (with overrides) into a ready simulation; used by run and bench. */
+struct sim;
+int run_setup(struct sim *s, struct cfg *c, struct hv_error *err);
+
+#endif

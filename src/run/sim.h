@@ -1,0 +1,61 @@
+/* sim.h — one simulation: its particles, materials, parameters and clock. */
+#ifndef HV_SIM_H
+#define HV_SIM_H
+
+#include "boundary/boundary.h"
+#include "config/config.h"
+#include "material/material.h"
+#include "neighbours/grid.h"
+#include "particles/particles.h"
+#include "sph/sph.h"
+
+struct time_params {
+  double end;          /* [s] end time */
+  double cfl;          /* [-] Courant number on h / vsig */
+  double cfl_acc;      /* [-] factor on sqrt(h/|a|) */
+  double dt_init;      /* [s] first step (0: from the CFL condition) */
+  double dt_max;       /* [s] */
+  double dt_min;       /* [s] a step below this ends the run as failed */
+  double growth;       /* [-] largest ratio between consecutive steps */
+  long max_steps;      /* 0: none */
+};
+
+struct output_params {
+  double every;        /* [s] interval between snapshots (0: only start and end) */
+  int vtu, csv;        /* which particle files */
+  long log_every;      /* steps between log lines when not on a terminal */
+};
+
+struct body_info {
+  char name[64];
+  int mat;
+  size_t count;
+};
+
+struct sim {
+  char case_name[128];
+  struct cfg *cfg;
+  struct particles p;
+  struct material mat[HV_MAX_MATERIALS];
+  int nmat;
+  struct body_info body[64];
+  int nbody;
+  struct sph_params sph;
+  struct time_params tp;
+  struct output_params out;
+  struct boundary bnd;
+  struct nbr_grid grid;
+  int reorder_every;   /* steps between reorderings of the particles by cell */
+  double t;            /* [s] */
+  double dt;           /* [s] next step (may be shortened to hit an output time) */
+  double dt_prop;      /* [s] the step the stability limits proposed last */
+  long step;
+};
+
+/* Reads everything but the bodies (sph, time, output, materials, domain). */
+int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err);
+void sim_free(struct sim *s);
+/* Index of a material by name, or -1. */
+int sim_material_index(const struct sim *s, const char *name);
+
+#endif

@@ -1,0 +1,37 @@
+/* sph.h — the loops over neighbours: the SPH sums, in gather form.
+ *
+ * Each real particle sums over its own neighbours in the fixed order given by the
+ * cell grid, so results are bitwise independent of the number of threads. These
+ * loops are the only place with OpenMP parallel regions over pairs.
+ *
+ *   continuity   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ
+ *   momentum     dvᵢ/dt = −Σⱼ mⱼ (pᵢ/ρᵢ² + pⱼ/ρⱼ² + Πᵢⱼ) ∇ᵢWᵢⱼ
+ *   energy       deᵢ/dt =  Σⱼ mⱼ (pᵢ/ρᵢ² + Πᵢⱼ/2) vᵢⱼ·∇ᵢWᵢⱼ
+ *   viscosity    Πᵢⱼ = (−α c̄ᵢⱼ μᵢⱼ + β μᵢⱼ²)/ρ̄ᵢⱼ  if vᵢⱼ·xᵢⱼ < 0, else 0
+ *                μᵢⱼ = hᵢⱼ vᵢⱼ·xᵢⱼ / (rᵢⱼ² + ε hᵢⱼ²)   (Monaghan & Gingold 1983)
+ * with Wᵢⱼ = W(rᵢⱼ, hᵢⱼ), hᵢⱼ = (hᵢ + hⱼ)/2 (Monaghan 1992, Ann. Rev. A&A 30:543).
+ */
+#ifndef HV_SPH_H
+#define HV_SPH_H
+
+#include "kernel/kernel.h"
+#include "neighbours/grid.h"
+#include "particles/particles.h"
+
+struct sph_params {
+  enum kernel_kind kernel;
+  double eta;          /* [-] h = eta (m/ρ)^(1/3) */
+  double h_min, h_max; /* [m] bounds on h */
+  double alpha, beta;  /* [-] artificial viscosity */
+  double eps;          /* [-] ε in μᵢⱼ */
+};
+
+/* drho for the reals, from x, v, m, rho, h of all slots (reals and ghosts). */
+void sph_density_rate(struct particles *p, const struct nbr_grid *g,
+                      const struct sph_params *sp);
+/* a, de and the signal speed vsig for the reals, from x, v, m, rho, p, cs, h. */
+void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp);
+/* Neighbour count of particle i (diagnostics, tests). */
+int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
+
+#endif
