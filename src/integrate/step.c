@@ -15,6 +15,14 @@ double step_hmax(const struct particles *p)
   return hm;
 }
 
+static double hmin_reals(const struct particles *p)
+{
+  double hm = HUGE_VAL;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->h[i] < hm) hm = p->h[i];
+  return hm;
+}
+
 /* p and cs of every real from its ρ and e; the first failure is reported. */
 static int update_eos(struct sim *s, struct hv_error *err)
 {
@@ -46,7 +54,7 @@ static int build_neighbours(struct sim *s, struct hv_error *err)
 {
   char msg[512];
   struct particles *p = &s->p;
-  double width = 2.0 * step_hmax(p);
+  const double hmax = step_hmax(p), width = 2.0 * hmax;
   if (boundary_any(&s->bnd)) {
     boundary_apply(&s->bnd, p);
     if (boundary_make_ghosts(&s->bnd, p, width, msg, sizeof msg))
@@ -55,7 +63,8 @@ static int build_neighbours(struct sim *s, struct hv_error *err)
     p->n_ghost = 0;
   }
   const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
-  if (nbr_grid_build(&s->grid, xs, p->n + p->n_ghost, width, msg, sizeof msg))
+  const double cell = nbr_cell_size(hmin_reals(p), hmax);
+  if (nbr_grid_build(&s->grid, xs, p->h, p->n + p->n_ghost, cell, msg, sizeof msg))
     return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s: neighbour grid: %s", s->t, msg);
   return 0;
 }
@@ -128,7 +137,8 @@ static void reorder(struct sim *s)
   struct particles *p = &s->p;
   uint32_t *order = hv_malloc((p->n + 1) * sizeof *order, "reorder");
   const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
-  if (nbr_sort_order(xs, p->n, 2.0 * step_hmax(p), order) == 0) particles_permute(p, order);
+  if (nbr_sort_order(xs, p->n, nbr_cell_size(hmin_reals(p), step_hmax(p)), order) == 0)
+    particles_permute(p, order);
   free(order);
 }
 

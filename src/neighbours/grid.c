@@ -44,7 +44,9 @@ void nbr_grid_free(struct nbr_grid *g)
   free(g->order);
   free(g->cell_start);
   free(g->cell_key);
-  free(g->cell_nbr);
+  free(g->cell_h);
+  free(g->nbr_start);
+  free(g->nbr_list);
   free(g->hkey);
   free(g->hval);
   free(g->key);
@@ -143,7 +145,8 @@ static void build_cells(struct nbr_grid *g)
     size_t c = nc + nc / 4 + 64;
     g->cell_start = hv_realloc(g->cell_start, (c + 1) * sizeof *g->cell_start, "cells");
     g->cell_key = hv_realloc(g->cell_key, c * sizeof *g->cell_key, "cells");
-    g->cell_nbr = hv_realloc(g->cell_nbr, c * 27 * sizeof *g->cell_nbr, "cells");
+    g->cell_h = hv_realloc(g->cell_h, c * sizeof *g->cell_h, "cells");
+    g->nbr_start = hv_realloc(g->nbr_start, (c + 1) * sizeof *g->nbr_start, "cells");
     g->ccap = c;
   }
   nc = 0;
@@ -182,24 +185,73 @@ static uint64_t compact3(uint64_t v)
   return v;
 }
 
-static void link_cells(struct nbr_grid *g)
+/* Visits the candidate neighbour cells of cell c in a fixed order; stores them in
+ * out (if not NULL) and returns their count. */
+static uint32_t cell_neighbours(const struct nbr_grid *g, size_t c, double hglob, int32_t *out)
 {
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    uint64_t k = g->cell_key[c];
-    int64_t ci = (int64_t)compact3(k), cj = (int64_t)compact3(k >> 1), ck = (int64_t)compact3(k >> 2);
-    int32_t *nb = g->cell_nbr + 27 * c;
-    int m = 0;
-    for (int dk = -1; dk <= 1; dk++)
-      for (int dj = -1; dj <= 1; dj++)
-        for (int di = -1; di <= 1; di++)
-          nb[m++] = hash_find(g, morton((uint64_t)(ci + di), (uint64_t)(cj + dj),
-                                        (uint64_t)(ck + dk)));
-  }
+  uint64_t k = g->cell_key[c];
+  int64_t ci = (int64_t)compact3(k), cj = (int64_t)compact3(k >> 1), ck = (int64_t)compact3(k >> 2);
+  const double hc = g->cell_h[c], cell = g->cell;
+  int R = (int)ceil((hc + hglob) / cell);
+  if (R < 1) R = 1;
+  uint32_t m = 0;
+  for (int dk = -R; dk <= R; dk++)
+    for (int dj = -R; dj <= R; dj++)
+      for (int di = -R; di <= R; di++) {
+        int64_t a = ci + di, b = cj + dj, d = ck + dk;
+        if (a < 0 || b < 0 || d < 0) continue;
+        int32_t nc = hash_find(g, morton((uint64_t)a, (uint64_t)b, (uint64_t)d));
+        if (nc < 0) continue;
+        double gi = abs(di) > 1 ? (abs(di) - 1) * cell : 0.0;
+        double gj = abs(dj) > 1 ? (abs(dj) - 1) * cell : 0.0;
+        double gk = abs(dk) > 1 ? (abs(dk) - 1) * cell : 0.0;
+        double reach = hc + g->cell_h[nc];
+        if (gi * gi + gj * gj + gk * gk >= reach * reach) continue;
+        if (out) out[m] = nc;
+        m++;
+      }
+  return m;
 }
 
-int nbr_grid_build(struct nbr_grid *g, const double *const x[3], size_t n, double cell,
-                   char *msg, size_t msglen)
+static void link_cells(struct nbr_grid *g, const double *h)
+{
+  double hglob = 0.0;
+  for (size_t c = 0; c < g->ncells; c++) {
+    double hm = 0.0;
+    for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++)
+      if (h[g->order[ii]] > hm) hm = h[g->order[ii]];
+    g->cell_h[c] = hm;
+    if (hm > hglob) hglob = hm;
+  }
+#pragma omp parallel for schedule(dynamic, 64)
+  for (size_t c = 0; c < g->ncells; c++) g->nbr_start[c + 1] = cell_neighbours(g, c, hglob, NULL);
+  g->nbr_start[0] = 0;
+  for (size_t c = 0; c < g->ncells; c++) g->nbr_start[c + 1] += g->nbr_start[c];
+  size_t total = g->nbr_start[g->ncells];
+  if (total > g->nbr_cap) {
+    g->nbr_cap = total + total / 4 + 64;
+    g->nbr_list = hv_realloc(g->nbr_list, g->nbr_cap * sizeof *g->nbr_list, "neighbour cells");
+  }
+#pragma omp parallel for schedule(dynamic, 64)
+  for (size_t c = 0; c < g->ncells; c++) cell_neighbours(g, c, hglob, g->nbr_list + g->nbr_start[c]);
+}
+
+void nbr_cell_corner(const struct nbr_grid *g, size_t c, double lo[3])
+{
+  uint64_t k = g->cell_key[c];
+  lo[0] = g->origin[0] + (double)compact3(k) * g->cell;
+  lo[1] = g->origin[1] + (double)compact3(k >> 1) * g->cell;
+  lo[2] = g->origin[2] + (double)compact3(k >> 2) * g->cell;
+}
+
+double nbr_cell_size(double hmin, double hmax)
+{
+  double c = 2.0 * hmin;
+  return c < 0.5 * hmax ? 0.5 * hmax : c;
+}
+
+int nbr_grid_build(struct nbr_grid *g, const double *const x[3], const double *h, size_t n,
+                   double cell, char *msg, size_t msglen)
 {
   HV_CHECK(n < UINT32_MAX, "too many particles for 32-bit indices: %zu", n);
   HV_CHECK(cell > 0 && isfinite(cell), "bad cell size %g", cell);
@@ -211,7 +263,7 @@ int nbr_grid_build(struct nbr_grid *g, const double *const x[3], size_t n, doubl
   for (size_t i = 0; i < n; i++) g->order[i] = (uint32_t)i;
   radix_sort(g->key, g->order, g->key2, g->idx2, n, bits);
   build_cells(g);
-  link_cells(g);
+  link_cells(g, h);
   return 0;
 }
 
@@ -236,6 +288,7 @@ int nbr_sort_order(const double *const x[3], size_t n, double cell, uint32_t *or
 size_t nbr_grid_bytes(const struct nbr_grid *g)
 {
   return g->wcap * (sizeof *g->order + 2 * sizeof *g->key + sizeof *g->idx2) +
-         g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + 27 * sizeof *g->cell_nbr) +
+         g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + sizeof *g->cell_h +
+                    sizeof *g->nbr_start) + g->nbr_cap * sizeof *g->nbr_list +
          g->hcap * (sizeof *g->hkey + sizeof *g->hval);
 }

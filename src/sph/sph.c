@@ -1,51 +1,177 @@
-/* sph.c — continuity and momentum/energy sums; see sph.h for the equations. */
+/* sph.c — continuity and momentum/energy sums; see sph.h for the equations.
+ *
+ * Loops run cell by cell. For each cell, the positions and smoothing lengths of all
+ * particles in its neighbour cells are first copied into contiguous per-thread
+ * arrays (the candidates); each particle of the cell then selects its neighbours
+ * among them with a branch-free pass that the compiler vectorises, and only the
+ * selected pairs do the physics. The neighbour order (cells in grid order, then
+ * particles in cell order) is fixed, so sums do not depend on the thread count.
+ */
 #include "sph/sph.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "core/error.h"
+
+struct cand {
+  size_t cap, n;
+  double *x, *y, *z, *h;
+  uint32_t *j;        /* particle slot of each candidate */
+  uint32_t *sel;      /* candidates selected for the current particle */
+  unsigned char *in;  /* within reach of the current particle */
+  /* the neighbour cells: candidate ranges, box corners [m] and largest h [m] */
+  size_t ncell, ccap;
+  double cellw;       /* [m] cell edge */
+  uint32_t *off;      /* [ncell+1] */
+  double *lo;         /* [3*ncell] */
+  double *hc;         /* [ncell] */
+};
+
+static void cand_free(struct cand *cd)
+{
+  free(cd->x);
+  free(cd->y);
+  free(cd->z);
+  free(cd->h);
+  free(cd->j);
+  free(cd->sel);
+  free(cd->in);
+}
+
+static void cand_free_all(struct cand *cd)
+{
+  cand_free(cd);
+  free(cd->off);
+  free(cd->lo);
+  free(cd->hc);
+}
+
+static void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
+                        const struct particles *p)
+{
+  const int32_t *nb = g->nbr_list + g->nbr_start[c];
+  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
+  size_t n = 0;
+  for (uint32_t k = 0; k < nnb; k++) n += g->cell_start[nb[k] + 1] - g->cell_start[nb[k]];
+  if (n > cd->cap) {
+    cand_free(cd);
+    cd->cap = n + n / 2 + 64;
+    cd->x = hv_malloc(cd->cap * sizeof(double), "candidates");
+    cd->y = hv_malloc(cd->cap * sizeof(double), "candidates");
+    cd->z = hv_malloc(cd->cap * sizeof(double), "candidates");
+    cd->h = hv_malloc(cd->cap * sizeof(double), "candidates");
+    cd->j = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
+    cd->sel = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
+    cd->in = hv_malloc(cd->cap, "candidates");
+  }
+  if (nnb + 1 > cd->ccap) {
+    cd->ccap = nnb + 32;
+    cd->off = hv_realloc(cd->off, cd->ccap * sizeof *cd->off, "candidate cells");
+    cd->lo = hv_realloc(cd->lo, 3 * cd->ccap * sizeof *cd->lo, "candidate cells");
+    cd->hc = hv_realloc(cd->hc, cd->ccap * sizeof *cd->hc, "candidate cells");
+  }
+  cd->ncell = nnb;
+  cd->cellw = g->cell;
+  size_t q = 0;
+  for (uint32_t k = 0; k < nnb; k++) {
+    double lo[3];
+    nbr_cell_corner(g, (size_t)nb[k], lo);
+    cd->lo[3 * k] = lo[0];
+    cd->lo[3 * k + 1] = lo[1];
+    cd->lo[3 * k + 2] = lo[2];
+    cd->hc[k] = g->cell_h[nb[k]];
+    cd->off[k] = (uint32_t)q;
+    for (uint32_t jj = g->cell_start[nb[k]]; jj < g->cell_start[nb[k] + 1]; jj++) {
+      const uint32_t j = g->order[jj];
+      cd->x[q] = p->x[0][j];
+      cd->y[q] = p->x[1][j];
+      cd->z[q] = p->x[2][j];
+      cd->h[q] = p->h[j];
+      cd->j[q] = j;
+      q++;
+    }
+  }
+  cd->off[nnb] = (uint32_t)q;
+  cd->n = q;
+}
+
+/* Selects the candidates within reach of particle i (r < h_i + h_j, j != i): whole
+ * cells out of reach are skipped, then a vectorisable distance test and a
+ * compaction. Order: cells, then particles, as gathered. */
+static size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
+                          double hi)
+{
+  const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
+  const uint32_t *restrict jj = cd->j;
+  unsigned char *restrict in = cd->in;
+  uint32_t *restrict sel = cd->sel;
+  size_t k = 0;
+  for (size_t c = 0; c < cd->ncell; c++) {
+    const double *lo = cd->lo + 3 * c, cell = cd->cellw, reach = hi + cd->hc[c];
+    double d2 = 0.0, t;
+    t = lo[0] - xi; if (t > 0) d2 += t * t; t = xi - lo[0] - cell; if (t > 0) d2 += t * t;
+    t = lo[1] - yi; if (t > 0) d2 += t * t; t = yi - lo[1] - cell; if (t > 0) d2 += t * t;
+    t = lo[2] - zi; if (t > 0) d2 += t * t; t = zi - lo[2] - cell; if (t > 0) d2 += t * t;
+    if (d2 >= reach * reach * (1.0 + 1e-12)) continue;  /* margin for rounding of the corner */
+    const size_t q0 = cd->off[c], q1 = cd->off[c + 1];
+    for (size_t q = q0; q < q1; q++) {
+      const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];
+      in[q] = (dx * dx + dy * dy + dz * dz < s * s);
+    }
+    for (size_t q = q0; q < q1; q++) {
+      sel[k] = (uint32_t)q;
+      k += in[q] & (jj[q] != i);
+    }
+  }
+  return k;
+}
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
                       const struct sph_params *sp)
 {
   const size_t n = p->n;
-  const uint32_t *order = g->order;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho, *h = p->h;
   double *drho = p->drho;
   const enum kernel_kind kk = sp->kernel;
 
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < g->ncells; c++) {
-    const int32_t *nb = g->cell_nbr + 27 * c;
-    for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-      const uint32_t i = order[ii];
-      if (i >= n) continue;
-      const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
-      const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-      double sum = 0.0;
-      for (int k = 0; k < 27; k++) {
-        if (nb[k] < 0) continue;
-        const uint32_t j0 = g->cell_start[nb[k]], j1 = g->cell_start[nb[k] + 1];
-        for (uint32_t jj = j0; jj < j1; jj++) {
-          const uint32_t j = order[jj];
-          const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-          const double r2 = dx * dx + dy * dy + dz * dz, s = hi + h[j];
-          if (r2 >= s * s || j == i) continue;
-          const double r = sqrt(r2), f = kernel_f(kk, r, 0.5 * s);
+#pragma omp parallel
+  {
+    struct cand cd = {0};
+#pragma omp for schedule(dynamic, 8)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int gathered = 0;
+      for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t i = g->order[ii];
+        if (i >= n) continue;
+        if (!gathered) {
+          cand_gather(&cd, g, c, p);
+          gathered = 1;
+        }
+        const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
+        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
+        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
+        double sum = 0.0;
+        for (size_t k = 0; k < nsel; k++) {
+          const uint32_t q = cd.sel[k], j = cd.j[q];
+          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
+          const double r = sqrt(dx * dx + dy * dy + dz * dz);
+          const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           sum += m[j] / rho[j] * vdx * f;
         }
+        drho[i] = rho[i] * sum;
       }
-      drho[i] = rho[i] * sum;
     }
+    cand_free_all(&cd);
   }
 }
 
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp)
 {
   const size_t n = p->n;
-  const uint32_t *order = g->order;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho, *h = p->h, *pr = p->p, *cs = p->cs;
@@ -53,25 +179,29 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps;
 
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < g->ncells; c++) {
-    const int32_t *nb = g->cell_nbr + 27 * c;
-    for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-      const uint32_t i = order[ii];
-      if (i >= n) continue;
-      const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
-      const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-      const double Pi = pr[i] / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
-      double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
-      for (int k = 0; k < 27; k++) {
-        if (nb[k] < 0) continue;
-        const uint32_t j0 = g->cell_start[nb[k]], j1 = g->cell_start[nb[k] + 1];
-        for (uint32_t jj = j0; jj < j1; jj++) {
-          const uint32_t j = order[jj];
-          const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-          const double r2 = dx * dx + dy * dy + dz * dz, s = hi + h[j];
-          if (r2 >= s * s || j == i) continue;
-          const double hij = 0.5 * s, r = sqrt(r2), f = kernel_f(kk, r, hij);
+#pragma omp parallel
+  {
+    struct cand cd = {0};
+#pragma omp for schedule(dynamic, 8)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int gathered = 0;
+      for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t i = g->order[ii];
+        if (i >= n) continue;
+        if (!gathered) {
+          cand_gather(&cd, g, c, p);
+          gathered = 1;
+        }
+        const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
+        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
+        const double Pi = pr[i] / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
+        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
+        double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
+        for (size_t k = 0; k < nsel; k++) {
+          const uint32_t q = cd.sel[k], j = cd.j[q];
+          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
+          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + cd.h[q]);
+          const double f = kernel_f(kk, sqrt(r2), hij);
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           double visc = 0.0;
           if (vdx < 0.0) {
@@ -86,32 +216,26 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
           sz -= fac * dz;
           se += m[j] * (Pi + 0.5 * visc) * vdx * f;
         }
+        ax[i] = sx;
+        ay[i] = sy;
+        az[i] = sz;
+        de[i] = se;
+        vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
       }
-      ax[i] = sx;
-      ay[i] = sy;
-      az[i] = sz;
-      de[i] = se;
-      vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
     }
+    cand_free_all(&cd);
   }
 }
 
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i)
 {
-  int count = 0;
   for (size_t c = 0; c < g->ncells; c++)
     for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
       if (g->order[ii] != i) continue;
-      const int32_t *nb = g->cell_nbr + 27 * c;
-      for (int k = 0; k < 27; k++) {
-        if (nb[k] < 0) continue;
-        for (uint32_t jj = g->cell_start[nb[k]]; jj < g->cell_start[nb[k] + 1]; jj++) {
-          uint32_t j = g->order[jj];
-          double dx = p->x[0][i] - p->x[0][j], dy = p->x[1][i] - p->x[1][j],
-                 dz = p->x[2][i] - p->x[2][j], s = p->h[i] + p->h[j];
-          if (j != i && dx * dx + dy * dy + dz * dz < s * s) count++;
-        }
-      }
+      struct cand cd = {0};
+      cand_gather(&cd, g, c, p);
+      int count = (int)cand_select(&cd, (uint32_t)i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
+      cand_free_all(&cd);
       return count;
     }
   return -1;

@@ -91,9 +91,13 @@ const char *test_write_file(const char *name, const char *text)
 
 int test_run(const char *cmdline, char *output, size_t len)
 {
-  char cmd[8192];
-  snprintf(cmd, sizeof cmd, "%s 2>&1", cmdline);
+  size_t cl = strlen(cmdline);
+  char *cmd = malloc(cl + 8);
+  if (!cmd) return -1;
+  memcpy(cmd, cmdline, cl);
+  memcpy(cmd + cl, " 2>&1", 6);
   FILE *f = popen(cmd, "r");
+  free(cmd);
   if (!f) return -1;
   size_t k = 0;
   char buf[4096];

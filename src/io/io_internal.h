@@ -1,0 +1,21 @@
+/* io_internal.h — helpers shared by the writers in src/io/ (not a public API). */
+#ifndef HV_IO_INTERNAL_H
+#define HV_IO_INTERNAL_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+#include "io/afile.h"
+#include "io/snapshot.h"
+
+/* Copies src (or fallback when src is NULL or empty) into dst for use inside a
+ * one-line comment: control characters become '_', and when xml_comment is set
+ * "--" (not allowed inside an XML comment) becomes "-_". Truncates to len - 1. */
+void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment);
+
+/* Writes "<prefix>materials 0=name0 1=name1 ...<suffix>" when meta lists
+ * materials; writes nothing otherwise. Returns -1 on a write error (err set). */
+int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
+                     const char *suffix, int xml_comment, struct hv_error *err);
+
+#endif

@@ -1,0 +1,153 @@
+/* snapshot.c — the ParaView collection (.pvd), generic CSV tables, and the
+ * helpers shared by the snapshot writers (vtu.c, csv.c).
+ *
+ * A .pvd is a small XML index of (time [s], file) pairs that ParaView opens as
+ * one time series; it is rewritten whole after every snapshot, so a run that
+ * stops leaves a valid index of the snapshots written so far.
+ */
+#include "io/snapshot.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "io/afile.h"
+#include "io/io_internal.h"
+
+void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment)
+{
+  if (len == 0) return;
+  if (!src || !*src) src = fallback ? fallback : "";
+  size_t k = 0;
+  for (const char *s = src; *s && k + 1 < len; s++) {
+    unsigned char c = (unsigned char)*s;
+    if (c < 0x20 || c == 0x7f) c = '_';
+    else if (xml_comment && c == '-' && k > 0 && dst[k - 1] == '-') c = '_';
+    dst[k++] = (char)c;
+  }
+  /* An XML comment must not end in '-' either ("--->"). */
+  if (xml_comment && k > 0 && dst[k - 1] == '-') dst[k - 1] = '_';
+  dst[k] = '\0';
+}
+
+int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
+                     const char *suffix, int xml_comment, struct hv_error *err)
+{
+  if (!meta || !meta->material_names || meta->nmat <= 0) return 0;
+  if (afile_printf(af, err, "%smaterials", prefix)) return -1;
+  for (int k = 0; k < meta->nmat; k++) {
+    char name[256];
+    io_clean_text(name, sizeof name, meta->material_names[k], "?", xml_comment);
+    for (char *q = name; *q; q++)
+      if (*q == ' ') *q = '_'; /* keep "index=name" pairs space-separated */
+    if (afile_printf(af, err, " %d=%s", k, name)) return -1;
+  }
+  return afile_printf(af, err, "%s", suffix);
+}
+
+/* Writes s as the value of an XML attribute (escaping & < > " '). */
+static int put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
+{
+  for (; *s; s++) {
+    const char *rep = NULL;
+    switch (*s) {
+    case '&': rep = "&amp;"; break;
+    case '<': rep = "&lt;"; break;
+    case '>': rep = "&gt;"; break;
+    case '"': rep = "&quot;"; break;
+    case '\'': rep = "&apos;"; break;
+    default: break;
+    }
+    if (rep ? afile_printf(af, err, "%s", rep) : afile_write(af, s, 1, err)) return -1;
+  }
+  return 0;
+}
+
+static int pvd_body(struct afile *af, const double *times, const char *const *files, int n,
+                    struct hv_error *err)
+{
+  const unsigned short one = 1;
+  unsigned char first;
+  memcpy(&first, &one, 1);
+  if (afile_printf(af, err,
+                   "<?xml version=\"1.0\"?>\n"
+                   "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
+                   "  <Collection>\n",
+                   first ? "LittleEndian" : "BigEndian"))
+    return -1;
+  for (int k = 0; k < n; k++) {
+    if (afile_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
+                     times[k]) ||
+        put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
+      return -1;
+  }
+  return afile_printf(af, err, "  </Collection>\n</VTKFile>\n");
+}
+
+int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
+                 struct hv_error *err)
+{
+  struct afile af;
+  if (afile_open(&af, path, err)) return -1;
+  if (pvd_body(&af, times, files, n, err)) {
+    afile_abort(&af);
+    return -1;
+  }
+  return afile_commit(&af, err);
+}
+
+/* Formats one table value: integral values with |v| < 2^53 as integers
+ * (exact), anything else with %.17g (round-trip exact). */
+static void table_value(char *buf, size_t len, double v)
+{
+  if (isfinite(v) && v == floor(v) && fabs(v) < 9007199254740992.0)
+    snprintf(buf, len, "%.0f", v);
+  else
+    snprintf(buf, len, "%.17g", v);
+}
+
+static int table_comment(struct afile *af, const char *comment, struct hv_error *err)
+{
+  const char *s = comment;
+  while (*s) {
+    size_t l = strcspn(s, "\n");
+    if (afile_printf(af, err, "# %.*s\n", (int)l, s)) return -1;
+    s += l;
+    if (*s == '\n') s++;
+  }
+  return 0;
+}
+
+static int table_body(struct afile *af, const char *const *cols, int ncols, const double *rows,
+                      int nrows, const char *comment, struct hv_error *err)
+{
+  if (comment && table_comment(af, comment, err)) return -1;
+  for (int c = 0; c < ncols; c++)
+    if (afile_printf(af, err, "%s%s", c ? "," : "", cols[c])) return -1;
+  if (afile_printf(af, err, "\n")) return -1;
+  for (int r = 0; r < nrows; r++) {
+    for (int c = 0; c < ncols; c++) {
+      char v[40];
+      table_value(v, sizeof v, rows[(size_t)r * (size_t)ncols + (size_t)c]);
+      if (afile_printf(af, err, "%s%s", c ? "," : "", v)) return -1;
+    }
+    if (afile_printf(af, err, "\n")) return -1;
+  }
+  return 0;
+}
+
+int io_write_table_csv(const char *path, const char *const *cols, int ncols, const double *rows,
+                       int nrows, const char *comment, struct hv_error *err)
+{
+  for (int c = 0; c < ncols; c++)
+    if (!cols[c] || !*cols[c] || strpbrk(cols[c], ",\"\r\n"))
+      return hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': bad column name '%s'", path,
+                          cols[c] ? cols[c] : "(null)");
+  struct afile af;
+  if (afile_open(&af, path, err)) return -1;
+  if (table_body(&af, cols, ncols, rows, nrows, comment, err)) {
+    afile_abort(&af);
+    return -1;
+  }
+  return afile_commit(&af, err);
+}

@@ -1,0 +1,60 @@
+/* snapshot.h — particle snapshots (VTU, CSV), the ParaView collection (.pvd)
+ * and generic CSV tables (summary.csv, measurements).
+ *
+ * Every file is written whole or not at all through afile (see afile.h); on
+ * failure the previous file of that name is left as it was and err names the
+ * file and the cause (code HV_EXIT_RUN). Snapshots hold the real particles
+ * [0, p->n) only, never ghosts. Values are SI (m, kg, s, Pa, J/kg); the file
+ * formats are described in docs/output-files.md.
+ */
+#ifndef HV_SNAPSHOT_H
+#define HV_SNAPSHOT_H
+
+#include "core/error.h"
+#include "particles/particles.h"
+
+struct snapshot_meta {
+  double time;                        /* [s] simulated time of the snapshot */
+  long step;                          /* step number */
+  const char *version;                /* hvsph version string, written into every file */
+  const char *case_name;              /* name of the case */
+  const char *const *material_names;  /* index -> name, for the mat column; may be NULL */
+  int nmat;                           /* entries in material_names */
+};
+
+/* VTK XML UnstructuredGrid (.vtu), appended raw binary data with
+ * header_type="UInt64" (no base64, no compression): one VTK_VERTEX cell per
+ * particle, Points = x, PointData = every other field flagged PF_OUT (vectors
+ * as 3-component arrays named like the field, e.g. "v"; int64 -> Int64,
+ * int32 -> Int32, double -> Float64), FieldData TIME [s] and STEP. */
+int io_write_vtu(const char *path, struct particles *p, const struct snapshot_meta *meta,
+                 struct hv_error *err);
+
+/* Particle CSV: a comment line "# hvsph <version> case <name> time <t> s step <k>",
+ * optionally a "# materials ..." comment line, then the header
+ * id,x,y,z,vx,vy,vz,m,rho,p,e,h,mat followed by the other PF_OUT fields in list
+ * order (vectors as name_x,name_y,name_z); values %.17g (round-trip exact). */
+int io_write_particles_csv(const char *path, struct particles *p,
+                           const struct snapshot_meta *meta, struct hv_error *err);
+
+/* Reads a file written by io_write_particles_csv, appending its rows to p as
+ * real particles (ghosts are dropped). Columns are matched by name; unknown
+ * columns are ignored, missing known columns stay zero; a missing id, x, y or z
+ * column is an error (HV_EXIT_INPUT). *time [s] gets the time from the comment
+ * line, or NaN when there is none; time may be NULL. On error p->n is restored. */
+int io_read_particles_csv(const char *path, struct particles *p, double *time,
+                          struct hv_error *err);
+
+/* ParaView collection: rewrites the whole .pvd listing every (times[k] [s],
+ * files[k]) so far. File names are written as given; ParaView resolves them
+ * relative to the .pvd's folder. */
+int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
+                 struct hv_error *err);
+
+/* A generic CSV table: optional comment (each line prefixed "# "), a header of
+ * the ncols column names, then nrows rows from rows[r * ncols + c]. A value that
+ * is integral with |v| < 2^53 prints as an integer, any other as %.17g. */
+int io_write_table_csv(const char *path, const char *const *cols, int ncols, const double *rows,
+                       int nrows, const char *comment, struct hv_error *err);
+
+#endif

@@ -1,0 +1,432 @@
+/* test_io.c — snapshot and table writers, the CSV reader, atomic files, mkdir -p.
+ *
+ * Round trips are checked bit for bit (memcmp), the VTU is parsed minimally here
+ * (header, appended block sizes, first point), and failures (abort, unwritable
+ * target, missing folder, a full disk through /dev/full) must leave an earlier
+ * file of the same name intact and no temporary file behind.
+ */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/error.h"
+#include "io/afile.h"
+#include "io/snapshot.h"
+#include "particles/particles.h"
+#include "testlib.h"
+
+#define NP 100
+
+static char dir[4096];
+
+static const char *path_in(const char *name)
+{
+  static char buf[8][4200];
+  static int k = 0;
+  char *b = buf[k++ % 8];
+  snprintf(b, sizeof buf[0], "%s/%s", dir, name);
+  return b;
+}
+
+/* Reads a whole file; returns NULL when it cannot. *len gets the size. */
+static char *slurp(const char *path, size_t *len)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  size_t cap = 1 << 16, n = 0, r;
+  char *b = malloc(cap + 1);
+  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
+    n += r;
+    if (n == cap) b = realloc(b, (cap *= 2) + 1);
+  }
+  fclose(f);
+  if (b) b[n] = '\0';
+  if (len) *len = n;
+  return b;
+}
+
+/* Number of leftover temporary files (".<name>.tmp.<pid>") in the scratch folder. */
+static int count_tmp(void)
+{
+  DIR *d = opendir(dir);
+  int n = 0;
+  struct dirent *e;
+  if (!d) return -1;
+  while ((e = readdir(d)))
+    if (e->d_name[0] == '.' && strstr(e->d_name, ".tmp.")) n++;
+  closedir(d);
+  return n;
+}
+
+static void fill(struct particles *p)
+{
+  size_t first = particles_add(p, NP);
+  for (size_t k = 0; k < NP; k++) {
+    size_t i = first + k;
+    double s = (double)k;
+    p->id[i] = ((int64_t)1 << 40) + (int64_t)k * 7919;
+    p->mat[i] = (int32_t)(k % 3) - 1;
+    p->body[i] = (int32_t)(k % 2);
+    p->m[i] = 1.0 / 3.0 * (s + 1.0);
+    p->h[i] = 1e-3 * sqrt(s + 2.0);
+    p->rho[i] = 2700.0 + 0.1 * s;
+    p->e[i] = k == 5 ? -0.0 : 1e5 * sin(s);
+    p->p[i] = k == 7 ? 4.9406564584124654e-324 : 1e9 * cos(s); /* a subnormal too */
+    p->cs[i] = k == 9 ? 1e300 : 5000.0 + exp(-s);
+    p->drho[i] = 1.0; /* not PF_OUT: must not travel */
+    for (int c = 0; c < 3; c++) {
+      p->x[c][i] = 0.1 * s + (c + 1) / 7.0 - 0.5;
+      p->v[c][i] = -6200.0 * (c == 0) + tan(s + c);
+      p->a[c][i] = 42.0;
+    }
+  }
+}
+
+/* Every PF_OUT field of a and b equal bit for bit over a's n particles. */
+static int same_out_fields(struct particles *a, struct particles *b, const char **bad)
+{
+  struct pfield fa[HV_MAX_FIELDS], fb[HV_MAX_FIELDS];
+  int nf = particles_fields(a, fa);
+  particles_fields(b, fb);
+  for (int k = 0; k < nf; k++) {
+    if (!(fa[k].flags & PF_OUT)) continue;
+    size_t bytes = a->n * pf_type_size(fa[k].type);
+    for (int c = 0; c < fa[k].ncomp; c++)
+      if (bytes && memcmp(fa[k].comp[c], fb[k].comp[c], bytes)) {
+        *bad = fa[k].name;
+        return 0;
+      }
+  }
+  return 1;
+}
+
+static const char *mats[] = {"al-2024", "steel 4340", "W--alloy"};
+
+static struct snapshot_meta meta(void)
+{
+  return (struct snapshot_meta){.time = 1.2345678901234567e-6, .step = 4242,
+                                .version = "v0.1-test", .case_name = "demo",
+                                .material_names = mats, .nmat = 3};
+}
+
+static void test_csv(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct snapshot_meta m = meta();
+  const char *path = path_in("particles.csv");
+  CHECK(io_write_particles_csv(path, p, &m, &err) == 0, "CSV written: %s", err.msg);
+  char *text = slurp(path, NULL);
+  CHECK(text && strncmp(text, "# hvsph v0.1-test case demo time 1.2345678901234567e-06 s step 4242\n",
+                        67) == 0, "CSV comment line");
+  CHECK(text && strstr(text, "\n# materials 0=al-2024 1=steel_4340 2=W--alloy\n"), "materials line");
+  CHECK(text && strstr(text, "\nid,x,y,z,vx,vy,vz,m,rho,p,e,h,mat,body,cs\n"), "CSV header");
+  int lines = 0;
+  for (char *q = text; q && *q; q++) lines += *q == '\n';
+  CHECK(lines == 3 + NP, "CSV has %d lines (3 + %d reals, no ghosts)", lines, NP);
+  free(text);
+
+  struct particles q;
+  double t = 0.0;
+  particles_init(&q);
+  CHECK(io_read_particles_csv(path, &q, &t, &err) == 0, "CSV read: %s", err.msg);
+  CHECK(q.n == NP, "read %zu particles", q.n);
+  CHECK(memcmp(&t, &m.time, sizeof t) == 0, "time read back exactly (%.17g)", t);
+  const char *bad = "";
+  CHECK(q.n == NP && same_out_fields(p, &q, &bad), "every output value bitwise equal (%s)", bad);
+  CHECK(q.n == NP && q.drho[3] == 0.0 && q.a[1][3] == 0.0, "non-output fields not written");
+  CHECK(q.n == NP && signbit(q.e[5]) && q.p[7] > 0.0, "-0 and subnormal survive");
+  CHECK(io_read_particles_csv(path, &q, NULL, &err) == 0 && q.n == 2 * NP, "read appends");
+  particles_free(&q);
+}
+
+static void test_csv_errors(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct particles q;
+  double t = 0.0;
+  particles_init(&q);
+  const char *nid = test_write_file("io_noid.csv", "x,y,z,foo\n1,2,3,4\n");
+  CHECK(io_read_particles_csv(nid, &q, &t, &err) != 0 && strstr(err.msg, "'id'") &&
+            err.code == HV_EXIT_INPUT, "missing id column: %s", err.msg);
+  CHECK(isnan(t), "no comment line: time is NaN");
+  const char *ok = test_write_file("io_min.csv", "# hvsph x case c time 2.5 s step 3\n"
+                                                 "z,unknown,y,id,x\n3,9,2,17,1\n");
+  CHECK(io_read_particles_csv(ok, &q, &t, &err) == 0 && q.n == 1 && q.id[0] == 17 &&
+            q.x[0][0] == 1.0 && q.x[2][0] == 3.0 && t == 2.5,
+        "columns by name, unknown ignored: %s", err.msg);
+  const char *bad = test_write_file("io_bad.csv", "id,x,y,z\n1,0,0,0\n2,0,zero,0\n");
+  CHECK(io_read_particles_csv(bad, &q, NULL, &err) != 0 && strstr(err.msg, "line 3") &&
+            strstr(err.msg, "'y'"), "bad value names line and column: %s", err.msg);
+  CHECK(q.n == 1, "failed read leaves the store as it was (n = %zu)", q.n);
+  const char *shrt = test_write_file("io_short.csv", "id,x,y,z\n1,0,0\n");
+  CHECK(io_read_particles_csv(shrt, &q, NULL, &err) != 0 && strstr(err.msg, "3 values"),
+        "short row: %s", err.msg);
+  CHECK(io_read_particles_csv(path_in("nope.csv"), &q, NULL, &err) != 0 &&
+            strstr(err.msg, "nope.csv") && strstr(err.msg, "No such file"),
+        "missing file: %s", err.msg);
+  particles_free(&q);
+}
+
+/* Finds attr="..." after `from` and returns its numeric value (or -1). */
+static long long attr_after(const char *text, const char *from, const char *attr)
+{
+  const char *s = strstr(text, from);
+  char key[64];
+  snprintf(key, sizeof key, "%s=\"", attr);
+  s = s ? strstr(s, key) : NULL;
+  return s ? strtoll(s + strlen(key), NULL, 10) : -1;
+}
+
+static void test_vtu(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct snapshot_meta m = meta();
+  const char *path = path_in("particles_000001.vtu");
+  CHECK(io_write_vtu(path, p, &m, &err) == 0, "VTU written: %s", err.msg);
+  size_t len = 0;
+  char *text = slurp(path, &len);
+  CHECK(text != NULL, "VTU read back");
+  if (!text) return;
+  CHECK(strstr(text, "NumberOfPoints=\"100\"") && strstr(text, "NumberOfCells=\"100\""),
+        "header declares 100 points and cells");
+  CHECK(strstr(text, "header_type=\"UInt64\"") && strstr(text, "type=\"UnstructuredGrid\""),
+        "UnstructuredGrid with UInt64 headers");
+  CHECK(strstr(text, "Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">1.2345678901234567e-06<") &&
+            strstr(text, "Name=\"STEP\" NumberOfTuples=\"1\" format=\"ascii\">4242<"),
+        "FieldData TIME and STEP");
+  CHECK(strstr(text, "<!-- hvsph v0.1-test case demo -->") && strstr(text, "W-_alloy"),
+        "version in a comment, '--' kept out of comments");
+  CHECK(strstr(text, "type=\"Float64\" Name=\"v\" NumberOfComponents=\"3\"") &&
+            strstr(text, "type=\"Int32\" Name=\"mat\"") && strstr(text, "type=\"Int64\" Name=\"id\"") &&
+            !strstr(text, "Name=\"a\"") && !strstr(text, "Name=\"drho\""),
+        "PointData: PF_OUT fields with VTK types");
+  char *app = strstr(text, "<AppendedData encoding=\"raw\">");
+  char *us = app ? app + strlen("<AppendedData encoding=\"raw\">") : NULL;
+  while (us && (*us == '\n' || *us == ' ')) us++;
+  CHECK(us && *us == '_', "appended data starts with '_'");
+  if (!us || *us != '_') { free(text); return; }
+  const unsigned char *base = (const unsigned char *)us + 1;
+  long long off = attr_after(text, "<Points>", "offset");
+  uint64_t nb = 0;
+  double x0[3] = {0, 0, 0};
+  int inside = off >= 0 && (size_t)(base - (const unsigned char *)text) + (size_t)off + 32 <= len;
+  CHECK(inside, "Points offset %lld inside the file", off);
+  if (inside) {
+    memcpy(&nb, base + off, 8);
+    memcpy(x0, base + off + 8, sizeof x0);
+  }
+  CHECK(nb == (uint64_t)NP * 3 * 8, "Points block holds %llu bytes", (unsigned long long)nb);
+  CHECK(x0[0] == p->x[0][0] && x0[1] == p->x[1][0] && x0[2] == p->x[2][0],
+        "first point decodes exactly (%.17g %.17g %.17g)", x0[0], x0[1], x0[2]);
+  long long oid = attr_after(text, "Name=\"id\"", "offset");
+  int64_t id1 = 0;
+  if (oid >= 0) memcpy(&id1, base + oid + 8 + 8, 8);
+  CHECK(id1 == p->id[1], "second id decodes (%lld)", (long long)id1);
+  long long otype = attr_after(text, "Name=\"types\"", "offset");
+  CHECK(otype >= 0 && base[otype + 8] == 1 && base[otype + 8 + NP - 1] == 1 &&
+            strcmp((const char *)base + otype + 8 + NP, "\n  </AppendedData>\n</VTKFile>\n") == 0,
+        "types are VTK_VERTEX and the file ends after them");
+  free(text);
+}
+
+static void test_pvd(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  const double t[3] = {0.0, 1e-6, 2.5e-6};
+  const char *files[3] = {"particles_000000.vtu", "particles_000001.vtu", "a&b.vtu"};
+  const char *path = path_in("run.pvd");
+  CHECK(io_write_pvd(path, t, files, 3, &err) == 0, "PVD written: %s", err.msg);
+  char *text = slurp(path, NULL);
+  CHECK(text && strstr(text, "type=\"Collection\""), "PVD is a collection");
+  CHECK(text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
+            strstr(text, "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
+            strstr(text, "file=\"a&amp;b.vtu\""),
+        "PVD lists every (time, file), escaped");
+  free(text);
+}
+
+static void test_table(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  const char *cols[3] = {"step", "time", "e_total"};
+  const double rows[6] = {0, 0.0, 1.5, 1, 1e-6, -3.0};
+  const char *path = path_in("summary.csv");
+  CHECK(io_write_table_csv(path, cols, 3, rows, 2, "hvsph v\ncase demo", &err) == 0,
+        "table written: %s", err.msg);
+  char *text = slurp(path, NULL);
+  const char *want = "# hvsph v\n# case demo\nstep,time,e_total\n0,0,1.5\n1,9.9999999999999995e-07,-3\n";
+  int same = text && strcmp(text, want) == 0;
+  CHECK(same, "table text exact%s%s", same ? "" : ":\n", same ? "" : text ? text : "(none)");
+  free(text);
+  const char *badc[1] = {"a,b"};
+  CHECK(io_write_table_csv(path, badc, 1, rows, 1, NULL, &err) != 0, "comma in a column name");
+}
+
+static void test_atomic(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  const char *path = path_in("keep.csv");
+  const char *cols[1] = {"a"};
+  const double rows[2] = {1.0, 2.0};
+  CHECK(io_write_table_csv(path, cols, 1, rows, 2, NULL, &err) == 0, "first file written");
+  char *before = slurp(path, NULL);
+  struct afile af;
+  CHECK(afile_open(&af, path, &err) == 0 && count_tmp() == 1, "afile_open makes one tmp file");
+  CHECK(strstr(af.tmp, "/.keep.csv.tmp.") != NULL, "tmp name '%s'", af.tmp);
+  CHECK(afile_printf(&af, &err, "garbage\n") == 0, "write to tmp");
+  afile_abort(&af);
+  afile_abort(&af); /* twice is harmless */
+  char *after = slurp(path, NULL);
+  CHECK(before && after && strcmp(before, after) == 0, "abort leaves the first file intact");
+  CHECK(count_tmp() == 0, "no tmp file after abort");
+  free(after);
+
+  /* Rename onto a folder fails after the data was written. */
+  struct hv_error e2;
+  hv_error_clear(&e2);
+  CHECK(io_mkdir_p(path_in("adir.vtu"), &e2) == 0, "folder in the way made");
+  CHECK(io_write_vtu(path_in("adir.vtu"), p, NULL, &e2) != 0 && strstr(e2.msg, "adir.vtu") &&
+            e2.code == HV_EXIT_RUN, "rename failure reported: %s", e2.msg);
+  CHECK(count_tmp() == 0, "no tmp file after a failed rename");
+
+  /* A folder without write permission (only meaningful when not root). */
+  if (geteuid() != 0) {
+    const char *ro = path_in("ro");
+    io_mkdir_p(ro, &e2);
+    chmod(ro, 0555);
+    CHECK(io_write_table_csv(path_in("ro/t.csv"), cols, 1, rows, 1, NULL, &e2) != 0 &&
+              strstr(e2.msg, "Permission denied"), "read-only folder: %s", e2.msg);
+    chmod(ro, 0755);
+  }
+
+  /* A missing folder: the message names the path. */
+  const char *nodir = path_in("no/such/folder/particles.vtu");
+  CHECK(io_write_vtu(nodir, p, NULL, &e2) != 0 && strstr(e2.msg, nodir) &&
+            strstr(e2.msg, "No such file") && e2.code == HV_EXIT_RUN,
+        "missing folder: %s", e2.msg);
+  free(before);
+}
+
+/* A full disk: the temporary stream is swapped for /dev/full. */
+static void test_full_disk(int small_writes)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  const char *path = path_in("full.csv");
+  const char *cols[1] = {"a"};
+  const double rows[1] = {7.0};
+  if (access("/dev/full", W_OK) != 0) {
+    printf("  skip  /dev/full not available\n");
+    return;
+  }
+  CHECK(io_write_table_csv(path, cols, 1, rows, 1, NULL, &err) == 0, "target written");
+  char *before = slurp(path, NULL);
+  struct afile af;
+  CHECK(afile_open(&af, path, &err) == 0, "afile_open");
+  if (fclose(af.f) != 0) CHECK(0, "fclose tmp");
+  af.f = fopen("/dev/full", "w");
+  CHECK(af.f != NULL, "open /dev/full");
+  if (!af.f) { afile_abort(&af); free(before); return; }
+  static char block[1 << 16];
+  memset(block, 'x', sizeof block);
+  for (int k = 0; k < 64; k++) { /* 4 MB; return values ignored on purpose */
+    if (small_writes) {
+      for (size_t j = 0; j < sizeof block / 64; j++) (void)!fwrite(block, 1, 63, af.f);
+    } else {
+      (void)!fwrite(block, 1, sizeof block, af.f);
+    }
+  }
+  hv_error_clear(&err);
+  CHECK(afile_commit(&af, &err) != 0 && strstr(err.msg, "No space left") &&
+            strstr(err.msg, "full.csv") && err.code == HV_EXIT_RUN,
+        "commit on a full disk fails (%s writes): %s", small_writes ? "small" : "large", err.msg);
+  char *after = slurp(path, NULL);
+  CHECK(before && after && strcmp(before, after) == 0, "target untouched");
+  CHECK(count_tmp() == 0, "no tmp file left");
+  CHECK(af.f == NULL, "stream closed");
+  free(before);
+  free(after);
+}
+
+static void test_mkdir(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct stat st;
+  const char *nested = path_in("m1/m2/m3/");
+  CHECK(io_mkdir_p(nested, &err) == 0 && stat(path_in("m1/m2/m3"), &st) == 0 && S_ISDIR(st.st_mode),
+        "nested folders made: %s", err.msg);
+  CHECK(io_mkdir_p(path_in("m1/m2"), &err) == 0, "existing folder is fine");
+  CHECK(io_mkdir_p(path_in("m1//m2/m4"), &err) == 0, "double slash is fine");
+  const char *file = test_write_file("io_plain.txt", "x\n");
+  char below[4200];
+  snprintf(below, sizeof below, "%s/sub", file);
+  CHECK(io_mkdir_p(file, &err) != 0 && err.code == HV_EXIT_INPUT && strstr(err.msg, file) &&
+            strstr(err.msg, "not a folder"),
+        "a file in the way: %s", err.msg);
+  CHECK(io_mkdir_p(below, &err) != 0 && strstr(err.msg, below) && strstr(err.msg, "not a folder"),
+        "a file as a parent: %s", err.msg);
+}
+
+static void test_empty_and_ghosts(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct particles z, q;
+  particles_init(&z);
+  particles_init(&q);
+  CHECK(io_write_vtu(path_in("empty.vtu"), &z, NULL, &err) == 0, "empty VTU: %s", err.msg);
+  CHECK(io_write_particles_csv(path_in("empty.csv"), &z, NULL, &err) == 0, "empty CSV");
+  CHECK(io_read_particles_csv(path_in("empty.csv"), &q, NULL, &err) == 0 && q.n == 0,
+        "empty CSV reads back: %s", err.msg);
+  /* A ghost after the reals must not be written. */
+  particles_reserve(p, p->n + 1);
+  particles_copy(p, p->n, 0, ~0u);
+  p->n_ghost = 1;
+  int ok = io_write_particles_csv(path_in("ghost.csv"), p, NULL, &err) == 0 &&
+           io_read_particles_csv(path_in("ghost.csv"), &q, NULL, &err) == 0;
+  CHECK(ok && q.n == p->n, "ghosts not written (%zu of %zu + 1 ghost read) %s", q.n, p->n, err.msg);
+  p->n_ghost = 0;
+  particles_free(&q);
+}
+
+int main(void)
+{
+  snprintf(dir, sizeof dir, "%s/io.%ld", test_tmpdir(), (long)getpid());
+  struct hv_error err;
+  hv_error_clear(&err);
+  if (io_mkdir_p(dir, &err)) {
+    fprintf(stderr, "%s\n", err.msg);
+    return 1;
+  }
+  struct particles p;
+  particles_init(&p);
+  fill(&p);
+  test_csv(&p);
+  test_csv_errors();
+  test_vtu(&p);
+  test_pvd();
+  test_table();
+  test_atomic(&p);
+  test_full_disk(0);
+  test_full_disk(1);
+  test_mkdir();
+  test_empty_and_ghosts(&p);
+  particles_free(&p);
+  char cmd[4200];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  if (!test_failed && test_run(cmd, NULL, 0) != 0) printf("  note  could not remove %s\n", dir);
+  return test_finish();
+}
