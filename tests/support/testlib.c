@@ -80,7 +80,10 @@ const char *test_write_file(const char *name, const char *text)
   static char paths[8][4096];
   static int k = 0;
   char *path = paths[k++ % 8];
-  snprintf(path, 4096, "%s/%s", test_tmpdir(), name);
+  if (snprintf(path, 4096, "%s/%s", test_tmpdir(), name) >= 4096) {
+    fprintf(stderr, "path too long: %s/%s\n", test_tmpdir(), name);
+    exit(1);
+  }
   FILE *f = fopen(path, "w");
   if (!f || fputs(text, f) < 0 || fclose(f)) {
     fprintf(stderr, "cannot write %s\n", path);
