@@ -126,7 +126,7 @@ int step_init(struct sim *s, struct hv_error *err)
   struct particles *p = &s->p;
   if (update_eos(s, err) || build_neighbours(s, err)) return -1;
   boundary_refresh_ghosts(&s->bnd, p);
-  sph_forces(p, &s->grid, &s->sph);
+  sph_forces(p, &s->grid, &s->sph, NULL);
   s->dt_prop = 0.0;
   s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
   return 0;
@@ -163,7 +163,7 @@ int step_advance(struct sim *s, struct hv_error *err)
   if (build_neighbours(s, err)) return -1;
 
   /* 2. density rate at mid-step; mid-step density, energy and pressure */
-  sph_density_rate(p, &s->grid, &s->sph);
+  sph_density_rate(p, &s->grid, &s->sph, &s->cache);
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
     p->rho[i] = p->rho0[i] + hdt * p->drho[i];
@@ -173,7 +173,8 @@ int step_advance(struct sim *s, struct hv_error *err)
   boundary_refresh_ghosts(&s->bnd, p);
 
   /* 3–5. forces and energy rate at mid-step; velocity, coordinates, energy */
-  sph_forces(p, &s->grid, &s->sph);
+  sph_forces(p, &s->grid, &s->sph, &s->cache);
+  s->cache.valid = 0;
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
     for (int k = 0; k < 3; k++) {

@@ -89,6 +89,7 @@ void sim_free(struct sim *s)
   particles_free(&s->p);
   boundary_free(&s->bnd);
   nbr_grid_free(&s->grid);
+  sph_cache_free(&s->cache);
 }
 
 int sim_material_index(const struct sim *s, const char *name)

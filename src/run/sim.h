@@ -45,6 +45,7 @@ struct sim {
   struct output_params out;
   struct boundary bnd;
   struct nbr_grid grid;
+  struct sph_cache cache;
   int reorder_every;   /* steps between reorderings of the particles by cell */
   double t;            /* [s] */
   double dt;           /* [s] next step (may be shortened to hit an output time) */

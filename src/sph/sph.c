@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/error.h"
 
@@ -19,7 +20,7 @@ struct cand {
   double *x, *y, *z, *h;
   uint32_t *j;        /* particle slot of each candidate */
   uint32_t *sel;      /* candidates selected for the current particle */
-  unsigned char *in;  /* within reach of the current particle */
+  double *d;          /* r² − (h_i + h_j)² of the current particle (< 0: within reach) */
   /* the neighbour cells: candidate ranges, box corners [m] and largest h [m] */
   size_t ncell, ccap;
   double cellw;       /* [m] cell edge */
@@ -36,7 +37,7 @@ static void cand_free(struct cand *cd)
   free(cd->h);
   free(cd->j);
   free(cd->sel);
-  free(cd->in);
+  free(cd->d);
 }
 
 static void cand_free_all(struct cand *cd)
@@ -63,7 +64,7 @@ static void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
     cd->h = hv_malloc(cd->cap * sizeof(double), "candidates");
     cd->j = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
     cd->sel = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
-    cd->in = hv_malloc(cd->cap, "candidates");
+    cd->d = hv_malloc(cd->cap * sizeof(double), "candidates");
   }
   if (nnb + 1 > cd->ccap) {
     cd->ccap = nnb + 32;
@@ -104,7 +105,7 @@ static size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, dou
 {
   const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
   const uint32_t *restrict jj = cd->j;
-  unsigned char *restrict in = cd->in;
+  double *restrict d = cd->d;
   uint32_t *restrict sel = cd->sel;
   size_t k = 0;
   for (size_t c = 0; c < cd->ncell; c++) {
@@ -117,19 +118,87 @@ static size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, dou
     const size_t q0 = cd->off[c], q1 = cd->off[c + 1];
     for (size_t q = q0; q < q1; q++) {
       const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];
-      in[q] = (dx * dx + dy * dy + dz * dz < s * s);
+      d[q] = dx * dx + dy * dy + dz * dz - s * s;
     }
     for (size_t q = q0; q < q1; q++) {
       sel[k] = (uint32_t)q;
-      k += in[q] & (jj[q] != i);
+      k += (d[q] < 0.0) & (jj[q] != i);
+    }
+  }
+  return k;
+}
+
+void sph_cache_free(struct sph_cache *c)
+{
+  free(c->mask);
+  free(c->cell_off);
+  free(c->cell_words);
+  memset(c, 0, sizeof *c);
+}
+
+size_t sph_cache_bytes(const struct sph_cache *c)
+{
+  return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words);
+}
+
+/* Sizes the rows: a cell's row has one bit per candidate of that cell. */
+static void cache_layout(struct sph_cache *cache, const struct nbr_grid *g)
+{
+  if (g->ncells + 1 > cache->ccap) {
+    cache->ccap = g->ncells + g->ncells / 4 + 64;
+    cache->cell_off = hv_realloc(cache->cell_off, cache->ccap * sizeof *cache->cell_off, "cache");
+    cache->cell_words = hv_realloc(cache->cell_words, cache->ccap * sizeof *cache->cell_words,
+                                   "cache");
+  }
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < g->ncells; c++) {
+    size_t n = 0;
+    for (uint32_t k = g->nbr_start[c]; k < g->nbr_start[c + 1]; k++)
+      n += g->cell_start[g->nbr_list[k] + 1] - g->cell_start[g->nbr_list[k]];
+    cache->cell_words[c] = (uint32_t)((n + 63) / 64);
+  }
+  size_t off = 0;
+  for (size_t c = 0; c < g->ncells; c++) {
+    cache->cell_off[c] = off;
+    off += (size_t)cache->cell_words[c] * (g->cell_start[c + 1] - g->cell_start[c]);
+  }
+  cache->cell_off[g->ncells] = off;
+  if (off > cache->cap) {
+    cache->cap = off + off / 4 + 1024;
+    free(cache->mask);
+    cache->mask = hv_malloc(cache->cap * sizeof *cache->mask, "neighbour cache");
+  }
+}
+
+static void cache_store(const struct sph_cache *cache, size_t c, uint32_t slot,
+                        const uint32_t *sel, size_t nsel)
+{
+  const uint32_t w = cache->cell_words[c];
+  uint64_t *row = cache->mask + cache->cell_off[c] + (size_t)slot * w;
+  for (uint32_t k = 0; k < w; k++) row[k] = 0;
+  for (size_t k = 0; k < nsel; k++) row[sel[k] >> 6] |= (uint64_t)1 << (sel[k] & 63);
+}
+
+/* Reads a stored row back into sel (same order as the search produced). */
+static size_t cache_load(const struct sph_cache *cache, size_t c, uint32_t slot, uint32_t *sel)
+{
+  const uint32_t w = cache->cell_words[c];
+  const uint64_t *row = cache->mask + cache->cell_off[c] + (size_t)slot * w;
+  size_t k = 0;
+  for (uint32_t wi = 0; wi < w; wi++) {
+    uint64_t bits = row[wi];
+    while (bits) {
+      sel[k++] = wi * 64 + (uint32_t)__builtin_ctzll(bits);
+      bits &= bits - 1;
     }
   }
   return k;
 }
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp)
+                      const struct sph_params *sp, struct sph_cache *cache)
 {
+  if (cache) cache_layout(cache, g);
   const size_t n = p->n;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
@@ -153,6 +222,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
+        if (cache) cache_store(cache, c, ii - g->cell_start[c], cd.sel, nsel);
         double sum = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
@@ -167,10 +237,13 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
     }
     cand_free_all(&cd);
   }
+  if (cache) cache->valid = 1;
 }
 
-void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp)
+void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                const struct sph_cache *cache)
 {
+  if (cache && !cache->valid) cache = NULL;
   const size_t n = p->n;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
@@ -195,7 +268,8 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double Pi = pr[i] / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
-        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
+        const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
+                                  : cand_select(&cd, i, xi, yi, zi, hi);
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];

@@ -26,11 +26,30 @@ struct sph_params {
   double eps;          /* [-] ε in μᵢⱼ */
 };
 
-/* drho for the reals, from x, v, m, rho, h of all slots (reals and ghosts). */
+/* The neighbours found by one pass, kept for the next pass over the same grid: one
+ * bit per candidate (a particle of a neighbour cell) for every particle — about 50
+ * bytes per particle instead of 4 bytes per neighbour. */
+struct sph_cache {
+  uint64_t *mask;        /* rows of bits */
+  size_t cap;            /* words allocated */
+  size_t *cell_off;      /* [ncells+1] first word of each cell's rows */
+  uint32_t *cell_words;  /* [ncells] words per row in each cell */
+  size_t ccap;
+  int valid;             /* filled for the current grid */
+};
+
+void sph_cache_free(struct sph_cache *c);
+/* Bytes held. */
+size_t sph_cache_bytes(const struct sph_cache *c);
+
+/* drho for the reals, from x, v, m, rho, h of all slots (reals and ghosts); fills
+ * the cache (if not NULL) with the neighbours it found. */
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp);
-/* a, de and the signal speed vsig for the reals, from x, v, m, rho, p, cs, h. */
-void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp);
+                      const struct sph_params *sp, struct sph_cache *cache);
+/* a, de and the signal speed vsig for the reals, from x, v, m, rho, p, cs, h; uses
+ * the cache when it is valid for this grid (else searches). */
+void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                const struct sph_cache *cache);
 /* Neighbour count of particle i (diagnostics, tests). */
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
 
