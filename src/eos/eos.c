@@ -10,6 +10,11 @@ int eos_evaluate(const struct material *m, double rho, double e, struct eos_stat
   case EOS_IDEAL_GAS:
     eos_ideal_gas_evaluate(&m->eosp.gas, rho, e, out);
     return 0;
+  case EOS_MIE_GRUNEISEN:
+  case EOS_TILLOTSON:
+  case EOS_TABLE:
+  case EOS_KIND_COUNT:
+    break;
   }
   return -1;
 }
@@ -20,6 +25,11 @@ int eos_energy_from_pressure(const struct material *m, double rho, double p, dou
   case EOS_IDEAL_GAS:
     *e = p / ((m->eosp.gas.gamma - 1.0) * rho);
     return 0;
+  case EOS_MIE_GRUNEISEN:
+  case EOS_TILLOTSON:
+  case EOS_TABLE:
+  case EOS_KIND_COUNT:
+    break;
   }
   return -1;
 }

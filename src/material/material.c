@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *const eos_kind_names[] = {"ideal-gas", NULL};
+const char *const eos_kind_names[] = {"ideal-gas", "mie-gruneisen", "tillotson", "table", NULL};
 
 int material_read(struct cfg *c, const char *path, const char *name, struct material *m,
                   struct hv_error *err)
@@ -27,6 +27,16 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
     if (cfg_get_quantity(c, key, UNIT_DENSITY, &zero, 0.0, HUGE_VAL, &m->rho0, err)) return -1;
     break;
   }
+  default: {
+    char where[300];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: material '%s': EOS '%s' is not available yet",
+                        cfg_where(c, key, where, sizeof where), name, eos_kind_names[m->eos]);
+  }
   }
   return 0;
+}
+
+void material_free(struct material *m)
+{
+  (void)m;
 }
