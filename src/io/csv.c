@@ -61,12 +61,13 @@ static int csv_columns(const struct pfield *f, int nf, struct csv_col *cols)
     cols[nc++].comp = csv_fixed[k].comp;
     used[fi] = 1;
   }
-  static const char *sfx[3] = {"_x", "_y", "_z"};
+  static const char *sfx3[3] = {"_x", "_y", "_z"};
+  static const char *sfx6[6] = {"_xx", "_yy", "_zz", "_xy", "_yz", "_xz"};  /* VTK order */
   for (int k = 0; k < nf; k++) {
     if (used[k] || !(f[k].flags & PF_OUT)) continue;
     for (int c = 0; c < f[k].ncomp; c++) {
       snprintf(cols[nc].name, sizeof cols[nc].name, "%s%s", f[k].name,
-               f[k].ncomp == 3 ? sfx[c] : "");
+               f[k].ncomp == 3 ? sfx3[c] : f[k].ncomp == 6 ? sfx6[c] : "");
       cols[nc].field = k;
       cols[nc++].comp = c;
     }
@@ -141,6 +142,8 @@ struct csv_reader {
   int *map;    /* file column -> index into cols[], or -1 (ignored) */
   char **tok;  /* ncols token pointers, reused for every row */
   int nknown;  /* entries in cols[] */
+  int solid;   /* the file has solid fields (PF_SOLID) */
+  const struct pfield *fields;  /* particles_fields_all() view the cols refer to */
   struct csv_col cols[CSV_MAX_COLS];
 };
 
@@ -177,6 +180,8 @@ static int csv_header(struct csv_reader *r, char *line, struct hv_error *err)
     for (int k = 0; k < r->nknown; k++)
       if (strcmp(r->tok[c], r->cols[k].name) == 0) r->map[c] = k;
     if (r->map[c] >= 0 && r->map[c] < 4) have[r->map[c]] = 1;
+    if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_SOLID))
+      r->solid = 1;  /* a solid field in the file: the store needs its solid arrays */
   }
   for (int k = 0; k < 4; k++)
     if (!have[k])
@@ -217,7 +222,7 @@ static int csv_row(struct csv_reader *r, struct particles *p, char *line, struct
   csv_split(line, r->tok, n);
   size_t i = particles_add(p, 1);
   struct pfield f[HV_MAX_FIELDS];
-  particles_fields(p, f); /* after particles_add: the arrays may have moved */
+  particles_fields_all(p, f); /* after particles_add: the arrays may have moved */
   for (int c = 0; c < n; c++) {
     if (r->map[c] < 0) continue;
     const struct csv_col *col = &r->cols[r->map[c]];
@@ -257,6 +262,7 @@ static int csv_lines(struct csv_reader *r, FILE *f, struct particles *p, double 
     }
     if (len == 0) continue;
     rc = r->map ? csv_row(r, p, line, err) : csv_header(r, line, err);
+    if (!rc && r->solid) particles_enable_solid(p);
     errno = 0;
   }
   if (rc == 0 && ferror(f))
@@ -276,7 +282,8 @@ int io_read_particles_csv(const char *path, struct particles *p, double *time,
   if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot open '%s': %s", path, strerror(errno));
   struct csv_reader *r = hv_calloc(1, sizeof *r, "CSV reader");
   struct pfield fv[HV_MAX_FIELDS];
-  int nf = particles_fields(NULL, fv);
+  int nf = particles_fields_all(NULL, fv);
+  r->fields = fv;
   r->path = path;
   r->nknown = csv_columns(fv, nf, r->cols);
   size_t n0 = p->n;

@@ -104,13 +104,14 @@ static int put_field(struct afile *af, const struct pfield *f, size_t n, struct 
   size_t s = pf_type_size(f->type);
   if (afile_write(af, &nb, sizeof nb, err)) return -1;
   if (f->ncomp == 1) return afile_write(af, f->comp[0], n * s, err);
-  unsigned char buf[VTU_CHUNK * 3 * 8];
+  const size_t nc = (size_t)f->ncomp;
+  unsigned char buf[VTU_CHUNK * 6 * 8];
   for (size_t i0 = 0; i0 < n; i0 += VTU_CHUNK) {
     size_t m = n - i0 < VTU_CHUNK ? n - i0 : VTU_CHUNK;
     for (size_t i = 0; i < m; i++)
-      for (int c = 0; c < 3; c++)
-        memcpy(buf + (i * 3 + (size_t)c) * s, (const char *)f->comp[c] + (i0 + i) * s, s);
-    if (afile_write(af, buf, m * 3 * s, err)) return -1;
+      for (size_t c = 0; c < nc; c++)
+        memcpy(buf + (i * nc + c) * s, (const char *)f->comp[c] + (i0 + i) * s, s);
+    if (afile_write(af, buf, m * nc * s, err)) return -1;
   }
   return 0;
 }

@@ -18,35 +18,58 @@ size_t pf_type_size(enum pf_type t)
 
 #define HV_PF_TYPE(ctype) _Generic((ctype)0, int32_t: PF_INT32, int64_t: PF_INT64, double: PF_DOUBLE)
 
-int particles_fields(struct particles *p, struct pfield *out)
+/* Pointers to every component array of every field, allocated or not (all_fields). */
+static int all_fields(struct particles *p, struct pfield *out)
 {
   int k = 0;
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
   out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(ctype), .ncomp = 1, .flags = fflags,       \
-                           .comp = {p ? (void *)p->fname : NULL, NULL, NULL}};          \
+                           .type = HV_PF_TYPE(ctype), .ncomp = 1, .flags = fflags};     \
+  if (p) out[k].comp[0] = (void *)p->fname;                                             \
   k++;
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
   out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(ctype), .ncomp = 3, .flags = fflags,       \
-                           .comp = {p ? (void *)p->fname[0] : NULL,                     \
-                                    p ? (void *)p->fname[1] : NULL,                     \
-                                    p ? (void *)p->fname[2] : NULL}};                   \
+                           .type = HV_PF_TYPE(ctype), .ncomp = 3, .flags = fflags};     \
+  if (p) for (int c_ = 0; c_ < 3; c_++) out[k].comp[c_] = (void *)p->fname[c_];         \
   k++;
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
+                           .type = HV_PF_TYPE(ctype), .ncomp = 6, .flags = fflags};     \
+  if (p) for (int c_ = 0; c_ < 6; c_++) out[k].comp[c_] = (void *)p->fname[c_];         \
+  k++;
+  HV_PARTICLE_TENSORS(HV_X)
+#undef HV_X
   HV_CHECK(k <= HV_MAX_FIELDS, "too many particle fields (%d)", k);
+  return k;
+}
+
+int particles_fields_all(struct particles *p, struct pfield *out) { return all_fields(p, out); }
+
+static int field_allocated(const struct particles *p, const struct pfield *f)
+{
+  return !(f->flags & PF_SOLID) || p->solid;
+}
+
+int particles_fields(struct particles *p, struct pfield *out)
+{
+  struct pfield all[HV_MAX_FIELDS];
+  int n = all_fields(p, all), k = 0;
+  for (int i = 0; i < n; i++)
+    if (!p || field_allocated(p, &all[i])) out[k++] = all[i];
   return k;
 }
 
 size_t particles_bytes_per_particle(void)
 {
   struct pfield f[HV_MAX_FIELDS];
-  int nf = particles_fields(NULL, f);
+  int nf = all_fields(NULL, f);
   size_t b = 0;
-  for (int i = 0; i < nf; i++) b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
+  for (int i = 0; i < nf; i++)
+    if (!(f[i].flags & PF_SOLID)) b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }
 
@@ -55,10 +78,49 @@ void particles_init(struct particles *p) { memset(p, 0, sizeof *p); }
 void particles_free(struct particles *p)
 {
   struct pfield f[HV_MAX_FIELDS];
-  int nf = particles_fields(p, f);
+  int nf = all_fields(p, f);
   for (int i = 0; i < nf; i++)
     for (int c = 0; c < f[i].ncomp; c++) free(f[i].comp[c]);
   memset(p, 0, sizeof *p);
+}
+
+/* Grows (or first allocates, from `from` = 0) one component array to newcap, zeroed. */
+static void *grow_array(void *a, size_t from, size_t newcap, size_t s, const char *name)
+{
+  char *q = hv_realloc(a, newcap * s, name);
+  memset(q + from * s, 0, (newcap - from) * s);
+  return q;
+}
+
+static void reserve_to(struct particles *p, size_t newcap)
+{
+  struct pfield f[HV_MAX_FIELDS];
+  int nf = all_fields(p, f);
+  void **slot[HV_MAX_FIELDS][6];
+  /* the pfield view holds copies of the pointers: write back through the struct */
+  int k = 0;
+#define HV_X(ctype, fname, funit, fflags, fdesc) slot[k][0] = (void **)&p->fname; k++;
+  HV_PARTICLE_SCALARS(HV_X)
+#undef HV_X
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  for (int c_ = 0; c_ < 3; c_++) slot[k][c_] = (void **)&p->fname[c_];                  \
+  k++;
+  HV_PARTICLE_VECTORS(HV_X)
+#undef HV_X
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  for (int c_ = 0; c_ < 6; c_++) slot[k][c_] = (void **)&p->fname[c_];                  \
+  k++;
+  HV_PARTICLE_TENSORS(HV_X)
+#undef HV_X
+  for (int i = 0; i < nf; i++) {
+    if (!field_allocated(p, &f[i])) continue;
+    size_t s = pf_type_size(f[i].type);
+    for (int c = 0; c < f[i].ncomp; c++) {
+      size_t from = *slot[i][c] ? p->cap : 0;
+      *slot[i][c] = grow_array(*slot[i][c], from, newcap, s, f[i].name);
+    }
+  }
+  p->cap = newcap;
 }
 
 void particles_reserve(struct particles *p, size_t cap)
@@ -66,19 +128,14 @@ void particles_reserve(struct particles *p, size_t cap)
   if (cap <= p->cap) return;
   size_t newcap = p->cap ? p->cap : 1024;
   while (newcap < cap) newcap += newcap / 2;
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
-  p->fname = hv_realloc(p->fname, newcap * sizeof(ctype), "particle field " #fname);     \
-  memset(p->fname + p->cap, 0, (newcap - p->cap) * sizeof(ctype));
-  HV_PARTICLE_SCALARS(HV_X)
-#undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
-  for (int c_ = 0; c_ < 3; c_++) {                                                      \
-    p->fname[c_] = hv_realloc(p->fname[c_], newcap * sizeof(ctype), "particle field " #fname); \
-    memset(p->fname[c_] + p->cap, 0, (newcap - p->cap) * sizeof(ctype));                 \
-  }
-  HV_PARTICLE_VECTORS(HV_X)
-#undef HV_X
-  p->cap = newcap;
+  reserve_to(p, newcap);
+}
+
+void particles_enable_solid(struct particles *p)
+{
+  if (p->solid) return;
+  p->solid = 1;
+  if (p->cap) reserve_to(p, p->cap);   /* allocates the solid fields only */
 }
 
 size_t particles_add(struct particles *p, size_t count)
@@ -98,17 +155,19 @@ size_t particles_add(struct particles *p, size_t count)
 
 void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask)
 {
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
-  if ((fflags) & flags_mask) p->fname[dst] = p->fname[src];
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  if (((fflags) & flags_mask) && p->fname) p->fname[dst] = p->fname[src];
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                       \
-  if ((fflags) & flags_mask) {                                                          \
-    p->fname[0][dst] = p->fname[0][src];                                                \
-    p->fname[1][dst] = p->fname[1][src];                                                \
-    p->fname[2][dst] = p->fname[2][src];                                                \
-  }
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  if (((fflags) & flags_mask) && p->fname[0])                                           \
+    for (int c_ = 0; c_ < 3; c_++) p->fname[c_][dst] = p->fname[c_][src];
   HV_PARTICLE_VECTORS(HV_X)
+#undef HV_X
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
+  if (((fflags) & flags_mask) && p->fname[0])                                           \
+    for (int c_ = 0; c_ < 6; c_++) p->fname[c_][dst] = p->fname[c_][src];
+  HV_PARTICLE_TENSORS(HV_X)
 #undef HV_X
 }
 

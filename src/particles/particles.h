@@ -9,6 +9,8 @@
  *   PF_OUT     written to particle snapshots (VTU/CSV)
  *   PF_GHOST   copied from the parent when a ghost is made
  *   PF_STATE   part of the physical state (checkpoint/restart, MPI migration)
+ *   PF_SOLID   allocated only when some material has strength or fracture
+ * Tensors are symmetric, 6 components in VTK's order: xx, yy, zz, xy, yz, xz.
  */
 #ifndef HV_PARTICLES_H
 #define HV_PARTICLES_H
@@ -20,7 +22,11 @@ enum {
   PF_OUT = 1u << 0,
   PF_GHOST = 1u << 1,
   PF_STATE = 1u << 2,
+  PF_SOLID = 1u << 3,
 };
+
+/* Components of a symmetric tensor (VTK order). */
+enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
 
 /* Scalars */
 #define HV_PARTICLE_SCALARS(X)                                                        \
@@ -37,7 +43,9 @@ enum {
   X(double,  de,    "J/kg/s", 0,                            "energy rate")            \
   X(double,  rho0,  "kg/m3",  0,                            "density at step start")  \
   X(double,  e0,    "J/kg",   0,                            "energy at step start")   \
-  X(double,  vsig,  "m/s",    0,                            "largest signal speed")
+  X(double,  vsig,  "m/s",    0,                            "largest signal speed")  \
+  X(double,  eps_p, "",       PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain") \
+  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split, no tension)")
 
 /* Vectors (3 components: name[0..2]) */
 #define HV_PARTICLE_VECTORS(X)                                                        \
@@ -46,9 +54,16 @@ enum {
   X(double, a,  "m/s2", PF_STATE,                     "acceleration (last step)")    \
   X(double, v0, "m/s",  0,                            "velocity at step start")
 
+/* Symmetric tensors (6 components: name[0..5], order T_XX ... T_XZ) */
+#define HV_PARTICLE_TENSORS(X)                                                        \
+  X(double, S,  "Pa", PF_OUT | PF_GHOST | PF_STATE | PF_SOLID, "deviatoric stress")  \
+  X(double, S1, "Pa", PF_SOLID,                     "deviatoric stress at step end")  \
+  X(double, R,  "Pa", PF_GHOST | PF_SOLID,          "artificial stress (Monaghan 2000)")
+
 enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
 
 struct particles {
+  int solid;       /* the PF_SOLID fields are allocated */
   size_t n;        /* real particles */
   size_t n_ghost;  /* ghosts after the reals */
   size_t cap;      /* allocated length of every array */
@@ -58,25 +73,34 @@ struct particles {
 #define HV_X(type, name, unit, flags, desc) type *name[3];
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
+#define HV_X(type, name, unit, flags, desc) type *name[6];
+  HV_PARTICLE_TENSORS(HV_X)
+#undef HV_X
 };
 
 /* A uniform view of one field, for generic loops (output, reorder, copy). */
 struct pfield {
   const char *name, *unit, *desc;
   enum pf_type type;
-  int ncomp;          /* 1 or 3 */
+  int ncomp;          /* 1, 3 or 6 */
   unsigned flags;
-  void *comp[3];      /* component arrays */
+  void *comp[6];      /* component arrays */
 };
 
 #define HV_MAX_FIELDS 64
-/* Fills `out` (at least HV_MAX_FIELDS entries) with every field; returns the count. */
+/* Fills `out` (at least HV_MAX_FIELDS entries) with every allocated field (every field
+ * if p is NULL); returns the count. */
 int particles_fields(struct particles *p, struct pfield *out);
+/* Every field, allocated or not (unallocated PF_SOLID fields have NULL components);
+ * the indices are the same for every store. */
+int particles_fields_all(struct particles *p, struct pfield *out);
 size_t pf_type_size(enum pf_type t);
 /* Bytes of particle storage per slot (sum over fields). */
 size_t particles_bytes_per_particle(void);
 
 void particles_init(struct particles *p);
+/* Allocates the PF_SOLID fields (zeroed) from now on. */
+void particles_enable_solid(struct particles *p);
 void particles_free(struct particles *p);
 /* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
 void particles_reserve(struct particles *p, size_t cap);
