@@ -22,6 +22,7 @@ void boundary_init(struct boundary *b)
 void boundary_free(struct boundary *b)
 {
   free(b->src);
+  free(b->flip);
   boundary_init(b);
 }
 
@@ -99,16 +100,38 @@ void boundary_apply(const struct boundary *b, struct particles *p)
   }
 }
 
-static size_t add_ghost(struct boundary *b, struct particles *p, size_t src)
+/* Shear components (bits for xy, yz, xz) reversed by a mirror normal to dimension d. */
+static uint8_t mirror_flip(int d)
+{
+  return d == 0 ? (1u | 4u) : d == 1 ? (1u | 2u) : (2u | 4u);
+}
+
+static void apply_flip(struct particles *p, size_t g, uint8_t flip)
+{
+  if (!p->solid || !flip) return;
+  for (int k = 0; k < 3; k++)
+    if (flip & (1u << k)) {
+      p->S[T_XY + k][g] = -p->S[T_XY + k][g];
+      p->R[T_XY + k][g] = -p->R[T_XY + k][g];
+    }
+}
+
+/* A ghost of slot src (a real or an earlier ghost), with extra mirror flips. */
+static size_t add_ghost(struct boundary *b, struct particles *p, size_t src, uint8_t flip)
 {
   size_t g = p->n + p->n_ghost;
   particles_reserve(p, g + 1);
   if (p->n_ghost + 1 > b->cap) {
     b->cap = 2 * (p->n_ghost + 1) + 1024;
     b->src = hv_realloc(b->src, b->cap * sizeof *b->src, "ghost sources");
+    b->flip = hv_realloc(b->flip, b->cap * sizeof *b->flip, "ghost flips");
   }
   particles_copy(p, g, src, PF_GHOST);
+  uint8_t total = flip ^ (src >= p->n ? b->flip[src - p->n] : 0);
+  /* the copy carries the source's (already flipped) values: flip only the new mirror */
+  apply_flip(p, g, flip);
   b->src[p->n_ghost] = (uint32_t)src;
+  b->flip[p->n_ghost] = total;
   p->n_ghost++;
   return g;
 }
@@ -133,10 +156,10 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         const int near = s ? (xi > hi - width) : (xi < lo + width);
         if (kind == BND_OPEN || !near) continue;
         if (kind == BND_PERIODIC) {
-          size_t g = add_ghost(b, p, i);
+          size_t g = add_ghost(b, p, i, 0);
           p->x[d][g] = xi + (s ? -L : L);
         } else { /* wall: mirror */
-          size_t g = add_ghost(b, p, i);
+          size_t g = add_ghost(b, p, i, mirror_flip(d));
           p->x[d][g] = 2.0 * face - xi;
           p->v[d][g] = -p->v[d][i];
         }
@@ -148,11 +171,21 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
 
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
 {
+  /* in creation order, so a ghost made from a ghost copies an already refreshed,
+   * already mirrored source, and adds only its own mirror */
   for (size_t k = 0; k < p->n_ghost; k++) {
-    size_t g = p->n + k, s = b->src[k];
+    const size_t g = p->n + k, s = b->src[k];
     p->rho[g] = p->rho[s];
     p->p[g] = p->p[s];
     p->cs[g] = p->cs[s];
     p->e[g] = p->e[s];
+    if (p->solid) {
+      for (int c = 0; c < 6; c++) {
+        p->S[c][g] = p->S[c][s];
+        p->R[c][g] = p->R[c][s];
+      }
+      p->damage[g] = p->damage[s];
+      apply_flip(p, g, b->flip[k] ^ (s >= p->n ? b->flip[s - p->n] : 0));
+    }
   }
 }

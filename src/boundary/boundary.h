@@ -2,7 +2,8 @@
  *
  * Periodic faces wrap the reals and copy a layer of particles across; walls reflect
  * any real that crossed and mirror a layer of particles as ghosts (position mirrored,
- * normal velocity reversed: a frictionless rigid wall). Ghosts are appended after the
+ * normal velocity reversed: a frictionless rigid wall; the shear stresses with one
+ * index normal to the wall reversed, so a wall is also a symmetry plane). Ghosts are appended after the
  * reals every step; they carry the fields their source carries, so the SPH loops
  * need no knowledge of boundaries. Dimensions are processed x, y, z in turn and a
  * later dimension also copies earlier ghosts, which fills edges and corners.
@@ -23,6 +24,8 @@ struct boundary {
   double lo[3], hi[3];   /* [m] domain box */
   size_t cap;
   uint32_t *src;         /* [ghost] source slot of each ghost */
+  uint8_t *flip;         /* [ghost] shear components reversed by mirrors: bit k for
+                            tensor component T_XY + k (xy, yz, xz) */
 };
 
 void boundary_init(struct boundary *b);
@@ -37,7 +40,8 @@ void boundary_apply(const struct boundary *b, struct particles *p);
  * dimension is shorter than 2 × width (ghosts would overlap their sources). */
 int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, char *msg,
                          size_t msglen);
-/* Copies the fields that change during a step (rho, p, cs, e) from sources to ghosts. */
+/* Copies the fields that change during a step (rho, p, cs, e; S and R with the
+ * mirrors' sign changes) from sources to ghosts. */
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p);
 
 #endif

@@ -42,6 +42,8 @@ struct cfg_node {
   int line;                     /* 1-based line naming the node (key line for mapping values);
                                    CFG_LINE_SET for --set; 0 if none */
   int vline;                    /* 1-based line where the value itself starts */
+  const char *file;             /* file the node came from if not the document's own (a graft,
+                                   cfg_graft); owned by struct cfg (files); NULL otherwise */
   char *text;                   /* scalar text, escapes resolved (NULL for SEQ/MAP) */
   int plain;                    /* scalar was unquoted (so "" means null) */
   int used;                     /* a getter or cfg_mark_used read it */
@@ -66,6 +68,8 @@ struct cfg {
   int nrec, caprec;
   char **strs; /* strings handed out by cfg_get_string for defaults */
   int nstrs, capstrs;
+  char **files; /* names of the files grafted nodes came from (cfg_graft) */
+  int nfiles, capfiles;
 };
 
 /* One path component: a key (key != NULL) or a sequence index. */
@@ -136,6 +140,7 @@ static struct cfg_node *node_copy(const struct cfg_node *s)
   struct cfg_node *d = node_new(s->kind, s->line);
   d->vline = s->vline;
   d->plain = s->plain;
+  d->file = s->file;
   if (s->text) d->text = xstrdup(s->text);
   for (int i = 0; i < s->n; i++)
     node_add(d, s->kind == CFG_MAP ? xstrdup(s->keys[i]) : NULL, node_copy(s->items[i]));
@@ -524,6 +529,8 @@ void cfg_free(struct cfg *c)
   free(c->rec);
   for (int i = 0; i < c->nstrs; i++) free(c->strs[i]);
   free(c->strs);
+  for (int i = 0; i < c->nfiles; i++) free(c->files[i]);
+  free(c->files);
   free(c->name);
   free(c);
 }
@@ -581,21 +588,30 @@ static struct cfg_node *lookup(struct cfg *c, const char *path, struct cfg_node 
   return n;
 }
 
-static const char *where_line(const struct cfg *c, int line, char *buf, size_t len)
+/* "file:line" of a node: `file` is the node's own (grafts) or NULL for the document's. */
+static const char *where_line(const struct cfg *c, const char *file, int line, char *buf,
+                              size_t len)
 {
+  const char *name = file ? file : c->name;
   if (line == CFG_LINE_SET)
     snprintf(buf, len, "--set");
   else if (line > 0)
-    snprintf(buf, len, "%s:%d", c->name, line);
+    snprintf(buf, len, "%s:%d", name, line);
   else
-    snprintf(buf, len, "%s", c->name);
+    snprintf(buf, len, "%s", name);
   return buf;
 }
 
 const char *cfg_where(struct cfg *c, const char *path, char *buf, size_t len)
 {
   struct cfg_node *n = lookup(c, path, NULL);
-  return where_line(c, n ? n->line : 0, buf, len);
+  return where_line(c, n ? n->file : NULL, n ? n->line : 0, buf, len);
+}
+
+const char *cfg_node_file(struct cfg *c, const char *path)
+{
+  struct cfg_node *n = (path && *path) ? lookup(c, path, NULL) : c->root;
+  return n && n->file ? n->file : c->name;
 }
 
 int cfg_has(struct cfg *c, const char *path) { return lookup(c, path, NULL) != NULL; }
@@ -712,7 +728,7 @@ static int value_error(struct cfg *c, const struct cfg_node *n, const char *path
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  where_line(c, n ? n->vline : 0, where, sizeof where);
+  where_line(c, n ? n->file : NULL, n ? n->vline : 0, where, sizeof where);
   return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", where, path, msg);
 }
 
@@ -732,7 +748,7 @@ static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node *
   if (has_def) return 0;
   char where[512];
   return hv_error_set(err, HV_EXIT_INPUT, "%s: missing required key '%s'",
-                      where_line(c, deepest->line, where, sizeof where), path);
+                      where_line(c, deepest->file, deepest->line, where, sizeof where), path);
 }
 
 /* The text of a scalar node that has a value. */
@@ -1095,6 +1111,88 @@ int cfg_apply_set(struct cfg *c, const char *assignment, struct hv_error *err)
   return 0;
 }
 
+/* ---------------------------------------------------------------- grafts */
+
+/* The copy of file name `name` owned by c (one per distinct name). */
+static const char *intern_file(struct cfg *c, const char *name)
+{
+  for (int i = 0; i < c->nfiles; i++)
+    if (!strcmp(c->files[i], name)) return c->files[i];
+  if (c->nfiles == c->capfiles) {
+    c->capfiles = c->capfiles ? 2 * c->capfiles : 4;
+    c->files = hv_realloc(c->files, (size_t)c->capfiles * sizeof *c->files, "config files");
+  }
+  return c->files[c->nfiles++] = xstrdup(name);
+}
+
+/* A deep copy of src-document node s for document dst: every node keeps the file it came
+ * from, and counts as used (see cfg_graft). */
+static struct cfg_node *graft_copy(struct cfg *dst, const struct cfg *src, const struct cfg_node *s)
+{
+  struct cfg_node *d = node_new(s->kind, s->line);
+  d->vline = s->vline;
+  d->plain = s->plain;
+  d->used = 1;
+  d->file = intern_file(dst, s->file ? s->file : src->name);
+  if (s->text) d->text = xstrdup(s->text);
+  for (int i = 0; i < s->n; i++)
+    node_add(d, s->kind == CFG_MAP ? xstrdup(s->keys[i]) : NULL, graft_copy(dst, src, s->items[i]));
+  return d;
+}
+
+/* Adds to mapping d every key of mapping s that d lacks; mappings present in both merge. */
+static void graft_merge(struct cfg *dst, const struct cfg *src, struct cfg_node *d,
+                        const struct cfg_node *s)
+{
+  for (int i = 0; i < s->n; i++) {
+    int j = node_find(d, s->keys[i], strlen(s->keys[i]));
+    if (j < 0)
+      node_add(d, xstrdup(s->keys[i]), graft_copy(dst, src, s->items[i]));
+    else if (d->items[j]->kind == CFG_MAP && s->items[i]->kind == CFG_MAP)
+      graft_merge(dst, src, d->items[j], s->items[i]);
+    /* else: the destination's value overrides the source's */
+  }
+}
+
+int cfg_graft(struct cfg *dst, const char *dst_path, struct cfg *src, const char *src_path,
+              struct hv_error *err)
+{
+  struct path_comp comp[CFG_MAX_DEPTH];
+  char where[512];
+  int nc = path_parse(dst_path, comp, CFG_MAX_DEPTH);
+  if (nc < 0)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: bad key path '%s'", dst->name,
+                        dst_path ? dst_path : "");
+  struct cfg_node *s = (src_path && *src_path) ? lookup(src, src_path, NULL) : src->root;
+  if (!s)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: no entry '%s'", src->name, src_path);
+  if (s->kind != CFG_MAP)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: '%s' must be a mapping of keys, not %s",
+                        where_line(src, s->file, s->line, where, sizeof where), src_path,
+                        kind_name(s->kind));
+  /* walk to the destination, creating missing mappings (they carry the source's line) */
+  struct cfg_node *d = dst->root;
+  for (int k = 0; k < nc; k++) {
+    if (!comp[k].key || d->kind != CFG_MAP)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot graft onto '%s' (not a mapping)",
+                          dst->name, dst_path);
+    int i = node_find(d, comp[k].key, comp[k].klen);
+    if (i < 0) {
+      struct cfg_node *m = node_new(CFG_MAP, s->line);
+      m->file = intern_file(dst, s->file ? s->file : src->name);
+      node_add(d, xstrndup(comp[k].key, comp[k].klen), m);
+      i = d->n - 1;
+    }
+    d = d->items[i];
+  }
+  if (d->kind != CFG_MAP)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: expected a mapping of keys, found %s",
+                        where_line(dst, d->file, d->vline, where, sizeof where), dst_path,
+                        kind_name(d->kind));
+  graft_merge(dst, src, d, s);
+  return 0;
+}
+
 /* ---------------------------------------------------------------- unknown keys */
 
 /* Optimal string alignment distance (edits and adjacent swaps), capped at 9. */
@@ -1187,7 +1285,8 @@ static void find_unused(const struct cfg *c, const struct cfg_node *n, const cha
     char where[512], hint[160] = "", line[1800];
     if (n->kind == CFG_MAP) suggest(c, n, path, n->keys[i], hint, sizeof hint);
     snprintf(line, sizeof line, "%s: unknown %s '%s'%s",
-             where_line(c, ch->line, where, sizeof where), n->kind == CFG_MAP ? "key" : "entry",
+             where_line(c, ch->file, ch->line, where, sizeof where),
+             n->kind == CFG_MAP ? "key" : "entry",
              sub, hint);
     unused_add(u, line);
   }

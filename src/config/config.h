@@ -39,6 +39,19 @@ void cfg_mark_used(struct cfg *c, const char *path);
 /* "case.yaml:14" for a path (or just "case.yaml" if absent). */
 const char *cfg_where(struct cfg *c, const char *path, char *buf, size_t len);
 
+/* Grafts: copies the mapping at src_path of document src (NULL or "" for its root) into
+ * dst at dst_path (created as a mapping if missing), key by key, where dst has no such
+ * key; mappings present in both are merged the same way, so any key dst gives overrides
+ * src's. Copied nodes keep their file name and line, so messages about them name
+ * e.g. "data/materials.yaml:31". Copied nodes count as used: the reader of dst decides
+ * which of them apply (a case that switches the EOS of a library material leaves the
+ * library's EOS parameters unread), and src is checked for unknown keys on its own.
+ * src may be freed afterwards. Used for `library: NAME` in materials. */
+int cfg_graft(struct cfg *dst, const char *dst_path, struct cfg *src, const char *src_path,
+              struct hv_error *err);
+/* The file a node came from: its graft source, or cfg_file(c) (also for absent paths). */
+const char *cfg_node_file(struct cfg *c, const char *path);
+
 /* Typed getters. `def` NULL means required. Range [lo, hi] inclusive after unit
  * conversion; use -HUGE_VAL/HUGE_VAL for none. Return 0 or -1 with err set. */
 int cfg_get_quantity(struct cfg *c, const char *path, enum unit_dim dim, const double *def,

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "eos/eos.h"
+#include "fracture/fracture.h"
 
 double step_hmax(const struct particles *p)
 {
@@ -36,6 +37,10 @@ static int update_eos(struct sim *s, struct hv_error *err)
       if ((long)i > bad) bad = (long)i;
       continue;
     }
+    const struct material *m = &s->mat[p->mat[i]];
+    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0) st.p = 0.0;   /* split: no tension */
+    if (m->str.enabled && (!p->solid || p->damage[i] < 1.0))
+      st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
     p->p[i] = st.p;
     p->cs[i] = st.cs;
   }
@@ -121,11 +126,29 @@ static int check_state(const struct sim *s, struct hv_error *err)
                       p->rho[i], p->e[i], p->x[0][i], p->x[1][i], p->x[2][i]);
 }
 
+/* End of step for solids: S takes the end-of-step stress, fracture is tested on
+ * σ = −pI + S; a particle that splits drops its deviatoric stress. */
+static void end_stress(struct sim *s, double dt)
+{
+  struct particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++) {
+    double S[6];
+    for (int k = 0; k < 6; k++) S[k] = p->S[k][i] = p->S1[k][i];
+    const struct material *m = &s->mat[p->mat[i]];
+    p->damage[i] = fracture_tension(&m->frac, p->damage[i], p->p[i], S, dt);
+    if (p->damage[i] >= 1.0)
+      for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
+  }
+}
+
 int step_init(struct sim *s, struct hv_error *err)
 {
   struct particles *p = &s->p;
   if (update_eos(s, err) || build_neighbours(s, err)) return -1;
+  sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
+  for (size_t i = 0; i < p->n; i++) p->de[i] = 0.0;
   sph_forces(p, &s->grid, &s->sph, NULL);
   s->dt_prop = 0.0;
   s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
@@ -149,7 +172,8 @@ int step_advance(struct sim *s, struct hv_error *err)
   const size_t n = p->n;
   if (s->reorder_every > 0 && s->step % s->reorder_every == 0) reorder(s);
 
-  /* 1. predictor: coordinates and velocities at mid-step; save the step start */
+  /* 1. predictor: coordinates, velocities and energy at mid-step (from the last
+   *    step's rates); save the step start */
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
     for (int k = 0; k < 3; k++) {
@@ -159,17 +183,17 @@ int step_advance(struct sim *s, struct hv_error *err)
     }
     p->rho0[i] = p->rho[i];
     p->e0[i] = p->e[i];
+    p->e[i] += hdt * p->de[i];
   }
   if (build_neighbours(s, err)) return -1;
 
-  /* 2. density rate at mid-step; mid-step density, energy and pressure */
-  sph_density_rate(p, &s->grid, &s->sph, &s->cache);
+  /* 2. density rate (and, for solids, the stress update) at mid-step; mid-step
+   *    density and pressure; artificial stress; ghosts take the mid-step values */
+  sph_density_rate(p, &s->grid, &s->sph, &s->cache, s->mat, dt);
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) {
-    p->rho[i] = p->rho0[i] + hdt * p->drho[i];
-    p->e[i] = p->e0[i] + hdt * p->de[i];
-  }
+  for (size_t i = 0; i < n; i++) p->rho[i] = p->rho0[i] + hdt * p->drho[i];
   if (update_eos(s, err)) return -1;
+  sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
 
   /* 3–5. forces and energy rate at mid-step; velocity, coordinates, energy */
@@ -187,10 +211,14 @@ int step_advance(struct sim *s, struct hv_error *err)
   p->n_ghost = 0;
   if (boundary_any(&s->bnd)) boundary_apply(&s->bnd, p);
 
-  /* 6. pressure, smoothing length, next step */
+  /* 6. pressure, stress, fracture, smoothing length, next step */
   s->t += dt;
   s->step++;
   if (check_state(s, err) || update_eos(s, err)) return -1;
+  if (p->solid) {
+    end_stress(s, dt);
+    if (update_eos(s, err)) return -1;   /* new splits lose their tension */
+  }
   update_h(s);
   s->dt = s->dt_prop = next_dt(s);
   if (!(s->dt >= s->tp.dt_min))

@@ -1,11 +1,7 @@
 /* sph.c — continuity and momentum/energy sums; see sph.h for the equations.
  *
- * Loops run cell by cell. For each cell, the positions and smoothing lengths of all
- * particles in its neighbour cells are first copied into contiguous per-thread
- * arrays (the candidates); each particle of the cell then selects its neighbours
- * among them with a branch-free pass that the compiler vectorises, and only the
- * selected pairs do the physics. The neighbour order (cells in grid order, then
- * particles in cell order) is fixed, so sums do not depend on the thread count.
+ * These are the gas loops (no strength); sph_solid.c has the loops with stress.
+ * Neighbours come from the candidate machinery in cand.c.
  */
 #include "sph/sph.h"
 
@@ -14,190 +10,16 @@
 #include <string.h>
 
 #include "core/error.h"
-
-struct cand {
-  size_t cap, n;
-  double *x, *y, *z, *h;
-  uint32_t *j;        /* particle slot of each candidate */
-  uint32_t *sel;      /* candidates selected for the current particle */
-  double *d;          /* r² − (h_i + h_j)² of the current particle (< 0: within reach) */
-  /* the neighbour cells: candidate ranges, box corners [m] and largest h [m] */
-  size_t ncell, ccap;
-  double cellw;       /* [m] cell edge */
-  uint32_t *off;      /* [ncell+1] */
-  double *lo;         /* [3*ncell] */
-  double *hc;         /* [ncell] */
-};
-
-static void cand_free(struct cand *cd)
-{
-  free(cd->x);
-  free(cd->y);
-  free(cd->z);
-  free(cd->h);
-  free(cd->j);
-  free(cd->sel);
-  free(cd->d);
-}
-
-static void cand_free_all(struct cand *cd)
-{
-  cand_free(cd);
-  free(cd->off);
-  free(cd->lo);
-  free(cd->hc);
-}
-
-static void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
-                        const struct particles *p)
-{
-  const int32_t *nb = g->nbr_list + g->nbr_start[c];
-  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
-  size_t n = 0;
-  for (uint32_t k = 0; k < nnb; k++) n += g->cell_start[nb[k] + 1] - g->cell_start[nb[k]];
-  if (n > cd->cap) {
-    cand_free(cd);
-    cd->cap = n + n / 2 + 64;
-    cd->x = hv_malloc(cd->cap * sizeof(double), "candidates");
-    cd->y = hv_malloc(cd->cap * sizeof(double), "candidates");
-    cd->z = hv_malloc(cd->cap * sizeof(double), "candidates");
-    cd->h = hv_malloc(cd->cap * sizeof(double), "candidates");
-    cd->j = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
-    cd->sel = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
-    cd->d = hv_malloc(cd->cap * sizeof(double), "candidates");
-  }
-  if (nnb + 1 > cd->ccap) {
-    cd->ccap = nnb + 32;
-    cd->off = hv_realloc(cd->off, cd->ccap * sizeof *cd->off, "candidate cells");
-    cd->lo = hv_realloc(cd->lo, 3 * cd->ccap * sizeof *cd->lo, "candidate cells");
-    cd->hc = hv_realloc(cd->hc, cd->ccap * sizeof *cd->hc, "candidate cells");
-  }
-  cd->ncell = nnb;
-  cd->cellw = g->cell;
-  size_t q = 0;
-  for (uint32_t k = 0; k < nnb; k++) {
-    double lo[3];
-    nbr_cell_corner(g, (size_t)nb[k], lo);
-    cd->lo[3 * k] = lo[0];
-    cd->lo[3 * k + 1] = lo[1];
-    cd->lo[3 * k + 2] = lo[2];
-    cd->hc[k] = g->cell_h[nb[k]];
-    cd->off[k] = (uint32_t)q;
-    for (uint32_t jj = g->cell_start[nb[k]]; jj < g->cell_start[nb[k] + 1]; jj++) {
-      const uint32_t j = g->order[jj];
-      cd->x[q] = p->x[0][j];
-      cd->y[q] = p->x[1][j];
-      cd->z[q] = p->x[2][j];
-      cd->h[q] = p->h[j];
-      cd->j[q] = j;
-      q++;
-    }
-  }
-  cd->off[nnb] = (uint32_t)q;
-  cd->n = q;
-}
-
-/* Selects the candidates within reach of particle i (r < h_i + h_j, j != i): whole
- * cells out of reach are skipped, then a vectorisable distance test and a
- * compaction. Order: cells, then particles, as gathered. */
-static size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
-                          double hi)
-{
-  const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
-  const uint32_t *restrict jj = cd->j;
-  double *restrict d = cd->d;
-  uint32_t *restrict sel = cd->sel;
-  size_t k = 0;
-  for (size_t c = 0; c < cd->ncell; c++) {
-    const double *lo = cd->lo + 3 * c, cell = cd->cellw, reach = hi + cd->hc[c];
-    double d2 = 0.0, t;
-    t = lo[0] - xi; if (t > 0) d2 += t * t; t = xi - lo[0] - cell; if (t > 0) d2 += t * t;
-    t = lo[1] - yi; if (t > 0) d2 += t * t; t = yi - lo[1] - cell; if (t > 0) d2 += t * t;
-    t = lo[2] - zi; if (t > 0) d2 += t * t; t = zi - lo[2] - cell; if (t > 0) d2 += t * t;
-    if (d2 >= reach * reach * (1.0 + 1e-12)) continue;  /* margin for rounding of the corner */
-    const size_t q0 = cd->off[c], q1 = cd->off[c + 1];
-    for (size_t q = q0; q < q1; q++) {
-      const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];
-      d[q] = dx * dx + dy * dy + dz * dz - s * s;
-    }
-    for (size_t q = q0; q < q1; q++) {
-      sel[k] = (uint32_t)q;
-      k += (d[q] < 0.0) & (jj[q] != i);
-    }
-  }
-  return k;
-}
-
-void sph_cache_free(struct sph_cache *c)
-{
-  free(c->mask);
-  free(c->cell_off);
-  free(c->cell_words);
-  memset(c, 0, sizeof *c);
-}
-
-size_t sph_cache_bytes(const struct sph_cache *c)
-{
-  return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words);
-}
-
-/* Sizes the rows: a cell's row has one bit per candidate of that cell. */
-static void cache_layout(struct sph_cache *cache, const struct nbr_grid *g)
-{
-  if (g->ncells + 1 > cache->ccap) {
-    cache->ccap = g->ncells + g->ncells / 4 + 64;
-    cache->cell_off = hv_realloc(cache->cell_off, cache->ccap * sizeof *cache->cell_off, "cache");
-    cache->cell_words = hv_realloc(cache->cell_words, cache->ccap * sizeof *cache->cell_words,
-                                   "cache");
-  }
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    size_t n = 0;
-    for (uint32_t k = g->nbr_start[c]; k < g->nbr_start[c + 1]; k++)
-      n += g->cell_start[g->nbr_list[k] + 1] - g->cell_start[g->nbr_list[k]];
-    cache->cell_words[c] = (uint32_t)((n + 63) / 64);
-  }
-  size_t off = 0;
-  for (size_t c = 0; c < g->ncells; c++) {
-    cache->cell_off[c] = off;
-    off += (size_t)cache->cell_words[c] * (g->cell_start[c + 1] - g->cell_start[c]);
-  }
-  cache->cell_off[g->ncells] = off;
-  if (off > cache->cap) {
-    cache->cap = off + off / 4 + 1024;
-    free(cache->mask);
-    cache->mask = hv_malloc(cache->cap * sizeof *cache->mask, "neighbour cache");
-  }
-}
-
-static void cache_store(const struct sph_cache *cache, size_t c, uint32_t slot,
-                        const uint32_t *sel, size_t nsel)
-{
-  const uint32_t w = cache->cell_words[c];
-  uint64_t *row = cache->mask + cache->cell_off[c] + (size_t)slot * w;
-  for (uint32_t k = 0; k < w; k++) row[k] = 0;
-  for (size_t k = 0; k < nsel; k++) row[sel[k] >> 6] |= (uint64_t)1 << (sel[k] & 63);
-}
-
-/* Reads a stored row back into sel (same order as the search produced). */
-static size_t cache_load(const struct sph_cache *cache, size_t c, uint32_t slot, uint32_t *sel)
-{
-  const uint32_t w = cache->cell_words[c];
-  const uint64_t *row = cache->mask + cache->cell_off[c] + (size_t)slot * w;
-  size_t k = 0;
-  for (uint32_t wi = 0; wi < w; wi++) {
-    uint64_t bits = row[wi];
-    while (bits) {
-      sel[k++] = wi * 64 + (uint32_t)__builtin_ctzll(bits);
-      bits &= bits - 1;
-    }
-  }
-  return k;
-}
+#include "sph/cand.h"
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache)
+                      const struct sph_params *sp, struct sph_cache *cache,
+                      const struct material *mat, double dt)
 {
+  if (p->solid) {
+    sph_density_rate_solid(p, g, sp, cache, mat, dt);
+    return;
+  }
   if (cache) cache_layout(cache, g);
   const size_t n = p->n;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
@@ -233,6 +55,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
           sum += m[j] / rho[j] * vdx * f;
         }
         drho[i] = rho[i] * sum;
+        p->de[i] = 0.0;
       }
     }
     cand_free_all(&cd);
@@ -243,6 +66,10 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                 const struct sph_cache *cache)
 {
+  if (p->solid) {
+    sph_forces_solid(p, g, sp, cache);
+    return;
+  }
   if (cache && !cache->valid) cache = NULL;
   const size_t n = p->n;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
@@ -293,7 +120,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         ax[i] = sx;
         ay[i] = sy;
         az[i] = sz;
-        de[i] = se;
+        de[i] += se;
         vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
       }
     }

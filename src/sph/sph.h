@@ -15,6 +15,7 @@
 #define HV_SPH_H
 
 #include "kernel/kernel.h"
+#include "material/material.h"
 #include "neighbours/grid.h"
 #include "particles/particles.h"
 
@@ -24,6 +25,10 @@ struct sph_params {
   double h_min, h_max; /* [m] bounds on h */
   double alpha, beta;  /* [-] artificial viscosity */
   double eps;          /* [-] ε in μᵢⱼ */
+  /* artificial stress (Monaghan 2000; Gray, Monaghan & Swift 2001) for solids:
+     Rᵢ from the tensile principal stresses, pair term (Rᵢ + Rⱼ) (W(r)/W(Δp))ⁿ */
+  double as_eps;       /* [-] ε, 0 switches it off */
+  double as_n;         /* [-] n */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
@@ -42,14 +47,30 @@ void sph_cache_free(struct sph_cache *c);
 /* Bytes held. */
 size_t sph_cache_bytes(const struct sph_cache *c);
 
-/* drho for the reals, from x, v, m, rho, h of all slots (reals and ghosts); fills
- * the cache (if not NULL) with the neighbours it found. */
+/* First pass of a step of length dt: drho for the reals, from x, v, m, rho, h of
+ * all slots (reals and ghosts); fills the cache (if not NULL) with the neighbours it
+ * found. With solids (p->solid), also the velocity gradient of each strength
+ * particle and from it (strength.h) the mid-step deviatoric stress S (written to S),
+ * the end-of-step stress S1, the plastic strain, and the deviatoric heating rate
+ * S:ε̇/ρ (written to de; 0 for the others). */
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache);
-/* a, de and the signal speed vsig for the reals, from x, v, m, rho, p, cs, h; uses
- * the cache when it is valid for this grid (else searches). */
+                      const struct sph_params *sp, struct sph_cache *cache,
+                      const struct material *mat, double dt);
+/* Second pass: a, de (added to what the first pass wrote) and the signal speed
+ * vsig for the reals, from x, v, m, rho, p, cs, h (and S, R, body with solids);
+ * uses the cache when it is valid for this grid (else searches). */
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                 const struct sph_cache *cache);
+/* The artificial stress R of every real strength particle from its p and S. */
+void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
+                           const struct material *mat);
+
+/* Solid versions (sph_solid.c), called by the functions above when p->solid. */
+void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
+                            const struct sph_params *sp, struct sph_cache *cache,
+                            const struct material *mat, double dt);
+void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
+                      const struct sph_params *sp, const struct sph_cache *cache);
 /* Neighbour count of particle i (diagnostics, tests). */
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
 

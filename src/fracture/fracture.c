@@ -1,0 +1,29 @@
+/* fracture.c — see fracture.h. */
+#include "fracture/fracture.h"
+
+#include "strength/sym3.h"
+
+double fracture_max_principal(double p, const double S[6])
+{
+  double sig[6] = {S[0] - p, S[1] - p, S[2] - p, S[3], S[4], S[5]}, lam[3];
+  sym3_eigen(sig, lam, NULL);
+  return lam[0];
+}
+
+double fracture_plastic(const struct fracture_params *fp, double damage, double deps_p)
+{
+  if (fp->kind != FRACTURE_CUMULATIVE || fp->eps_f <= 0 || damage >= 1.0) return damage;
+  damage += deps_p / fp->eps_f;
+  return damage >= 1.0 ? 1.0 : damage;
+}
+
+double fracture_tension(const struct fracture_params *fp, double damage, double p,
+                        const double S[6], double dt)
+{
+  if (damage >= 1.0 || fp->kind == FRACTURE_NONE) return damage;
+  const double limit = -fp->sigma_c;   /* σ_c < 0: tension */
+  const int over = limit > 0 && fracture_max_principal(p, S) > limit;
+  if (fp->kind == FRACTURE_TRESCA) return over ? 1.0 : damage;
+  if (over) damage += fp->tau > 0 ? dt / fp->tau : 1.0;
+  return damage >= 1.0 ? 1.0 : damage;
+}

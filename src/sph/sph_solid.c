@@ -1,0 +1,238 @@
+/* sph_solid.c — the two neighbour passes with stress: elastic–plastic solids,
+ * fracture and contact between bodies.
+ *
+ * First pass, per particle i:
+ *   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ                       (all neighbours)
+ *   Lᵢ = Σⱼ (mⱼ/ρⱼ) (vⱼ − vᵢ) ⊗ ∇ᵢWᵢⱼ                       (same body only)
+ *   Ṡᵢ from Lᵢ (Jaumann, strength.h); S* = return(Sⁿ + ½Δt Ṡ), S¹ = return(Sⁿ + Δt Ṡ)
+ *   deviatoric heating S*:ε̇/ρ.
+ * Second pass, with σ = −pI + S:
+ *   dvᵢ/dt = Σⱼ mⱼ (σᵢ/ρᵢ² + σⱼ/ρⱼ² − Πᵢⱼ I + (Rᵢ + Rⱼ) fᵢⱼⁿ)·∇ᵢWᵢⱼ
+ *   deᵢ/dt += Σⱼ mⱼ (pᵢ/ρᵢ² + Πᵢⱼ/2) vᵢⱼ·∇ᵢWᵢⱼ
+ * with fᵢⱼ = W(rᵢⱼ)/W(Δp) and Δp = hᵢⱼ/η the particle spacing (Gray, Monaghan & Swift
+ * 2001, CMAME 190:6641, eqs. 22–24).
+ * Contact: a pair of particles of different bodies exchanges only compressive
+ * pressure (max(p, 0)) and viscosity, so bodies push but never pull each other.
+ * Tensors are 6-component, VTK order (particles.h).
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "fracture/fracture.h"
+#include "sph/cand.h"
+#include "sph/sph.h"
+#include "strength/strength.h"
+#include "strength/sym3.h"
+
+static int has_strength(const struct material *m, double damage)
+{
+  return m->str.enabled && damage < 1.0;
+}
+
+/* Stress update of particle i from its velocity gradient L. */
+static void update_stress(struct particles *p, size_t i, const struct material *m,
+                          const double L[9], double dt)
+{
+  double S0[6], dS[6], Sm[6], S1[6];
+  for (int k = 0; k < 6; k++) S0[k] = p->S[k][i];
+  const double G = m->str.G;
+  const double Y = strength_yield(&m->str, p->eps_p[i], strength_equivalent_rate(L), p->e[i]);
+  strength_rate(G, S0, L, dS);
+  for (int k = 0; k < 6; k++) {
+    Sm[k] = S0[k] + 0.5 * dt * dS[k];
+    S1[k] = S0[k] + dt * dS[k];
+  }
+  strength_return(G, Y, Sm);
+  const double deps = strength_return(G, Y, S1);
+  p->eps_p[i] += deps;
+  p->damage[i] = fracture_plastic(&m->frac, p->damage[i], deps);
+  /* S*:ε̇ with ε̇ the symmetric part of L */
+  const double exx = L[0], eyy = L[4], ezz = L[8];
+  const double exy = 0.5 * (L[1] + L[3]), eyz = 0.5 * (L[5] + L[7]), exz = 0.5 * (L[2] + L[6]);
+  const double power = Sm[T_XX] * exx + Sm[T_YY] * eyy + Sm[T_ZZ] * ezz +
+                       2.0 * (Sm[T_XY] * exy + Sm[T_YZ] * eyz + Sm[T_XZ] * exz);
+  p->de[i] = power / p->rho[i];
+  for (int k = 0; k < 6; k++) {
+    p->S[k][i] = Sm[k];
+    p->S1[k][i] = S1[k];
+  }
+}
+
+void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
+                            const struct sph_params *sp, struct sph_cache *cache,
+                            const struct material *mat, double dt)
+{
+  if (cache) cache_layout(cache, g);
+  const size_t n = p->n;
+  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
+  const double *m = p->m, *rho = p->rho;
+  const int32_t *body = p->body;
+  const enum kernel_kind kk = sp->kernel;
+
+#pragma omp parallel
+  {
+    struct cand cd = {0};
+#pragma omp for schedule(dynamic, 8)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int gathered = 0;
+      for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t i = g->order[ii];
+        if (i >= n) continue;
+        if (!gathered) {
+          cand_gather(&cd, g, c, p);
+          gathered = 1;
+        }
+        const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
+        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
+        const struct material *mi = &mat[p->mat[i]];
+        const int strong = has_strength(mi, p->damage[i]);
+        const int32_t bi = body[i];
+        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
+        if (cache) cache_store(cache, c, ii - g->cell_start[c], cd.sel, nsel);
+        double sum = 0.0, L[9] = {0};
+        for (size_t k = 0; k < nsel; k++) {
+          const uint32_t q = cd.sel[k], j = cd.j[q];
+          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
+          const double r = sqrt(dx * dx + dy * dy + dz * dz);
+          const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
+          const double ux = vx[j] - vxi, uy = vy[j] - vyi, uz = vz[j] - vzi;
+          const double w = m[j] / rho[j] * f;
+          sum -= w * (ux * dx + uy * dy + uz * dz);
+          if (strong && body[j] == bi) {
+            L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
+            L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
+            L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
+          }
+        }
+        p->drho[i] = rho[i] * sum;
+        if (strong) {
+          update_stress(p, i, mi, L, dt);
+        } else {
+          p->de[i] = 0.0;
+          for (int k = 0; k < 6; k++) p->S[k][i] = p->S1[k][i] = 0.0;
+        }
+      }
+    }
+    cand_free_all(&cd);
+  }
+  if (cache) cache->valid = 1;
+}
+
+void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
+                           const struct material *mat)
+{
+  if (!p->solid) return;
+  const double eps = sp->as_eps;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++) {
+    double R[6] = {0, 0, 0, 0, 0, 0};
+    if (eps > 0 && has_strength(&mat[p->mat[i]], p->damage[i])) {
+      double sig[6], lam[3], Q[9], d[3];
+      for (int k = 0; k < 6; k++) sig[k] = p->S[k][i];
+      sig[0] -= p->p[i];
+      sig[1] -= p->p[i];
+      sig[2] -= p->p[i];
+      sym3_eigen(sig, lam, Q);
+      const double r2 = p->rho[i] * p->rho[i];
+      int any = 0;
+      for (int k = 0; k < 3; k++) {
+        d[k] = lam[k] > 0 ? -eps * lam[k] / r2 : 0.0;
+        any |= lam[k] > 0;
+      }
+      if (any) sym3_from_eigen(Q, d, R);
+    }
+    for (int k = 0; k < 6; k++) p->R[k][i] = R[k];
+  }
+}
+
+void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
+                      const struct sph_params *sp, const struct sph_cache *cache)
+{
+  if (cache && !cache->valid) cache = NULL;
+  const size_t n = p->n;
+  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
+  const double *m = p->m, *rho = p->rho, *pr = p->p, *cs = p->cs;
+  const int32_t *body = p->body;
+  const enum kernel_kind kk = sp->kernel;
+  const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
+  const int use_as = sp->as_eps > 0;
+  /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
+  const double w_dp = kernel_w(kk, 1.0 / sp->eta, 1.0);
+
+#pragma omp parallel
+  {
+    struct cand cd = {0};
+#pragma omp for schedule(dynamic, 8)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int gathered = 0;
+      for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t i = g->order[ii];
+        if (i >= n) continue;
+        if (!gathered) {
+          cand_gather(&cd, g, c, p);
+          gathered = 1;
+        }
+        const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
+        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
+        const double ri2 = 1.0 / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
+        const double Pi = pr[i] * ri2, Pic = (pr[i] > 0 ? pr[i] : 0.0) * ri2;
+        double Si[6], Ri[6];
+        for (int k = 0; k < 6; k++) {
+          Si[k] = p->S[k][i] * ri2;
+          Ri[k] = p->R[k][i];
+        }
+        const int32_t bi = body[i];
+        const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
+                                  : cand_select(&cd, i, xi, yi, zi, hi);
+        double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
+        for (size_t k = 0; k < nsel; k++) {
+          const uint32_t q = cd.sel[k], j = cd.j[q];
+          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
+          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + cd.h[q]);
+          const double r = sqrt(r2), f = kernel_f(kk, r, hij);
+          const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
+          double visc = 0.0;
+          if (vdx < 0.0) {
+            const double mu = hij * vdx / (r2 + eps * hij * hij);
+            visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + rho[j]));
+            if (-mu > mumax) mumax = -mu;
+          }
+          const double rj2 = 1.0 / (rho[j] * rho[j]);
+          const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
+          double ax, ay, az, Pme;
+          if (body[j] == bi) {
+            /* T = σᵢ/ρᵢ² + σⱼ/ρⱼ² (+ artificial stress), deviatoric part explicitly */
+            double T[6];
+            for (int t = 0; t < 6; t++) T[t] = Si[t] + p->S[t][j] * rj2;
+            if (use_as) {
+              const double fr = kernel_w(kk, r, hij) * hij * hij * hij / w_dp;
+              const double fn = pow(fr, as_n);
+              for (int t = 0; t < 6; t++) T[t] += (Ri[t] + p->R[t][j]) * fn;
+            }
+            const double P = Pi + pr[j] * rj2 + visc;
+            ax = (T[T_XX] - P) * gx + T[T_XY] * gy + T[T_XZ] * gz;
+            ay = T[T_XY] * gx + (T[T_YY] - P) * gy + T[T_YZ] * gz;
+            az = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
+            Pme = Pi;
+          } else { /* contact: compression only */
+            const double P = Pic + (pr[j] > 0 ? pr[j] : 0.0) * rj2 + visc;
+            ax = -P * gx;
+            ay = -P * gy;
+            az = -P * gz;
+            Pme = Pic;
+          }
+          sx += m[j] * ax;
+          sy += m[j] * ay;
+          sz += m[j] * az;
+          se += m[j] * (Pme + 0.5 * visc) * vdx * f;
+        }
+        p->a[0][i] = sx;
+        p->a[1][i] = sy;
+        p->a[2][i] = sz;
+        p->de[i] += se;
+        p->vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
+      }
+    }
+    cand_free_all(&cd);
+  }
+}

@@ -1,0 +1,26 @@
+/* sym3.h — small helpers for symmetric 3×3 tensors stored as 6 components in VTK
+ * order (xx, yy, zz, xy, yz, xz), and their eigen-decomposition (cyclic Jacobi). */
+#ifndef HV_SYM3_H
+#define HV_SYM3_H
+
+/* Eigenvalues lam[3] (descending) and, if Q is not NULL, the eigenvectors as the
+ * columns of Q (row-major 3×3): A = Q diag(lam) Qᵀ. */
+void sym3_eigen(const double a[6], double lam[3], double Q[9]);
+/* B = Q diag(d) Qᵀ, as 6 components. */
+void sym3_from_eigen(const double Q[9], const double d[3], double b[6]);
+/* Full 3×3 (row-major) from 6 components. */
+static inline void sym3_full(const double a[6], double m[9])
+{
+  m[0] = a[0]; m[4] = a[1]; m[8] = a[2];
+  m[1] = m[3] = a[3];
+  m[5] = m[7] = a[4];
+  m[2] = m[6] = a[5];
+}
+/* Second invariant of a deviator: J2 = ½ S:S. */
+static inline double sym3_j2(const double s[6])
+{
+  return 0.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) + s[3] * s[3] + s[4] * s[4] +
+         s[5] * s[5];
+}
+
+#endif
