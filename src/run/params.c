@@ -9,7 +9,7 @@
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {
   static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
-  int k;
+  int k, no = 0;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, inf = HUGE_VAL;
   double as_eps = 0.3, as_n = 4.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
@@ -21,7 +21,8 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_quantity(c, "sph.viscosity.epsilon", UNIT_NONE, &eps, 1e-6, 1.0, &sp->eps, err) ||
       cfg_get_quantity(c, "sph.artificial_stress.epsilon", UNIT_NONE, &as_eps, 0.0, 2.0,
                        &sp->as_eps, err) ||
-      cfg_get_quantity(c, "sph.artificial_stress.n", UNIT_NONE, &as_n, 1.0, 10.0, &sp->as_n, err))
+      cfg_get_quantity(c, "sph.artificial_stress.n", UNIT_NONE, &as_n, 1.0, 10.0, &sp->as_n, err) ||
+      cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err))
     return -1;
   sp->kernel = (enum kernel_kind)k;
   return 0;

@@ -29,6 +29,8 @@ struct sph_params {
      Rᵢ from the tensile principal stresses, pair term (Rᵢ + Rⱼ) (W(r)/W(Δp))ⁿ */
   double as_eps;       /* [-] ε, 0 switches it off */
   double as_n;         /* [-] n */
+  int grad_correction; /* normalise the velocity gradient by the kernel-gradient
+                          correction matrix (Randles & Libersky 1996) */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one

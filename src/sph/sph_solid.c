@@ -58,6 +58,32 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   }
 }
 
+/* L ← L · A⁻¹ with A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ, which is I for a full, regular
+ * neighbourhood: the corrected gradient is exact for linear velocity fields.
+ * Left unchanged where A is nearly singular (a particle with few neighbours). */
+static void correct_gradient(double L[9], const double A[9])
+{
+  const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+                     A[2] * (A[3] * A[7] - A[4] * A[6]);
+  if (!(fabs(det) > 1e-3)) return;
+  double B[9]; /* B = A⁻¹ */
+  B[0] = (A[4] * A[8] - A[5] * A[7]) / det;
+  B[1] = (A[2] * A[7] - A[1] * A[8]) / det;
+  B[2] = (A[1] * A[5] - A[2] * A[4]) / det;
+  B[3] = (A[5] * A[6] - A[3] * A[8]) / det;
+  B[4] = (A[0] * A[8] - A[2] * A[6]) / det;
+  B[5] = (A[2] * A[3] - A[0] * A[5]) / det;
+  B[6] = (A[3] * A[7] - A[4] * A[6]) / det;
+  B[7] = (A[1] * A[6] - A[0] * A[7]) / det;
+  B[8] = (A[0] * A[4] - A[1] * A[3]) / det;
+  /* L = Σ Vⱼ (vⱼ − vᵢ) ⊗ ∇W estimates ∇v · A, so ∇v = L · A⁻¹ */
+  double M[9];
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++)
+      M[3 * a + b] = L[3 * a] * B[b] + L[3 * a + 1] * B[3 + b] + L[3 * a + 2] * B[6 + b];
+  for (int k = 0; k < 9; k++) L[k] = M[k];
+}
+
 void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, struct sph_cache *cache,
                             const struct material *mat, double dt)
@@ -89,7 +115,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const int32_t bi = body[i];
         const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
         if (cache) cache_store(cache, c, ii - g->cell_start[c], cd.sel, nsel);
-        double sum = 0.0, L[9] = {0};
+        double sum = 0.0, L[9] = {0}, A[9] = {0};
+        const int corr = strong && sp->grad_correction;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
@@ -102,9 +129,15 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
             L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
             L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
+            if (corr) { /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
+              A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
+              A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
+              A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
+            }
           }
         }
         p->drho[i] = rho[i] * sum;
+        if (corr) correct_gradient(L, A);
         if (strong) {
           update_stress(p, i, mi, L, dt);
         } else {
