@@ -8,7 +8,9 @@
 
 #include "core/error.h"
 
-const char *const bnd_kind_names[] = {"open", "periodic", "wall", NULL};
+const char *const bnd_kind_names[] = {"open", "periodic", "wall", "symmetry", "absorbing", NULL};
+
+static int is_mirror(int kind) { return kind == BND_WALL || kind == BND_SYMMETRY; }
 
 void boundary_init(struct boundary *b)
 {
@@ -58,14 +60,26 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
                           cfg_where(c, "domain.boundary", where, sizeof where), "xyz"[d],
                           face[d][0], face[d][1]);
   }
-  if (!boundary_any(b)) {
-    cfg_mark_used(c, "domain");
-    return 0;
+  int no = 0;
+  if (cfg_get_bool(c, "domain.half_model", &no, &b->half_model, err)) return -1;
+  if (b->half_model) {
+    if (b->kind[2][0] != BND_OPEN && b->kind[2][0] != BND_SYMMETRY)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.half_model: the z_min face of a half "
+                          "model is the symmetry plane z = 0; it cannot be '%s'",
+                          cfg_where(c, "domain.half_model", where, sizeof where),
+                          bnd_kind_names[b->kind[2][0]]);
+    b->kind[2][0] = BND_SYMMETRY;
   }
+  b->has_box = cfg_has(c, "domain.min") || cfg_has(c, "domain.max") || boundary_any(b);
+  if (!b->has_box) return 0;
   double lo[3], hi[3];
   if (cfg_get_vec3(c, "domain.min", UNIT_LENGTH, NULL, lo, err) ||
       cfg_get_vec3(c, "domain.max", UNIT_LENGTH, NULL, hi, err))
     return -1;
+  if (b->half_model && lo[2] != 0.0)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.min: a half model starts at z = 0 "
+                        "(the symmetry plane), not z = %g m",
+                        cfg_where(c, "domain.min", where, sizeof where), lo[2]);
   for (int d = 0; d < 3; d++) {
     if (!(hi[d] > lo[d]))
       return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.max must exceed domain.min in %c",
@@ -89,10 +103,10 @@ void boundary_apply(const struct boundary *b, struct particles *p)
       continue;
     }
     for (size_t i = 0; i < p->n; i++) {
-      if (b->kind[d][0] == BND_WALL && x[i] < lo) {
+      if (is_mirror(b->kind[d][0]) && x[i] < lo) {
         x[i] = 2.0 * lo - x[i];
         if (v[i] < 0.0) v[i] = -v[i];
-      } else if (b->kind[d][1] == BND_WALL && x[i] > hi) {
+      } else if (is_mirror(b->kind[d][1]) && x[i] > hi) {
         x[i] = 2.0 * hi - x[i];
         if (v[i] > 0.0) v[i] = -v[i];
       }
@@ -154,7 +168,7 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         const int kind = b->kind[d][s];
         const double face = s ? hi : lo;
         const int near = s ? (xi > hi - width) : (xi < lo + width);
-        if (kind == BND_OPEN || !near) continue;
+        if (kind == BND_OPEN || kind == BND_ABSORBING || !near) continue;
         if (kind == BND_PERIODIC) {
           size_t g = add_ghost(b, p, i, 0);
           p->x[d][g] = xi + (s ? -L : L);
@@ -167,6 +181,39 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
     }
   }
   return 0;
+}
+
+size_t boundary_absorb(struct boundary *b, struct particles *p)
+{
+  unsigned char *gone = NULL;
+  size_t count = 0;
+  for (int d = 0; d < 3; d++)
+    for (int s = 0; s < 2; s++) {
+      if (b->kind[d][s] != BND_ABSORBING) continue;
+      for (size_t i = 0; i < p->n; i++) {
+        const int out = s ? p->x[d][i] > b->hi[d] : p->x[d][i] < b->lo[d];
+        if (!out) continue;
+        if (!gone) gone = hv_calloc(p->n, 1, "absorbed particles");
+        if (gone[i]) continue;
+        gone[i] = 1;
+        count++;
+        struct absorbed *a = &b->absorbed;
+        double v2 = 0.0;
+        for (int k = 0; k < 3; k++) {
+          a->mom[k] += p->m[i] * p->v[k][i];
+          v2 += p->v[k][i] * p->v[k][i];
+        }
+        a->n++;
+        a->mass += p->m[i];
+        a->e_kin += 0.5 * p->m[i] * v2;
+        a->e_int += p->m[i] * p->e[i];
+      }
+    }
+  if (gone) {
+    particles_remove(p, gone);
+    free(gone);
+  }
+  return count;
 }
 
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)

@@ -1,4 +1,5 @@
-/* boundary.h — faces of the domain: open, periodic, rigid wall.
+/* boundary.h — faces of the domain: open, periodic, rigid wall, symmetry plane,
+ * absorbing.
  *
  * Periodic faces wrap the reals and copy a layer of particles across; walls reflect
  * any real that crossed and mirror a layer of particles as ghosts (position mirrored,
@@ -7,6 +8,10 @@
  * reals every step; they carry the fields their source carries, so the SPH loops
  * need no knowledge of boundaries. Dimensions are processed x, y, z in turn and a
  * later dimension also copies earlier ghosts, which fills edges and corners.
+ * A symmetry plane is a wall (the mirror is exact for a symmetric flow); it is named
+ * separately for clarity, e.g. the z = 0 plane of a half model.
+ * Absorbing faces remove the particles that cross them and tally what they carried,
+ * so the balances in summary.csv still close.
  */
 #ifndef HV_BOUNDARY_H
 #define HV_BOUNDARY_H
@@ -16,11 +21,22 @@
 #include "config/config.h"
 #include "particles/particles.h"
 
-enum bnd_kind { BND_OPEN = 0, BND_PERIODIC, BND_WALL, BND_KIND_COUNT };
+enum bnd_kind { BND_OPEN = 0, BND_PERIODIC, BND_WALL, BND_SYMMETRY, BND_ABSORBING, BND_KIND_COUNT };
 extern const char *const bnd_kind_names[];
+
+/* What absorbing faces removed, summed over the run. */
+struct absorbed {
+  long n;                /* particles */
+  double mass;           /* [kg] */
+  double mom[3];         /* [kg m/s] */
+  double e_kin, e_int;   /* [J] */
+};
 
 struct boundary {
   int kind[3][2];        /* [dim][0 = min face, 1 = max face] */
+  int half_model;        /* bodies cut at z = 0, z_min a symmetry plane */
+  int has_box;           /* domain.min/max given */
+  struct absorbed absorbed;
   double lo[3], hi[3];   /* [m] domain box */
   size_t cap;
   uint32_t *src;         /* [ghost] source slot of each ghost */
@@ -36,6 +52,9 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err);
 int boundary_any(const struct boundary *b);
 /* Wraps reals through periodic faces and reflects those that crossed a wall. */
 void boundary_apply(const struct boundary *b, struct particles *p);
+/* Removes the reals beyond absorbing faces, adding what they carried to b->absorbed.
+ * Returns the number removed. */
+size_t boundary_absorb(struct boundary *b, struct particles *p);
 /* Rebuilds the ghosts within `width` of the faces. Returns -1 (msg) if a periodic
  * dimension is shorter than 2 × width (ghosts would overlap their sources). */
 int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, char *msg,

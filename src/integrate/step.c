@@ -169,7 +169,7 @@ int step_advance(struct sim *s, struct hv_error *err)
 {
   struct particles *p = &s->p;
   const double dt = s->dt, hdt = 0.5 * dt;
-  const size_t n = p->n;
+  size_t n = p->n;
   if (s->reorder_every > 0 && s->step % s->reorder_every == 0) reorder(s);
 
   /* 1. predictor: coordinates, velocities and energy at mid-step (from the last
@@ -209,7 +209,10 @@ int step_advance(struct sim *s, struct hv_error *err)
     p->e[i] = p->e0[i] + dt * p->de[i];
   }
   p->n_ghost = 0;
-  if (boundary_any(&s->bnd)) boundary_apply(&s->bnd, p);
+  if (boundary_any(&s->bnd)) {
+    boundary_apply(&s->bnd, p);
+    boundary_absorb(&s->bnd, p);
+  }
 
   /* 6. pressure, stress, fracture, smoothing length, next step */
   s->t += dt;

@@ -36,9 +36,13 @@ static void on_sigint(int sig)
 
 static double wall_time(void) { return omp_get_wtime(); }
 
-#define SUMMARY_COLS 11
+#define SUMMARY_COLS 18
+/* totals over the particles; absorbed_*: what absorbing faces removed so far, so that
+   mass + absorbed_mass etc. are conserved */
 static const char *const summary_cols[SUMMARY_COLS] = {
-    "step", "time", "dt", "n", "mass", "px", "py", "pz", "e_kin", "e_int", "e_total"};
+    "step", "time", "dt", "n", "mass", "px", "py", "pz", "e_kin", "e_int", "e_total",
+    "absorbed_n", "absorbed_mass", "absorbed_px", "absorbed_py", "absorbed_pz",
+    "absorbed_e_kin", "absorbed_e_int"};
 
 struct outputs {
   char dir[4000];
@@ -64,8 +68,11 @@ static int write_outputs(struct sim *s, struct outputs *o, struct hv_error *err)
   struct totals t;
   diag_totals(&s->p, &t);
   o->rows = hv_realloc(o->rows, (size_t)(o->nrows + 1) * SUMMARY_COLS * sizeof(double), "summary");
+  const struct absorbed *ab = &s->bnd.absorbed;
   double row[SUMMARY_COLS] = {(double)s->step, s->t, s->dt, (double)s->p.n, t.mass,
-                              t.mom[0], t.mom[1], t.mom[2], t.e_kin, t.e_int, t.e_total};
+                              t.mom[0], t.mom[1], t.mom[2], t.e_kin, t.e_int, t.e_total,
+                              (double)ab->n, ab->mass, ab->mom[0], ab->mom[1], ab->mom[2],
+                              ab->e_kin, ab->e_int};
   memcpy(o->rows + (size_t)o->nrows * SUMMARY_COLS, row, sizeof row);
   o->nrows++;
   struct snapshot_meta meta = {.time = s->t, .step = s->step, .version = HVSPH_VERSION,

@@ -1,32 +1,173 @@
 /* bodies.c — filling bodies with particles and setting their initial state.
  *
- * A body is a shape filled with a cubic lattice of spacing Δ (points at the centres
- * of the lattice cells, aligned with the shape's box corner, or centred on a
- * sphere's centre), particle mass ρΔ³, smoothing length h = η Δ, and initial
- * velocity `velocity` plus `radial_velocity` r̂ about the shape's centre.
+ * A body is a shape (shapes.c) filled with a lattice:
+ *   cubic   points at anchor + (i + ½, j + ½, k + ½) Δ;
+ *   hcp     hexagonal close packing with nearest-neighbour distance Δ (ABAB layers
+ *           along z, volume Δ³/√2 per particle).
+ * The anchor is the box corner, or the centre of a sphere or cylinder; in a half model
+ * (domain.half_model) the z anchor is the plane z = 0 and only z > 0 is kept, so the
+ * lattice is mirror-symmetric about the symmetry plane. Δ is given (`spacing`) or
+ * follows from a particle count (`particles`, in the simulated part), both scaled by
+ * the case's `resolution` (particle counts × resolution). Particle mass ρV/N with V the
+ * exact volume of the shape (so a projectile has its true mass), or ρ × lattice volume
+ * when the exact volume is unknown; h = η (m/ρ)^(1/3).
+ * Velocity: `velocity`, or `speed` with `impact_angle` α measured from the target
+ * surface in the x–y plane, v = speed (sin α, −cos α, 0) (α = 90°: along +x); plus
+ * `radial_velocity` r̂ about the shape's centre.
  * `energy_deposit` adds energy E within a radius R about a point, shared with the
  * weights m_i W(r_i, R/2) (the Sedov blast).
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "eos/eos.h"
 #include "setup/setup.h"
 
+enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
+static const char *const lattice_names[] = {"cubic", "hcp", NULL};
+
 struct body_spec {
   struct shape shape;
-  int mat;
+  int mat, lattice;
   double spacing, rho, e, vel[3], vrad;
+  double vol;          /* [m3] exact volume of the simulated part, or -1 */
 };
 
-static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
-                     struct hv_error *err)
+static double cell_volume(int lattice, double d)
 {
-  char key[256], path[64], where[256];
+  return lattice == LATTICE_HCP ? d * d * d / sqrt(2.0) : d * d * d;
+}
+
+/* Visits the lattice points of a body inside its shape (and z > 0 in a half model):
+ * counts them, and stores them at p->x[.][first + k] when p is not NULL. */
+static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p, size_t first)
+{
+  const struct shape *sh = &bs->shape;
+  const double d = bs->spacing;
+  double anchor[3], step[3] = {d, d, d};
+  if (bs->lattice == LATTICE_HCP) {
+    step[1] = d * sqrt(3.0) / 2.0;
+    step[2] = d * sqrt(2.0 / 3.0);
+  }
+  for (int k = 0; k < 3; k++) anchor[k] = sh->kind == SHAPE_BOX ? sh->min[k] : sh->center[k];
+  if (half) anchor[2] = 0.0;
+  long lo[3], hi[3];
+  for (int k = 0; k < 3; k++) {
+    lo[k] = (long)floor((sh->min[k] - anchor[k]) / step[k]) - 2;
+    hi[k] = (long)ceil((sh->max[k] - anchor[k]) / step[k]) + 1;
+  }
+  if (half && lo[2] < 0) lo[2] = 0;
+  size_t count = 0;
+  for (long k = lo[2]; k <= hi[2]; k++)
+    for (long j = lo[1]; j <= hi[1]; j++)
+      for (long i = lo[0]; i <= hi[0]; i++) {
+        double x[3];
+        if (bs->lattice == LATTICE_HCP) {
+          long kk = labs(k) % 2, jj = labs(j) % 2;
+          x[0] = anchor[0] + ((double)i + 0.5 * (double)jj + 0.5 * (double)kk + 0.25) * step[0];
+          x[1] = anchor[1] + ((double)j + (double)kk / 3.0 + 0.5) * step[1];
+        } else {
+          x[0] = anchor[0] + ((double)i + 0.5) * step[0];
+          x[1] = anchor[1] + ((double)j + 0.5) * step[1];
+        }
+        x[2] = anchor[2] + ((double)k + 0.5) * step[2];
+        if (!shape_contains(sh, x) || (half && x[2] <= 0.0)) continue;
+        if (p)
+          for (int c = 0; c < 3; c++) p->x[c][first + count] = x[c];
+        count++;
+      }
+  return count;
+}
+
+static int read_velocity(struct cfg *c, const char *path, const char *name, struct body_spec *bs,
+                         struct hv_error *err)
+{
+  char key[256], key2[256], where[256];
+  double v0[3] = {0, 0, 0}, zero = 0.0, right = HV_KERNEL_PI / 2;
+  snprintf(key, sizeof key, "%s.velocity", path);
+  snprintf(key2, sizeof key2, "%s.speed", path);
+  if (cfg_has(c, key) && cfg_has(c, key2))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give velocity or speed (with "
+                        "impact_angle), not both", cfg_where(c, key2, where, sizeof where), name);
+  if (cfg_has(c, key2)) {
+    double speed, angle;
+    if (cfg_get_quantity(c, key2, UNIT_VELOCITY, NULL, 0.0, HUGE_VAL, &speed, err)) return -1;
+    snprintf(key, sizeof key, "%s.impact_angle", path);
+    if (cfg_get_quantity(c, key, UNIT_ANGLE, &right, -HUGE_VAL, HUGE_VAL, &angle, err)) return -1;
+    if (!(angle > 0.0 && angle <= HV_KERNEL_PI / 2 * (1 + 1e-12)))
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': impact_angle %g deg is outside "
+                          "(0, 90] deg (90 deg is a normal impact)",
+                          cfg_where(c, key, where, sizeof where), name, angle * 180 / HV_KERNEL_PI);
+    bs->vel[0] = speed * sin(angle);
+    bs->vel[1] = -speed * cos(angle);
+    bs->vel[2] = 0.0;
+  } else if (cfg_get_vec3(c, key, UNIT_VELOCITY, v0, bs->vel, err)) {
+    return -1;
+  }
+  snprintf(key, sizeof key, "%s.radial_velocity", path);
+  return cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err);
+}
+
+static int read_state(struct cfg *c, const char *path, const char *name,
+                      const struct material *m, struct body_spec *bs, struct hv_error *err)
+{
+  char key[256], key2[256], where[256];
+  snprintf(key, sizeof key, "%s.density", path);
+  const double *rdef = m->rho0 > 0 ? &m->rho0 : NULL;
+  if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, 1e-300, HUGE_VAL, &bs->rho, err)) return -1;
+  snprintf(key, sizeof key, "%s.pressure", path);
+  snprintf(key2, sizeof key2, "%s.energy", path);
+  if (cfg_has(c, key) && cfg_has(c, key2))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give pressure or energy, not both",
+                        cfg_where(c, key, where, sizeof where), name);
+  if (cfg_has(c, key)) {
+    double pr;
+    if (cfg_get_quantity(c, key, UNIT_PRESSURE, NULL, -HUGE_VAL, HUGE_VAL, &pr, err)) return -1;
+    if (eos_energy_from_pressure(m, bs->rho, pr, &bs->e))
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': material '%s' cannot reach "
+                          "p = %g Pa at rho = %g kg/m3", cfg_where(c, key, where, sizeof where),
+                          name, m->name, pr, bs->rho);
+    return 0;
+  }
+  double zero = 0.0;
+  return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
+}
+
+/* Spacing from `spacing` or `particles`, scaled by the resolution factor. */
+static int read_spacing(struct sim *s, struct cfg *c, const char *path, const char *name,
+                        struct body_spec *bs, double resolution, struct hv_error *err)
+{
+  char key[256], key2[256], where[256];
+  snprintf(key, sizeof key, "%s.spacing", path);
+  snprintf(key2, sizeof key2, "%s.particles", path);
+  if (cfg_has(c, key) == cfg_has(c, key2))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give exactly one of 'spacing' and "
+                        "'particles'", cfg_where(c, path, where, sizeof where), name);
+  if (cfg_has(c, key)) {
+    if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &bs->spacing, err)) return -1;
+    bs->spacing /= cbrt(resolution);
+    return 0;
+  }
+  long np;
+  if (cfg_get_int(c, key2, NULL, 1, 2000000000L, &np, err)) return -1;
+  if (bs->vol <= 0)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': 'particles' needs a shape of known "
+                        "volume; give 'spacing' instead", cfg_where(c, key2, where, sizeof where), name);
+  double n = (double)np * resolution, v1 = bs->vol / n;   /* volume per particle */
+  bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
+  (void)s;
+  return 0;
+}
+
+static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
+                     double resolution, struct hv_error *err)
+{
+  char key[256], path[64], where[256], defname[32];
   const char *name, *mname;
   snprintf(path, sizeof path, "bodies[%d]", b);
-  char defname[32];
   snprintf(defname, sizeof defname, "body%d", b);
   snprintf(key, sizeof key, "%s.name", path);
   if (cfg_get_string(c, key, defname, &name, err)) return -1;
@@ -37,85 +178,40 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   if (bs->mat < 0)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': unknown material '%s' (not "
                         "under 'materials')", cfg_where(c, key, where, sizeof where), name, mname);
-  const struct material *m = &s->mat[bs->mat];
   snprintf(key, sizeof key, "%s.shape", path);
   if (shape_read(&bs->shape, c, key, err)) return hv_error_prefix(err, "body '%s': ", name);
-  snprintf(key, sizeof key, "%s.spacing", path);
-  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &bs->spacing, err))
-    return -1;
-  snprintf(key, sizeof key, "%s.density", path);
-  const double *rdef = m->rho0 > 0 ? &m->rho0 : NULL;
-  if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, 1e-300, HUGE_VAL, &bs->rho, err)) return -1;
-  snprintf(key, sizeof key, "%s.pressure", path);
-  char key2[256];
-  snprintf(key2, sizeof key2, "%s.energy", path);
-  if (cfg_has(c, key) && cfg_has(c, key2))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give pressure or energy, not both",
-                        cfg_where(c, key, where, sizeof where), name);
-  if (cfg_has(c, key)) {
-    double pr;
-    if (cfg_get_quantity(c, key, UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &pr, err)) return -1;
-    if (eos_energy_from_pressure(m, bs->rho, pr, &bs->e))
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': cannot set a pressure for "
-                          "material '%s'", cfg_where(c, key, where, sizeof where), name, m->name);
-  } else {
-    double zero = 0.0;
-    if (cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, 0.0, HUGE_VAL, &bs->e, err))
-      return -1;
+  snprintf(key, sizeof key, "%s.lattice", path);
+  if (cfg_get_choice(c, key, "cubic", lattice_names, &bs->lattice, err)) return -1;
+  bs->vol = shape_volume(&bs->shape);
+  if (s->bnd.half_model && bs->vol > 0) {
+    /* a half model keeps z > 0: exact when the shape is symmetric about z = 0 */
+    const struct shape *sh = &bs->shape;
+    int sym = sh->nminus == 0 && (sh->kind == SHAPE_BOX ? sh->min[2] == -sh->max[2]
+                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE ||
+                                                             sh->axis[2] == 0.0));
+    bs->vol = sym ? 0.5 * bs->vol : -1.0;
   }
-  double v0[3] = {0, 0, 0}, zero = 0.0;
-  snprintf(key, sizeof key, "%s.velocity", path);
-  if (cfg_get_vec3(c, key, UNIT_VELOCITY, v0, bs->vel, err)) return -1;
-  snprintf(key, sizeof key, "%s.radial_velocity", path);
-  if (cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err))
-    return -1;
   s->body[b].mat = bs->mat;
+  if (read_spacing(s, c, path, name, bs, resolution, err) ||
+      read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
+      read_velocity(c, path, name, bs, err))
+    return -1;
   return 0;
-}
-
-/* Lattice points of a body: counts them (x == NULL) or fills them. */
-static size_t lattice_points(const struct body_spec *bs, struct particles *p, size_t first)
-{
-  const struct shape *sh = &bs->shape;
-  const double d = bs->spacing;
-  double start[3];
-  long n[3];
-  for (int k = 0; k < 3; k++) {
-    if (sh->kind == SHAPE_BOX) {
-      start[k] = sh->min[k] + 0.5 * d;
-    } else { /* symmetric about the centre */
-      long half = (long)ceil(sh->radius / d) + 1;
-      start[k] = sh->center[k] - (double)half * d + 0.5 * d;
-    }
-    n[k] = (long)ceil((sh->max[k] - start[k]) / d) + 1;
-  }
-  size_t count = 0;
-  for (long k = 0; k < n[2]; k++)
-    for (long j = 0; j < n[1]; j++)
-      for (long i = 0; i < n[0]; i++) {
-        double x[3] = {start[0] + (double)i * d, start[1] + (double)j * d,
-                       start[2] + (double)k * d};
-        if (!shape_contains(sh, x)) continue;
-        if (p) {
-          size_t q = first + count;
-          for (int c = 0; c < 3; c++) p->x[c][q] = x[c];
-        }
-        count++;
-      }
-  return count;
 }
 
 static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t first, size_t cnt)
 {
   struct particles *p = &s->p;
-  const double d = bs->spacing;
+  const double m = bs->vol > 0 ? bs->rho * bs->vol / (double)cnt
+                               : bs->rho * cell_volume(bs->lattice, bs->spacing);
+  const double h = s->sph.eta * cbrt(m / bs->rho);
   for (size_t q = first; q < first + cnt; q++) {
     p->id[q] = (int64_t)q;
     p->mat[q] = bs->mat;
     p->body[q] = b;
-    p->m[q] = bs->rho * d * d * d;
+    p->m[q] = m;
     p->rho[q] = bs->rho;
-    p->h[q] = s->sph.eta * d;
+    p->h[q] = h;
     p->e[q] = bs->e;
     double r[3], rn = 0.0;
     for (int c = 0; c < 3; c++) {
@@ -156,9 +252,51 @@ static int energy_deposit(struct sim *s, struct cfg *c, struct hv_error *err)
   return 0;
 }
 
+/* Bodies must not overlap, and must lie inside the domain box when there is one. */
+static int check_placement(struct sim *s, struct cfg *c, const struct body_spec *bs, int b,
+                           size_t first, size_t cnt, struct hv_error *err)
+{
+  char key[64], where[256];
+  snprintf(key, sizeof key, "bodies[%d]", b);
+  const struct particles *p = &s->p;
+  for (size_t q = first; q < first + cnt; q++) {
+    const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
+    for (int a = 0; a < b; a++)
+      if (shape_contains(&bs[a].shape, x))
+        return hv_error_set(err, HV_EXIT_INPUT, "%s: bodies '%s' and '%s' overlap (e.g. at "
+                            "x = (%g, %g, %g) m)", cfg_where(c, key, where, sizeof where),
+                            s->body[a].name, s->body[b].name, x[0], x[1], x[2]);
+    if (s->bnd.has_box)
+      for (int d = 0; d < 3; d++)
+        if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d])
+          return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s' reaches outside the domain "
+                              "(%c = %g m, domain %g to %g m)", cfg_where(c, key, where, sizeof where),
+                              s->body[b].name, "xyz"[d], x[d], s->bnd.lo[d], s->bnd.hi[d]);
+  }
+  return 0;
+}
+
+/* Refuses, before allocating, a body that would not fit in memory. */
+static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struct hv_error *err)
+{
+  char key[64], where[256];
+  snprintf(key, sizeof key, "bodies[%d]", b);
+  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+  double avail = pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
+  double need = (double)total * (s->p.solid ? 900.0 : 600.0);   /* bytes, incl. ghosts, grid */
+  if (total >= ((size_t)1 << 31) || need > 0.8 * avail)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
+                        "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
+                        "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
+                        s->body[b].name, total, need / 1073741824.0, avail / 1073741824.0);
+  return 0;
+}
+
 int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
 {
-  char where[256];
+  char where[256], key[64];
+  double one = 1.0, resolution;
+  if (cfg_get_quantity(c, "resolution", UNIT_NONE, &one, 1e-6, 1e6, &resolution, err)) return -1;
   int nb = cfg_len(c, "bodies");
   if (nb <= 0)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: 'bodies' must be a list of at least one body",
@@ -166,26 +304,27 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   if (nb > (int)(sizeof s->body / sizeof s->body[0]))
     return hv_error_set(err, HV_EXIT_INPUT, "%s: too many bodies (%d)",
                         cfg_where(c, "bodies", where, sizeof where), nb);
-  for (int b = 0; b < nb; b++) {
-    struct body_spec bs;
-    memset(&bs, 0, sizeof bs);
-    if (read_body(s, c, b, &bs, err)) return -1;
-    size_t cnt = lattice_points(&bs, NULL, 0);
-    char key[64];
+  struct body_spec *bs = hv_calloc((size_t)nb, sizeof *bs, "bodies");
+  int rc = 0;
+  for (int b = 0; b < nb && !rc; b++) {
     snprintf(key, sizeof key, "bodies[%d]", b);
-    if (cnt == 0)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle "
-                          "inside the shape", cfg_where(c, key, where, sizeof where),
-                          s->body[b].name, bs.spacing);
-    if (cnt > ((size_t)1 << 31) - s->p.n)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles is more than "
-                          "hvsph can index", cfg_where(c, key, where, sizeof where),
-                          s->body[b].name, cnt);
+    if (read_body(s, c, b, &bs[b], resolution, err)) { rc = -1; break; }
+    size_t cnt = lattice_points(&bs[b], s->bnd.half_model, NULL, 0);
+    if (cnt == 0) {
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
+                        "the shape", cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        bs[b].spacing);
+      break;
+    }
+    if (check_memory(s, c, b, s->p.n + cnt, err)) { rc = -1; break; }
     size_t first = particles_add(&s->p, cnt);
-    lattice_points(&bs, &s->p, first);
-    init_body(s, &bs, b, first, cnt);
+    lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
+    init_body(s, &bs[b], b, first, cnt);
     s->body[b].count = cnt;
+    rc = check_placement(s, c, bs, b, first, cnt, err);
   }
   s->nbody = nb;
-  return energy_deposit(s, c, err);
+  for (int b = 0; b < nb; b++) shape_free(&bs[b].shape);
+  free(bs);
+  return rc ? -1 : energy_deposit(s, c, err);
 }
