@@ -1,9 +1,11 @@
-/* main.c — the hvsph command line: subcommands run, bench, help, version. */
+/* main.c — the hvsph command line: subcommands run, bench, materials, help, version. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/error.h"
+#include "material/material.h"
+#include "render/render.h"
 #include "run/bench.h"
 #include "run/run.h"
 #include "version.h"
@@ -19,6 +21,10 @@ static void usage(FILE *f)
           "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
           "  hvsph bench [--particles N] [--steps K] [--threads T]\n"
           "      solver throughput on a uniform gas lattice (particle-steps per second)\n"
+          "  hvsph materials [NAME]\n"
+          "      the material library: every entry, or one entry's parameters with units\n"
+          "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
+          "      simulated flash radiograph or particle picture (hvsph render --help)\n"
           "  hvsph --version | --help\n"
           "\n"
           "exit status: 0 done, 1 bad command line, 2 bad input (case file, units,\n"
@@ -110,6 +116,8 @@ int main(int argc, char **argv)
   }
   if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
   if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
+  if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);
+  if (!strcmp(cmd, "render")) return render_main(argc - 2, argv + 2);
   fprintf(stderr, "hvsph: unknown command '%s' (see hvsph --help)\n", cmd);
   return HV_EXIT_USAGE;
 }

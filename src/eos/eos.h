@@ -35,7 +35,8 @@ int eos_evaluate(const struct material *m, double rho, double e, struct eos_stat
  * e >= 0; table: the piecewise-linear p(e) at that ρ, solved exactly. */
 int eos_energy_from_pressure(const struct material *m, double rho, double p, double *e);
 /* "material 'steel' (table 'x.txt'): rho = 1.2e4 kg/m3, e = 3e6 J/kg is outside the table
- * (rho 7000–9000 kg/m3, e 0–1e6 J/kg)" for a status returned by the functions above. */
+ * (rho 7000 to 9000 kg/m3, e 0 to 1e6 J/kg)" for a status returned by the functions above
+ * (for EOS_ERR_NO_SOLUTION from eos_energy_from_pressure, pass the pressure as e). */
 void eos_describe(const struct material *m, double rho, double e, int status, char *buf,
                   size_t len);
 

@@ -20,7 +20,8 @@
  *
  * n = 1 is the limit ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1) → ln(ρ/ρ₀); with Γ = 0 it gives the linear
  * "weakly compressible" solid p = c₀²(ρ − ρ₀) of Gray, Monaghan & Swift (2001).
- * ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1) is computed as expm1((n − 1) ln(ρ/ρ₀))/(n − 1), accurate near ρ₀.
+ * ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1) is computed as expm1((n − 1) ln(ρ/ρ₀))/(n − 1), accurate near ρ₀;
+ * one log and one expm1 per evaluation give p_c, E_c and c.
  *
  * The floor: c² falls below zero only for E < E_c in strong expansion — e.g. steel-target
  * at E = 0 falls to c = 0.1 c₀ only below ρ ≈ 0.7ρ₀, where the tension is ≈ 0.24ρ₀c₀²
@@ -33,35 +34,44 @@
 
 #include "eos/eos.h"
 
-/* ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1), with its n → 1 limit ln(ρ/ρ₀). */
-static double mg_power_term(double n, double lx)
+/* The cold curve at x = ρ/ρ₀ from one log and one expm1: t = (ρ/ρ₀)ⁿ⁻¹ − 1, then
+ * (ρ/ρ₀)ⁿ − 1 = x t + (x − 1) (both terms of one sign: no cancellation) and
+ * ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1) = t/(n − 1), or ln x in the limit n = 1. */
+struct mg_cold {
+  double pc;   /* [Pa] p_c */
+  double Ec;   /* [J/kg] E_c */
+  double xn1;  /* [-] (ρ/ρ₀)ⁿ⁻¹ */
+};
+
+static struct mg_cold mg_cold_curve(const struct eos_mie_gruneisen *g, double rho)
 {
-  const double k = n - 1.0;
-  return k == 0.0 ? lx : expm1(k * lx) / k;
+  const double x = rho / g->rho0, lx = log(x), k = g->n - 1.0, c02 = g->c0 * g->c0;
+  const double t = k == 0.0 ? 0.0 : expm1(k * lx);
+  const double power = k == 0.0 ? lx : t / k;
+  struct mg_cold cc;
+  cc.pc = g->rho0 * c02 / g->n * (x * t + (x - 1.0));
+  cc.Ec = c02 / g->n * (power + (1.0 - x) / x); /* −1 + ρ₀/ρ = (1 − x)/x */
+  cc.xn1 = 1.0 + t;
+  return cc;
 }
 
 double eos_mg_cold_pressure(const struct eos_mie_gruneisen *g, double rho)
 {
-  const double x = rho / g->rho0;
-  return g->rho0 * g->c0 * g->c0 / g->n * expm1(g->n * log(x));
+  return mg_cold_curve(g, rho).pc;
 }
 
 double eos_mg_cold_energy(const struct eos_mie_gruneisen *g, double rho)
 {
-  const double x = rho / g->rho0;
-  /* −1 + ρ₀/ρ = (1 − x)/x */
-  return g->c0 * g->c0 / g->n * (mg_power_term(g->n, log(x)) + (1.0 - x) / x);
+  return mg_cold_curve(g, rho).Ec;
 }
 
 void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
                      struct eos_state *out)
 {
-  const double x = rho / g->rho0, lx = log(x), c02 = g->c0 * g->c0;
-  const double pc = g->rho0 * c02 / g->n * expm1(g->n * lx);
-  const double Ec = c02 / g->n * (mg_power_term(g->n, lx) + (1.0 - x) / x);
-  const double Et = e - Ec; /* thermal energy E_τ */
-  out->p = pc + g->Gamma * rho * Et;
-  double c2 = c02 * exp((g->n - 1.0) * lx) + g->Gamma * (g->Gamma + 1.0) * Et;
+  const struct mg_cold cc = mg_cold_curve(g, rho);
+  const double Et = e - cc.Ec; /* thermal energy E_τ */
+  out->p = cc.pc + g->Gamma * rho * Et;
+  double c2 = g->c0 * g->c0 * cc.xn1 + g->Gamma * (g->Gamma + 1.0) * Et;
   const double f2 = g->cs_floor * g->cs_floor;
   if (!(c2 > f2)) c2 = f2;
   out->cs = sqrt(c2);
@@ -72,7 +82,8 @@ void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
 int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, double p,
                                 double *e)
 {
-  const double pc = eos_mg_cold_pressure(g, rho), Ec = eos_mg_cold_energy(g, rho);
+  const struct mg_cold cc = mg_cold_curve(g, rho);
+  const double pc = cc.pc, Ec = cc.Ec;
   if (g->Gamma > 0.0) {
     *e = Ec + (p - pc) / (g->Gamma * rho);
     return isfinite(*e) ? EOS_OK : EOS_ERR_NO_SOLUTION;

@@ -8,6 +8,8 @@
 #ifndef HV_MATERIAL_H
 #define HV_MATERIAL_H
 
+#include <stdio.h>
+
 #include "config/config.h"
 
 enum eos_kind { EOS_IDEAL_GAS = 0, EOS_MIE_GRUNEISEN, EOS_TILLOTSON, EOS_TABLE, EOS_KIND_COUNT };
@@ -20,9 +22,9 @@ struct eos_ideal_gas {
 struct eos_mie_gruneisen {
   double rho0;         /* [kg/m3] */
   double c0;           /* [m/s] bulk sound speed */
-  double n;            /* [-] Murnaghan exponent, > 1 */
+  double n;            /* [-] Murnaghan exponent, >= 1 (1: the limit, E_c with ln) */
   double Gamma;        /* [-] Grüneisen coefficient */
-  double cs_floor;     /* [m/s] smallest sound speed returned */
+  double cs_floor;     /* [m/s] smallest sound speed returned; default 0.1 c0 */
 };
 
 /* Tillotson (1962); notation of Melosh (1989), Impact Cratering, appendix II. */
@@ -33,9 +35,10 @@ struct eos_tillotson {
   double E0;           /* [J/kg] */
   double alpha, beta;  /* [-] */
   double E_iv, E_cv;   /* [J/kg] incipient and complete vaporisation, E_cv > E_iv */
-  double rho_iv;       /* [kg/m3] below this density (and E < E_cv) the cold expanded
-                          state is cut off (p = 0 in tension); default 0.8 rho0? see eos */
-  double cs_floor;     /* [m/s] */
+  double rho_iv;       /* [kg/m3] below this density the compressed-branch pressure used
+                          for cold and hybrid expanded states carries no tension
+                          (p_c <- max(p_c, 0)); 0 (default): no cut; see eos/tillotson.c */
+  double cs_floor;     /* [m/s] smallest sound speed returned; default 0.01 sqrt(A/rho0) */
 };
 
 /* p(ρ, e) and c(ρ, e) on a rectangular grid, bilinear; see eos/table.c for the file. */
@@ -44,7 +47,9 @@ struct eos_table {
   double *rho;         /* [kg/m3] nrho, increasing */
   double *e;           /* [J/kg] ne, increasing */
   double *p;           /* [Pa] nrho*ne, p[i*ne + j] at (rho[i], e[j]) */
-  double *cs;          /* [m/s] nrho*ne */
+  double *cs;          /* [m/s] nrho*ne, or NULL: c from the derivatives of p */
+  double cs_floor;     /* [m/s] smallest sound speed returned; default 0.01 cs_max */
+  double cs_max;       /* [m/s] largest sound speed in the table (set when loaded) */
   char path[512];      /* the file, for messages */
 };
 
@@ -78,8 +83,11 @@ struct fracture_params {
 struct material {
   char name[64];
   char source[256];    /* where the values come from (library entries) */
+  char library[64];    /* the library entry it was read from ("" if none) */
   enum eos_kind eos;
   double rho0;         /* [kg/m3] reference density (0 if none, e.g. a gas) */
+  double K0;           /* [Pa] reference bulk modulus: rho0 c0^2 (Mie–Grüneisen), A
+                          (Tillotson), 0 if none (gas, table); used for G from Poisson's ratio */
   union {
     struct eos_ideal_gas gas;
     struct eos_mie_gruneisen mg;
@@ -93,11 +101,42 @@ struct material {
 #define HV_MAX_MATERIALS 32
 
 /* Reads the material defined at `path` (a mapping, e.g. "materials.steel") from the
- * case, after grafting the library entry it names (`library: NAME`) under it. */
+ * case, after grafting the library entry it names (`library: NAME`) under it: keys the
+ * case gives override the library's (cfg_graft). Keys: see docs/models.md, "Material
+ * library". Errors name the file and line (the library's for library values), the key
+ * path (which holds the material name) and the rule broken. */
 int material_read(struct cfg *c, const char *path, const char *name, struct material *m,
                   struct hv_error *err);
+/* Releases what material_read allocated (the arrays of a table EOS). */
 void material_free(struct material *m);
 /* Names of the EOS kinds, in enum order (NULL-terminated). */
 extern const char *const eos_kind_names[];
+
+/* ---- the material library, data/materials.yaml (material/library.c) ---- */
+
+/* The library file: $HVSPH_DATA/materials.yaml if HVSPH_DATA is set; else
+ * HVSPH_DATA_DIR/materials.yaml if that compile definition exists and the file is there;
+ * else <folder of the running program>/../data/materials.yaml (the build folder inside
+ * the source tree), then <program folder>/../share/hvsph/materials.yaml (installed). */
+int material_library_path(char *buf, size_t len, struct hv_error *err);
+/* Loads the library (path NULL: material_library_path()). *lib is freed with cfg_free. */
+int material_library_load(const char *path, struct cfg **lib, struct hv_error *err);
+/* Reads library entry `name` as the case's material: grafts it into the case as
+ * materials.NAME (so used_parameters.yaml records it) and reads it from there.
+ * Unknown name: error listing the library's names. */
+int material_read_from_library(struct cfg *c, const char *name, struct material *m,
+                               struct hv_error *err);
+/* The material a key names (e.g. key_path "bodies[0].material", value `name`): its index
+ * in mats[0 .. *nmat) if already read; else the case's materials.NAME or, failing that,
+ * the library entry NAME, read into mats[*nmat] (and *nmat incremented). Returns the
+ * index, or -1: "case.yaml:12: bodies[0].material: unknown material 'x' (the case
+ * defines: a, b; the library data/materials.yaml has: ...)". */
+int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
+                          struct material *mats, int *nmat, int max, struct hv_error *err);
+/* Prints every parameter of a material with its unit (hvsph materials NAME). */
+void material_print(FILE *f, const struct material *m);
+/* `hvsph materials [NAME]`: lists the library, or one entry in full. Returns the exit
+ * status (2 for an unknown name or a bad library). */
+int material_library_main(int argc, char **argv);
 
 #endif

@@ -59,9 +59,11 @@ static int read_output(struct output_params *op, struct cfg *c, struct hv_error 
 static int read_materials(struct sim *s, struct cfg *c, struct hv_error *err)
 {
   const char *const *names;
-  int n = cfg_keys(c, "materials", &names);
   char where[256], path[256];
-  if (n <= 0)
+  s->nmat = 0;
+  if (!cfg_has(c, "materials")) return 0;   /* bodies may name library materials only */
+  int n = cfg_keys(c, "materials", &names);
+  if (n < 0)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: 'materials' must map material names to "
                         "their parameters", cfg_where(c, "materials", where, sizeof where));
   if (n > HV_MAX_MATERIALS)
@@ -92,6 +94,7 @@ int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
 void sim_free(struct sim *s)
 {
   particles_free(&s->p);
+  for (int m = 0; m < s->nmat; m++) material_free(&s->mat[m]);
   boundary_free(&s->bnd);
   nbr_grid_free(&s->grid);
   sph_cache_free(&s->cache);

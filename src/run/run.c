@@ -126,10 +126,7 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
   nbr_grid_init(&s->grid);
   boundary_init(&s->bnd);
   s->cfg = c;
-  if (sim_read_params(s, c, err)) return -1;
-  for (int m = 0; m < s->nmat; m++)
-    if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE) particles_enable_solid(&s->p);
-  if (setup_bodies(s, c, err)) return -1;
+  if (sim_read_params(s, c, err) || setup_bodies(s, c, err)) return -1;
   /* bounds on h: by default 1/10 to 10 times the initial range */
   double hmin = HUGE_VAL, hmax = 0.0;
   for (size_t i = 0; i < s->p.n; i++) {

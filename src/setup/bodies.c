@@ -165,7 +165,7 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
 static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
                      double resolution, struct hv_error *err)
 {
-  char key[256], path[64], where[256], defname[32];
+  char key[256], path[64], defname[32];
   const char *name, *mname;
   snprintf(path, sizeof path, "bodies[%d]", b);
   snprintf(defname, sizeof defname, "body%d", b);
@@ -174,10 +174,8 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   snprintf(s->body[b].name, sizeof s->body[b].name, "%s", name);
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
-  bs->mat = sim_material_index(s, mname);
-  if (bs->mat < 0)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': unknown material '%s' (not "
-                        "under 'materials')", cfg_where(c, key, where, sizeof where), name, mname);
+  bs->mat = material_find_or_load(c, key, mname, s->mat, &s->nmat, HV_MAX_MATERIALS, err);
+  if (bs->mat < 0) return hv_error_prefix(err, "body '%s': ", name);
   snprintf(key, sizeof key, "%s.shape", path);
   if (shape_read(&bs->shape, c, key, err)) return hv_error_prefix(err, "body '%s': ", name);
   snprintf(key, sizeof key, "%s.lattice", path);
@@ -306,9 +304,13 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
                         cfg_where(c, "bodies", where, sizeof where), nb);
   struct body_spec *bs = hv_calloc((size_t)nb, sizeof *bs, "bodies");
   int rc = 0;
+  for (int b = 0; b < nb && !rc; b++) rc = read_body(s, c, b, &bs[b], resolution, err);
+  /* solid fields are needed once any material has strength or fracture */
+  for (int m = 0; m < s->nmat && !rc; m++)
+    if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)
+      particles_enable_solid(&s->p);
   for (int b = 0; b < nb && !rc; b++) {
     snprintf(key, sizeof key, "bodies[%d]", b);
-    if (read_body(s, c, b, &bs[b], resolution, err)) { rc = -1; break; }
     size_t cnt = lattice_points(&bs[b], s->bnd.half_model, NULL, 0);
     if (cnt == 0) {
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "

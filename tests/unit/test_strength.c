@@ -40,8 +40,8 @@ static void test_rate(void)
   /* uniaxial strain rate ε̇_xx: dS_xx = 4/3 G ε̇, dS_yy = dS_zz = −2/3 G ε̇ */
   double Lx[9] = {gd, 0, 0, 0, 0, 0, 0, 0, 0};
   strength_rate(G, S0, Lx, dS);
-  CHECK_CLOSE(dS[T_XX], 4.0 / 3.0 * G * gd, 1e-3, "uniaxial: dS_xx = 4/3 G ε̇");
-  CHECK_CLOSE(dS[T_YY], -2.0 / 3.0 * G * gd, 1e-3, "uniaxial: dS_yy = -2/3 G ε̇");
+  CHECK_CLOSE(dS[T_XX], 4.0 / 3.0 * G * gd, 1e-12 * G * gd, "uniaxial: dS_xx = 4/3 G ε̇");
+  CHECK_CLOSE(dS[T_YY], -2.0 / 3.0 * G * gd, 1e-12 * G * gd, "uniaxial: dS_yy = -2/3 G ε̇");
   /* pure rotation (Ω only) keeps J2 and the trace: dJ2/dt = S:dS = 0 */
   const double S[6] = {2e8, -1e8, -1e8, 3e7, 0, 1e7};
   double W[9] = {0, -5, 0, 5, 0, 0, 0, 0, 0};

@@ -1,0 +1,353 @@
+/* table.c — a tabulated equation of state: p(ρ, e) (and optionally c(ρ, e)) on a
+ * rectangular grid, interpolated bilinearly.
+ *
+ * File format (text, SI units; docs/models.md shows an example):
+ *
+ *   # comments start with '#' and run to the end of the line; blank lines are ignored
+ *   rho_count N e_count M          header: N, M >= 2
+ *   ρ_1 … ρ_N                      N densities [kg/m3], > 0, strictly increasing
+ *   e_1 … e_M                      M specific energies [J/kg], strictly increasing
+ *   p(ρ_1, e_1) … p(ρ_1, e_M)      N pressure rows [Pa], one line per density,
+ *   …                              M values each
+ *   p(ρ_N, e_1) … p(ρ_N, e_M)
+ *   c(ρ_1, e_1) … c(ρ_1, e_M)      optional: N sound-speed rows [m/s], > 0
+ *   …
+ *
+ * The axis values may be spread over several lines; each row starts on a new line.
+ * Every value must be a finite number: a missing value ("hole"), "nan" or "inf" is an
+ * error naming the file and line, as are unsorted axes and wrong counts.
+ *
+ * Interpolation in the cell [ρ_i, ρ_i+1] × [e_j, e_j+1], t = (ρ − ρ_i)/Δρ, s = (e − e_j)/Δe:
+ *   p = (1 − t)(1 − s) p_ij + t(1 − s) p_i+1,j + (1 − t)s p_i,j+1 + ts p_i+1,j+1,
+ * exact for p linear in ρ and in e separately; for a smooth p its error is at most
+ * (Δρ²/8) max|∂²p/∂ρ²| + (Δe²/8) max|∂²p/∂e²| (the bound checked in test_eos.c).
+ * The sound speed is interpolated the same way from the c rows, or, without them, is
+ * c² = ∂p/∂ρ + (p/ρ²) ∂p/∂e from the bilinear p of the cell; floored at cs_floor.
+ * A state outside the grid is not extrapolated: eos_evaluate returns
+ * EOS_ERR_OUTSIDE_TABLE and eos_describe() names the material, (ρ, e) and the ranges.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eos/eos.h"
+
+/* ---------------------------------------------------------------- reading */
+
+#define TAB_MAX_VALUES 100000000L /* N·M limit (800 MB per array) */
+
+struct tab_reader {
+  FILE *f;
+  const char *path;
+  int line;          /* number of the last line read */
+  char *buf;         /* current line, comments removed */
+  size_t cap;
+  char *cur;         /* next unread character of buf */
+  struct hv_error *err;
+};
+
+/* Reads the next line into r->buf (comment cut); 0 at end of file. */
+static int tab_next_line(struct tab_reader *r)
+{
+  size_t n = 0;
+  int ch, any = 0;
+  while ((ch = fgetc(r->f)) != EOF) {
+    any = 1;
+    if (n + 2 > r->cap) {
+      r->cap = r->cap ? 2 * r->cap : 256;
+      r->buf = hv_realloc(r->buf, r->cap, "table line");
+    }
+    if (ch == '\n') break;
+    r->buf[n++] = (char)ch;
+  }
+  if (!any) return 0;
+  if (!r->buf) r->buf = hv_malloc(r->cap = 256, "table line");
+  r->buf[n] = '\0';
+  char *hash = strchr(r->buf, '#');
+  if (hash) *hash = '\0';
+  r->line++;
+  r->cur = r->buf;
+  return 1;
+}
+
+/* The next token on the current line (NULL if none); *len its length. */
+static const char *tab_token_here(struct tab_reader *r, size_t *len)
+{
+  while (*r->cur && isspace((unsigned char)*r->cur)) r->cur++;
+  if (!*r->cur) return NULL;
+  const char *t = r->cur;
+  while (*r->cur && !isspace((unsigned char)*r->cur)) r->cur++;
+  *len = (size_t)(r->cur - t);
+  return t;
+}
+
+/* The next token, reading lines as needed (NULL at end of file). */
+static const char *tab_token(struct tab_reader *r, size_t *len)
+{
+  for (;;) {
+    const char *t = r->cur ? tab_token_here(r, len) : NULL;
+    if (t) return t;
+    if (!tab_next_line(r)) return NULL;
+  }
+}
+
+/* Moves to the next line holding a token (without consuming it); 0 at end of file. */
+static int tab_next_nonblank(struct tab_reader *r)
+{
+  for (;;) {
+    if (!tab_next_line(r)) return 0;
+    char *s = r->buf;
+    while (*s && isspace((unsigned char)*s)) s++;
+    if (*s) return 1;
+  }
+}
+
+/* Parses a token as a finite number. */
+static int tab_number(struct tab_reader *r, const char *t, size_t len, const char *what,
+                      double *v)
+{
+  char tmp[64];
+  if (len >= sizeof tmp)
+    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s: '%.40s...' is not a number", r->path,
+                        r->line, what, t);
+  memcpy(tmp, t, len);
+  tmp[len] = '\0';
+  char *end;
+  errno = 0;
+  *v = strtod(tmp, &end);
+  if (end == tmp || *end)
+    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s: '%s' is not a number", r->path,
+                        r->line, what, tmp);
+  if (!isfinite(*v))
+    return hv_error_set(r->err, HV_EXIT_INPUT,
+                        "%s:%d: %s: '%s' is not a finite number (holes are not allowed)", r->path,
+                        r->line, what, tmp);
+  return 0;
+}
+
+static int tab_header(struct tab_reader *r, long *nrho, long *ne)
+{
+  const char *want[2] = {"rho_count", "e_count"};
+  long *val[2] = {nrho, ne};
+  for (int k = 0; k < 2; k++) {
+    size_t len;
+    const char *t = tab_token(r, &len);
+    if (!t || len != strlen(want[k]) || strncmp(t, want[k], len))
+      return hv_error_set(r->err, HV_EXIT_INPUT,
+                          "%s:%d: expected the header 'rho_count N e_count M'%s", r->path,
+                          r->line, t ? "" : " (the file is empty)");
+    t = tab_token(r, &len);
+    double v = 0.0;
+    char what[32];
+    snprintf(what, sizeof what, "%s", want[k]);
+    if (!t)
+      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s: missing count", r->path, r->line,
+                          want[k]);
+    if (tab_number(r, t, len, what, &v)) return -1;
+    if (v != floor(v) || v < 2 || v > 1e8)
+      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s must be an integer >= 2 (got %g)",
+                          r->path, r->line, want[k], v);
+    *val[k] = (long)v;
+  }
+  if (*nrho * *ne > TAB_MAX_VALUES)
+    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: the table is too large (%ld x %ld)",
+                        r->path, r->line, *nrho, *ne);
+  return 0;
+}
+
+/* Reads n increasing axis values. */
+static int tab_axis(struct tab_reader *r, const char *name, double *x, long n, double lo)
+{
+  for (long i = 0; i < n; i++) {
+    size_t len;
+    const char *t = tab_token(r, &len);
+    if (!t)
+      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: expected %ld %s values, found %ld "
+                          "(the file ends)", r->path, r->line, n, name, i);
+    char what[48];
+    snprintf(what, sizeof what, "%s[%ld]", name, i + 1);
+    if (tab_number(r, t, len, what, &x[i])) return -1;
+    if (x[i] <= lo)
+      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g must be > %g", r->path, r->line,
+                          what, x[i], lo);
+    if (i > 0 && !(x[i] > x[i - 1]))
+      return hv_error_set(r->err, HV_EXIT_INPUT,
+                          "%s:%d: %s values must increase strictly (%s = %g after %g)", r->path,
+                          r->line, name, what, x[i], x[i - 1]);
+  }
+  return 0;
+}
+
+/* Reads nrow rows of ncol values, one row per line; `first` = a line is already loaded. */
+static int tab_rows(struct tab_reader *r, const char *name, const double *rho, double *v,
+                    long nrow, long ncol, int first, double lo)
+{
+  for (long i = 0; i < nrow; i++) {
+    if (!(first && i == 0) && !tab_next_nonblank(r))
+      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: expected %ld %s rows of %ld values, "
+                          "found %ld (the file ends)", r->path, r->line, nrow, name, ncol, i);
+    long k = 0;
+    size_t len;
+    const char *t;
+    while ((t = tab_token_here(r, &len)) != NULL) {
+      char what[64];
+      snprintf(what, sizeof what, "%s row %ld value %ld", name, i + 1, k + 1);
+      double x;
+      if (tab_number(r, t, len, what, &x)) return -1;
+      if (k < ncol) v[i * ncol + k] = x;
+      if (x <= lo)
+        return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g must be > %g", r->path,
+                            r->line, what, x, lo);
+      k++;
+    }
+    if (k != ncol)
+      return hv_error_set(r->err, HV_EXIT_INPUT,
+                          "%s:%d: %s row %ld (rho = %g kg/m3) has %ld values, expected %ld "
+                          "(e_count)", r->path, r->line, name, i + 1, rho[i], k, ncol);
+  }
+  return 0;
+}
+
+/* Largest sound speed of the table: c rows, or c² from the cell-centre derivatives. */
+static double tab_cs_max(const struct eos_table *t)
+{
+  double cmax = 0.0;
+  const int ne = t->ne;
+  if (t->cs) {
+    for (long k = 0; k < (long)t->nrho * ne; k++)
+      if (t->cs[k] > cmax) cmax = t->cs[k];
+    return cmax;
+  }
+  for (int i = 0; i + 1 < t->nrho; i++)
+    for (int j = 0; j + 1 < ne; j++) {
+      struct eos_state st;
+      eos_table_evaluate(t, 0.5 * (t->rho[i] + t->rho[i + 1]), 0.5 * (t->e[j] + t->e[j + 1]), &st);
+      if (st.cs > cmax) cmax = st.cs;
+    }
+  return cmax;
+}
+
+int eos_table_load(const char *path, struct eos_table *t, struct hv_error *err)
+{
+  memset(t, 0, sizeof *t);
+  snprintf(t->path, sizeof t->path, "%s", path);
+  struct tab_reader r = {.path = path, .err = err};
+  r.f = fopen(path, "r");
+  if (!r.f)
+    return hv_error_set(err, HV_EXIT_INPUT, "cannot open EOS table '%s': %s", path,
+                        strerror(errno));
+  long nrho = 0, ne = 0;
+  int rc = tab_header(&r, &nrho, &ne);
+  if (!rc) {
+    t->nrho = (int)nrho;
+    t->ne = (int)ne;
+    t->rho = hv_malloc((size_t)nrho * sizeof *t->rho, "EOS table");
+    t->e = hv_malloc((size_t)ne * sizeof *t->e, "EOS table");
+    t->p = hv_malloc((size_t)(nrho * ne) * sizeof *t->p, "EOS table");
+    rc = tab_axis(&r, "rho", t->rho, nrho, 0.0) || tab_axis(&r, "e", t->e, ne, -HUGE_VAL);
+  }
+  if (!rc) {
+    size_t len;
+    if (tab_token_here(&r, &len))
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: more values than e_count = %ld on the line "
+                        "of the last e value (each pressure row starts on a new line)", path,
+                        r.line, ne);
+  }
+  if (!rc) rc = tab_rows(&r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL);
+  if (!rc && tab_next_nonblank(&r)) {
+    t->cs = hv_malloc((size_t)(nrho * ne) * sizeof *t->cs, "EOS table");
+    rc = tab_rows(&r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0);
+    if (!rc && tab_next_nonblank(&r))
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: unexpected values after the %ld sound-speed "
+                        "rows", path, r.line, nrho);
+  }
+  if (!rc && ferror(r.f))
+    rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read EOS table '%s': %s", path, strerror(errno));
+  fclose(r.f);
+  free(r.buf);
+  if (rc) {
+    eos_table_free(t);
+    return -1;
+  }
+  t->cs_max = tab_cs_max(t);
+  return 0;
+}
+
+void eos_table_free(struct eos_table *t)
+{
+  free(t->rho);
+  free(t->e);
+  free(t->p);
+  free(t->cs);
+  t->rho = t->e = t->p = t->cs = NULL;
+  t->nrho = t->ne = 0;
+}
+
+/* ---------------------------------------------------------------- evaluation */
+
+/* Index i with x[i] <= v <= x[i+1] (n >= 2), or -1 outside [x[0], x[n-1]]. */
+static int tab_find(const double *x, int n, double v)
+{
+  if (!(v >= x[0] && v <= x[n - 1])) return -1;
+  int lo = 0, hi = n - 1;
+  while (hi - lo > 1) {
+    int mid = lo + (hi - lo) / 2;
+    if (x[mid] <= v)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+int eos_table_evaluate(const struct eos_table *t, double rho, double e, struct eos_state *out)
+{
+  const int i = tab_find(t->rho, t->nrho, rho), j = tab_find(t->e, t->ne, e);
+  if (i < 0 || j < 0) return EOS_ERR_OUTSIDE_TABLE;
+  const int ne = t->ne;
+  const double dr = t->rho[i + 1] - t->rho[i], de = t->e[j + 1] - t->e[j];
+  const double tx = (rho - t->rho[i]) / dr, ty = (e - t->e[j]) / de;
+  const double *p0 = t->p + (size_t)i * ne + j, *p1 = p0 + ne;
+  const double p = (1 - tx) * (1 - ty) * p0[0] + tx * (1 - ty) * p1[0] + (1 - tx) * ty * p0[1] +
+                   tx * ty * p1[1];
+  double c2;
+  if (t->cs) {
+    const double *c0 = t->cs + (size_t)i * ne + j, *c1 = c0 + ne;
+    const double c = (1 - tx) * (1 - ty) * c0[0] + tx * (1 - ty) * c1[0] +
+                     (1 - tx) * ty * c0[1] + tx * ty * c1[1];
+    c2 = c * c;
+  } else {
+    const double dpdr = ((1 - ty) * (p1[0] - p0[0]) + ty * (p1[1] - p0[1])) / dr;
+    const double dpde = ((1 - tx) * (p0[1] - p0[0]) + tx * (p1[1] - p1[0])) / de;
+    c2 = dpdr + p / (rho * rho) * dpde;
+  }
+  const double f2 = t->cs_floor * t->cs_floor;
+  if (!(c2 > f2)) c2 = f2;
+  out->p = p;
+  out->cs = sqrt(c2);
+  return EOS_OK;
+}
+
+/* At fixed ρ the bilinear p is piecewise linear in e: the first segment that brackets p. */
+int eos_table_energy_from_pressure(const struct eos_table *t, double rho, double p, double *e)
+{
+  const int i = tab_find(t->rho, t->nrho, rho);
+  if (i < 0) return EOS_ERR_OUTSIDE_TABLE;
+  const int ne = t->ne;
+  const double tx = (rho - t->rho[i]) / (t->rho[i + 1] - t->rho[i]);
+  const double *p0 = t->p + (size_t)i * ne, *p1 = p0 + ne;
+  double pa = (1 - tx) * p0[0] + tx * p1[0];
+  for (int j = 0; j + 1 < ne; j++) {
+    const double pb = (1 - tx) * p0[j + 1] + tx * p1[j + 1];
+    if ((p >= pa && p <= pb) || (p <= pa && p >= pb)) {
+      const double s = pb != pa ? (p - pa) / (pb - pa) : 0.0;
+      *e = t->e[j] + s * (t->e[j + 1] - t->e[j]);
+      return EOS_OK;
+    }
+    pa = pb;
+  }
+  return EOS_ERR_NO_SOLUTION;
+}

@@ -1,0 +1,122 @@
+/* render.c — one picture from a particle set: view, plot (radiograph or discs), caption,
+ * PNG. See render.h for the geometry and docs/rendering.md for what the pictures mean.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render/render_internal.h"
+
+/* Display unit of a colour quantity from the largest magnitude shown. */
+static void color_unit(enum render_color c, double lo, double hi, double *unit, const char **label)
+{
+  double big = fmax(fabs(lo), fabs(hi));
+  switch (c) {
+  case RENDER_COLOR_VELOCITY:
+    *unit = big >= 1e3 ? 1e3 : 1.0;
+    *label = big >= 1e3 ? "|v| [km/s]" : "|v| [m/s]";
+    return;
+  case RENDER_COLOR_PRESSURE:
+    *unit = big >= 1e8 ? 1e9 : big >= 1e5 ? 1e6 : 1e3;
+    *label = big >= 1e8 ? "p [GPa]" : big >= 1e5 ? "p [MPa]" : "p [kPa]";
+    return;
+  case RENDER_COLOR_DENSITY:
+    *unit = big >= 100.0 ? 1e3 : 1.0;
+    *label = big >= 100.0 ? "ρ [g/cm³]" : "ρ [kg/m³]";
+    return;
+  case RENDER_COLOR_DAMAGE:
+  case RENDER_COLOR_MATERIAL: break;
+  }
+  *unit = 1.0;
+  *label = "damage";
+}
+
+static const char *color_name(enum render_color c)
+{
+  static const char *n[] = {"material", "damage", "velocity", "pressure", "density"};
+  return n[c];
+}
+
+/* Radiograph into the plot area; fills the key and the description. */
+static void draw_radiograph(struct canvas *c, const struct particles *p,
+                            const struct render_view *v, const struct render_options *o,
+                            struct caption_key *key, char *desc, size_t dlen)
+{
+  size_t npix = (size_t)v->nu * (size_t)v->nv;
+  double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture");
+  render_areal_density(p, v, sigma);
+  render_film(c, v, sigma, o->mu);
+  double mass = 0.0, smax = 0.0;
+  for (size_t k = 0; k < npix; k++) {
+    mass += sigma[k];
+    smax = fmax(smax, sigma[k]);
+  }
+  mass *= v->pix * v->pix;
+  free(sigma);
+  key->kind = 0;
+  key->lo = 0.0;
+  key->hi = 3.0 / o->mu; /* the film transmits 5 % there */
+  key->unit = 1.0;
+  key->mu = o->mu;
+  snprintf(desc, dlen, "simulated flash radiograph along %c%s: areal density, film T = "
+           "exp(-mu*sigma), mu = %g m2/kg; mass in picture %.6g kg, peak areal density "
+           "%.6g kg/m2",
+           "xyz"[v->axis], v->mirror ? ", mirrored at z = 0" : "", o->mu, mass, smax);
+}
+
+int render_png(const char *path, const struct particles *p, const struct render_options *o,
+               const struct render_info *info, struct hv_error *err)
+{
+  if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DAMAGE && !p->damage)
+    return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no damage column (no material "
+                        "with strength or fracture): colour by another quantity");
+  if (o->mode == RENDER_RADIOGRAPH && !(o->mu > 0.0 && isfinite(o->mu)))
+    return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg]");
+  if (o->have_range && !(o->range[0] < o->range[1]))
+    return hv_error_set(err, HV_EXIT_USAGE, "--range: the low end must be below the high end");
+  struct render_view v;
+  if (render_view_setup(p, o, &v, err)) return -1;
+
+  struct canvas c;
+  canvas_init(&c, v.width, v.height);
+  struct caption_key key = {0};
+  char what[128], desc[1024];
+  char axis = "xyz"[v.axis];
+  unsigned char *present = NULL;
+  if (o->mode == RENDER_RADIOGRAPH) {
+    draw_radiograph(&c, p, &v, o, &key, desc, sizeof desc);
+    key.label = "σ [kg/m²]  film T = exp(−μσ)";
+    snprintf(what, sizeof what, "x-ray along %c%s, μ = %g m²/kg", axis,
+             v.mirror ? ", mirrored" : "", o->mu);
+  } else {
+    int nmat = 1;
+    for (size_t i = 0; i < p->n; i++)
+      if (p->mat[i] >= nmat && p->mat[i] < 1024) nmat = p->mat[i] + 1;
+    present = hv_calloc((size_t)nmat, 1, "material flags");
+    double lo, hi;
+    size_t nd = render_discs(&c, p, &v, o, &lo, &hi, present, nmat);
+    key.kind = o->color == RENDER_COLOR_MATERIAL ? 2 : 1;
+    key.lo = lo;
+    key.hi = hi;
+    key.present = present;
+    key.nmat = nmat;
+    color_unit(o->color, lo, hi, &key.unit, &key.label);
+    snprintf(what, sizeof what, "particles seen along +%c%s", axis,
+             v.mirror ? ", mirrored" : v.axis == 2 ? " (cut at z = 0 in front)" : "");
+    snprintf(desc, sizeof desc, "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
+             "SI), %zu discs", axis, v.mirror ? ", mirrored at z = 0" : "",
+             color_name(o->color), lo, hi, nd);
+  }
+  render_caption(&c, &v, info, what, &key);
+  free(present);
+
+  char full[2048];
+  snprintf(full, sizeof full, "%s; %s%s%st = %.9g s; picture %c right %.6g..%.6g m, %c up "
+           "%.6g..%.6g m, pixel %.6g m", desc, info && info->source ? "snapshot " : "",
+           info && info->source ? info->source : "", info && info->source ? ", " : "",
+           info ? info->time : (double)NAN, "xyz"[v.iu], v.u0, v.u1, "xyz"[v.iv], v.v0, v.v1, v.pix);
+  int rc = canvas_write_png(&c, path, full, err);
+  canvas_free(&c);
+  return rc;
+}

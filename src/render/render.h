@@ -1,0 +1,117 @@
+/* render.h — pictures of particle snapshots (PNG): simulated flash radiographs and
+ * particle side views. `hvsph render` (render_main) is the command line; the rest is
+ * the library the command and the tests use.
+ *
+ * Geometry. The line of sight is one coordinate axis (`axis`); the picture shows the
+ * other two, first to the right, second up:
+ *   axis z (default): x right, y up      axis y: x right, z up      axis x: y right, z up
+ * Half models are simulated in z >= 0 with the symmetry plane z = 0. Mirroring reflects
+ * every particle across z = 0 (a copy at -z), so a picture shows the whole body: along y
+ * or x the lower half of the picture is the mirror image; along z every column is counted
+ * twice, as an x-ray through the full body would.
+ *
+ * Radiograph (docs/rendering.md): each particle's mass is spread over the picture with
+ * the cubic-spline kernel integrated along the line of sight,
+ *   Σ(R, h) = F(R/h) / h²,  F(s) = ∫ W₁(√(s² + t²)) dt,  ∫ 2πs F(s) ds = 1,
+ * (W₁ the M4 kernel of kernel.h with h = 1), so the picture holds the areal density
+ * σ = ∫ρ dl [kg/m²], and the film shows the transmitted fraction T = exp(−μ σ) as grey
+ * (white: no material). Pixels are square; the mass in the picture is conserved to
+ * rounding (kernels that reach past the edge lose only the part outside).
+ *
+ * Particles: discs of radius h/2, far ones first (painter's algorithm; the viewer sits on
+ * the negative side of the view axis), coloured by material or by a quantity through a
+ * sequential colour map with monotonic lightness (render_colormap).
+ */
+#ifndef HV_RENDER_H
+#define HV_RENDER_H
+
+#include "core/error.h"
+#include "particles/particles.h"
+
+enum render_mode { RENDER_RADIOGRAPH = 0, RENDER_PARTICLES = 1 };
+
+enum render_color {
+  RENDER_COLOR_MATERIAL = 0,  /* fixed palette by material index */
+  RENDER_COLOR_DAMAGE,        /* 0..1 */
+  RENDER_COLOR_VELOCITY,      /* |v| [m/s], labelled in km/s */
+  RENDER_COLOR_PRESSURE,      /* p [Pa], labelled in GPa */
+  RENDER_COLOR_DENSITY        /* rho [kg/m3], labelled in g/cm3 */
+};
+
+#define RENDER_MU_DEFAULT 0.05   /* [m2/kg] film mass attenuation coefficient (grey; iron near 90 keV) */
+#define RENDER_WIDTH_DEFAULT 1200  /* [px] picture width when --size is not given */
+#define RENDER_MIN_WIDTH 200     /* [px] */
+#define RENDER_MIN_HEIGHT 100    /* [px] */
+#define RENDER_MAX_SIDE 16384    /* [px] */
+/* Background of both modes and of the caption band: white. */
+#define RENDER_BG_R 255
+#define RENDER_BG_G 255
+#define RENDER_BG_B 255
+
+struct render_options {
+  enum render_mode mode;
+  int axis;                  /* line of sight: 0 x, 1 y, 2 z */
+  enum render_color color;   /* particles mode */
+  int width, height;         /* [px] the whole picture (plot + caption band); 0: automatic */
+  int have_box;
+  double box[6];             /* [m] xmin, xmax, ymin, ymax, zmin, zmax */
+  int mirror;                /* -1: automatic (on for a half model), 0 off, 1 on */
+  double mu;                 /* [m2/kg] mass attenuation coefficient (radiograph) */
+  int have_range;
+  double range[2];           /* colour range in SI units of the quantity (particles mode) */
+};
+
+void render_options_default(struct render_options *o);
+
+/* Where the picture lies in space and on the page. */
+struct render_view {
+  int axis, iu, iv;          /* line of sight; coordinates shown right (iu) and up (iv) */
+  int mirror;                /* particles are reflected across z = 0 (copies at -z) */
+  double u0, u1, v0, v1;     /* [m] extent of the plot area (square pixels) */
+  double d0, d1;             /* [m] slab along the line of sight (particle centres), ±inf by default */
+  double pix;                /* [m] pixel edge */
+  int nu, nv;                /* [px] plot area, at the top of the picture */
+  int width, height;         /* [px] whole picture: plot area + caption band below */
+  int band;                  /* [px] caption band height */
+  int scale;                 /* font scale of the caption (1 or 2) */
+};
+
+/* Chooses mirroring, the extent (the box, or every particle with its 2h support plus a
+ * margin, grown about its centre to the picture's aspect) and the layout. Fails
+ * (HV_EXIT_INPUT) for an empty snapshot, HV_EXIT_USAGE for a size or box that cannot work. */
+int render_view_setup(const struct particles *p, const struct render_options *o,
+                      struct render_view *view, struct hv_error *err);
+
+/* F(s) of the header: the M4 cubic spline integrated along a line at distance s·h from the
+ * particle, times h²; F(0) = 3/(2π), zero for s >= 2. */
+double render_kernel_column(double s);
+
+/* Areal density σ [kg/m²] on the view's nu × nv plot pixels (row 0 at the top, v = v1):
+ * sigma[j * nu + i]. Σ sigma · pix² equals the mass in the view (mirror copies included). */
+void render_areal_density(const struct particles *p, const struct render_view *view,
+                          double *sigma);
+
+/* The sequential colour map, t in [0, 1] (clamped) -> sRGB; lightness rises with t. */
+void render_colormap(double t, unsigned char rgb[3]);
+/* The material palette, cycling after 10 entries. */
+void render_palette(int k, unsigned char rgb[3]);
+
+/* What the caption says besides the options. */
+struct render_info {
+  double time;                        /* [s] snapshot time; NaN: not shown */
+  const char *const *material_names;  /* index -> name; may be NULL */
+  int nmat;
+  const char *source;                 /* snapshot file name, for the PNG's text chunk; may be NULL */
+};
+
+/* Renders p as the options say and writes the PNG (8-bit RGB) to path, whole or not at all.
+ * Errors: HV_EXIT_USAGE (options that cannot work), HV_EXIT_INPUT (data missing, e.g. no
+ * damage column; unwritable output folder), HV_EXIT_RUN (write failure). */
+int render_png(const char *path, const struct particles *p, const struct render_options *o,
+               const struct render_info *info, struct hv_error *err);
+
+/* `hvsph render SNAPSHOT.csv -o FILE.png [options]`: argv holds the arguments after
+ * "render". Returns the exit status (0, 1 usage, 2 input, 3 write failure). */
+int render_main(int argc, char **argv);
+
+#endif

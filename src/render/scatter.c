@@ -1,0 +1,119 @@
+/* scatter.c — particles mode: each particle a disc, far ones first.
+ *
+ * Disc radius h/2 on the picture (with h = 1.2 Δ, neighbouring discs of an undisturbed
+ * lattice just overlap), at least 0.7 pixel so that lone fragments stay visible; edges
+ * are anti-aliased by pixel coverage, and discs of 3 pixels or more get a darker rim so
+ * that single particles can be told apart in a dense body. The viewer sits on the
+ * negative side of the view axis: discs are drawn in order of decreasing depth
+ * (painter's algorithm; equal depths by particle order, so pictures are reproducible).
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "render/render_internal.h"
+
+struct disc {
+  double depth;     /* [m] along the line of sight */
+  double fu, fv;    /* picture position [px], integers at pixel centres */
+  double r;         /* [px] */
+  double value;     /* colour quantity (SI), or material index */
+  size_t order;     /* tie-break */
+};
+
+static int disc_cmp(const void *a, const void *b)
+{
+  const struct disc *x = a, *y = b;
+  if (x->depth != y->depth) return x->depth > y->depth ? -1 : 1;
+  return x->order < y->order ? -1 : x->order > y->order;
+}
+
+static double particle_value(const struct particles *p, size_t i, enum render_color c)
+{
+  switch (c) {
+  case RENDER_COLOR_DAMAGE: return p->damage ? p->damage[i] : 0.0;
+  case RENDER_COLOR_VELOCITY:
+    return sqrt(p->v[0][i] * p->v[0][i] + p->v[1][i] * p->v[1][i] + p->v[2][i] * p->v[2][i]);
+  case RENDER_COLOR_PRESSURE: return p->p[i];
+  case RENDER_COLOR_DENSITY: return p->rho[i];
+  case RENDER_COLOR_MATERIAL: break;
+  }
+  return (double)p->mat[i];
+}
+
+static void draw_disc(struct canvas *c, const struct render_view *v, const struct disc *d,
+                      const unsigned char rgb[3])
+{
+  unsigned char rim[3] = {(unsigned char)(0.62 * rgb[0]), (unsigned char)(0.62 * rgb[1]),
+                          (unsigned char)(0.62 * rgb[2])};
+  int rimmed = d->r >= 3.0;
+  int i0 = (int)floor(d->fu - d->r - 1), i1 = (int)ceil(d->fu + d->r + 1);
+  int j0 = (int)floor(d->fv - d->r - 1), j1 = (int)ceil(d->fv + d->r + 1);
+  if (i0 < 0) i0 = 0;
+  if (j0 < 0) j0 = 0;
+  if (i1 >= v->nu) i1 = v->nu - 1;
+  if (j1 >= v->nv) j1 = v->nv - 1;
+  for (int j = j0; j <= j1; j++)
+    for (int i = i0; i <= i1; i++) {
+      double dist = hypot(i - d->fu, j - d->fv);
+      double a = d->r + 0.5 - dist; /* coverage of the pixel, roughly */
+      if (a <= 0.0) continue;
+      canvas_blend(c, i, j, rimmed && dist > d->r - 1.0 ? rim : rgb, a);
+    }
+}
+
+size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *v,
+                    const struct render_options *o, double *lo, double *hi,
+                    unsigned char *present, int nmat_present)
+{
+  size_t cap = p->n * (size_t)(v->mirror + 1), n = 0;
+  struct disc *d = hv_malloc((cap ? cap : 1) * sizeof *d, "particle discs");
+  double vmin = HUGE_VAL, vmax = -HUGE_VAL;
+  for (size_t i = 0; i < p->n; i++)
+    for (int copy = 0; copy <= v->mirror; copy++) {
+      double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+      double depth = x[v->axis];
+      if (!(depth >= v->d0 && depth <= v->d1)) continue;
+      struct disc *q = &d[n];
+      q->depth = depth;
+      q->fu = (x[v->iu] - v->u0) / v->pix - 0.5;
+      q->fv = (v->v1 - x[v->iv]) / v->pix - 0.5;
+      q->r = fmax(0.5 * fabs(p->h[i]) / v->pix, 0.7);
+      if (!(q->fu > -q->r - 1 && q->fv > -q->r - 1 && q->fu < v->nu + q->r + 1 &&
+            q->fv < v->nv + q->r + 1))
+        continue; /* off the picture, or not finite */
+      q->value = particle_value(p, i, o->color);
+      q->order = n;
+      if (o->color == RENDER_COLOR_MATERIAL) {
+        if (p->mat[i] >= 0 && p->mat[i] < nmat_present) present[p->mat[i]] = 1;
+      } else if (isfinite(q->value)) {
+        vmin = fmin(vmin, q->value);
+        vmax = fmax(vmax, q->value);
+      }
+      n++;
+    }
+  if (o->have_range) {
+    vmin = o->range[0];
+    vmax = o->range[1];
+  } else if (o->color == RENDER_COLOR_DAMAGE) {
+    vmin = 0.0;
+    vmax = 1.0;
+  } else if (!(vmin <= vmax)) {
+    vmin = 0.0;
+    vmax = 1.0;
+  } else if (vmax - vmin <= 1e-12 * fmax(fabs(vmin), fabs(vmax))) {
+    double pad = vmin != 0.0 ? 0.05 * fabs(vmin) : 1.0; /* one value: a band around it */
+    vmin -= pad;
+    vmax += pad;
+  }
+  qsort(d, n, sizeof *d, disc_cmp);
+  for (size_t k = 0; k < n; k++) {
+    unsigned char rgb[3];
+    if (o->color == RENDER_COLOR_MATERIAL) render_palette((int)d[k].value, rgb);
+    else render_colormap((d[k].value - vmin) / (vmax - vmin), rgb);
+    draw_disc(c, v, &d[k], rgb);
+  }
+  free(d);
+  *lo = vmin;
+  *hi = vmax;
+  return n;
+}

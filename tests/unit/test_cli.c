@@ -1,0 +1,433 @@
+/* test_cli.c — the command line and bad input, through the hvsph binary.
+ *
+ * Each bad case file is a one-line variant of the small case below (so the line
+ * numbers in the expected messages are exact). For every failure the test checks:
+ *   - the exit status (1 bad command line, 2 bad input, 3 failed run);
+ *   - stderr holds exactly one error line ("hvsph: error: ..."), and that line
+ *     names the file and line and the key (or the particle, time and field) — the
+ *     expected pieces are written out below;
+ *   - nothing half-written is left: no temporary file (".tmp.") in the output
+ *     folder; for input errors the folder, prepared with a summary.csv of an earlier
+ *     run, holds exactly that file afterwards, byte for byte; for a failed run,
+ *     summary.csv is the new run's and complete (header, then rows of 18 fields).
+ *
+ * A run that fails (exit 3), reliably:
+ *   - negative density: time.end = time.dt_init = 10 s with output.every = 0, so
+ *     the first step is 10 s, about 25000 times the CFL step; the body expands
+ *     (radial_velocity 0.2 m/s), so the continuity equation drives ρ below zero in
+ *     that step: "particle N ...: rho = -274 kg/m3".
+ *   - non-finite values: pressure 1e306 Pa (finite, and so accepted); the pressure
+ *     forces overflow to infinity, the time step to zero, and 0 × inf gives NaN:
+ *     "particle N ...: rho = -nan".
+ */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "testlib.h"
+
+static const char *base_lines[] = {
+    "name: cli",                                                      /* 1 */
+    "materials:",                                                     /* 2 */
+    "  gas: {eos: ideal-gas, gamma: 1.4}",                            /* 3 */
+    "domain:",                                                        /* 4 */
+    "  min: [0, 0, 0]",                                               /* 5 */
+    "  max: [0.1, 0.05, 0.05]",                                       /* 6 */
+    "  boundary: {x: wall, y: periodic, z: periodic}",                /* 7 */
+    "bodies:",                                                        /* 8 */
+    "  - name: slab",                                                 /* 9 */
+    "    material: gas",                                              /* 10 */
+    "    shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]}", /* 11 */
+    "    spacing: 6.25 mm",                                           /* 12 */
+    "    density: 1.0",                                               /* 13 */
+    "    pressure: 1.0",                                              /* 14 */
+    "    velocity: [0.3, 0.1, -0.05]",                                /* 15 */
+    "    radial_velocity: 0.2",                                       /* 16 */
+    "time:",                                                          /* 17 */
+    "  end: 0.01",                                                    /* 18 */
+    "output:",                                                        /* 19 */
+    "  every: 0.005",                                                 /* 20 */
+    "  csv: true",                                                    /* 21 */
+};
+#define NBASE ((int)(sizeof base_lines / sizeof base_lines[0]))
+#define SUMMARY_FIELDS 18 /* step ... e_total, then the absorbed_* tallies */
+#define PREVIOUS "# an earlier run\nstep,time\n0,0\n"
+
+static char text[16384];
+
+/* The base case with line `line` (1-based) replaced by `repl` ("" deletes it;
+ * `repl` may hold several lines). line 0: the base case unchanged. */
+static const char *variant(int line, const char *repl)
+{
+  size_t k = 0;
+  for (int i = 1; i <= NBASE; i++) {
+    const char *s = i == line ? repl : base_lines[i - 1];
+    if (i == line && !*repl) continue;
+    k += (size_t)snprintf(text + k, sizeof text - k, "%s\n", s);
+  }
+  return text;
+}
+
+static const char *path_of(const char *name)
+{
+  static char buf[8][4200];
+  static int k = 0;
+  char *b = buf[k++ % 8];
+  if ((size_t)snprintf(b, sizeof buf[0], "%s/%s", test_tmpdir(), name) >= sizeof buf[0]) {
+    fprintf(stderr, "path too long\n");
+    exit(1);
+  }
+  return b;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  size_t cap = 1 << 16, n = 0, r;
+  char *b = malloc(cap + 1);
+  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
+    n += r;
+    if (n == cap) b = realloc(b, (cap *= 2) + 1);
+  }
+  fclose(f);
+  if (b) b[n] = '\0';
+  if (len) *len = n;
+  return b;
+}
+
+/* Entries of a folder other than . and ..; counts those with ".tmp." in *ntmp. */
+static int count_entries(const char *dir, int *ntmp, char *names, size_t len)
+{
+  DIR *d = opendir(dir);
+  int n = 0;
+  *ntmp = 0;
+  if (names && len) names[0] = '\0';
+  if (!d) return -1;
+  struct dirent *e;
+  while ((e = readdir(d))) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    n++;
+    if (strstr(e->d_name, ".tmp.")) (*ntmp)++;
+    if (names && strlen(names) + strlen(e->d_name) + 2 < len) {
+      strcat(names, " ");
+      strcat(names, e->d_name);
+    }
+  }
+  closedir(d);
+  return n;
+}
+
+/* A fresh output folder holding only a summary.csv from "an earlier run". */
+static const char *prepare_outdir(const char *name)
+{
+  const char *dir = path_of(name);
+  char cmd[4400];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", dir, dir);
+  if (test_run(cmd, NULL, 0) != 0) {
+    fprintf(stderr, "cannot prepare %s\n", dir);
+    exit(1);
+  }
+  char sp[4400];
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  FILE *f = fopen(sp, "w");
+  if (!f || fputs(PREVIOUS, f) < 0 || fclose(f)) exit(1);
+  return dir;
+}
+
+/* Runs hvsph with stdout discarded; *err gets stderr. Returns the exit status. */
+static int hvsph(const char *args, char *err, size_t len)
+{
+  char cmd[9000];
+  snprintf(cmd, sizeof cmd, "{ '%s' %s 2>&1 >/dev/null; }", test_bin(), args);
+  return test_run(cmd, err, len);
+}
+
+/* The one "hvsph: error:" line of the output (NULL unless there is exactly one). */
+static const char *error_line(const char *out, int *count)
+{
+  static char line[4096];
+  const char *p = out, *found = NULL;
+  *count = 0;
+  while ((p = strstr(p, "hvsph: error: ")) != NULL) {
+    if (p == out || p[-1] == '\n') {
+      (*count)++;
+      found = p;
+    }
+    p++;
+  }
+  if (*count != 1) return NULL;
+  size_t n = strcspn(found, "\n");
+  if (n >= sizeof line) n = sizeof line - 1;
+  memcpy(line, found, n);
+  line[n] = '\0';
+  return line;
+}
+
+/* Checks one error line against up to 4 expected pieces (NULL-terminated). */
+static void check_message(const char *what, const char *out, const char *const *want)
+{
+  int count;
+  const char *line = error_line(out, &count);
+  CHECK(line != NULL, "%s: exactly one error line (found %d)%s%s", what, count,
+        line ? "" : "; output:\n", line ? "" : out);
+  if (!line) return;
+  for (int i = 0; want[i]; i++)
+    CHECK(strstr(line, want[i]) != NULL, "%s: message has \"%s\"\n          %s", what, want[i],
+          line);
+}
+
+/* An input error: exit 2, the message, and the output folder untouched. */
+static void bad_input(const char *name, const char *yaml, const char *extra, const char *const *want)
+{
+  char file[64], out[16384], args[9000], names[512];
+  snprintf(file, sizeof file, "%s.yaml", name);
+  const char *casefile = test_write_file(file, yaml);
+  const char *dir = prepare_outdir(name);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet %s", casefile, dir, extra ? extra : "");
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "%s: exit status %d (want 2)", name, rc);
+  check_message(name, out, want);
+  int ntmp, n = count_entries(dir, &ntmp, names, sizeof names);
+  char sp[4400];
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  char *prev = slurp(sp, NULL);
+  CHECK(n == 1 && ntmp == 0 && prev && !strcmp(prev, PREVIOUS),
+        "%s: output folder untouched: only the earlier summary.csv, intact (has:%s)", name,
+        names);
+  free(prev);
+}
+
+/* summary.csv complete: comment lines, the header, then rows of SUMMARY_FIELDS
+ * numbers, each ending in a newline. Returns the number of rows (-1 if malformed). */
+static int summary_rows(const char *dir)
+{
+  char sp[4400];
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  size_t len;
+  char *s = slurp(sp, &len);
+  if (!s || !len || s[len - 1] != '\n') {
+    free(s);
+    return -1;
+  }
+  int rows = 0, header = 0, ok = 1;
+  for (char *line = strtok(s, "\n"); line && ok; line = strtok(NULL, "\n")) {
+    if (line[0] == '#') continue;
+    int fields = 1;
+    for (char *c = line; *c; c++) fields += *c == ',';
+    if (!header) {
+      static const char cols[] = "step,time,dt,n,mass,px,py,pz,e_kin,e_int,e_total";
+      ok = !strncmp(line, cols, sizeof cols - 1) &&
+           fields == SUMMARY_FIELDS;
+      header = 1;
+      continue;
+    }
+    char *end = line;
+    for (int f = 0; f < fields && ok; f++) {
+      strtod(end, &end);
+      ok = *end == (f + 1 < fields ? ',' : '\0');
+      end++;
+    }
+    ok = ok && fields == SUMMARY_FIELDS;
+    rows++;
+  }
+  free(s);
+  return ok && header ? rows : -1;
+}
+
+/* A run that fails: exit 3, the message, no temporary files, a complete summary.csv. */
+static void failed_run(const char *name, const char *extra, const char *const *want)
+{
+  char out[16384], args[9000], names[512];
+  const char *casefile = test_write_file("base.yaml", variant(0, ""));
+  const char *dir = prepare_outdir(name);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet %s", casefile, dir, extra);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 3, "%s: exit status %d (want 3)", name, rc);
+  check_message(name, out, want);
+  int ntmp;
+  count_entries(dir, &ntmp, names, sizeof names);
+  CHECK(ntmp == 0, "%s: no temporary files left (folder has:%s)", name, names);
+  int rows = summary_rows(dir);
+  CHECK(rows == 1, "%s: summary.csv is the new run's, complete, with its %d row(s) (want 1: "
+        "the initial state)", name, rows);
+}
+
+static void test_commands(void)
+{
+  char out[16384];
+  int rc = hvsph("--help", out, sizeof out); /* stderr only: must be empty */
+  CHECK(rc == 0 && out[0] == '\0', "--help exits 0 (%d) and writes nothing to stderr", rc);
+  char cmd[4400];
+  snprintf(cmd, sizeof cmd, "'%s' --help 2>/dev/null", test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "hvsph run CASE.yaml") && strstr(out, "hvsph bench") &&
+            strstr(out, "--set") && strstr(out, "--threads") && strstr(out, "exit status"),
+        "--help on stdout mentions run, bench, --set, --threads and the exit statuses");
+  snprintf(cmd, sizeof cmd, "'%s' --version 2>/dev/null", test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  char version[256] = "";
+  int got = sscanf(out, "hvsph %255s", version) == 1 && strlen(version) > 0 &&
+            strcmp(version, "unknown") && strchr(out, '\n') == out + strlen(out) - 1;
+  CHECK(rc == 0 && got, "--version exits 0 (%d) and prints one line 'hvsph <version>': '%s'",
+        rc, version);
+
+  /* the version is the one written into the outputs */
+  const char *casefile = test_write_file("base.yaml", variant(0, ""));
+  const char *dir = path_of("ok");
+  char args[9000];
+  snprintf(args, sizeof args, "run '%s' -o '%s'", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the base case runs (exit %d)", rc);
+  CHECK(strstr(out, "hvsph: step ") && !strchr(out, '\r') && strstr(out, "hvsph: done:"),
+        "not on a terminal: plain log lines 'hvsph: step ...' (no carriage returns) and 'done'");
+  char up[4400];
+  snprintf(up, sizeof up, "%s/used_parameters.yaml", dir);
+  char *u = slurp(up, NULL), want[300];
+  snprintf(want, sizeof want, "# Parameters used by hvsph %s\n", version);
+  CHECK(u && !strncmp(u, want, strlen(want)), "used_parameters.yaml starts with '%.*s'",
+        (int)strlen(want) - 1, want);
+  free(u);
+  CHECK(summary_rows(dir) == 3, "summary.csv has 3 rows (t = 0, 0.005, 0.01)");
+
+  static const struct {
+    const char *args, *what;
+  } usage[] = {
+      {"", "no command"},
+      {"run", "run without a case file"},
+      {"frobnicate", "an unknown command"},
+      {"run a.yaml --threads 0", "--threads 0"},
+      {"run a.yaml --threads two", "--threads two"},
+      {"run a.yaml b.yaml", "two case files"},
+      {"run a.yaml --bogus", "an unknown option"},
+      {"bench --particles", "bench --particles without a value"},
+  };
+  for (size_t k = 0; k < sizeof usage / sizeof usage[0]; k++) {
+    rc = hvsph(usage[k].args, out, sizeof out);
+    CHECK(rc == 1 && out[0], "%s ('hvsph %s'): exit status %d (want 1) with a message: %.*s",
+          usage[k].what, usage[k].args, rc, (int)strcspn(out, "\n"), out);
+  }
+}
+
+static void test_bad_input(void)
+{
+  /* malformed YAML: line and column of the fault */
+  bad_input("malformed", variant(7, "  boundary: {x: wall, y: periodic, z: periodic}}"), NULL,
+            (const char *const[]){"malformed.yaml:7:", "YAML syntax error", NULL});
+  bad_input("indent", variant(18, "  end: 0.01\n cfl: 0.3"), NULL,
+            (const char *const[]){"indent.yaml:19:", "YAML syntax error", "indentation", NULL});
+  /* values */
+  bad_input("neg_density", variant(13, "    density: -5"), NULL,
+            (const char *const[]){"neg_density.yaml:13: bodies[0].density: ", "-5",
+                                  "out of range", NULL});
+  bad_input("kg_velocity", variant(15, "    velocity: [5 kg, 0, 0]"), NULL,
+            (const char *const[]){"kg_velocity.yaml:15: bodies[0].velocity[0]: ",
+                                  "unit 'kg' is a mass, expected a velocity", NULL});
+  bad_input("kg_radial", variant(16, "    radial_velocity: 5 kg"), NULL,
+            (const char *const[]){"kg_radial.yaml:16: bodies[0].radial_velocity: ",
+                                  "unit 'kg' is a mass, expected a velocity", NULL});
+  bad_input("bad_number", variant(18, "  end: fast"), NULL,
+            (const char *const[]){"bad_number.yaml:18: time.end: ", NULL});
+  /* keys */
+  bad_input("unknown_key", variant(18, "  end: 0.01\n  clf: 0.3"), NULL,
+            (const char *const[]){"unknown_key.yaml:19: ", "unknown key 'time.clf'",
+                                  "did you mean 'cfl'?", NULL});
+  bad_input("unknown_body_key", variant(16, "    radial_velocty: 0.2"), NULL,
+            (const char *const[]){"unknown_body_key.yaml:16: ",
+                                  "unknown key 'bodies[0].radial_velocty'",
+                                  "did you mean 'radial_velocity'?", NULL});
+  bad_input("missing_key", variant(18, ""), NULL,
+            (const char *const[]){"missing_key.yaml:17: ", "missing required key 'time.end'",
+                                  NULL});
+  /* materials */
+  bad_input("unknown_material", variant(10, "    material: air"), NULL,
+            (const char *const[]){"unknown_material.yaml:10: ", "unknown material 'air'", NULL});
+  bad_input("unknown_eos", variant(3, "  gas: {eos: ideal-gass, gamma: 1.4}"), NULL,
+            (const char *const[]){"unknown_eos.yaml:3: materials.gas.eos: ",
+                                  "'ideal-gass' is not one of", NULL});
+  bad_input("unknown_library", variant(3, "  gas: {library: unobtainium}"), NULL,
+            (const char *const[]){"unknown_library.yaml:3: ", "materials.gas.library",
+                                  "unobtainium", NULL});
+  /* --set */
+  const char *base = variant(0, "");
+  bad_input("set_syntax", base, "--set 'time..end=1'",
+            (const char *const[]){"--set", "time..end", "bad key path", NULL});
+  bad_input("set_no_value", base, "--set time.end",
+            (const char *const[]){"--set 'time.end': expected key=value", NULL});
+  bad_input("set_index", base, "--set 'bodies[3].spacing=1 mm'",
+            (const char *const[]){"--set bodies[3].spacing: ", "fewer entries", NULL});
+  bad_input("set_not_map", base, "--set time.end.x=1",
+            (const char *const[]){"--set time.end.x: 'time.end' is not a mapping", NULL});
+  bad_input("set_unit", base, "--set 'time.end=5 kg'",
+            (const char *const[]){"--set: time.end: ", "unit 'kg' is a mass", NULL});
+  bad_input("set_unknown", base, "--set time.ennd=1",
+            (const char *const[]){"--set: unknown key 'time.ennd'", "did you mean 'end'?", NULL});
+}
+
+static void test_outdir(void)
+{
+  char out[16384], args[9000], want[4400];
+  const char *casefile = test_write_file("base.yaml", variant(0, ""));
+  const char *missing = path_of("no_such_case.yaml");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", missing, path_of("nocase"));
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "a case file that does not exist: exit status %d (want 2)", rc);
+  snprintf(want, sizeof want, "cannot open case file '%s': No such file or directory", missing);
+  check_message("no case file", out, (const char *const[]){want, NULL});
+  struct stat st;
+  CHECK(stat(path_of("nocase"), &st) != 0, "... and no output folder is created");
+  const char *file = test_write_file("regular_file", "not a folder\n");
+  snprintf(args, sizeof args, "run '%s' -o '%s/sub' --quiet", casefile, file);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "output folder below a regular file: exit status %d (want 2)", rc);
+  snprintf(want, sizeof want, "cannot create folder '%s/sub' (at '%s'): exists and is not a "
+           "folder", file, file);
+  check_message("outdir below a file", out, (const char *const[]){want, NULL});
+  char *f = slurp(file, NULL);
+  CHECK(f && !strcmp(f, "not a folder\n"), "the regular file is untouched");
+  free(f);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, file);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "output folder that is a regular file: exit status %d (want 2)", rc);
+  snprintf(want, sizeof want, "cannot create folder '%s': exists and is not a folder", file);
+  check_message("outdir is a file", out, (const char *const[]){want, NULL});
+}
+
+/* An input error found only when the first step is prepared (the periodic box is
+ * too short for the smoothing length): exit 2, no temporary file, the earlier
+ * summary.csv intact. (used_parameters.yaml has already been written by then.) */
+static void test_late_input_error(void)
+{
+  char out[16384], args[9000], names[512];
+  const char *casefile = test_write_file("base.yaml", variant(0, ""));
+  const char *dir = prepare_outdir("periodic_short");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set sph.eta=3", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "periodic box shorter than two interaction radii: exit status %d (want 2)", rc);
+  check_message("periodic_short", out,
+                (const char *const[]){"periodic domain is 0.05 m long in y", NULL});
+  int ntmp;
+  count_entries(dir, &ntmp, names, sizeof names);
+  char sp[4400];
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  char *prev = slurp(sp, NULL);
+  CHECK(ntmp == 0 && prev && !strcmp(prev, PREVIOUS),
+        "periodic_short: no temporary file, the earlier summary.csv intact (folder has:%s)", names);
+  free(prev);
+}
+
+int main(void)
+{
+  test_commands();
+  test_bad_input();
+  test_outdir();
+  test_late_input_error();
+  failed_run("negative_density",
+             "--set time.end=10 --set time.dt_init=10 --set output.every=0",
+             (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "rho = -", NULL});
+  failed_run("not_finite", "--set bodies[0].pressure=1e306",
+             (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "nan", NULL});
+  return test_finish();
+}

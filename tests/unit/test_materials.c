@@ -1,0 +1,430 @@
+/* test_materials.c — materials from case files and the library data/materials.yaml:
+ * the paper's values exactly, library overrides (config grafts), G from Poisson's ratio,
+ * input errors with file and line, bodies naming library materials, `hvsph materials`. */
+#include "config/config.h"
+#include "eos/eos.h"
+#include "material/material.h"
+#include "testlib.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static void use_library(const char *dir)
+{
+  static char data[4200];
+  if (dir)
+    snprintf(data, sizeof data, "%s", dir);
+  else
+    snprintf(data, sizeof data, "%s/data", test_source_dir());
+  setenv("HVSPH_DATA", data, 1);
+}
+
+/* Reads materials.NAME of a case given as text; returns 0 or -1 (err filled). */
+static int read_case_material(const char *yaml, const char *name, struct material *m,
+                              struct cfg **cp, struct hv_error *err)
+{
+  struct cfg *c = cfg_load_string(yaml, "case.yaml", err);
+  if (cp) *cp = c;
+  if (!c) return -1;
+  char path[128];
+  snprintf(path, sizeof path, "materials.%s", name);
+  int rc = material_read(c, path, name, m, err);
+  if (!cp) cfg_free(c);
+  return rc;
+}
+
+static void expect_error(const char *yaml, const char *name, const char *expect)
+{
+  struct material m;
+  struct hv_error err = {0};
+  int rc = read_case_material(yaml, name, &m, NULL, &err);
+  int same = strstr(err.msg, expect) != NULL;
+  CHECK(rc == -1 && err.code == HV_EXIT_INPUT && same, "error '%s'%s%s", err.msg,
+        same ? "" : "\n        wanted (part): ", same ? "" : expect);
+  if (!rc) material_free(&m);
+}
+
+/* ---------------------------------------------------------------- the paper's values */
+
+struct paper_mg {
+  const char *name;
+  double rho0, c0, n, Gamma, G, nu, Y, sigma_c; /* SI; G = 0 where the table gives ν */
+};
+
+/* ../shared/reference/paper_tables.yaml (Tables 2, 5, 8), in SI, written out by hand. */
+static const struct paper_mg paper[] = {
+    {"tungsten-alloy", 17780.0, 4612.0, 3.54, 1.66, 126.615e9, 0.0, 0.983e9, -0.983e9},
+    {"steel-target", 7810.0, 4900.0, 4.5, 1.8, 95e9, 0.0, 0.39e9, -0.39e9},
+    {"steel-projectile", 7700.0, 4760.0, 4.0, 1.38, 0.0, 0.3, 1.55e9, -2.66e9},
+    {"steel-bumper", 7850.0, 4406.0, 4.0, 1.38, 0.0, 0.275, 0.35e9, -0.47e9},
+    {"al-alloy", 2780.0, 5612.0, 3.54, 1.176, 0.0, 0.362, 0.383e9, -0.59e9},
+    {"al-projectile", 2701.0, 5240.0, 3.54, 0.97, 0.0, 0.33, 0.075e9, -0.1e9},
+};
+
+static void test_paper_values(void)
+{
+  struct cfg *lib;
+  struct hv_error err = {0};
+  if (material_library_load(NULL, &lib, &err)) {
+    CHECK(0, "library loads: %s", err.msg);
+    return;
+  }
+  for (size_t k = 0; k < sizeof paper / sizeof paper[0]; k++) {
+    const struct paper_mg *w = &paper[k];
+    struct material m;
+    int rc = material_read(lib, w->name, w->name, &m, &err);
+    CHECK(rc == 0, "%s reads (%s)", w->name, rc ? err.msg : "ok");
+    if (rc) continue;
+    const struct eos_mie_gruneisen *g = &m.eosp.mg;
+    /* exact equality: the library's decimal values with units convert to the nearest double */
+    CHECK(m.eos == EOS_MIE_GRUNEISEN && g->rho0 == w->rho0 && m.rho0 == w->rho0 &&
+              g->c0 == w->c0 && g->n == w->n && g->Gamma == w->Gamma,
+          "%s: EOS rho0 %.17g c0 %.17g n %.17g Gamma %.17g", w->name, g->rho0, g->c0, g->n,
+          g->Gamma);
+    CHECK(m.str.enabled && m.str.yield == YIELD_CONSTANT && m.str.Y0 == w->Y,
+          "%s: yield %.17g Pa", w->name, m.str.Y0);
+    if (w->G > 0) {
+      CHECK(m.str.G == w->G, "%s: G = %.17g Pa (table)", w->name, m.str.G);
+    } else {
+      const double K = w->rho0 * w->c0 * w->c0, G = 3 * K * (1 - 2 * w->nu) / (2 * (1 + w->nu));
+      CHECK(m.str.nu == w->nu && fabs(m.str.G - G) <= 1e-15 * G,
+            "%s: nu %.17g -> G = %.17g Pa (3K(1-2nu)/(2(1+nu)) = %.17g, K = rho0 c0^2)", w->name,
+            m.str.nu, m.str.G, G);
+    }
+    CHECK(m.frac.kind == FRACTURE_TRESCA && m.frac.sigma_c == w->sigma_c,
+          "%s: tresca, sigma_c = %.17g Pa", w->name, m.frac.sigma_c);
+    CHECK(strstr(m.source, "seed paper, Table") != NULL, "%s: source '%s'", w->name, m.source);
+    material_free(&m);
+  }
+  struct material m;
+  int rc = material_read(lib, "nitrogen", "nitrogen", &m, &err);
+  CHECK(rc == 0 && m.eos == EOS_IDEAL_GAS && m.eosp.gas.gamma == 1.4 && m.rho0 == 13.125 &&
+            !m.str.enabled && m.frac.kind == FRACTURE_NONE,
+        "nitrogen: ideal gas, gamma 1.4, rho0 13.125 kg/m3 (%s)", rc ? err.msg : "ok");
+  /* and p = 10.5 bar at e = 0.2 kJ/g (section 3) */
+  struct eos_state st;
+  eos_evaluate(&m, 13.125, 200.0e3, &st);
+  CHECK(fabs(st.p - 10.5e5) <= 1e-9 * 10.5e5, "nitrogen: p = %.10g Pa (10.5 bar)", st.p);
+
+  /* Tillotson sets and the verification materials */
+  rc = material_read(lib, "aluminium-tillotson", "al", &m, &err);
+  const struct eos_tillotson *t = &m.eosp.til;
+  CHECK(rc == 0 && m.eos == EOS_TILLOTSON && t->rho0 == 2700 && t->A == 75.2e9 && t->B == 65e9 &&
+            t->E0 == 5e6 && t->a == 0.5 && t->b == 1.63 && t->alpha == 5 && t->beta == 5 &&
+            t->E_iv == 3e6 && t->E_cv == 13.9e6 && m.K0 == 75.2e9,
+        "aluminium-tillotson: Melosh (1989) values");
+  rc = material_read(lib, "iron-tillotson", "fe", &m, &err);
+  CHECK(rc == 0 && t->rho0 == 7800 && t->A == 128e9 && t->B == 105e9 && t->E0 == 9.5e6 &&
+            t->b == 1.5 && t->E_iv == 2.4e6 && t->E_cv == 8.67e6,
+        "iron-tillotson: Melosh (1989) values");
+  rc = material_read(lib, "copper", "copper", &m, &err);
+  CHECK(rc == 0 && m.rho0 == 8930 && m.eosp.mg.c0 == 3940 && m.str.yield == YIELD_LINEAR &&
+            m.str.Y0 == 400e6 && m.str.H == 100e6 && m.str.nu == 0.35 &&
+            fabs(m.str.G - 117e9 / 2.7) <= 1e-15 * 43.4e9,
+        "copper: G = E/(2(1 + nu)) = %.17g Pa, Y 400 MPa, H 100 MPa", m.str.G);
+  rc = material_read(lib, "rubber-ring", "rubber", &m, &err);
+  CHECK(rc == 0 && m.eosp.mg.n == 1 && m.eosp.mg.Gamma == 0 && m.str.G == 0.22 && m.str.enabled,
+        "rubber-ring: n = 1, Gamma = 0, G = 0.22");
+  eos_evaluate(&m, 1.1, 0.0, &st);
+  CHECK(fabs(st.p - 0.1) <= 1e-15, "rubber-ring: p = c0^2 (rho - rho0) = %.17g at rho = 1.1", st.p);
+  /* every entry reads and no key is left unread */
+  CHECK(cfg_check_unused(lib, &err) == 0, "no unknown key in the library (%s)",
+        err.code ? err.msg : "ok");
+  cfg_free(lib);
+}
+
+/* ---------------------------------------------------------------- overrides */
+
+static void test_overrides(void)
+{
+  static const char *yaml = "materials:\n"                                            /* 1 */
+                            "  target: {library: steel-target, strength: {yield: 0.5 GPa}}\n"
+                            "  rod: {library: tungsten-alloy, strength: {poisson: 0.28}}\n"
+                            "  plate:\n"                                                 /* 4 */
+                            "    library: al-alloy\n"
+                            "    c0: 5 km/s\n"
+                            "    fracture: {model: none}\n"
+                            "  hard: {library: steel-target, strength: {model: linear, hardening: 1 GPa}}\n";
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string(yaml, "case.yaml", &err);
+  struct material m[4];
+  int rc = material_read(c, "materials.target", "target", &m[0], &err) ||
+           material_read(c, "materials.rod", "rod", &m[1], &err) ||
+           material_read(c, "materials.plate", "plate", &m[2], &err) ||
+           material_read(c, "materials.hard", "hard", &m[3], &err);
+  CHECK(rc == 0, "overrides read (%s)", rc ? err.msg : "ok");
+  if (rc) {
+    cfg_free(c);
+    return;
+  }
+  CHECK(m[0].str.Y0 == 0.5e9 && m[0].str.G == 95e9 && m[0].eosp.mg.c0 == 4900 &&
+            m[0].frac.sigma_c == -0.39e9 && !strcmp(m[0].library, "steel-target") &&
+            strstr(m[0].source, "Table 2"),
+        "target: yield overridden to 0.5 GPa, the rest from steel-target");
+  const double K = 17780.0 * 4612.0 * 4612.0;
+  CHECK(m[1].str.nu == 0.28 && fabs(m[1].str.G - 3 * K * 0.44 / 2.56) <= 1e-14 * m[1].str.G &&
+            m[1].str.Y0 == 0.983e9,
+        "rod: the case's poisson replaces the library's shear_modulus (G = %.17g)", m[1].str.G);
+  const double K2 = 2780.0 * 5000.0 * 5000.0;
+  CHECK(m[2].eosp.mg.c0 == 5000 && m[2].K0 == K2 && m[2].eosp.mg.n == 3.54 &&
+            fabs(m[2].str.G - 3 * K2 * (1 - 0.724) / (2 * 1.362)) <= 1e-14 * m[2].str.G &&
+            m[2].frac.kind == FRACTURE_NONE,
+        "plate: c0 5 km/s changes K and G; fracture none");
+  CHECK(m[3].str.yield == YIELD_LINEAR && m[3].str.H == 1e9, "hard: linear hardening");
+  /* values from the library carry its file and line in messages */
+  char where[512];
+  cfg_where(c, "materials.target.c0", where, sizeof where);
+  CHECK(strstr(where, "data/materials.yaml:") != NULL, "library value located at '%s'", where);
+  cfg_where(c, "materials.target.strength.yield", where, sizeof where);
+  CHECK(!strcmp(where, "case.yaml:2"), "case value located at '%s'", where);
+  /* the library's unused keys (al-alloy's sigma_c under model none) are not "unknown" */
+  CHECK(cfg_check_unused(c, &err) == 0, "no unknown keys (%s)", err.code ? err.msg : "ok");
+  /* used_parameters.yaml records the values taken from the library */
+  char path[4200], text[8192] = "";
+  snprintf(path, sizeof path, "%s/used_materials.yaml", test_tmpdir());
+  rc = cfg_write_used(c, path, "test", &err);
+  FILE *f = fopen(path, "r");
+  size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+  text[n] = '\0';
+  if (f) fclose(f);
+  CHECK(rc == 0 && strstr(text, "c0: 4900  # m/s") && strstr(text, "yield: 5e+08  # Pa") &&
+            strstr(text, "library: \"steel-target\""),
+        "used parameters record library values");
+  for (int k = 0; k < 4; k++) material_free(&m[k]);
+  cfg_free(c);
+}
+
+/* ---------------------------------------------------------------- errors */
+
+static void test_errors(void)
+{
+  expect_error("materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 7.8 g/cm3\n    c0: 5 km/s\n"
+               "    n: 4\n    gamma: 2\n    strength: {poisson: 0.5, yield: 1 GPa}\n",
+               "x", "case.yaml:8: materials.x.strength.poisson: Poisson's ratio 0.5 is outside "
+               "(-1, 0.5)");
+  expect_error("materials:\n  x: {library: steel-bumper, strength: {poisson: -1}}\n", "x",
+               "case.yaml:2: materials.x.strength.poisson: Poisson's ratio -1 is outside (-1, 0.5)");
+  expect_error("materials:\n  x:\n    library: aluminium-tillotson\n    E_cv: 2 MJ/kg\n", "x",
+               "case.yaml:4: materials.x.E_cv: E_cv = 2000000 J/kg must be greater than E_iv = "
+               "3000000 J/kg");
+  expect_error("materials:\n  x: {eos: murnaghan, rho0: 1000}\n", "x",
+               "case.yaml:2: materials.x.eos: 'murnaghan' is not one of 'ideal-gas', "
+               "'mie-gruneisen', 'tillotson', 'table'");
+  expect_error("materials:\n  x: {library: steel-targte}\n", "x",
+               "case.yaml:2: materials.x.library: unknown library material 'steel-targte' (");
+  expect_error("materials:\n  x: {library: steel-targte}\n", "x",
+               "has: tungsten-alloy, steel-target, steel-projectile");
+  expect_error("materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 7.8 g/cm3\n    n: 4\n"
+               "    gamma: 2\n", "x", "case.yaml:2: missing required key 'materials.x.c0'");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {sigma_c: 0.39 GPa}}\n", "x",
+               "case.yaml:2: materials.x.fracture.sigma_c: sigma_c = 390000000 Pa must be "
+               "negative");
+  expect_error("materials:\n  x: {library: steel-target, c0: 5 kg}\n", "x",
+               "case.yaml:2: materials.x.c0: unit 'kg' is a mass, expected a velocity");
+  expect_error("materials:\n  x: {library: steel-target, strength: {poisson: 0.3, shear_modulus: "
+               "80 GPa}}\n", "x", "materials.x.strength.poisson: give shear_modulus or poisson, "
+               "not both");
+  expect_error("materials:\n  x: {library: tungsten-alloy, strength: {hardening: 1 GPa}}\n", "x",
+               "case.yaml:2: materials.x.strength.hardening: hardening applies to model: linear "
+               "only");
+  expect_error("materials:\n  x: {library: aluminium-tillotson, strength: {poisson: 0.3, yield: "
+               "1 GPa}, fracture: {model: tresca}}\n", "x",
+               "missing required key 'materials.x.fracture.sigma_c'");
+  expect_error("materials:\n  x: {library: nitrogen, strength: {poisson: 0.3, yield: 1 GPa}}\n", "x",
+               "materials.x.strength.poisson: G from Poisson's ratio needs the bulk modulus");
+  expect_error("materials:\n  x: {library: steel-target, strength: {model: johnson-cook, B: 1 GPa, "
+               "N: 0.3, cv: 450, T_melt: 200 K}}\n", "x",
+               "materials.x.strength.T_melt: T_melt = 200 K must be above T_ref = 293.15 K");
+  expect_error("materials:\n  x: 5\n", "x", "case.yaml:2: materials.x: material 'x' must be a "
+               "mapping");
+}
+
+/* An error in a library value names the library file and line. */
+static void test_library_errors(void)
+{
+  char dir[4200];
+  snprintf(dir, sizeof dir, "%s/badlib", test_tmpdir());
+  if (mkdir(dir, 0755) && errno != EEXIST) {
+    CHECK(0, "mkdir %s", dir);
+    return;
+  }
+  char file[4300];
+  snprintf(file, sizeof file, "%s/materials.yaml", dir);
+  FILE *f = fopen(file, "w");
+  if (!f) return;
+  fputs("# a library with a mistake\n"        /* 1 */
+        "good: {eos: ideal-gas, gamma: 1.4}\n" /* 2 */
+        "bad:\n"                               /* 3 */
+        "  eos: mie-gruneisen\n"               /* 4 */
+        "  rho0: 7.8 g/cm3\n"                  /* 5 */
+        "  c0: 5 kg\n"                         /* 6 */
+        "  n: 4\n"
+        "  gamma: 2\n"
+        "chain: {library: good}\n",
+        f);
+  fclose(f);
+  use_library(dir);
+  expect_error("materials:\n  x: {library: bad}\n", "x",
+               "badlib/materials.yaml:6: materials.x.c0: unit 'kg' is a mass, expected a velocity");
+  expect_error("materials:\n  x: {library: chain}\n", "x",
+               "badlib/materials.yaml:9: chain.library: a library entry cannot name another");
+  struct material m;
+  struct hv_error err = {0};
+  int rc = read_case_material("materials:\n  x: {library: good}\n", "x", &m, NULL, &err);
+  CHECK(rc == 0 && m.eosp.gas.gamma == 1.4, "HVSPH_DATA chooses the library (%s)",
+        rc ? err.msg : "ok");
+  setenv("HVSPH_DATA", "/nonexistent-hvsph-data", 1);
+  expect_error("materials:\n  x: {library: good}\n", "x",
+               "case.yaml:2: materials.x.library: HVSPH_DATA=/nonexistent-hvsph-data: no readable "
+               "materials.yaml there");
+  use_library(NULL);
+}
+
+/* ---------------------------------------------------------------- table EOS in a case */
+
+static void test_table_material(void)
+{
+  test_write_file("tab_eos.txt", "rho_count 2 e_count 2\n1000 2000\n0 1e6\n0 4e8\n0 8e8\n");
+  const char *casefile = test_write_file("tab_case.yaml",
+                                         "materials:\n"
+                                         "  t: {eos: table, file: tab_eos.txt, rho0: 1000}\n"
+                                         "  u: {eos: table, file: missing.txt}\n");
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load(casefile, &err);
+  if (!c) {
+    CHECK(0, "case loads: %s", err.msg);
+    return;
+  }
+  struct material m;
+  int rc = material_read(c, "materials.t", "t", &m, &err);
+  CHECK(rc == 0 && m.eos == EOS_TABLE && m.rho0 == 1000 && m.eosp.tab.nrho == 2,
+        "table relative to the case's folder (%s)", rc ? err.msg : "ok");
+  if (!rc) {
+    struct eos_state st;
+    eos_evaluate(&m, 1500, 5e5, &st);
+    CHECK(fabs(st.p - 3e8) <= 1e-6, "table p = %.17g (3e8)", st.p);
+    double e;
+    CHECK(eos_energy_from_pressure(&m, 1500, 3e8, &e) == 0 && fabs(e - 5e5) <= 1e-6,
+          "table: e from p round trip (%.17g)", e);
+    material_free(&m);
+  }
+  rc = material_read(c, "materials.u", "u", &m, &err);
+  char want[8400];
+  snprintf(want, sizeof want, "%s:3: materials.u.file: cannot open EOS table '%s/missing.txt': "
+           "No such file or directory", casefile, test_tmpdir());
+  CHECK(rc == -1 && !strcmp(err.msg, want), "missing table: '%s'", err.msg);
+  cfg_free(c);
+}
+
+/* ---------------------------------------------------------------- grafts and lookups */
+
+static void test_graft(void)
+{
+  struct hv_error err = {0};
+  struct cfg *d = cfg_load_string("a:\n  x: 1\n  m: {p: 2}\n", "dst.yaml", &err);
+  struct cfg *s = cfg_load_string("e:\n  x: 9\n  y: 8\n  m: {p: 7, q: 6}\n", "src.yaml", &err);
+  int rc = cfg_graft(d, "a", s, "e", &err) || cfg_graft(d, "new.b", s, "e", &err);
+  cfg_free(s); /* the grafted nodes do not depend on src */
+  CHECK(rc == 0, "grafts (%s)", rc ? err.msg : "ok");
+  double v[6] = {0};
+  rc = cfg_get_quantity(d, "a.x", UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &v[0], &err) ||
+       cfg_get_quantity(d, "a.y", UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &v[1], &err) ||
+       cfg_get_quantity(d, "a.m.p", UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &v[2], &err) ||
+       cfg_get_quantity(d, "a.m.q", UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &v[3], &err) ||
+       cfg_get_quantity(d, "new.b.x", UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &v[4], &err);
+  CHECK(rc == 0 && v[0] == 1 && v[1] == 8 && v[2] == 2 && v[3] == 6 && v[4] == 9,
+        "merge: dst keys win, src fills the rest, mappings merge (%g %g %g %g %g)", v[0], v[1],
+        v[2], v[3], v[4]);
+  char w[256];
+  CHECK(!strcmp(cfg_where(d, "a.y", w, sizeof w), "src.yaml:3"), "grafted line: %s", w);
+  CHECK(!strcmp(cfg_where(d, "a.m.q", w, sizeof w), "src.yaml:4"), "grafted nested line: %s", w);
+  CHECK(!strcmp(cfg_where(d, "a.x", w, sizeof w), "dst.yaml:2"), "own line: %s", w);
+  CHECK(!strcmp(cfg_node_file(d, "a.y"), "src.yaml") && !strcmp(cfg_node_file(d, "a.x"), "dst.yaml")
+            && !strcmp(cfg_node_file(d, "nothing"), "dst.yaml"),
+        "cfg_node_file");
+  rc = cfg_get_quantity(d, "a.y", UNIT_NONE, NULL, 100.0, 200.0, &v[5], &err);
+  CHECK(rc == -1 && !strncmp(err.msg, "src.yaml:3: a.y: ", 17), "value error in a grafted key: "
+        "'%s'", err.msg);
+  /* grafted keys never read are not "unknown" (the reader decides what applies) */
+  CHECK(cfg_check_unused(d, &err) == 0, "unused grafted keys are not errors (%s)",
+        err.code ? err.msg : "ok");
+  s = cfg_load_string("e: 5\n", "src.yaml", &err);
+  rc = cfg_graft(d, "a", s, "e", &err);
+  CHECK(rc == -1 && strstr(err.msg, "src.yaml:1: 'e' must be a mapping"), "graft of a scalar: '%s'",
+        err.msg);
+  rc = cfg_graft(d, "a.x", s, "", &err);
+  CHECK(rc == -1 && strstr(err.msg, "dst.yaml:2: a.x: expected a mapping"), "graft onto a scalar: "
+        "'%s'", err.msg);
+  cfg_free(s);
+  cfg_free(d);
+}
+
+static void test_find_or_load(void)
+{
+  static const char *yaml = "materials:\n"
+                            "  a: {library: steel-target}\n"
+                            "bodies:\n"
+                            "  - {material: copper}\n"
+                            "  - {material: a}\n"
+                            "  - {material: copper}\n"
+                            "  - {material: nope}\n";
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string(yaml, "case.yaml", &err);
+  struct material mats[4];
+  int n = 0;
+  int i0 = material_find_or_load(c, "bodies[0].material", "copper", mats, &n, 4, &err);
+  int i1 = material_find_or_load(c, "bodies[1].material", "a", mats, &n, 4, &err);
+  int i2 = material_find_or_load(c, "bodies[2].material", "copper", mats, &n, 4, &err);
+  CHECK(i0 == 0 && i1 == 1 && i2 == 0 && n == 2 && mats[0].eosp.mg.c0 == 3940 &&
+            mats[1].str.G == 95e9 && !strcmp(mats[0].library, "copper"),
+        "library material by name, case material, reuse (%d %d %d, n %d)", i0, i1, i2, n);
+  CHECK(cfg_has(c, "materials.copper.c0"), "the library entry is grafted into the case");
+  int i3 = material_find_or_load(c, "bodies[3].material", "nope", mats, &n, 4, &err);
+  CHECK(i3 == -1 && strstr(err.msg, "case.yaml:7: bodies[3].material: unknown material 'nope' "
+                                    "(the case defines: a, copper; the library ") &&
+            strstr(err.msg, "has: tungsten-alloy, steel-target"),
+        "unknown material: '%s'", err.msg);
+  CHECK(cfg_check_unused(c, &err) != 0, "bodies' other keys are still unread (sanity)");
+  for (int k = 0; k < n; k++) material_free(&mats[k]);
+  cfg_free(c);
+}
+
+/* ---------------------------------------------------------------- hvsph materials */
+
+static void test_cli(void)
+{
+  char cmd[8400], out[16384];
+  snprintf(cmd, sizeof cmd, "'%s' materials", test_bin());
+  int st = test_run(cmd, out, sizeof out);
+  CHECK(st == 0 && strstr(out, "tungsten-alloy") && strstr(out, "nitrogen") &&
+            strstr(out, "iron-tillotson") && strstr(out, "17780"),
+        "hvsph materials lists the library (status %d)", st);
+  snprintf(cmd, sizeof cmd, "'%s' materials al-alloy", test_bin());
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 0 && strstr(out, "poisson") && strstr(out, "0.362") && strstr(out, "sigma_c") &&
+            strstr(out, "-590000000") && strstr(out, "kg/m3") && strstr(out, "(5.612 km/s)"),
+        "hvsph materials al-alloy: every parameter with units (status %d)%s%s", st,
+        st ? "\n" : "", st ? out : "");
+  snprintf(cmd, sizeof cmd, "'%s' materials steel-targte", test_bin());
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "unknown material 'steel-targte'") && strstr(out, "steel-target"),
+        "unknown name: exit 2 naming the known ones (status %d): %s", st, out);
+}
+
+int main(void)
+{
+  use_library(NULL);
+  test_paper_values();
+  test_overrides();
+  test_errors();
+  test_library_errors();
+  test_table_material();
+  test_graft();
+  test_find_or_load();
+  test_cli();
+  return test_finish();
+}

@@ -1,0 +1,426 @@
+/* test_render.c — pictures checked by their numbers: the column-integrated kernel, mass
+ * conservation of the areal density picture (mirrored: twice), the peak areal density of
+ * a uniform sphere (2Rρ) and of a plate (ρt), the colour map's lightness order, the PNG
+ * written by `hvsph render` (size, background, atomic replacement) and its errors.
+ */
+#include <math.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <dirent.h>
+
+#include "io/snapshot.h"
+#include "render/render.h"
+#include "testlib.h"
+
+#define PI 3.14159265358979323846
+#define RHO_STEEL 7850.0
+
+/* ---- particle sets ------------------------------------------------------ */
+
+static void put(struct particles *p, double x, double y, double z, double m, double h,
+                double rho, int mat, double vx)
+{
+  size_t i = particles_add(p, 1);
+  p->x[0][i] = x;
+  p->x[1][i] = y;
+  p->x[2][i] = z;
+  p->v[0][i] = vx;
+  p->m[i] = m;
+  p->h[i] = h;
+  p->rho[i] = rho;
+  p->mat[i] = mat;
+  p->id[i] = (int64_t)i;
+  p->p[i] = 1e9 * vx / 3000.0;
+}
+
+/* Sphere of radius R about c on a cubic lattice (points at c + (k + 1/2)dx, so none lies
+ * on a plane through the centre); half: only z >= c_z. h = 1.2 dx, m = ρ dx³. */
+static void add_sphere(struct particles *p, const double c[3], double R, double dx, double rho,
+                       int mat, int half, double vx)
+{
+  int n = (int)ceil(R / dx) + 1;
+  for (int k = -n; k < n; k++)
+    for (int j = -n; j < n; j++)
+      for (int i = -n; i < n; i++) {
+        double x = (i + 0.5) * dx, y = (j + 0.5) * dx, z = (k + 0.5) * dx;
+        if (x * x + y * y + z * z > R * R || (half && z < 0)) continue;
+        put(p, c[0] + x, c[1] + y, c[2] + z, rho * dx * dx * dx, 1.2 * dx, rho, mat, vx);
+      }
+}
+
+/* Plate normal to x: x0 <= x < x0 + t, |y| < W/2, z in [zlo, W/2), without the hole of
+ * radius rh about the x axis. */
+static void add_plate(struct particles *p, double x0, double t, double W, double zlo, double dx,
+                      double rho, int mat, double rh)
+{
+  int nx = (int)lround(t / dx), ny = (int)lround(W / dx);
+  for (int k = 0; k < ny; k++)
+    for (int j = 0; j < ny; j++)
+      for (int i = 0; i < nx; i++) {
+        double x = x0 + (i + 0.5) * dx, y = -0.5 * W + (j + 0.5) * dx, z = -0.5 * W + (k + 0.5) * dx;
+        if (z < zlo || y * y + z * z < rh * rh) continue;
+        put(p, x, y, z, rho * dx * dx * dx, 1.2 * dx, rho, mat, 0.0);
+      }
+}
+
+static double total_mass(const struct particles *p)
+{
+  double m = 0.0;
+  for (size_t i = 0; i < p->n; i++) m += p->m[i];
+  return m;
+}
+
+/* Areal density picture of p: mass in it [kg], peak [kg/m2] and the value at (u, v). */
+struct sig {
+  double mass, peak, at;
+};
+
+static struct sig areal(const struct particles *p, const struct render_options *o, double u,
+                        double v, struct render_view *view_out)
+{
+  struct render_view v0;
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct sig s = {0, 0, NAN};
+  if (render_view_setup(p, o, &v0, &err)) {
+    CHECK(0, "view setup: %s", err.msg);
+    return s;
+  }
+  double *sigma = malloc((size_t)v0.nu * (size_t)v0.nv * sizeof *sigma);
+  render_areal_density(p, &v0, sigma);
+  for (size_t k = 0; k < (size_t)v0.nu * (size_t)v0.nv; k++) {
+    s.mass += sigma[k] * v0.pix * v0.pix;
+    s.peak = fmax(s.peak, sigma[k]);
+  }
+  int i = (int)floor((u - v0.u0) / v0.pix), j = (int)floor((v0.v1 - v) / v0.pix);
+  if (i >= 0 && j >= 0 && i < v0.nu && j < v0.nv) s.at = sigma[(size_t)j * (size_t)v0.nu + (size_t)i];
+  free(sigma);
+  if (view_out) *view_out = v0;
+  return s;
+}
+
+/* ---- checks ----------------------------------------------------------- */
+
+static void test_kernel_column(void)
+{
+  CHECK_CLOSE(render_kernel_column(0.0), 1.5 / PI, 1e-7, "F(0) = 3/(2 pi)");
+  CHECK(render_kernel_column(2.0) == 0.0 && render_kernel_column(2.5) == 0.0, "F(s >= 2) = 0");
+  double sum = 0.0;
+  int n = 4000;
+  for (int k = 0; k <= n; k++) {
+    double s = 2.0 * k / n;
+    sum += 2 * PI * s * render_kernel_column(s) * (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2));
+  }
+  CHECK_CLOSE(sum * (2.0 / n) / 3.0, 1.0, 1e-5, "integral of 2 pi s F(s) ds");
+}
+
+static double lstar(const unsigned char c[3])
+{
+  double y = 0.0, w[3] = {0.2126, 0.7152, 0.0722};
+  for (int k = 0; k < 3; k++) {
+    double v = c[k] / 255.0;
+    y += w[k] * (v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4));
+  }
+  return y > 0.008856 ? 116.0 * cbrt(y) - 16.0 : 903.3 * y;
+}
+
+static void test_colormap(void)
+{
+  unsigned char c[3];
+  double prev = -1.0, lo = 0, hi = 0;
+  int mono = 1;
+  for (int k = 0; k <= 255; k++) {
+    render_colormap(k / 255.0, c);
+    double L = lstar(c);
+    if (k == 0) lo = L;
+    hi = L;
+    if (L < prev) mono = 0;
+    prev = L;
+  }
+  CHECK(mono, "colour map lightness L* never decreases");
+  CHECK(lo < 20.0 && hi > 85.0, "colour map spans L* %.1f to %.1f", lo, hi);
+}
+
+static void test_single_particle(void)
+{
+  struct particles p;
+  particles_init(&p);
+  put(&p, 0.0, 0.0, 0.0, 2e-3, 1e-3, 7850, 0, 0);
+  struct render_options o;
+  render_options_default(&o);
+  o.mirror = 0;
+  o.have_box = 1;
+  double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
+  memcpy(o.box, box, sizeof box);
+  o.width = 400; /* pix = 25 µm: h = 40 px */
+  o.height = 436;
+  struct render_view v;
+  struct sig s = areal(&p, &o, 0.0, 0.0, &v);
+  CHECK_CLOSE(s.mass, 2e-3, 2e-3 * 1e-3, "wide kernel: mass in the picture [kg]");
+  CHECK_CLOSE(s.peak, 2e-3 * 1.5 / PI / 1e-6, 0.01 * 2e-3 * 1.5 / PI / 1e-6,
+              "wide kernel: peak = m F(0)/h^2 [kg/m2]");
+  p.h[0] = 2e-6; /* under one pixel: cloud in cell */
+  p.x[0][0] = 1.13e-3;
+  s = areal(&p, &o, 0.0, 0.0, NULL);
+  CHECK_CLOSE(s.mass, 2e-3, 1e-12, "tiny kernel: mass in the picture [kg]");
+  p.h[0] = 5e-5; /* footprint of 4 px: sampled and normalised */
+  s = areal(&p, &o, 0.0, 0.0, NULL);
+  CHECK_CLOSE(s.mass, 2e-3, 1e-12, "small kernel: mass in the picture [kg]");
+  particles_free(&p);
+}
+
+static void test_sphere(void)
+{
+  const double R = 5e-3, dx = R / 16.0, c[3] = {0, 0, 0};
+  struct particles full, half;
+  particles_init(&full);
+  particles_init(&half);
+  add_sphere(&full, c, R, dx, RHO_STEEL, 0, 0, 0);
+  add_sphere(&half, c, R, dx, RHO_STEEL, 0, 1, 0);
+  struct render_options o;
+  render_options_default(&o);
+  o.width = 400;
+  struct render_view v;
+  double M = total_mass(&full), peak = 2 * R * RHO_STEEL;
+
+  struct sig s = areal(&full, &o, 0, 0, &v);
+  CHECK(v.mirror == 0, "a full model is not mirrored by default");
+  CHECK_CLOSE(s.mass / M, 1.0, 0.01, "full sphere along z: picture mass / particle mass");
+  CHECK_CLOSE(s.at / peak, 1.0, 0.05, "full sphere: areal density at the centre / 2R rho");
+  CHECK_CLOSE(s.peak / peak, 1.0, 0.05, "full sphere: peak areal density / 2R rho");
+
+  double Mh = total_mass(&half);
+  s = areal(&half, &o, 0, 0, &v);
+  CHECK(v.mirror == 1, "a half model (z >= 0) is mirrored by default");
+  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01, "half sphere along z, mirrored: mass / twice the particle mass");
+  CHECK_CLOSE(s.at / peak, 1.0, 0.05, "half sphere along z, mirrored: centre / 2R rho");
+  o.axis = 1;
+  s = areal(&half, &o, 0, 0, &v);
+  CHECK(v.iu == 0 && v.iv == 2 && v.v0 < -R, "along y the picture shows x and z, both halves");
+  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01, "half sphere along y, mirrored: mass / twice the particle mass");
+  CHECK_CLOSE(s.at / peak, 1.0, 0.05, "half sphere along y, mirrored: centre / 2R rho");
+  o.axis = 2;
+  o.mirror = 0;
+  s = areal(&half, &o, 0, 0, &v);
+  CHECK_CLOSE(s.mass / Mh, 1.0, 0.01, "half sphere, --no-mirror: mass / particle mass");
+  CHECK_CLOSE(s.at / (0.5 * peak), 1.0, 0.05, "half sphere, --no-mirror: centre / R rho");
+  particles_free(&full);
+  particles_free(&half);
+}
+
+static void test_plate(void)
+{
+  const double t = 2e-3, dx = 0.25e-3;
+  struct particles p;
+  particles_init(&p);
+  add_plate(&p, 0.0, t, 20e-3, 0.0, dx, RHO_STEEL, 0, 0.0);
+  struct render_options o;
+  render_options_default(&o);
+  o.axis = 0; /* face on */
+  o.width = 300;
+  struct render_view v;
+  struct sig s = areal(&p, &o, 0.0, 5e-3, &v);
+  CHECK(v.mirror == 1 && v.iu == 1 && v.iv == 2, "plate along x: y right, z up, mirrored");
+  CHECK_CLOSE(s.mass / (2 * total_mass(&p)), 1.0, 0.01, "plate face on: mass / twice the particle mass");
+  CHECK_CLOSE(s.at / (RHO_STEEL * t), 1.0, 0.01, "plate face on: areal density / rho t");
+  o.have_box = 1; /* a box and a size: exactly that size, square pixels, box inside */
+  double box[6] = {-1e-3, 3e-3, -8e-3, 8e-3, -8e-3, 8e-3};
+  memcpy(o.box, box, sizeof box);
+  o.width = 300;
+  o.height = 200;
+  s = areal(&p, &o, 0.0, 0.0, &v);
+  CHECK(v.width == 300 && v.height == 200 && v.nu == 300 && v.nv == 200 - v.band,
+        "box + size: %dx%d picture, plot %dx%d", v.width, v.height, v.nu, v.nv);
+  CHECK(v.u0 <= -8e-3 && v.u1 >= 8e-3 && v.v0 <= -8e-3 && v.v1 >= 8e-3, "box inside the view");
+  CHECK_CLOSE(s.at / (RHO_STEEL * t), 1.0, 0.01, "plate in a box: areal density / rho t");
+  particles_free(&p);
+}
+
+/* ---- the command ------------------------------------------------------ */
+
+/* Sphere (13.5 mm steel, 3 km/s) behind a 2 mm steel plate with a 20 mm hole and a debris
+ * cloud of small clusters; a half model z >= 0. Material 0 projectile, 1 bumper. */
+static const char *write_scene(const char *name, int solid)
+{
+  struct particles p;
+  particles_init(&p);
+  if (solid) particles_enable_solid(&p);
+  const double c[3] = {25e-3, 0, 0};
+  add_sphere(&p, c, 6.75e-3, 0.45e-3, 7700, 0, 1, 3000);
+  add_plate(&p, 0.0, 2e-3, 60e-3, 0.0, 0.5e-3, 7850, 1, 10e-3);
+  unsigned long r = 12345;
+  for (int k = 0; k < 300; k++) { /* clusters on a cone ahead of the hole */
+    double a[4];
+    for (int q = 0; q < 4; q++) {
+      r = r * 6364136223846793005UL + 1442695040888963407UL;
+      a[q] = (double)(r >> 11) / 9007199254740992.0;
+    }
+    double ang = 0.6 * a[0], phi = PI * a[1], dist = 10e-3 + 22e-3 * a[2];
+    double x = 2e-3 + dist * cos(ang), y = dist * sin(ang) * cos(phi), z = dist * sin(ang) * sin(phi);
+    int n = 1 + (int)(6 * a[3]);
+    for (int q = 0; q < n; q++)
+      put(&p, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4), 7850 * 1.25e-10,
+          0.6e-3, 7850, 1, 2500 * cos(ang));
+  }
+  if (solid)
+    for (size_t i = 0; i < p.n; i++) p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
+  const char *names[2] = {"steel-projectile", "steel-bumper"};
+  struct snapshot_meta meta = {.time = 12e-6, .step = 400, .version = "test", .case_name = "scene",
+                               .material_names = names, .nmat = 2};
+  static char path[8][4096];
+  static int slot = 0;
+  char *out = path[slot++ % 8];
+  snprintf(out, 4096, "%s/%s", test_tmpdir(), name);
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(io_write_particles_csv(out, &p, &meta, &err) == 0, "scene written (%zu particles) %s", p.n, err.msg);
+  particles_free(&p);
+  return out;
+}
+
+/* Reads a PNG as 8-bit RGB; returns the pixels (malloc) and the size, or NULL. */
+static unsigned char *read_png(const char *path, int *w, int *h)
+{
+  png_image img;
+  memset(&img, 0, sizeof img);
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, path)) return NULL;
+  img.format = PNG_FORMAT_RGB;
+  unsigned char *buf = malloc(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, NULL, buf, 0, NULL)) {
+    free(buf);
+    return NULL;
+  }
+  *w = (int)img.width;
+  *h = (int)img.height;
+  return buf;
+}
+
+static int run(const char *args, char *out, size_t len)
+{
+  char cmd[8192];
+  snprintf(cmd, sizeof cmd, "'%s' render %s", test_bin(), args);
+  return test_run(cmd, out, len);
+}
+
+static int tmp_files_left(void)
+{
+  DIR *d = opendir(test_tmpdir());
+  int n = 0;
+  struct dirent *e;
+  while (d && (e = readdir(d)))
+    if (strstr(e->d_name, ".tmp.")) n++;
+  if (d) closedir(d);
+  return n;
+}
+
+static void test_command(void)
+{
+  const char *scene = write_scene("scene.csv", 1);
+  const char *gas = write_scene("scene_gas.csv", 0);
+  const char *dir = test_tmpdir();
+  char args[8192], out[4096];
+  int w = 0, h = 0;
+
+  snprintf(args, sizeof args, "'%s' -o '%s/radiograph_y.png' --axis y --size 640x400", scene, dir);
+  int st = run(args, out, sizeof out);
+  CHECK(st == 0, "radiograph along y: exit %d %s", st, out);
+  snprintf(args, sizeof args, "%s/radiograph_y.png", dir);
+  unsigned char *img = read_png(args, &w, &h);
+  CHECK(img && w == 640 && h == 400, "radiograph PNG read back: %dx%d (640x400)", w, h);
+  if (img) {
+    CHECK(img[0] == RENDER_BG_R && img[1] == RENDER_BG_G && img[2] == RENDER_BG_B,
+          "background pixel (0,0) is white: %d %d %d", img[0], img[1], img[2]);
+    int dark = 0;
+    for (int k = 0; k < w * (h - 72); k++) dark += img[3 * k] < 64;
+    CHECK(dark > 100, "the projectile and the plate are dark (%d pixels below 64)", dark);
+  }
+  free(img);
+
+  snprintf(args, sizeof args, "'%s' -o '%s/radiograph_z.png' --size=500x400", scene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 0, "radiograph along z: exit %d %s", st, out);
+
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --axis y --size 800x500", scene, dir);
+  st = run(args, out, sizeof out);
+  snprintf(args, sizeof args, "%s/particles_mat.png", dir);
+  img = read_png(args, &w, &h);
+  CHECK(st == 0 && img && w == 800 && h == 500, "particles by material: exit %d, %dx%d", st, w, h);
+  if (img) CHECK(img[0] == 255 && img[1] == 255 && img[2] == 255, "particles: background pixel is white");
+  free(img);
+
+  const char *colors[] = {"velocity", "damage", "pressure", "density"};
+  for (int k = 0; k < 4; k++) {
+    snprintf(args, sizeof args, "'%s' -o '%s/particles_%s.png' --mode particles --color %s --axis %s",
+             scene, dir, colors[k], colors[k], k % 2 ? "z" : "y");
+    st = run(args, out, sizeof out);
+    CHECK(st == 0, "particles by %s: exit %d %s", colors[k], st, out);
+  }
+  CHECK(tmp_files_left() == 0, "no temporary files left behind");
+
+  /* failures: the previous picture stays as it was */
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color damage", gas, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "damage"), "damage colour without a damage column: exit %d (2): %s", st, out);
+  snprintf(args, sizeof args, "%s/particles_mat.png", dir);
+  img = read_png(args, &w, &h);
+  CHECK(img && w == 800 && h == 500, "a failed render leaves the previous file whole");
+  free(img);
+
+  static const struct {
+    const char *args;
+    int status;
+    const char *says;
+  } bad[] = {
+      {"", 1, "missing snapshot"},
+      {"SCENE", 1, "missing -o"},
+      {"'/nonexistent/snap.csv' -o DIR/x.png", 2, "cannot open"},
+      {"SCENE -o DIR/x.png --axis w", 1, "--axis"},
+      {"SCENE -o DIR/x.png --mode xray", 1, "--mode"},
+      {"SCENE -o DIR/x.png --color hue --mode particles", 1, "--color"},
+      {"SCENE -o DIR/x.png --size 10x10", 1, "--size"},
+      {"SCENE -o DIR/x.png --size 12by4", 1, "--size"},
+      {"SCENE -o DIR/x.png --mu -1", 1, "--mu"},
+      {"SCENE -o DIR/x.png --box 0,1,0,1,0", 1, "--box"},
+      {"SCENE -o DIR/x.png --box 0,1,0,1,2kg,3", 1, "--box"},
+      {"SCENE -o DIR/x.png --box 1,0,0,1,0,1", 1, "--box"},
+      {"SCENE -o DIR/x.png --frobnicate", 1, "unknown option"},
+      {"SCENE -o DIR/x.png --mode particles --color velocity --range 5,1", 1, "--range"},
+      {"SCENE -o DIR/no/such/folder/x.png", 2, "cannot create"},
+      {"DIR/snap.vtu -o DIR/x.png", 2, "VTU"},
+      {"DIR/radiograph_y.png -o DIR/x.png", 2, "radiograph_y.png"},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    char a[4096] = "";
+    for (const char *s = bad[k].args; *s;) { /* SCENE and DIR stand for the paths */
+      if (!strncmp(s, "SCENE", 5)) {
+        strcat(a, scene);
+        s += 5;
+      } else if (!strncmp(s, "DIR", 3)) {
+        strcat(a, dir);
+        s += 3;
+      } else {
+        strncat(a, s++, 1);
+      }
+    }
+    st = run(a, out, sizeof out);
+    char *nl = strchr(out, '\n');
+    int one_line = nl && nl[1] == '\0';
+    CHECK(st == bad[k].status && strstr(out, bad[k].says) && one_line,
+          "render %s: exit %d (%d), one line saying '%s': %s", bad[k].args, st, bad[k].status,
+          bad[k].says, out);
+  }
+}
+
+int main(void)
+{
+  test_kernel_column();
+  test_colormap();
+  test_single_particle();
+  test_sphere();
+  test_plate();
+  test_command();
+  return test_finish();
+}
