@@ -19,8 +19,9 @@ static void usage(FILE *f)
           "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--threads N] [--quiet]\n"
           "      run a case file; results in OUTDIR (default out/<case name>)\n"
           "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
-          "  hvsph bench [--particles N] [--steps K] [--threads T]\n"
-          "      solver throughput on a uniform gas lattice (particle-steps per second)\n"
+          "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid]\n"
+          "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
+          "      elastic-plastic aluminium): particle-steps per second, bytes per particle\n"
           "  hvsph materials [NAME]\n"
           "      the material library: every entry, or one entry's parameters with units\n"
           "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
@@ -91,6 +92,8 @@ static int cmd_bench(int argc, char **argv)
     } else if (!strcmp(argv[i], "--threads") && i + 1 < argc && !parse_long(argv[i + 1], 1, 4096, &v)) {
       o.threads = (int)v;
       i++;
+    } else if (!strcmp(argv[i], "--solid")) {
+      o.solid = 1;
     } else {
       fprintf(stderr, "hvsph bench: bad argument '%s' (see hvsph --help)\n", argv[i]);
       return HV_EXIT_USAGE;

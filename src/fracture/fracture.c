@@ -22,7 +22,8 @@ double fracture_tension(const struct fracture_params *fp, double damage, double 
 {
   if (damage >= 1.0 || fp->kind == FRACTURE_NONE) return damage;
   const double limit = -fp->sigma_c;   /* σ_c < 0: tension */
-  const int over = limit > 0 && fracture_max_principal(p, S) > limit;
+  const double sig[6] = {S[0] - p, S[1] - p, S[2] - p, S[3], S[4], S[5]};
+  const int over = limit > 0 && sym3_max_bound(sig) > limit && fracture_max_principal(p, S) > limit;
   if (fp->kind == FRACTURE_TRESCA) return over ? 1.0 : damage;
   if (over) damage += fp->tau > 0 ? dt / fp->tau : 1.0;
   return damage >= 1.0 ? 1.0 : damage;

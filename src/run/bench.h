@@ -6,6 +6,7 @@ struct bench_options {
   long particles;   /* approximate number (a cube of side round(cbrt(N))) */
   long steps;
   int threads;      /* 0: OpenMP default */
+  int solid;        /* elastic-plastic al-alloy with fracture instead of a gas */
 };
 
 int bench_main(const struct bench_options *o);

@@ -159,12 +159,13 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
     double R[6] = {0, 0, 0, 0, 0, 0};
-    if (eps > 0 && has_strength(&mat[p->mat[i]], p->damage[i])) {
-      double sig[6], lam[3], Q[9], d[3];
-      for (int k = 0; k < 6; k++) sig[k] = p->S[k][i];
-      sig[0] -= p->p[i];
-      sig[1] -= p->p[i];
-      sig[2] -= p->p[i];
+    double sig[6];
+    for (int k = 0; k < 6; k++) sig[k] = p->S[k][i];
+    sig[0] -= p->p[i];
+    sig[1] -= p->p[i];
+    sig[2] -= p->p[i];
+    if (eps > 0 && has_strength(&mat[p->mat[i]], p->damage[i]) && sym3_max_bound(sig) > 0.0) {
+      double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);
       const double r2 = p->rho[i] * p->rho[i];
       int any = 0;
@@ -210,9 +211,11 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         const double ri2 = 1.0 / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
         const double Pi = pr[i] * ri2, Pic = (pr[i] > 0 ? pr[i] : 0.0) * ri2;
         double Si[6], Ri[6];
+        int Ri_any = 0;
         for (int k = 0; k < 6; k++) {
           Si[k] = p->S[k][i] * ri2;
           Ri[k] = p->R[k][i];
+          Ri_any |= Ri[k] != 0.0;
         }
         const int32_t bi = body[i];
         const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
@@ -238,9 +241,17 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             double T[6];
             for (int t = 0; t < 6; t++) T[t] = Si[t] + p->S[t][j] * rj2;
             if (use_as) {
-              const double fr = kernel_w(kk, r, hij) * hij * hij * hij / w_dp;
-              const double fn = pow(fr, as_n);
-              for (int t = 0; t < 6; t++) T[t] += (Ri[t] + p->R[t][j]) * fn;
+              double Rs[6];
+              int any = Ri_any;
+              for (int t = 0; t < 6; t++) {
+                Rs[t] = Ri[t] + p->R[t][j];
+                any |= p->R[t][j] != 0.0;
+              }
+              if (any) {
+                const double fr = kernel_w(kk, r, hij) * hij * hij * hij / w_dp;
+                const double fn = as_n == 4.0 ? (fr * fr) * (fr * fr) : pow(fr, as_n);
+                for (int t = 0; t < 6; t++) T[t] += Rs[t] * fn;
+              }
             }
             const double P = Pi + pr[j] * rj2 + visc;
             ax = (T[T_XX] - P) * gx + T[T_XY] * gy + T[T_XZ] * gz;
@@ -248,7 +259,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             az = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
             Pme = Pi;
           } else { /* contact: compression only */
-            const double P = Pic + (pr[j] > 0 ? pr[j] : 0.0) * rj2 + visc;
+            const double P = Pic + (pr[j] > 0 ? pr[j] * rj2 : 0.0) + visc;
             ax = -P * gx;
             ay = -P * gy;
             az = -P * gz;

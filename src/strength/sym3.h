@@ -16,6 +16,16 @@ static inline void sym3_full(const double a[6], double m[9])
   m[5] = m[7] = a[4];
   m[2] = m[6] = a[5];
 }
+/* An upper bound of the largest eigenvalue (Gershgorin discs): cheap test before an
+ * eigen-decomposition. */
+static inline double sym3_max_bound(const double a[6])
+{
+  const double r0 = a[0] + (a[3] < 0 ? -a[3] : a[3]) + (a[5] < 0 ? -a[5] : a[5]);
+  const double r1 = a[1] + (a[3] < 0 ? -a[3] : a[3]) + (a[4] < 0 ? -a[4] : a[4]);
+  const double r2 = a[2] + (a[4] < 0 ? -a[4] : a[4]) + (a[5] < 0 ? -a[5] : a[5]);
+  return r0 > r1 ? (r0 > r2 ? r0 : r2) : (r1 > r2 ? r1 : r2);
+}
+
 /* Second invariant of a deviator: J2 = ½ S:S. */
 static inline double sym3_j2(const double s[6])
 {
