@@ -136,6 +136,28 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
 }
 
+/* A cubic lattice in a box: the spacing is adjusted so that the thinnest side holds a
+ * whole number of layers (at least one), else a thin plate could get no particle or
+ * an uneven last layer. */
+static void snap_to_thickness(struct sim *s, struct body_spec *bs, const char *name)
+{
+  const struct shape *sh = &bs->shape;
+  if (sh->kind != SHAPE_BOX || sh->nminus || bs->lattice != LATTICE_CUBIC) return;
+  double t = HUGE_VAL;
+  for (int d = 0; d < 3; d++) {
+    double ext = sh->max[d] - sh->min[d];
+    if (d == 2 && s->bnd.half_model) ext = sh->max[2] > 0 ? fmin(ext, sh->max[2]) : ext;
+    t = fmin(t, ext);
+  }
+  double layers = fmax(1.0, round(t / bs->spacing)), snapped = t / layers;
+  if (fabs(snapped - bs->spacing) > 1e-9 * snapped) {
+    if (snapped < 0.8 * bs->spacing)
+      hv_info("body '%s': spacing %.4g mm -> %.4g mm so that its %.4g mm thickness holds %.0f "
+              "layer(s)", name, 1e3 * bs->spacing, 1e3 * snapped, 1e3 * t, layers);
+    bs->spacing = snapped;
+  }
+}
+
 /* Spacing from `spacing` or `particles`, scaled by the resolution factor. */
 static int read_spacing(struct sim *s, struct cfg *c, const char *path, const char *name,
                         struct body_spec *bs, double resolution, struct hv_error *err)
@@ -158,7 +180,7 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
                         "volume; give 'spacing' instead", cfg_where(c, key2, where, sizeof where), name);
   double n = (double)np * resolution, v1 = bs->vol / n;   /* volume per particle */
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
-  (void)s;
+  snap_to_thickness(s, bs, name);
   return 0;
 }
 
