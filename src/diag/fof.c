@@ -135,7 +135,21 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
   uint32_t *parent = hv_malloc((ns + 1) * sizeof *parent, "fof parents");
   for (size_t k = 0; k < ns; k++) parent[k] = (uint32_t)k;
   int rc = 0;
-  if (ns > 1) {
+  if (ns > 1) {  /* the grid indexes at most 2^21 cells a side: check before building it */
+    for (int d = 0; d < 3 && !rc; d++) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (size_t k = 0; k < ns; k++) {
+        lo = fmin(lo, xs[d][k]);
+        hi = fmax(hi, xs[d][k]);
+      }
+      const double cells = (hi - lo) / nbr_cell_size(hmin, hmax);
+      if (!(cells < 2.0e6))
+        rc = hv_error_set(err, HV_EXIT_RUN, "friends-of-friends: the particles span %g m in %c, "
+                          "%g linking lengths of %g m (at most 2e6)", hi - lo, "xyz"[d], cells,
+                          out->b);
+    }
+  }
+  if (ns > 1 && !rc) {
     struct nbr_grid g;
     nbr_grid_init(&g);
     char msg[256];

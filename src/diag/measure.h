@@ -33,6 +33,8 @@
 #include "core/error.h"
 #include "particles/particles.h"
 
+#define HV_MEAS_PI 3.14159265358979323846
+
 /* Where a plate-like body was and how it was built. */
 struct meas_geom {
   int body;          /* body index of the plate, block or backwall (< 0: any body) */
@@ -55,7 +57,7 @@ struct meas_geom {
  *    x_b the smallest x of the target particles of slice K that close it
  *    (ρ − footprint <= r_open); if no slice closes (no target material left on the
  *    axis below the cavity) the block is perforated and L = the depth of the deepest
- *    target particle.
+ *    target particle plus the footprint (the rear of the material).
  * D: the largest cavity diameter over the depth, D = 2 max_k r_k over the open slices
  *    with target material (matching the experimenters' post-test cross-sections,
  *    which show the widest section); D_mean averages 2 r_k over the same slices.

@@ -1,0 +1,385 @@
+/* measure.c — thick-target cavity, debris cloud, backwall and gas shock front; the
+ * plate's hole is in measure_plate.c. Definitions in measure.h and
+ * docs/measurements.md. Every loop is serial and runs in slot order, so results do
+ * not depend on the number of threads.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag/measure.h"
+
+#define CAVITY_MAX_COUNT 8
+#define MEAS_MAX_CELLS 4096     /* per side of the backwall's column grid */
+#define CAVITY_MAX_SLICES 100000000
+
+/* Particle i belongs to the body (body < 0: any), passes the mask and has a finite position. */
+static int taken(const struct particles *p, size_t i, int body, const unsigned char *mask)
+{
+  if (body >= 0 && p->body[i] != body) return 0;
+  if (mask && !mask[i]) return 0;
+  return isfinite(p->x[0][i]) && isfinite(p->x[1][i]) && isfinite(p->x[2][i]);
+}
+
+/* Distance from the axis y = yc, z = 0. */
+static double radial(const struct particles *p, size_t i, double yc)
+{
+  return hypot(p->x[1][i] - yc, p->x[2][i]);
+}
+
+static int geom_ok(const struct meas_geom *g, const char *what, struct hv_error *err)
+{
+  if (!(g->spacing > 0 && isfinite(g->spacing) && isfinite(g->x0) && isfinite(g->yc) &&
+        g->thickness >= 0 && isfinite(g->thickness)))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: the geometry needs a positive spacing (%g m), "
+                        "a thickness >= 0 (%g m) and finite x0, yc", what, g->spacing,
+                        g->thickness);
+  return 0;
+}
+
+/* ---- thick target ---------------------------------------------------------------- */
+
+void meas_cavity_defaults(struct meas_cavity_params *par, const struct meas_geom *g)
+{
+  memset(par, 0, sizeof *par);
+  par->slice = 0.5 * g->spacing;
+  par->footprint = 0.5 * g->spacing;
+  par->r_open = g->spacing;
+  par->v_max = INFINITY;
+  par->min_count = 1;
+  par->mask = NULL;
+}
+
+void meas_cavity_free(struct meas_cavity *c)
+{
+  free(c->r_profile);
+  c->r_profile = NULL;
+  c->nslice = 0;
+}
+
+static int cavity_taken(const struct particles *p, size_t i, const struct meas_geom *g,
+                        const struct meas_cavity_params *par)
+{
+  if (!taken(p, i, g->body, par->mask) || p->x[0][i] < g->x0) return 0;
+  if (isfinite(par->v_max)) {
+    const double v2 = p->v[0][i] * p->v[0][i] + p->v[1][i] * p->v[1][i] + p->v[2][i] * p->v[2][i];
+    if (!(v2 <= par->v_max * par->v_max)) return 0;
+  }
+  return 1;
+}
+
+int measure_cavity(const struct particles *p, const struct meas_geom *g,
+                   const struct meas_cavity_params *par, struct meas_cavity *out,
+                   struct hv_error *err)
+{
+  memset(out, 0, sizeof *out);
+  if (geom_ok(g, "cavity measurement", err)) return -1;
+  if (!(par->slice > 0 && isfinite(par->slice) && par->footprint >= 0 &&
+        isfinite(par->footprint) && par->r_open >= 0 && isfinite(par->r_open) &&
+        par->v_max > 0 && par->min_count >= 1 && par->min_count <= CAVITY_MAX_COUNT))
+    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: slice (> 0), footprint, r_open "
+                        "(>= 0), v_max (> 0) and min_count (1..%d) out of range",
+                        CAVITY_MAX_COUNT);
+  const int K = par->min_count;
+  const double dx = par->slice, fp = par->footprint;
+  out->slice = dx;
+  double xmax = -INFINITY;
+  for (size_t i = 0; i < p->n; i++)
+    if (cavity_taken(p, i, g, par) && p->x[0][i] > xmax) xmax = p->x[0][i];
+  if (!isfinite(xmax)) return 0;  /* no target material below the surface */
+  const double ns = floor((xmax - g->x0) / dx) + 1.0;
+  if (!(ns <= CAVITY_MAX_SLICES))
+    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: %g slices of %g m; use thicker "
+                        "slices", ns, dx);
+  const size_t nslice = (size_t)ns;
+  double *best = hv_malloc(nslice * (size_t)K * sizeof *best, "cavity slices");
+  for (size_t k = 0; k < nslice * (size_t)K; k++) best[k] = INFINITY;
+  for (size_t i = 0; i < p->n; i++) {
+    if (!cavity_taken(p, i, g, par)) continue;
+    size_t k = (size_t)((p->x[0][i] - g->x0) / dx);
+    if (k >= nslice) k = nslice - 1;
+    double r = radial(p, i, g->yc), *b = best + k * (size_t)K;
+    for (int j = 0; j < K; j++)  /* keep the K smallest, ascending */
+      if (r < b[j]) {
+        const double t = b[j];
+        b[j] = r;
+        r = t;
+      }
+  }
+  out->nslice = nslice;
+  out->r_profile = hv_malloc(nslice * sizeof *out->r_profile, "cavity profile");
+  size_t kc = nslice;  /* first closed slice */
+  for (size_t k = 0; k < nslice; k++) {
+    const double r = best[k * (size_t)K + (size_t)K - 1];
+    out->r_profile[k] = isfinite(r) ? r - fp : (double)INFINITY;
+    if (kc == nslice && out->r_profile[k] <= par->r_open) kc = k;
+  }
+  free(best);
+  out->nopen = kc;
+  if (kc == 0) return 0;  /* no cavity at the surface */
+  if (kc == nslice) {
+    out->perforated = 1;
+    out->L = xmax - g->x0 + fp;
+  } else {
+    double xb = INFINITY;
+    for (size_t i = 0; i < p->n; i++) {
+      if (!cavity_taken(p, i, g, par)) continue;
+      size_t k = (size_t)((p->x[0][i] - g->x0) / dx);
+      if (k >= nslice) k = nslice - 1;
+      if (k == kc && radial(p, i, g->yc) - fp <= par->r_open && p->x[0][i] < xb) xb = p->x[0][i];
+    }
+    out->L = fmax(0.0, xb - fp - g->x0);
+  }
+  double sum = 0.0;
+  size_t cnt = 0;
+  for (size_t k = 0; k < kc; k++) {
+    const double r = out->r_profile[k];
+    if (!isfinite(r)) continue;
+    if (2.0 * r > out->D) {
+      out->D = 2.0 * r;
+      out->depth_at_D = ((double)k + 0.5) * dx;
+    }
+    sum += 2.0 * r;
+    cnt++;
+  }
+  out->D_mean = cnt ? sum / (double)cnt : 0.0;
+  return 0;
+}
+
+/* ---- debris cloud ---------------------------------------------------------------- */
+
+void meas_debris_defaults(struct meas_debris_params *par, const struct meas_geom *g)
+{
+  memset(par, 0, sizeof *par);
+  par->body = -1;
+  par->x_rear = g->x0 + g->thickness;
+  par->yc = g->yc;
+  par->margin = 2.0 * g->spacing;
+  par->x_limit = INFINITY;
+  par->q_lead = 0.99;
+  par->q_angle = 0.90;
+  par->half_model = g->half_model;
+  par->mask = NULL;
+}
+
+struct wval {
+  double v, w;
+};
+
+static int wval_cmp(const void *pa, const void *pb)
+{
+  const struct wval *a = pa, *b = pb;
+  return a->v < b->v ? -1 : a->v > b->v;
+}
+
+/* The q mass quantile: the smallest value v such that the values <= v carry at least a
+ * fraction q of the weight. Sorts a. */
+static double wquantile(struct wval *a, size_t n, double q)
+{
+  qsort(a, n, sizeof *a, wval_cmp);
+  double W = 0.0, cum = 0.0;
+  for (size_t k = 0; k < n; k++) W += a[k].w;
+  const double target = q * W * (1.0 - 1e-12);
+  for (size_t k = 0; k < n; k++) {
+    cum += a[k].w;
+    if (cum >= target) return a[k].v;
+  }
+  return a[n - 1].v;
+}
+
+int measure_debris(const struct particles *p, const struct meas_debris_params *par,
+                   struct meas_debris *out, struct hv_error *err)
+{
+  memset(out, 0, sizeof *out);
+  if (!(isfinite(par->x_rear) && isfinite(par->yc) && par->margin >= 0 &&
+        isfinite(par->margin) && !isnan(par->x_limit) && par->q_lead > 0 && par->q_lead <= 1 &&
+        par->q_angle > 0 && par->q_angle <= 1))
+    return hv_error_set(err, HV_EXIT_INPUT, "debris cloud measurement: x_rear, yc, margin "
+                        "(>= 0) must be finite and the quantiles in (0, 1]");
+  const double xlo = par->x_rear + par->margin;
+  size_t n = 0;
+  for (size_t i = 0; i < p->n; i++)
+    if (taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit) n++;
+  out->v_mean = out->v_lead = out->v_max = out->x_lead = out->half_angle = NAN;
+  if (!n) return 0;
+  struct wval *vx = hv_malloc(n * sizeof *vx, "cloud"), *xs = hv_malloc(n * sizeof *xs, "cloud");
+  struct wval *th = hv_malloc(n * sizeof *th, "cloud");
+  double m = 0.0, mv = 0.0, vmax = -INFINITY;
+  size_t k = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (!(taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit))
+      continue;
+    const double mi = p->m[i], v = p->v[0][i], dxr = p->x[0][i] - par->x_rear;
+    m += mi;
+    mv += mi * v;
+    if (v > vmax) vmax = v;
+    vx[k] = (struct wval){v, mi};
+    xs[k] = (struct wval){dxr, mi};
+    th[k] = (struct wval){atan2(radial(p, i, par->yc), dxr), mi};
+    k++;
+  }
+  out->count = n;
+  out->m = par->half_model ? 2.0 * m : m;
+  out->v_mean = m > 0 ? mv / m : (double)NAN;
+  out->v_max = vmax;
+  out->v_lead = wquantile(vx, n, par->q_lead);
+  out->x_lead = wquantile(xs, n, par->q_lead);
+  out->half_angle = wquantile(th, n, par->q_angle);
+  free(vx);
+  free(xs);
+  free(th);
+  return 0;
+}
+
+/* ---- backwall -------------------------------------------------------------------- */
+
+void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_geom *g)
+{
+  const double s = g->spacing;
+  memset(par, 0, sizeof *par);
+  par->tol = s;
+  par->footprint = 0.5 * s;
+  par->cell = 0.5 * s;
+  par->margin_front = fmax(g->thickness, 2.0 * s);
+  par->damage_min = 1.0;
+  par->eps_p_min = 0.1;
+  par->crater_min = s;
+  par->mask = NULL;
+}
+
+int measure_backwall(const struct particles *p, const struct meas_geom *g,
+                     const struct meas_backwall_params *par, struct meas_backwall *out,
+                     struct hv_error *err)
+{
+  memset(out, 0, sizeof *out);
+  if (geom_ok(g, "backwall measurement", err)) return -1;
+  if (!(par->tol > 0 && isfinite(par->tol) && par->cell > 0 && isfinite(par->cell) &&
+        par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
+        isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min)))
+    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell (> 0), footprint, "
+                        "margin_front and crater_min (>= 0) must be finite");
+  const double xlo = g->x0 - par->margin_front, fp = par->footprint, tol = par->tol;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (size_t i = 0; i < p->n; i++) {
+    if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
+    out->n_wall++;
+    const double uw[2] = {p->x[1][i] - g->yc, p->x[2][i]};
+    for (int d = 0; d < 2; d++) {
+      lo[d] = fmin(lo[d], uw[d] - tol);
+      hi[d] = fmax(hi[d], uw[d] + tol);
+    }
+    const double dmg = p->solid ? p->damage[i] : 0.0, ep = p->solid ? p->eps_p[i] : 0.0;
+    if (p->solid && (dmg >= par->damage_min || ep >= par->eps_p_min)) {
+      out->n_damaged++;
+      out->m_damaged += p->m[i];
+      out->r_damage_particles = fmax(out->r_damage_particles, radial(p, i, g->yc));
+    }
+  }
+  if (g->half_model) out->m_damaged *= 2.0;
+  if (!out->n_wall) return 0;
+  if (g->half_model) lo[1] = 0.0;  /* columns on the simulated side suffice: see below */
+  double c = par->cell;
+  const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+  if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;
+  const int nu = (int)ceil((hi[0] - lo[0]) / c) > 0 ? (int)ceil((hi[0] - lo[0]) / c) : 1;
+  const int nw = (int)ceil((hi[1] - lo[1]) / c) > 0 ? (int)ceil((hi[1] - lo[1]) / c) : 1;
+  double *xf = hv_malloc((size_t)nu * (size_t)nw * sizeof *xf, "backwall columns");
+  for (size_t k = 0; k < (size_t)nu * (size_t)nw; k++) xf[k] = INFINITY;
+  /* In a half model a column with centre w >= 0 is never nearer a mirrored particle
+   * (u, −z) than the particle itself, so the mirror images add nothing. */
+  for (size_t i = 0; i < p->n; i++) {
+    if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
+    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i];
+    int a0 = (int)ceil((u - tol - lo[0]) / c - 0.5), a1 = (int)floor((u + tol - lo[0]) / c - 0.5);
+    int b0 = (int)ceil((w - tol - lo[1]) / c - 0.5), b1 = (int)floor((w + tol - lo[1]) / c - 0.5);
+    if (a0 < 0) a0 = 0;
+    if (b0 < 0) b0 = 0;
+    if (a1 > nu - 1) a1 = nu - 1;
+    if (b1 > nw - 1) b1 = nw - 1;
+    for (int b = b0; b <= b1; b++) {
+      const double dw = lo[1] + ((double)b + 0.5) * c - w;
+      for (int a = a0; a <= a1; a++) {
+        const double du = lo[0] + ((double)a + 0.5) * c - u;
+        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+        if (du * du + dw * dw <= tol * tol && x < xf[k]) xf[k] = x;
+      }
+    }
+  }
+  double dmax = -INFINITY;
+  for (int b = 0; b < nw; b++)
+    for (int a = 0; a < nu; a++) {
+      const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
+      if (!isfinite(x)) continue;
+      const double d = x - fp - g->x0;
+      const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
+      if (d > dmax) {
+        dmax = d;
+        out->crater_pos[0] = u + g->yc;
+        out->crater_pos[1] = w;
+      }
+      if (d > par->crater_min) out->r_crater = fmax(out->r_crater, hypot(u, w));
+    }
+  free(xf);
+  out->crater_depth = fmax(dmax, 0.0);
+  out->r_damage = fmax(out->r_crater, out->r_damage_particles);
+  return 0;
+}
+
+double measure_center_pressure(const struct particles *p, const struct meas_geom *g, double r0,
+                               double depth, const unsigned char *mask, size_t *count)
+{
+  double xf = INFINITY;
+  for (size_t i = 0; i < p->n; i++)
+    if (taken(p, i, g->body, mask) && radial(p, i, g->yc) < r0 && p->x[0][i] >= g->x0 - depth &&
+        p->x[0][i] < xf)
+      xf = p->x[0][i];
+  double m = 0.0, mp = 0.0;
+  size_t cnt = 0;
+  if (isfinite(xf))
+    for (size_t i = 0; i < p->n; i++)
+      if (taken(p, i, g->body, mask) && radial(p, i, g->yc) < r0 && p->x[0][i] >= xf &&
+          p->x[0][i] <= xf + depth) {
+        m += p->m[i];
+        mp += p->m[i] * p->p[i];
+        cnt++;
+      }
+  if (count) *count = cnt;
+  return cnt && m > 0 ? mp / m : (double)NAN;
+}
+
+/* ---- gas shock front ------------------------------------------------------------- */
+
+void meas_gas_defaults(struct meas_gas_params *par, int body, double rho_ref,
+                       const double origin[3], double spacing)
+{
+  memset(par, 0, sizeof *par);
+  par->body = body;
+  par->rho_ref = rho_ref;
+  par->factor = 1.1;
+  for (int d = 0; d < 3; d++) par->origin[d] = origin[d];
+  par->r_axis = 2.0 * spacing;
+  par->mask = NULL;
+}
+
+int measure_gas_front(const struct particles *p, const struct meas_gas_params *par,
+                      struct meas_gas_front *out, struct hv_error *err)
+{
+  memset(out, 0, sizeof *out);
+  if (!(par->rho_ref > 0 && isfinite(par->rho_ref) && par->factor > 0 &&
+        isfinite(par->factor) && par->r_axis >= 0 && isfinite(par->origin[0]) &&
+        isfinite(par->origin[1]) && isfinite(par->origin[2])))
+    return hv_error_set(err, HV_EXIT_INPUT, "gas front measurement: rho_ref and factor must be "
+                        "positive, r_axis >= 0 and the origin finite");
+  const double rho_s = par->factor * par->rho_ref;
+  for (size_t i = 0; i < p->n; i++) {
+    if (!taken(p, i, par->body, par->mask) || !(p->rho[i] > rho_s)) continue;
+    const double dx = p->x[0][i] - par->origin[0];
+    const double ra = hypot(p->x[1][i] - par->origin[1], p->x[2][i] - par->origin[2]);
+    out->n_shocked++;
+    if (ra <= par->r_axis && dx > out->x_axial) out->x_axial = dx;
+    out->r_radial = fmax(out->r_radial, ra);
+    out->r_max = fmax(out->r_max, hypot(dx, ra));
+  }
+  return 0;
+}

@@ -1,0 +1,340 @@
+/* test_measure.c — plate holes and thick-target cavities on constructed lattices with
+ * known answers.
+ *
+ * Plates (half and full models, cubic and hcp lattices): a cylindrical hole of known
+ * diameter D punched through (particles with centres inside removed) must be found
+ * perforated, with the largest-circle and equivalent-area diameters within one spacing Δ
+ * of D; the circle must be at least as large as the one centred on the hole's axis that
+ * the definition gives for the remaining particles. A blind crater is not a perforation;
+ * debris behind the slab does not count as plate, a plug still in the slab blocks the
+ * view; an elliptical (oblique) hole gives its minor axis and its area; a plate gone
+ * across the window is an open hole.
+ * Blocks: a cylindrical cavity of known depth and diameter gives L and D within Δ; a
+ * wider entrance crater sets D (the largest) but not D_mean; a stray particle in the
+ * cavity stops it unless min_count or v_max leave it out.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag/measure.h"
+#include "particles/particles.h"
+#include "testlib.h"
+
+static const double S = 1e-3;  /* [m] lattice spacing Δ */
+
+static size_t add_particle(struct particles *p, const double x[3], int body)
+{
+  const size_t i = particles_add(p, 1);
+  for (int d = 0; d < 3; d++) p->x[d][i] = x[d];
+  p->m[i] = 7.8e3 * S * S * S;
+  p->rho[i] = 7.8e3;
+  p->h[i] = 1.2 * S;
+  p->body[i] = body;
+  p->id[i] = (int64_t)i;
+  return i;
+}
+
+/* What to cut out of a lattice. */
+struct cut {
+  double yc;          /* hole axis y (z = 0) */
+  double R;           /* cylinder radius (0: none) */
+  double xcut;        /* the cylinder removes x < xcut */
+  double a, b, ey;    /* ellipse semi-axes along y and z, centre y (a = 0: none) */
+  double R2, xcut2;   /* a second, wider cylinder over x < xcut2 (entrance crater) */
+};
+
+static int kept(const struct cut *c, const double x[3])
+{
+  const double u = x[1] - c->yc, w = x[2];
+  if (c->R > 0 && u * u + w * w < c->R * c->R && x[0] < c->xcut) return 0;
+  if (c->R2 > 0 && u * u + w * w < c->R2 * c->R2 && x[0] < c->xcut2) return 0;
+  if (c->a > 0) {
+    const double eu = (x[1] - c->ey) / c->a, ew = x[2] / c->b;
+    if (eu * eu + ew * ew < 1.0) return 0;
+  }
+  return 1;
+}
+
+/* Fills the box lo..hi with a lattice of spacing S (cubic: (i + ½) Δ from lo; hcp as the
+ * setup builds it: ABAB layers along z, nearest neighbours at Δ), keeping the points
+ * that the cut leaves. Returns the smallest radial distance (from y = cut->yc, z = 0) of
+ * a kept point with x < xmax_r. */
+static double add_lattice(struct particles *p, const double lo[3], const double hi[3], int hcp,
+                          const struct cut *c, int body, double xmax_r)
+{
+  const double step[3] = {S, hcp ? S * sqrt(3.0) / 2 : S, hcp ? S * sqrt(2.0 / 3.0) : S};
+  double rmin = INFINITY;
+  for (long k = 0;; k++) {
+    const double z = lo[2] + ((double)k + 0.5) * step[2];
+    if (z > hi[2]) break;
+    for (long j = 0;; j++) {
+      const long kk = k % 2, jj = j % 2;
+      const double y = lo[1] + ((double)j + (hcp ? (double)kk / 3.0 : 0.0) + 0.5) * step[1];
+      if (y > hi[1]) break;
+      for (long i = 0;; i++) {
+        const double x = lo[0] + ((double)i + (hcp ? 0.5 * (double)(jj + kk) + 0.25 : 0.5)) * S;
+        if (x > hi[0]) break;
+        const double q[3] = {x, y, z};
+        if (!kept(c, q)) continue;
+        add_particle(p, q, body);
+        if (x < xmax_r) rmin = fmin(rmin, hypot(y - c->yc, z));
+      }
+    }
+  }
+  return rmin;
+}
+
+/* A plate 3Δ thick at x0 = 10 mm, |y| <= 30Δ, 0 <= z <= 30Δ (half) or |z| <= 30Δ (full). */
+static const double X0 = 0.01, TH = 3 * S, W = 30 * S;
+
+static void plate_geom(struct meas_geom *g, double yc, int half)
+{
+  *g = (struct meas_geom){.body = 1, .x0 = X0, .thickness = TH, .yc = yc, .spacing = S,
+                          .half_model = half};
+}
+
+static void check_hole(double D, double yc, int half, int hcp)
+{
+  struct particles p;
+  particles_init(&p);
+  const double lo[3] = {X0, -W, half ? 0.0 : -W}, hi[3] = {X0 + TH, W, W};
+  const struct cut c = {.yc = yc, .R = 0.5 * D, .xcut = 1.0};
+  const double rmin = add_lattice(&p, lo, hi, hcp, &c, 1, 1.0);
+  const double other[3] = {X0 - 0.05, 0, 0};  /* a particle of another body, in the hole's way */
+  add_particle(&p, other, 0);
+  struct meas_geom g;
+  plate_geom(&g, yc, half);
+  struct meas_plate_params par;
+  meas_plate_defaults(&par, &g);
+  par.slab_front = 0.1;  /* reaches the other body's particle: only body 1 counts */
+  struct meas_plate r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  const char *what = hcp ? "hcp" : "cubic";
+  const char *model = half ? "half" : "full";
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0, "plate measurement runs: %s", err.msg);
+  CHECK(r.perforated && !r.hole_open, "%s %s plate, D = %.2fΔ, yc = %.2fΔ: perforated, closed "
+        "hole", what, model, D / S, yc / S);
+  CHECK(fabs(r.d_circle - D) <= S, "%s %s D = %.2fΔ: largest circle %.3fΔ within Δ", what, model,
+        D / S, r.d_circle / S);
+  CHECK(fabs(r.d_equiv - D) <= S, "%s %s D = %.2fΔ: equivalent-area diameter %.3fΔ within Δ",
+        what, model, D / S, r.d_equiv / S);
+  CHECK(fabs(r.d_circle_impact - D) <= S, "%s %s D = %.2fΔ: circle at the impact point %.3fΔ "
+        "within Δ", what, model, D / S, r.d_circle_impact / S);
+  /* the definition at the hole's axis, from the kept particles: the search can only do better */
+  const double d_axis = 2 * (rmin - 0.5 * S);
+  CHECK(r.d_circle >= d_axis - 1e-12 && r.d_circle <= d_axis + 0.5 * S,
+        "%s %s D = %.2fΔ: circle %.4fΔ >= the one on the axis %.4fΔ (and close to it)", what,
+        model, D / S, r.d_circle / S, d_axis / S);
+  CHECK_CLOSE(r.d_circle_impact, d_axis, 1e-12, "circle centred at the impact point = definition");
+  CHECK(hypot(r.circle_center[0] - yc, r.circle_center[1]) <= 0.5 * S,
+        "%s %s: circle centred on the hole (%.3fΔ, %.3fΔ)", what, model,
+        (r.circle_center[0] - yc) / S, r.circle_center[1] / S);
+  CHECK(r.n_plate == p.n - 1, "every plate particle taken (%zu of %zu)", r.n_plate, p.n - 1);
+  particles_free(&p);
+}
+
+static void test_holes(void)
+{
+  const double D[3] = {8.6 * S, 12.3 * S, 17.0 * S};
+  for (int k = 0; k < 3; k++) {
+    check_hole(D[k], 0.0, 1, 0);
+    check_hole(D[k], 0.37 * S, 1, 0);
+    check_hole(D[k], 0.21 * S, 0, 0);
+    check_hole(D[k], 0.0, 1, 1);
+  }
+}
+
+static void test_blind_and_slab(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double lo[3] = {X0, -W, 0}, hi[3] = {X0 + TH, W, W};
+  const struct cut c = {.yc = 0, .R = 6 * S, .xcut = X0 + 2 * S};  /* leaves the last layer */
+  add_lattice(&p, lo, hi, 0, &c, 1, 1.0);
+  struct meas_geom g;
+  plate_geom(&g, 0.0, 1);
+  struct meas_plate_params par;
+  meas_plate_defaults(&par, &g);
+  struct meas_plate r;
+  struct hv_error err;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated, "blind crater: not "
+        "perforated");
+  CHECK(r.d_circle == 0 && r.d_equiv == 0 && r.area == 0, "blind crater: no hole diameter");
+  particles_free(&p);
+
+  /* a hole, then plate debris far behind it (outside the slab) and a plug inside the slab */
+  particles_init(&p);
+  const struct cut h = {.yc = 0, .R = 6 * S, .xcut = 1.0};
+  add_lattice(&p, lo, hi, 0, &h, 1, 1.0);
+  const double dlo[3] = {X0 + TH + 20 * S, -3 * S, 0}, dhi[3] = {X0 + TH + 23 * S, 3 * S, 3 * S};
+  const struct cut none = {0};
+  add_lattice(&p, dlo, dhi, 0, &none, 1, 1.0);
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated &&
+            fabs(r.d_circle - 12 * S) <= S,
+        "debris of the plate beyond the slab is not plate (D %.3fΔ)", r.d_circle / S);
+  const double plo[3] = {X0 + TH + 0.5 * S, -2 * S, 0}, phi[3] = {X0 + TH + 1.5 * S, 2 * S, 2 * S};
+  add_lattice(&p, plo, phi, 0, &none, 1, 1.0);
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated,
+        "a plug still inside the slab blocks the line of sight");
+  par.slab_rear = 0.2 * S;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated,
+        "... and is left out with a thinner slab");
+  particles_free(&p);
+}
+
+static void test_ellipse_and_open(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double lo[3] = {X0, -W, 0}, hi[3] = {X0 + TH, W, W};
+  const struct cut c = {.a = 10 * S, .b = 5 * S, .ey = 2 * S};
+  add_lattice(&p, lo, hi, 0, &c, 1, 1.0);
+  struct meas_geom g;
+  plate_geom(&g, 0.0, 1);
+  struct meas_plate_params par;
+  meas_plate_defaults(&par, &g);
+  struct meas_plate r;
+  struct hv_error err;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated, "elliptical hole found");
+  CHECK(fabs(r.d_circle - 10 * S) <= S, "ellipse 20Δ × 10Δ: largest circle = minor axis (%.3fΔ)",
+        r.d_circle / S);
+  CHECK(fabs(r.d_equiv - 2 * sqrt(50.0) * S) <= S, "ellipse: equivalent diameter 2√(ab) = %.3fΔ "
+        "(%.3fΔ)", 2 * sqrt(50.0), r.d_equiv / S);
+  CHECK(fabs(r.circle_center[0] - 2 * S) <= S && fabs(r.circle_center[1]) <= S,
+        "ellipse: circle at its centre (%.2fΔ, %.2fΔ)", r.circle_center[0] / S,
+        r.circle_center[1] / S);
+  CHECK(fabs(r.area - HV_MEAS_PI * 50 * S * S) <= 0.25 * HV_MEAS_PI * 50 * S * S,
+        "ellipse: hole area %.1f Δ² (the area inside tol, smaller than πab = %.1f Δ²)",
+        r.area / (S * S), HV_MEAS_PI * 50);
+  particles_free(&p);
+
+  particles_init(&p);
+  const struct cut gone = {.yc = 0, .R = 25 * S, .xcut = 1.0};
+  add_lattice(&p, lo, hi, 0, &gone, 1, 1.0);
+  par.r_max = 20 * S;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated && r.hole_open,
+        "a hole wider than the window is open");
+  CHECK(isfinite(r.d_circle) && r.d_circle <= 51 * S && isfinite(r.d_equiv),
+        "open hole: the circle stays inside it (%.2fΔ, a lower bound)", r.d_circle / S);
+  par.r_max = 0;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated && !r.hole_open &&
+            fabs(r.d_circle - 50 * S) <= S,
+        "the whole plate's window sees it closed (%.2fΔ)", r.d_circle / S);
+  struct particles empty;
+  particles_init(&empty);
+  CHECK(measure_plate(&empty, &g, &par, &r, &err) == 0 && r.n_plate == 0, "no plate particles: "
+        "no crash (perforated %d)", r.perforated);
+  particles_free(&empty);
+  par.tol = -1;
+  hv_error_clear(&err);
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "negative tolerance: an error (%s)", err.msg);
+  particles_free(&p);
+}
+
+/* A block 50Δ deep at x0 = 0, |y| <= 15Δ, 0 <= z <= 15Δ, with a cavity. */
+static void block(struct particles *p, const struct cut *c)
+{
+  const double lo[3] = {0, -15 * S, 0}, hi[3] = {50 * S, 15 * S, 15 * S};
+  add_lattice(p, lo, hi, 0, c, 2, 1.0);
+}
+
+static void test_cavity(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double Rc = 4.6 * S, Lc = 23.4 * S;
+  const struct cut c = {.R = Rc, .xcut = Lc};
+  block(&p, &c);
+  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
+                        .half_model = 1};
+  struct meas_cavity_params par;
+  meas_cavity_defaults(&par, &g);
+  struct meas_cavity r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0, "cavity measurement runs: %s", err.msg);
+  CHECK(fabs(r.L - Lc) <= S, "cavity depth %.2fΔ: L = %.3fΔ within Δ", Lc / S, r.L / S);
+  CHECK(fabs(r.D - 2 * Rc) <= S, "cavity diameter %.2fΔ: D = %.3fΔ within Δ", 2 * Rc / S, r.D / S);
+  CHECK(fabs(r.D_mean - 2 * Rc) <= S, "D_mean = %.3fΔ within Δ", r.D_mean / S);
+  /* the definition from the kept lattice: the nearest wall particle minus the footprint */
+  const double rmin_wall = hypot(1.5, 4.5) * S;  /* nearest lattice (y, z) outside 4.6Δ */
+  CHECK_CLOSE(r.D, 2 * (rmin_wall - 0.5 * S), 1e-12, "D = 2 (ρ_min − Δ/2)");
+  CHECK(!r.perforated && r.nopen > 0 && r.nslice >= 99, "not perforated; %zu slices, %zu open",
+        r.nslice, r.nopen);
+  meas_cavity_free(&r);
+
+  /* a stray target particle inside the cavity at depth 10.2Δ */
+  const double stray[3] = {10.2 * S, 0.3 * S, 0.4 * S};
+  const size_t is = add_particle(&p, stray, 2);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && r.L < 11 * S,
+        "a stray particle on the axis closes the cavity (L = %.2fΔ)", r.L / S);
+  meas_cavity_free(&r);
+  par.min_count = 2;
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && fabs(r.L - Lc) <= S,
+        "min_count 2 ignores one stray particle (L = %.2fΔ)", r.L / S);
+  meas_cavity_free(&r);
+  par.min_count = 1;
+  p.v[0][is] = -800.0;
+  par.v_max = 100.0;
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && fabs(r.L - Lc) <= S,
+        "v_max leaves out a particle flying back out (L = %.2fΔ)", r.L / S);
+  meas_cavity_free(&r);
+  unsigned char *mask = malloc(p.n);
+  memset(mask, 1, p.n);
+  mask[is] = 0;
+  par.v_max = INFINITY;
+  par.mask = mask;
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && fabs(r.L - Lc) <= S,
+        "a mask leaves it out too (L = %.2fΔ)", r.L / S);
+  meas_cavity_free(&r);
+  free(mask);
+  particles_free(&p);
+
+  /* wider entrance crater: radius 7.6Δ over the first 3Δ */
+  particles_init(&p);
+  const struct cut e = {.R = Rc, .xcut = Lc, .R2 = 7.6 * S, .xcut2 = 3 * S};
+  block(&p, &e);
+  meas_cavity_defaults(&par, &g);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0, "entrance crater: runs");
+  CHECK(fabs(r.D - 15.2 * S) <= S && r.depth_at_D < 3 * S,
+        "D is the largest diameter, at the entrance (%.2fΔ at depth %.2fΔ)", r.D / S,
+        r.depth_at_D / S);
+  CHECK(r.D_mean < 0.5 * (r.D + 2 * Rc) && fabs(r.L - Lc) <= S, "D_mean follows the channel "
+        "(%.2fΔ); L unchanged (%.2fΔ)", r.D_mean / S, r.L / S);
+  meas_cavity_free(&r);
+  particles_free(&p);
+
+  /* through the whole block: perforated; an intact block: no cavity */
+  particles_init(&p);
+  const struct cut t = {.R = Rc, .xcut = 1.0};
+  block(&p, &t);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && r.perforated && fabs(r.L - 50 * S) <= S,
+        "a channel through the block: perforated, L = %.2fΔ", r.L / S);
+  meas_cavity_free(&r);
+  particles_free(&p);
+  particles_init(&p);
+  const struct cut n0 = {0};
+  block(&p, &n0);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0 && r.L == 0 && r.D == 0 && !r.perforated,
+        "intact block: L = D = 0 (L %.3gΔ)", r.L / S);
+  meas_cavity_free(&r);
+  par.min_count = 9;
+  hv_error_clear(&err);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "min_count 9: an error (%s)", err.msg);
+  particles_free(&p);
+}
+
+int main(void)
+{
+  test_holes();
+  test_blind_and_slab();
+  test_ellipse_and_open();
+  test_cavity();
+  return test_finish();
+}

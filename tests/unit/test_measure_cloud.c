@@ -1,0 +1,244 @@
+/* test_measure_cloud.c — debris cloud, gas shock front, backwall craters and damage,
+ * and the pressure at the backwall's centre, on constructed particle sets with known
+ * answers.
+ *
+ * Cloud: 100 equal particles behind a plate on rays of known angle θ_k = 0.4° (k + 1)
+ * from the axis and known velocities v_k = 1000 + 10 k m/s: mass mean 1495 m/s, the 99 %
+ * quantile 1980 m/s, the 90 % cone 36°; particles in front of the margin or beyond the
+ * next plate, and particles of other bodies, do not count.
+ * Gas: a lattice at density ρ₀ (with 2 % noise) compressed to 2 ρ₀ inside a hemisphere of
+ * radius R about the entry point: the front is found at R within one spacing, axially,
+ * radially and in distance.
+ * Backwall: two flat-bottomed craters of known depth, damage inside a known radius: the
+ * deepest crater and the damaged radius within one spacing; bulging adds to the depth.
+ * Pressure: layers of known pressure at the front face.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag/measure.h"
+#include "particles/particles.h"
+#include "testlib.h"
+
+static const double S = 1e-3;  /* [m] lattice spacing Δ */
+static const double DEG = HV_MEAS_PI / 180.0;
+
+static size_t add_particle(struct particles *p, double x, double y, double z, double m, int body)
+{
+  const size_t i = particles_add(p, 1);
+  p->x[0][i] = x;
+  p->x[1][i] = y;
+  p->x[2][i] = z;
+  p->m[i] = m;
+  p->rho[i] = 1.0;
+  p->h[i] = 1.2 * S;
+  p->body[i] = body;
+  p->id[i] = (int64_t)i;
+  return i;
+}
+
+static void test_debris(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double x0 = 0.02, th = 2 * S, yc = 0.005, xr = x0 + th;
+  for (int k = 0; k < 100; k++) {  /* spread over azimuths in z >= 0, at 10 to 40 mm */
+    const double th_k = 0.4 * (k + 1) * DEG, phi = HV_MEAS_PI * (k % 10) / 9.0;
+    const double d = 0.01 + 0.0003 * ((k * 37) % 100);
+    const size_t i = add_particle(&p, xr + d * cos(th_k), yc + d * sin(th_k) * cos(phi),
+                                  d * sin(th_k) * sin(phi), 1e-4, k % 2 ? 1 : 2);
+    p.v[0][i] = 1000.0 + 10.0 * k;
+    p.v[1][i] = 300.0;
+  }
+  const size_t n_cloud = p.n;
+  /* not cloud: just behind the rear face (inside the margin), beyond the next plate, in front */
+  size_t i = add_particle(&p, xr + 0.5 * S, yc, 0.01, 1.0, 1);
+  p.v[0][i] = 9000.0;
+  i = add_particle(&p, 0.5, yc, 0.0, 1.0, 1);
+  p.v[0][i] = 9000.0;
+  i = add_particle(&p, x0 - 0.01, yc, 0.0, 1.0, 1);
+  p.v[0][i] = -9000.0;
+  struct meas_geom g = {.body = 0, .x0 = x0, .thickness = th, .yc = yc, .spacing = S,
+                        .half_model = 1};
+  struct meas_debris_params par;
+  meas_debris_defaults(&par, &g);
+  par.x_limit = 0.3;  /* the next plate's front face */
+  struct meas_debris r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_debris(&p, &par, &r, &err) == 0, "debris measurement runs: %s", err.msg);
+  CHECK(r.count == n_cloud, "cloud: %zu particles (%zu)", r.count, n_cloud);
+  CHECK_CLOSE(r.m, 2 * 100 * 1e-4, 1e-15, "cloud mass, mirrored (half model)");
+  CHECK_CLOSE(r.v_mean, 1495.0, 1e-9, "mass-mean axial velocity");
+  CHECK_CLOSE(r.v_lead, 1980.0, 0.0, "leading edge: 99 % mass quantile of v_x");
+  CHECK_CLOSE(r.v_max, 1990.0, 0.0, "largest v_x");
+  CHECK_CLOSE(r.half_angle / DEG, 36.0, 1e-9, "half spray angle: 90 % of the mass within 36°");
+  CHECK(r.x_lead > 0.01 && r.x_lead < 0.04, "leading edge 10..40 mm behind the face (%.4g m)",
+        r.x_lead);
+  par.q_angle = 0.5;
+  CHECK(measure_debris(&p, &par, &r, &err) == 0, "runs");
+  CHECK_CLOSE(r.half_angle / DEG, 20.0, 1e-9, "half of the mass within 20°");
+  par.q_angle = 0.9;
+  par.body = 1;  /* the odd ones only: k = 1, 3, ..., 99 */
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == 50, "one body's cloud: 50");
+  CHECK_CLOSE(r.v_mean, 1500.0, 1e-9, "its mean velocity");
+  par.body = -1;
+  par.x_limit = INFINITY;
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == n_cloud + 1, "without x_limit the "
+        "particle beyond the next plate joins");
+  par.x_rear = xr + 1.0;
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == 0 && isnan(r.v_mean) && r.m == 0,
+        "empty cloud: count 0, NaN velocities");
+  par.q_lead = 1.5;
+  hv_error_clear(&err);
+  CHECK(measure_debris(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "quantile 1.5: an error (%s)", err.msg);
+  particles_free(&p);
+}
+
+static void test_gas(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double rho0 = 13.125, R = 23.7 * S, o[3] = {0.0015, 0.0, 0.0};
+  uint64_t s = 12345;
+  for (int k = 0; k < 40; k++)
+    for (int j = -40; j < 40; j++)
+      for (int i = 0; i < 45; i++) {
+        const double x = o[0] + (i + 0.5) * S, y = (j + 0.5) * S, z = (k + 0.5) * S;
+        const size_t q = add_particle(&p, x, y, z, 1e-9, 3);
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        const double noise = 0.02 * ((double)(s >> 11) / 9007199254740992.0 - 0.5);
+        const double r = sqrt((x - o[0]) * (x - o[0]) + y * y + z * z);
+        p.rho[q] = (r < R ? 2.0 : 1.0 + noise) * rho0;
+      }
+  const double far[3] = {0.1, 0.0, 0.0};
+  add_particle(&p, far[0], far[1], far[2], 1.0, 0);  /* a dense metal particle: not gas */
+  p.rho[p.n - 1] = 2700;
+  struct meas_gas_params par;
+  meas_gas_defaults(&par, 3, rho0, o, S);
+  struct meas_gas_front r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_gas_front(&p, &par, &r, &err) == 0, "gas front measurement runs: %s", err.msg);
+  CHECK(r.n_shocked > 1000, "shocked particles: %zu", r.n_shocked);
+  CHECK(fabs(r.x_axial - R) <= S, "axial front %.3fΔ at R = %.1fΔ within Δ", r.x_axial / S, R / S);
+  CHECK(fabs(r.r_radial - R) <= S, "radial front %.3fΔ within Δ", r.r_radial / S);
+  CHECK(fabs(r.r_max - R) <= S, "front distance %.3fΔ within Δ", r.r_max / S);
+  par.factor = 2.5;
+  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked == 0 && r.r_max == 0,
+        "factor 2.5: nothing shocked");
+  par.factor = 1.1;
+  par.rho_ref = 0;
+  hv_error_clear(&err);
+  CHECK(measure_gas_front(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "rho_ref 0: an error");
+  particles_free(&p);
+}
+
+/* A backwall 8Δ thick at x0 = 0.2 m, |y| <= 30Δ, 0 <= z <= 30Δ (half model), with two
+ * flat-bottomed cylindrical craters: depth 4.4Δ radius 3.2Δ at the centre, depth 2.3Δ
+ * radius 3.2Δ at y = 20Δ. Damage 1 within ρ < 15.5Δ, plastic strain 0.3 at ρ in
+ * [18.2Δ, 19Δ). */
+static void backwall(struct particles *p, double shift)
+{
+  const double x0 = 0.2;
+  particles_enable_solid(p);
+  for (int k = 0; k < 30; k++)
+    for (int j = -30; j < 30; j++)
+      for (int i = 0; i < 8; i++) {
+        const double x = x0 + (i + 0.5) * S, y = (j + 0.5) * S, z = (k + 0.5) * S;
+        const double r1 = hypot(y, z), r2 = hypot(y - 20 * S, z);
+        if (r1 < 3.2 * S && x < x0 + 4.4 * S) continue;
+        if (r2 < 3.2 * S && x < x0 + 2.3 * S) continue;
+        const size_t q = add_particle(p, x + shift, y, z, 1e-6, 4);
+        if (r1 < 15.5 * S) p->damage[q] = 1.0;
+        if (r1 >= 18.2 * S && r1 < 19 * S) p->eps_p[q] = 0.3;
+      }
+}
+
+static void test_backwall(void)
+{
+  struct particles p;
+  particles_init(&p);
+  backwall(&p, 0.0);
+  const double x0 = 0.2;
+  struct meas_geom g = {.body = 4, .x0 = x0, .thickness = 8 * S, .yc = 0.0, .spacing = S,
+                        .half_model = 1};
+  struct meas_backwall_params par;
+  meas_backwall_defaults(&par, &g);
+  struct meas_backwall r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0, "backwall measurement runs: %s", err.msg);
+  CHECK(fabs(r.crater_depth - 4.4 * S) <= S, "deepest crater 4.4Δ: %.3fΔ within Δ",
+        r.crater_depth / S);
+  CHECK(hypot(r.crater_pos[0], r.crater_pos[1]) < 3.2 * S, "... at the centre (%.2fΔ, %.2fΔ)",
+        r.crater_pos[0] / S, r.crater_pos[1] / S);
+  CHECK(r.r_crater > 20 * S && r.r_crater < 23.2 * S, "cratered area reaches the second crater "
+        "(r_crater %.2fΔ)", r.r_crater / S);
+  CHECK(fabs(r.r_damage_particles - 19 * S) <= S, "damaged particles out to 19Δ: %.3fΔ",
+        r.r_damage_particles / S);
+  CHECK_CLOSE(r.r_damage, fmax(r.r_crater, r.r_damage_particles), 0.0, "damage radius = max");
+  CHECK(r.n_damaged > 0 && fabs(r.m_damaged - 2e-6 * (double)r.n_damaged) < 1e-9 * r.m_damaged,
+        "damaged mass mirrored: %zu particles", r.n_damaged);
+  par.eps_p_min = 0.5;
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 &&
+            fabs(r.r_damage_particles - 15.5 * S) <= S,
+        "plastic strain below the threshold: damage radius 15.5Δ (%.3fΔ)", r.r_damage_particles / S);
+  /* ejecta flying back out in front of the wall are not wall */
+  const size_t e = add_particle(&p, x0 - 0.05, 0.0, 0.5 * S, 1e-6, 4);
+  p.damage[e] = 1.0;
+  p.x[1][e] = 28 * S;
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.crater_depth - 4.4 * S) <= S &&
+            r.r_damage_particles < 16.5 * S,
+        "ejecta beyond margin_front are ignored");
+  particles_free(&p);
+
+  /* the whole wall bulged by 2Δ: measured from the original face, the depth grows by 2Δ */
+  particles_init(&p);
+  backwall(&p, 2 * S);
+  meas_backwall_defaults(&par, &g);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.crater_depth - 6.4 * S) <= S,
+        "bulged wall: depth from the original face %.3fΔ", r.crater_depth / S);
+  particles_free(&p);
+
+  /* an intact wall: no crater, no damage, no solid fields needed */
+  particles_init(&p);
+  for (int k = 0; k < 10; k++)
+    for (int j = -10; j < 10; j++)
+      for (int i = 0; i < 4; i++) add_particle(&p, x0 + (i + 0.5) * S, (j + 0.5) * S, (k + 0.5) * S, 1e-6, 4);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && r.crater_depth < 1e-12 &&
+            r.r_damage == 0 && r.n_damaged == 0 && r.n_wall == p.n,
+        "intact wall without solid fields: depth %.3gΔ, no damage", r.crater_depth / S);
+
+  /* pressure at the centre: 1 GPa in the first layer within 2Δ, 0.5 GPa below */
+  for (size_t i = 0; i < p.n; i++)
+    p.p[i] = p.x[0][i] < x0 + S ? 1e9 : 5e8;
+  size_t cnt = 0;
+  double pc = measure_center_pressure(&p, &g, 2 * S, 0.6 * S, NULL, &cnt);
+  CHECK_CLOSE(pc, 1e9, 1e-3, "centre pressure over the first layer");
+  CHECK(cnt == 6, "particles within 2Δ of the axis in the first layer: %zu", cnt);
+  pc = measure_center_pressure(&p, &g, 2 * S, 1.2 * S, NULL, &cnt);
+  CHECK_CLOSE(pc, 7.5e8, 1e-3, "two layers: the mean");
+  pc = measure_center_pressure(&p, &g, 2 * S, 1.2 * S, NULL, NULL);
+  CHECK_CLOSE(pc, 7.5e8, 1e-3, "count may be NULL");
+  struct meas_geom far = g;
+  far.yc = 1.0;
+  CHECK(isnan(measure_center_pressure(&p, &far, 2 * S, S, NULL, &cnt)) && cnt == 0,
+        "no particle near the axis: NaN");
+  particles_free(&p);
+}
+
+int main(void)
+{
+  test_debris();
+  test_gas();
+  test_backwall();
+  return test_finish();
+}
