@@ -89,7 +89,7 @@ bodies:
 output:
   every: 25 us
 measure:
-  thick_target: {{body: target, surface_x: 0, axis_y: 0}}
+  thick_target: target
 """
         write("rod-" + test, "Tungsten-alloy rod into a steel block, test " + test,
               "section 2.2, Tables 1-3", notes, body)
@@ -145,7 +145,7 @@ bodies:
 output:
   every: {fmt(tx / 4)} us
 measure:
-  plates: [{{body: bumper, front_x: 0, thickness: {fmt(h)} mm}}]
+  plates: [bumper]
   fragments: true
 """
         write("bumper-" + test, "Steel sphere through a steel plate, test " + test,
@@ -167,7 +167,7 @@ def whipple(name, title, section, notes, proj, d, v0, plates, domain, pcounts, t
     material: {mat}
     shape: {{type: box, min: [{fmt(x0)} mm, {fmt(-w)} mm, {fmt(-w)} mm], max: [{fmt(x0 + t)} mm, {fmt(w)} mm, {fmt(w)} mm]}}
     particles: {pcounts[k + 1]}""")
-        meas_plates.append(f"{{body: {pname}, front_x: {fmt(x0)} mm, thickness: {fmt(t)} mm}}")
+        meas_plates.append(pname)
     (x0, x1), yw, zw = domain
     last = plates[-1][0]
     body = f"""name: {name}
@@ -185,8 +185,8 @@ output:
   every: {fmt(every)} us
 measure:
   plates: [{", ".join(meas_plates[:-1])}]
-  debris: [{", ".join("{behind: %s}" % p[0] for p in plates[:-1])}]
-  backwall: {{body: {last}}}
+  debris: [{", ".join(p[0] for p in plates[:-1])}]
+  backwall: {last}
   fragments: true
 """
     write(name, title, section, notes, body)
@@ -275,9 +275,9 @@ bodies:
 output:
   every: 5 us
 measure:
-  plates: [{{body: wall, front_x: 0, thickness: 1.5 mm}}]
-  debris: [{{behind: wall}}]
-  gas: {{body: nitrogen}}
+  plates: [wall]
+  debris: [wall]
+  gas: nitrogen
   fragments: true
 """
     write("vessel", "Hypervelocity impact on a nitrogen-filled pressure vessel",

@@ -59,7 +59,9 @@ static void bar_ticks(struct canvas *c, int x0, int w, int y, int s, double lo, 
     char lab[32];
     snprintf(lab, sizeof lab, "%.*f", dec, fabs(t) < 0.5 * step ? 0.0 : t);
     int tw = canvas_text_width(s, lab), tx = x - tw / 2;
-    if (tx < last_right + 4 * s || tx + tw > c->w) continue;
+    if (tx < 2 * s) tx = 2 * s; /* the end labels stay on the picture */
+    if (tx + tw > c->w) tx = c->w - tw;
+    if (tx < last_right + 4 * s) continue;
     canvas_text(c, tx, y + 3 * s, s, ink, lab);
     last_right = tx + tw;
   }
@@ -94,21 +96,21 @@ static void key_legend(struct canvas *c, const struct caption_key *k,
     if (info && info->material_names && m < info->nmat && info->material_names[m])
       snprintf(name, sizeof name, "%s", info->material_names[m]);
     else snprintf(name, sizeof name, "material %d", m);
-    int need = 8 * s + canvas_text_width(s, name);
+    int need = 10 * s + canvas_text_width(s, name);
     if (x + need > c->w - 8 * s) {
       canvas_text(c, x, y, s, ink, "...");
       return;
     }
     unsigned char rgb[3];
     render_palette(m, rgb);
-    canvas_rect(c, x, y, x + 6 * s, y + 7 * s, rgb);
-    canvas_text(c, x + 8 * s, y, s, ink, name);
+    canvas_rect(c, x, y, x + 7 * s, y + 7 * s, rgb);
+    canvas_text(c, x + 10 * s, y, s, ink, name);
     x += need + 12 * s;
   }
 }
 
 void render_caption(struct canvas *c, const struct render_view *v, const struct render_info *info,
-                    const char *what, const struct caption_key *key)
+                    const char *const what[2], const struct caption_key *key)
 {
   int s = v->scale, y0 = v->nv;
   canvas_rect(c, 0, y0, c->w, y0 + s, rule);
@@ -130,7 +132,11 @@ void render_caption(struct canvas *c, const struct render_view *v, const struct 
     canvas_text(c, right, ya, s, ink, buf);
     right -= 16 * s;
   }
-  if (what && x + canvas_text_width(s, what) <= right) canvas_text(c, x, ya, s, ink, what);
+  for (int k = 0; k < 2; k++) /* the long description where it fits, else the short one */
+    if (what[k] && x + canvas_text_width(s, what[k]) <= right) {
+      canvas_text(c, x, ya, s, ink, what[k]);
+      break;
+    }
 
   /* row 2: the key */
   int yb = y0 + 18 * s;
@@ -138,13 +144,21 @@ void render_caption(struct canvas *c, const struct render_view *v, const struct 
     key_legend(c, key, info, 8 * s, yb, s);
     return;
   }
-  int lw = key->label ? canvas_text_width(s, key->label) : 0;
-  int bw = c->w - 16 * s - lw - 12 * s;
+  /* the bar takes half the width, or less down to a third to make room for the label */
+  const char *label = key->label[0];
+  int lw = canvas_text_width(s, label), room = c->w - 28 * s;
+  if (room - lw < c->w / 3 && key->label[1]) {
+    label = key->label[1];
+    lw = canvas_text_width(s, label);
+  }
+  int bw = room - lw;
   if (bw > c->w / 2) bw = c->w / 2;
-  if (bw < 40 * s) bw = c->w - 16 * s; /* no room for the label beside the bar */
+  if (bw < c->w / 3) {
+    bw = c->w - 16 * s; /* no room for the label beside the bar */
+    label = NULL;
+  }
   if (key->kind == 0) key_wedge(c, key, 8 * s, yb, bw, s);
   else key_colorbar(c, 8 * s, yb, bw, s);
   bar_ticks(c, 8 * s, bw, yb + 6 * s, s, key->lo / key->unit, key->hi / key->unit);
-  if (key->label && 8 * s + bw + 12 * s + lw <= c->w)
-    canvas_text(c, 8 * s + bw + 12 * s, yb - s, s, ink, key->label);
+  if (label) canvas_text(c, 8 * s + bw + 12 * s, yb - s, s, ink, label);
 }

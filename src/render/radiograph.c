@@ -8,8 +8,8 @@
  * intervals in s, 512 in t) for every picture. Deposition onto the pixels conserves mass:
  *   - footprint (radius 2h) under 1 pixel: the mass goes to the four nearest pixel
  *     centres with bilinear (cloud-in-cell) weights;
- *   - 1 to 8 pixels: F sampled at 4 × 4 points per pixel over the whole footprint and the
- *     weights normalised to sum to one;
+ *   - 1 to 12 pixels: F sampled at 4 × 4 (under 4 px) or 2 × 2 points per pixel over the
+ *     whole footprint and the weights normalised to sum to one;
  *   - wider: F at the pixel centres times pix²/h² (the midpoint rule of ∫Σ dA = 1).
  * The pixel then holds mass / pix² [kg/m²]. Mass whose kernel reaches past the picture
  * edge is lost there only.
@@ -30,6 +30,7 @@
 
 #define COL_N 2048   /* table intervals for s in [0, 2] */
 #define COL_NT 512   /* Simpson intervals along the line of sight */
+#define NARROW 12    /* [px] footprint radius up to which weights are normalised numerically */
 
 double render_kernel_column(double s)
 {
@@ -80,33 +81,38 @@ static void deposit(double *acc, int nu, int nv, const struct column_table *ct, 
   }
   int i0 = (int)floor(fu - R), i1 = (int)ceil(fu + R), j0 = (int)floor(fv - R),
       j1 = (int)ceil(fv + R);
-  if (R >= 8.0) { /* wide kernel: midpoint rule, normalised analytically */
-    double scale = m / (hp * hp);
-    for (int j = j0 < 0 ? 0 : j0; j <= j1 && j < nv; j++)
+  if (R >= NARROW) { /* wide kernel: midpoint rule, normalised analytically */
+    double scale = m / (hp * hp), inv = 1.0 / hp, R2 = R * R;
+    for (int j = j0 < 0 ? 0 : j0; j <= j1 && j < nv; j++) {
+      double dv2 = (j - fv) * (j - fv);
+      double *row = acc + (size_t)j * (size_t)nu;
       for (int i = i0 < 0 ? 0 : i0; i <= i1 && i < nu; i++) {
-        double s = hypot(i - fu, j - fv) / hp;
-        if (s < 2.0) acc[(size_t)j * (size_t)nu + (size_t)i] += scale * column_at(ct, s);
+        double r2 = (i - fu) * (i - fu) + dv2;
+        if (r2 < R2) row[i] += scale * column_at(ct, sqrt(r2) * inv);
       }
+    }
     return;
   }
-  enum { NS = 4 };
-  double total = 0.0;
-  for (int pass = 0; pass < 2; pass++) {
-    double scale = pass ? m / total : 0.0;
-    for (int j = j0; j <= j1; j++)
-      for (int i = i0; i <= i1; i++) {
-        if (pass && (i < 0 || j < 0 || i >= nu || j >= nv)) continue;
-        double w = 0.0;
-        for (int sj = 0; sj < NS; sj++)
-          for (int si = 0; si < NS; si++) {
-            double du = i + (si + 0.5) / NS - 0.5 - fu, dv = j + (sj + 0.5) / NS - 0.5 - fv;
-            w += column_at(ct, sqrt(du * du + dv * dv) / hp);
-          }
-        if (pass) acc[(size_t)j * (size_t)nu + (size_t)i] += scale * w;
-        else total += w;
-      }
-    if (!(total > 0.0)) return; /* cannot happen for R >= 1; kept for safety */
-  }
+  /* narrow kernel: weights on a sub-sampled grid over the whole footprint, normalised */
+  double w[(2 * NARROW + 4) * (2 * NARROW + 4)];
+  int ns = R < 4.0 ? 4 : 2, wi = i1 - i0 + 1;
+  double total = 0.0, inv = 1.0 / hp;
+  for (int j = j0; j <= j1; j++)
+    for (int i = i0; i <= i1; i++) {
+      double sum = 0.0;
+      for (int sj = 0; sj < ns; sj++)
+        for (int si = 0; si < ns; si++) {
+          double du = i + (si + 0.5) / ns - 0.5 - fu, dv = j + (sj + 0.5) / ns - 0.5 - fv;
+          sum += column_at(ct, sqrt(du * du + dv * dv) * inv);
+        }
+      w[(j - j0) * wi + (i - i0)] = sum;
+      total += sum;
+    }
+  if (!(total > 0.0)) return; /* cannot happen for R >= 1; kept for safety */
+  double scale = m / total;
+  for (int j = j0 < 0 ? 0 : j0; j <= j1 && j < nv; j++)
+    for (int i = i0 < 0 ? 0 : i0; i <= i1 && i < nu; i++)
+      acc[(size_t)j * (size_t)nu + (size_t)i] += scale * w[(j - j0) * wi + (i - i0)];
 }
 
 void render_areal_density(const struct particles *p, const struct render_view *view,

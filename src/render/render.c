@@ -81,14 +81,17 @@ int render_png(const char *path, const struct particles *p, const struct render_
   struct canvas c;
   canvas_init(&c, v.width, v.height);
   struct caption_key key = {0};
-  char what[128], desc[1024];
-  char axis = "xyz"[v.axis];
+  char what[2][128], desc[1024], mu_label[96];
+  char axis = "xyz"[v.axis], right = "xyz"[v.iu], up = "xyz"[v.iv];
   unsigned char *present = NULL;
   if (o->mode == RENDER_RADIOGRAPH) {
     draw_radiograph(&c, p, &v, o, &key, desc, sizeof desc);
-    key.label = "σ [kg/m²]  film T = exp(−μσ)";
-    snprintf(what, sizeof what, "x-ray along %c%s, μ = %g m²/kg", axis,
-             v.mirror ? ", mirrored" : "", o->mu);
+    snprintf(mu_label, sizeof mu_label, "σ [kg/m²]  film T = exp(−μσ), μ = %g m²/kg", o->mu);
+    key.label[0] = mu_label;
+    key.label[1] = "σ [kg/m²]";
+    snprintf(what[0], sizeof what[0], "x-ray along %c (%c→ %c↑)%s", axis, right, up,
+             v.mirror ? ", mirrored" : "");
+    snprintf(what[1], sizeof what[1], "x-ray along %c%s", axis, v.mirror ? ", mirrored" : "");
   } else {
     int nmat = 1;
     for (size_t i = 0; i < p->n; i++)
@@ -101,14 +104,16 @@ int render_png(const char *path, const struct particles *p, const struct render_
     key.hi = hi;
     key.present = present;
     key.nmat = nmat;
-    color_unit(o->color, lo, hi, &key.unit, &key.label);
-    snprintf(what, sizeof what, "particles seen along +%c%s", axis,
-             v.mirror ? ", mirrored" : v.axis == 2 ? " (cut at z = 0 in front)" : "");
+    color_unit(o->color, lo, hi, &key.unit, &key.label[0]);
+    const char *how = v.mirror ? ", mirrored" : v.axis == 2 ? ", cut at z = 0" : "";
+    snprintf(what[0], sizeof what[0], "seen along +%c (%c→ %c↑)%s", axis, right, up, how);
+    snprintf(what[1], sizeof what[1], "along +%c%s", axis, how);
     snprintf(desc, sizeof desc, "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
              "SI), %zu discs", axis, v.mirror ? ", mirrored at z = 0" : "",
              color_name(o->color), lo, hi, nd);
   }
-  render_caption(&c, &v, info, what, &key);
+  const char *whatp[2] = {what[0], what[1]};
+  render_caption(&c, &v, info, whatp, &key);
   free(present);
 
   char full[2048];

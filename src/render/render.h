@@ -18,7 +18,7 @@
  * (white: no material). Pixels are square; the mass in the picture is conserved to
  * rounding (kernels that reach past the edge lose only the part outside).
  *
- * Particles: discs of radius h/2, far ones first (painter's algorithm; the viewer sits on
+ * Particles: discs of radius 0.6 h, far ones first (painter's algorithm; the viewer sits on
  * the negative side of the view axis), coloured by material or by a quantity through a
  * sequential colour map with monotonic lightness (render_colormap).
  */

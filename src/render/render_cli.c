@@ -189,6 +189,9 @@ int render_main(int argc, char **argv)
   }
   if (o.mode == RENDER_RADIOGRAPH && o.color != RENDER_COLOR_MATERIAL)
     fprintf(stderr, "hvsph render: note: --color applies to --mode particles only\n");
+  if (o.mode == RENDER_PARTICLES && o.axis == 2 && o.mirror == 1)
+    fprintf(stderr, "hvsph render: note: particles seen along z are not mirrored (the view "
+                    "shows the cut at z = 0)\n");
   size_t len = strlen(in);
   if (len > 4 && !strcmp(in + len - 4, ".vtu")) {
     fprintf(stderr, "hvsph render: '%s': VTU snapshots are not read yet; render the CSV "

@@ -59,13 +59,14 @@ struct caption_key {
   int kind;               /* 0: film wedge, 1: colour bar, 2: material legend */
   double lo, hi;          /* range of the key in SI */
   double unit;            /* SI per display unit (e.g. 1e3 for km/s) */
-  const char *label;      /* quantity and unit, e.g. "|v| km/s" */
+  const char *label[2];   /* quantity and unit, e.g. "|v| [km/s]": long form, short form (may be NULL) */
   double mu;              /* [m2/kg] film wedge */
   const unsigned char *present;  /* materials drawn (legend) */
   int nmat;
 };
+/* what[0]: the long description of the view, what[1] a short one for narrow pictures. */
 void render_caption(struct canvas *c, const struct render_view *view,
-                    const struct render_info *info, const char *what,
+                    const struct render_info *info, const char *const what[2],
                     const struct caption_key *key);
 
 #endif

@@ -1,9 +1,10 @@
 /* scatter.c — particles mode: each particle a disc, far ones first.
  *
- * Disc radius h/2 on the picture (with h = 1.2 Δ, neighbouring discs of an undisturbed
- * lattice just overlap), at least 0.7 pixel so that lone fragments stay visible; edges
- * are anti-aliased by pixel coverage, and discs of 3 pixels or more get a darker rim so
- * that single particles can be told apart in a dense body. The viewer sits on the
+ * Disc radius 0.6 h on the picture (with h = 1.2 Δ that is 0.72 Δ, just over the 0.71 Δ
+ * that closes the diagonal gaps of a cubic lattice seen face on), at least 0.7 pixel so
+ * that lone fragments stay visible; edges are anti-aliased by pixel coverage, and discs of
+ * 3 pixels or more get a darker rim so that single particles can be told apart in a dense
+ * body. The viewer sits on the
  * negative side of the view axis: discs are drawn in order of decreasing depth
  * (painter's algorithm; equal depths by particle order, so pictures are reproducible).
  */
@@ -77,7 +78,7 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
       q->depth = depth;
       q->fu = (x[v->iu] - v->u0) / v->pix - 0.5;
       q->fv = (v->v1 - x[v->iv]) / v->pix - 0.5;
-      q->r = fmax(0.5 * fabs(p->h[i]) / v->pix, 0.7);
+      q->r = fmax(0.6 * fabs(p->h[i]) / v->pix, 0.7);
       if (!(q->fu > -q->r - 1 && q->fv > -q->r - 1 && q->fu < v->nu + q->r + 1 &&
             q->fv < v->nv + q->r + 1))
         continue; /* off the picture, or not finite */

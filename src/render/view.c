@@ -108,7 +108,7 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
     v.nv = v.height - v.band;
   } else {
     double nv = round(v.nu * dv / du);
-    v.nv = (int)fmin(fmax(nv, 120.0), 2400.0);
+    v.nv = (int)fmin(fmax(nv, 120.0), 0.75 * v.nu); /* at most 4:3 upright */
     v.height = v.nv + v.band;
   }
   v.pix = fmax(du / v.nu, dv / v.nv);

@@ -21,6 +21,7 @@
 #include "integrate/step.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
+#include "run/measure_run.h"
 #include "run/sim.h"
 #include "setup/setup.h"
 #include "version.h"
@@ -45,6 +46,7 @@ static const char *const summary_cols[SUMMARY_COLS] = {
     "absorbed_e_kin", "absorbed_e_int"};
 
 struct outputs {
+  struct measure_run mr;
   char dir[4000];
   int count;
   double *times;
@@ -56,6 +58,7 @@ struct outputs {
 
 static void outputs_free(struct outputs *o)
 {
+  measure_run_free(&o->mr);
   for (int i = 0; i < o->count; i++) free(o->files[i]);
   free(o->files);
   free(o->times);
@@ -93,6 +96,7 @@ static int write_outputs(struct sim *s, struct outputs *o, struct hv_error *err)
     snprintf(path, sizeof path, "%s/particles_%05d.csv", o->dir, o->count);
     if (io_write_particles_csv(path, &s->p, &meta, err)) return -1;
   }
+  if (measure_run_output(&o->mr, s, o->count, o->dir, o->matnames, err)) return -1;
   if (!s->out.vtu) {  /* keep the count and the snapshot numbers in step */
     o->files = hv_realloc(o->files, (size_t)(o->count + 1) * sizeof *o->files, "pvd");
     o->files[o->count] = NULL;
@@ -162,6 +166,7 @@ static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error
       hit = 1;
     }
     if (step_advance(s, err)) return -1;
+    measure_run_step(&o->mr, s);
     if (hit) {
       s->t = next_out;
       k++;
@@ -198,7 +203,9 @@ int run_main(const struct run_options *ro)
   if (!c) goto fail;
   for (int i = 0; i < ro->nsets; i++)
     if (cfg_apply_set(c, ro->sets[i], &err)) goto fail;
-  if (run_setup(&s, c, &err) || cfg_check_unused(c, &err)) goto fail;
+  if (run_setup(&s, c, &err) || measure_run_read(&o.mr, &s, c, &err) ||
+      cfg_check_unused(c, &err))
+    goto fail;
 
   char nbuf[256];
   if (ro->outdir) snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);

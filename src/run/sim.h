@@ -30,6 +30,9 @@ struct body_info {
   char name[64];
   int mat;
   size_t count;
+  double spacing;        /* [m] lattice spacing */
+  double lo[3], hi[3];   /* [m] initial extent of the material (particle centres ± Δ/2) */
+  double rho;            /* [kg/m3] initial density */
 };
 
 struct sim {

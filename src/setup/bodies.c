@@ -344,7 +344,20 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     size_t first = particles_add(&s->p, cnt);
     lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
     init_body(s, &bs[b], b, first, cnt);
-    s->body[b].count = cnt;
+    struct body_info *bi = &s->body[b];
+    bi->count = cnt;
+    bi->spacing = bs[b].spacing;
+    bi->rho = bs[b].rho;
+    for (int d = 0; d < 3; d++) {
+      bi->lo[d] = HUGE_VAL;
+      bi->hi[d] = -HUGE_VAL;
+      for (size_t q = first; q < first + cnt; q++) {
+        bi->lo[d] = fmin(bi->lo[d], s->p.x[d][q]);
+        bi->hi[d] = fmax(bi->hi[d], s->p.x[d][q]);
+      }
+      bi->lo[d] -= 0.5 * bs[b].spacing;
+      bi->hi[d] += 0.5 * bs[b].spacing;
+    }
     rc = check_placement(s, c, bs, b, first, cnt, err);
   }
   s->nbody = nb;

@@ -343,7 +343,8 @@ static void test_bad_input(void)
                                   NULL});
   /* materials */
   bad_input("unknown_material", variant(10, "    material: air"), NULL,
-            (const char *const[]){"unknown_material.yaml:10: ", "unknown material 'air'", NULL});
+            (const char *const[]){"unknown_material.yaml:10: bodies[0].material: ",
+                                  "unknown material 'air'", "the case defines: gas", NULL});
   bad_input("unknown_eos", variant(3, "  gas: {eos: ideal-gass, gamma: 1.4}"), NULL,
             (const char *const[]){"unknown_eos.yaml:3: materials.gas.eos: ",
                                   "'ideal-gass' is not one of", NULL});
@@ -420,6 +421,11 @@ static void test_late_input_error(void)
 
 int main(void)
 {
+  /* the material library of this source tree, also for builds outside it (the binary
+     looks for it in ../data next to itself unless HVSPH_DATA says otherwise) */
+  char data[4200];
+  snprintf(data, sizeof data, "%s/data", test_source_dir());
+  setenv("HVSPH_DATA", data, 0);
   test_commands();
   test_bad_input();
   test_outdir();

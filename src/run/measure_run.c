@@ -1,0 +1,193 @@
+/* measure_run.c — see measure_run.h. */
+#include "run/measure_run.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag/fof.h"
+#include "diag/measure.h"
+#include "version.h"
+
+static int body_by_name(const struct sim *s, struct cfg *c, const char *path, int *out,
+                        struct hv_error *err)
+{
+  const char *name;
+  char where[256];
+  if (cfg_get_string(c, path, NULL, &name, err)) return -1;
+  for (int b = 0; b < s->nbody; b++)
+    if (!strcmp(s->body[b].name, name)) {
+      *out = b;
+      return 0;
+    }
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: no body named '%s'",
+                      cfg_where(c, path, where, sizeof where), path, name);
+}
+
+static int body_list(const struct sim *s, struct cfg *c, const char *path, int *out, int *n,
+                     struct hv_error *err)
+{
+  char key[128], where[256];
+  *n = 0;
+  if (!cfg_has(c, path)) return 0;
+  int len = cfg_len(c, path);
+  if (len < 0 || len > MR_MAX)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s must be a list of at most %d body names",
+                        cfg_where(c, path, where, sizeof where), path, MR_MAX);
+  for (int k = 0; k < len; k++) {
+    snprintf(key, sizeof key, "%s[%d]", path, k);
+    if (body_by_name(s, c, key, &out[k], err)) return -1;
+  }
+  *n = len;
+  return 0;
+}
+
+int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  memset(mr, 0, sizeof *mr);
+  mr->target = mr->backwall = mr->gas = -1;
+  meas_table_init(&mr->table);
+  if (!cfg_has(c, "measure")) return 0;
+  mr->any = 1;
+  double zero = 0.0;
+  int no = 0;
+  if (cfg_get_quantity(c, "measure.axis_y", UNIT_LENGTH, &zero, -HUGE_VAL, HUGE_VAL,
+                       &mr->axis_y, err) ||
+      cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) ||
+      body_list(s, c, "measure.plates", mr->plate, &mr->nplate, err) ||
+      body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
+    return -1;
+  if (cfg_has(c, "measure.thick_target") && body_by_name(s, c, "measure.thick_target", &mr->target, err))
+    return -1;
+  if (cfg_has(c, "measure.backwall") && body_by_name(s, c, "measure.backwall", &mr->backwall, err))
+    return -1;
+  if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
+  mr->peak_pressure = -HUGE_VAL;
+  return 0;
+}
+
+void measure_run_free(struct measure_run *mr) { meas_table_free(&mr->table); }
+
+static struct meas_geom geom(const struct measure_run *mr, const struct sim *s, int b)
+{
+  const struct body_info *bi = &s->body[b];
+  return (struct meas_geom){.body = b, .x0 = bi->lo[0], .thickness = bi->hi[0] - bi->lo[0],
+                            .yc = mr->axis_y, .spacing = bi->spacing,
+                            .half_model = s->bnd.half_model};
+}
+
+void measure_run_step(struct measure_run *mr, const struct sim *s)
+{
+  if (mr->backwall < 0) return;
+  struct meas_geom g = geom(mr, s, mr->backwall);
+  double pc = measure_center_pressure(&s->p, &g, 2 * g.spacing, 2 * g.spacing, NULL, NULL);
+  if (pc > mr->peak_pressure) mr->peak_pressure = pc;
+}
+
+/* The front face of the next plate (or backwall) behind body b, for a cloud's end. */
+static double next_face(const struct measure_run *mr, const struct sim *s, int b)
+{
+  double x = INFINITY, rear = s->body[b].hi[0];
+  for (int k = 0; k < mr->nplate; k++) {
+    double f = s->body[mr->plate[k]].lo[0];
+    if (f > rear && f < x) x = f;
+  }
+  if (mr->backwall >= 0 && s->body[mr->backwall].lo[0] > rear && s->body[mr->backwall].lo[0] < x)
+    x = s->body[mr->backwall].lo[0];
+  return x;
+}
+
+static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_error *err)
+{
+  const double t = s->t;
+  if (mr->target >= 0) {
+    struct meas_geom g = geom(mr, s, mr->target);
+    struct meas_cavity_params cp;
+    struct meas_cavity cav;
+    meas_cavity_defaults(&cp, &g);
+    if (measure_cavity(&s->p, &g, &cp, &cav, err)) return -1;
+    meas_table_add_cavity(&mr->table, t, s->body[mr->target].name, &cav);
+    meas_cavity_free(&cav);
+  }
+  for (int k = 0; k < mr->nplate; k++) {
+    struct meas_geom g = geom(mr, s, mr->plate[k]);
+    struct meas_plate_params pp;
+    struct meas_plate hole;
+    meas_plate_defaults(&pp, &g);
+    if (measure_plate(&s->p, &g, &pp, &hole, err)) return -1;
+    meas_table_add_plate(&mr->table, t, s->body[mr->plate[k]].name, &hole);
+  }
+  for (int k = 0; k < mr->ndebris; k++) {
+    struct meas_geom g = geom(mr, s, mr->debris[k]);
+    struct meas_debris_params dp;
+    struct meas_debris cloud;
+    meas_debris_defaults(&dp, &g);
+    dp.x_limit = next_face(mr, s, mr->debris[k]);
+    if (measure_debris(&s->p, &dp, &cloud, err)) return -1;
+    char obj[96];
+    snprintf(obj, sizeof obj, "cloud:%s", s->body[mr->debris[k]].name);
+    meas_table_add_debris(&mr->table, t, obj, &cloud);
+  }
+  if (mr->backwall >= 0) {
+    struct meas_geom g = geom(mr, s, mr->backwall);
+    struct meas_backwall_params bp;
+    struct meas_backwall bw;
+    meas_backwall_defaults(&bp, &g);
+    if (measure_backwall(&s->p, &g, &bp, &bw, err)) return -1;
+    meas_table_add_backwall(&mr->table, t, s->body[mr->backwall].name, &bw);
+    meas_table_add(&mr->table, t, "peak_pressure_center",
+                   mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa",
+                   s->body[mr->backwall].name);
+  }
+  if (mr->gas >= 0) {
+    const struct body_info *bi = &s->body[mr->gas];
+    const double origin[3] = {bi->lo[0], mr->axis_y, 0.0};
+    struct meas_gas_params gp;
+    struct meas_gas_front gf;
+    meas_gas_defaults(&gp, mr->gas, bi->rho, origin, bi->spacing);
+    if (measure_gas_front(&s->p, &gp, &gf, err)) return -1;
+    meas_table_add_gas(&mr->table, t, bi->name, &gf);
+  }
+  return 0;
+}
+
+int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const char *outdir,
+                       const char *const *matnames, struct hv_error *err)
+{
+  if (!mr->any) return 0;
+  char path[4200], comment[512];
+  snprintf(comment, sizeof comment, "hvsph %s case %s: measurements (docs/measurements.md)",
+           HVSPH_VERSION, s->case_name);
+  if (measure_all(mr, s, err)) return hv_error_prefix(err, "measurements at t = %g s: ", s->t);
+  if (mr->fragments) {
+    /* solid material only (gases are not fragments); linking length 1.5 × the
+       particle's own body spacing */
+    const size_t n = s->p.n;
+    unsigned char *mask = hv_malloc(n + 1, "fragment mask");
+    double *b = hv_malloc((n + 1) * sizeof *b, "linking lengths");
+    for (size_t i = 0; i < n; i++) {
+      const struct material *m = &s->mat[s->p.mat[i]];
+      mask[i] = m->str.enabled || m->frac.kind != FRACTURE_NONE;
+      b[i] = FOF_B_FACTOR * s->body[s->p.body[i]].spacing;
+    }
+    struct fof_params fp = {.b = b[0], .b_particle = b, .mask = mask, .nmat = s->nmat,
+                            .half_model = s->bnd.half_model};
+    struct fof_result fr;
+    fof_result_init(&fr);
+    int frc = fof_find(&s->p, &fp, &fr, err);
+    free(mask);
+    free(b);
+    if (frc) {
+      fof_result_free(&fr);
+      return hv_error_prefix(err, "fragments: ");
+    }
+    meas_table_add_fragments(&mr->table, s->t, "all", &fr);
+    snprintf(path, sizeof path, "%s/fragments_%05d.csv", outdir, k);
+    int rc = fof_write_csv(path, &fr, s->t, matnames, comment, err);
+    fof_result_free(&fr);
+    if (rc) return -1;
+  }
+  snprintf(path, sizeof path, "%s/measurements.csv", outdir);
+  return meas_table_write(&mr->table, path, comment, err);
+}

@@ -1,0 +1,45 @@
+/* measure_run.h — the measurements a case asks for (`measure:`), taken at output times
+ * and at the end, and written to OUTDIR/measurements.csv (and fragments_NNNNN.csv).
+ *
+ *   measure:
+ *     thick_target: target        # penetration depth L, cavity diameter D
+ *     plates: [bumper]            # perforated?, hole diameters
+ *     debris: [bumper]            # debris cloud behind each of these plates
+ *     backwall: backwall          # crater depth, damaged radius, peak centre pressure
+ *     gas: nitrogen               # shock front position
+ *     fragments: true             # friends-of-friends fragments
+ *
+ * Bodies are named; their geometry (front face, thickness, spacing) comes from their
+ * initial particles. Impact along +x, axis y = 0 (measure.axis_y), symmetry plane
+ * z = 0 in half models. Definitions: docs/measurements.md.
+ */
+#ifndef HV_MEASURE_RUN_H
+#define HV_MEASURE_RUN_H
+
+#include "diag/measure_table.h"
+#include "run/sim.h"
+
+#define MR_MAX 8
+
+struct measure_run {
+  int any;
+  double axis_y;         /* [m] */
+  int target;            /* body index or -1 */
+  int plate[MR_MAX], nplate;
+  int debris[MR_MAX], ndebris;
+  int backwall;
+  int gas;
+  int fragments;
+  double peak_pressure;  /* [Pa] running maximum at the backwall's centre */
+  struct meas_table table;
+};
+
+int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struct hv_error *err);
+void measure_run_free(struct measure_run *mr);
+/* Every step: cheap running quantities (the backwall's peak centre pressure). */
+void measure_run_step(struct measure_run *mr, const struct sim *s);
+/* At output k: every measurement, appended to the table and written. */
+int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const char *outdir,
+                       const char *const *matnames, struct hv_error *err);
+
+#endif
