@@ -41,17 +41,21 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
   boundary_init(b);
   char key[128], where[256];
   for (int d = 0; d < 3; d++) {
+    /* either the shorthand `x: kind` for both faces, or `x_min`/`x_max`; only what
+       the case gives is read (and so recorded in used_parameters.yaml) */
     snprintf(key, sizeof key, "domain.boundary.%c", "xyz"[d]);
     int both = BND_OPEN;
     int has_both = cfg_has(c, key);
-    if (cfg_get_choice(c, key, "open", bnd_kind_names, &both, err)) return -1;
+    if (has_both && cfg_get_choice(c, key, NULL, bnd_kind_names, &both, err)) return -1;
     for (int s = 0; s < 2; s++) {
       snprintf(key, sizeof key, "domain.boundary.%s", face[d][s]);
       if (has_both && cfg_has(c, key))
         return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.boundary.%s: give either '%c' or "
                             "'%s', not both", cfg_where(c, key, where, sizeof where),
                             face[d][s], "xyz"[d], face[d][s]);
-      if (cfg_get_choice(c, key, bnd_kind_names[both], bnd_kind_names, &b->kind[d][s], err))
+      b->kind[d][s] = both;
+      if (!has_both &&
+          cfg_get_choice(c, key, bnd_kind_names[BND_OPEN], bnd_kind_names, &b->kind[d][s], err))
         return -1;
     }
     if ((b->kind[d][0] == BND_PERIODIC) != (b->kind[d][1] == BND_PERIODIC))

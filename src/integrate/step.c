@@ -1,6 +1,7 @@
 /* step.c — the predictor–corrector step; see step.h for the scheme. */
 #include "integrate/step.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,17 +25,17 @@ static double hmin_reals(const struct particles *p)
   return hm;
 }
 
-/* p and cs of every real from its ρ and e; the first failure is reported. */
+/* p and cs of every real from its ρ and e; the failure of the lowest slot is reported. */
 static int update_eos(struct sim *s, struct hv_error *err)
 {
   struct particles *p = &s->p;
-  long bad = -1;
-#pragma omp parallel for schedule(static) reduction(max : bad)
+  long bad = LONG_MAX;
+#pragma omp parallel for schedule(static) reduction(min : bad)
   for (size_t i = 0; i < p->n; i++) {
     struct eos_state st;
-    if (eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) || !isfinite(st.p) ||
-        !isfinite(st.cs)) {
-      if ((long)i > bad) bad = (long)i;
+    if (!(p->rho[i] > 0) || eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) ||
+        !isfinite(st.p) || !isfinite(st.cs)) {
+      if ((long)i < bad) bad = (long)i;
       continue;
     }
     const struct material *m = &s->mat[p->mat[i]];
@@ -44,14 +45,21 @@ static int update_eos(struct sim *s, struct hv_error *err)
     p->p[i] = st.p;
     p->cs[i] = st.cs;
   }
-  if (bad >= 0) {
-    size_t i = (size_t)bad;
-    return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: particle %lld (body '%s', "
-                        "material '%s'): the EOS cannot be evaluated at rho = %g kg/m3, "
-                        "e = %g J/kg", s->t, s->step, (long long)p->id[i],
-                        s->body[p->body[i]].name, s->mat[p->mat[i]].name, p->rho[i], p->e[i]);
-  }
-  return 0;
+  if (bad == LONG_MAX) return 0;
+  size_t i = (size_t)bad;
+  const char *bname = s->body[p->body[i]].name, *mname = s->mat[p->mat[i]].name;
+  if (!(p->rho[i] > 0))
+    return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s to %.9g s): particle %lld (body "
+                        "'%s'): field rho: %g kg/m3 <= 0 (compressed or stretched beyond what "
+                        "the time step can follow)", s->step, s->t, s->t + s->dt,
+                        (long long)p->id[i], bname, p->rho[i]);
+  char what[512];
+  struct eos_state st;
+  eos_describe(&s->mat[p->mat[i]], p->rho[i], p->e[i],
+               eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st), what, sizeof what);
+  return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
+                      "material '%s'): field p: %s", s->step, s->t, (long long)p->id[i], bname,
+                      mname, what);
 }
 
 /* Ghosts and the cell grid at the current positions. */
@@ -101,22 +109,22 @@ static double next_dt(const struct sim *s)
     if (d < dt) dt = d;
   }
   if (s->dt_prop > 0 && dt > s->tp.growth * s->dt_prop) dt = s->tp.growth * s->dt_prop;
-  if (dt > s->tp.dt_max) dt = s->tp.dt_max;
+  if (s->tp.dt_max > 0 && dt > s->tp.dt_max) dt = s->tp.dt_max;
   return dt;
 }
 
-/* After a step: every real finite with ρ > 0; names the first offender. */
+/* After a step: every real finite with ρ > 0; names the offender of the lowest slot. */
 static int check_state(const struct sim *s, struct hv_error *err)
 {
   const struct particles *p = &s->p;
-  long bad = -1;
-#pragma omp parallel for schedule(static) reduction(max : bad)
+  long bad = LONG_MAX;
+#pragma omp parallel for schedule(static) reduction(min : bad)
   for (size_t i = 0; i < p->n; i++) {
     int ok = p->rho[i] > 0 && isfinite(p->rho[i]) && isfinite(p->e[i]);
     for (int k = 0; k < 3; k++) ok = ok && isfinite(p->x[k][i]) && isfinite(p->v[k][i]);
-    if (!ok && (long)i > bad) bad = (long)i;
+    if (!ok && (long)i < bad) bad = (long)i;
   }
-  if (bad < 0) return 0;
+  if (bad == LONG_MAX) return 0;
   size_t i = (size_t)bad;
   const char *field = !isfinite(p->rho[i]) ? "rho (NaN)" : !(p->rho[i] > 0) ? "rho (<= 0)"
                       : !isfinite(p->e[i]) ? "e (not finite)" : "x or v (not finite)";

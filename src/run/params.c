@@ -10,12 +10,12 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {
   static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
   int k, no = 0;
-  double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, inf = HUGE_VAL;
+  double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0;
   double as_eps = 0.3, as_n = 4.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_quantity(c, "sph.eta", UNIT_NONE, &eta, 0.8, 3.0, &sp->eta, err) ||
       cfg_get_quantity(c, "sph.h_min", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &sp->h_min, err) ||
-      cfg_get_quantity(c, "sph.h_max", UNIT_LENGTH, &inf, 0.0, HUGE_VAL, &sp->h_max, err) ||
+      cfg_get_quantity(c, "sph.h_max", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &sp->h_max, err) ||
       cfg_get_quantity(c, "sph.viscosity.alpha", UNIT_NONE, &alpha, 0.0, 10.0, &sp->alpha, err) ||
       cfg_get_quantity(c, "sph.viscosity.beta", UNIT_NONE, &beta, 0.0, 20.0, &sp->beta, err) ||
       cfg_get_quantity(c, "sph.viscosity.epsilon", UNIT_NONE, &eps, 1e-6, 1.0, &sp->eps, err) ||
@@ -25,19 +25,23 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err))
     return -1;
   sp->kernel = (enum kernel_kind)k;
+  char where[256];
+  if (sp->h_max > 0 && sp->h_min > sp->h_max)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.h_min (%g m) exceeds sph.h_max (%g m)",
+                        cfg_where(c, "sph.h_min", where, sizeof where), sp->h_min, sp->h_max);
   return 0;
 }
 
 static int read_time(struct time_params *tp, struct cfg *c, struct hv_error *err)
 {
-  double cfl = 0.3, cfla = 0.25, zero = 0.0, inf = HUGE_VAL, dtmin = 1e-30, growth = 1.2;
+  double cfl = 0.3, cfla = 0.25, zero = 0.0, dtmin = 1e-30, growth = 1.2;
   long maxs = 0;
   return cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &tp->end, err) ||
          cfg_get_quantity(c, "time.cfl", UNIT_NONE, &cfl, 1e-3, 1.0, &tp->cfl, err) ||
          cfg_get_quantity(c, "time.cfl_acceleration", UNIT_NONE, &cfla, 1e-3, 1.0,
                           &tp->cfl_acc, err) ||
          cfg_get_quantity(c, "time.dt_init", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_init, err) ||
-         cfg_get_quantity(c, "time.dt_max", UNIT_TIME, &inf, 0.0, HUGE_VAL, &tp->dt_max, err) ||
+         cfg_get_quantity(c, "time.dt_max", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_max, err) ||
          cfg_get_quantity(c, "time.dt_min", UNIT_TIME, &dtmin, 0.0, HUGE_VAL, &tp->dt_min, err) ||
          cfg_get_quantity(c, "time.growth", UNIT_NONE, &growth, 1.0, 10.0, &tp->growth, err) ||
          cfg_get_int(c, "time.max_steps", &maxs, 0, 1000000000L, &tp->max_steps, err)

@@ -30,9 +30,8 @@ static volatile sig_atomic_t interrupted = 0;
 
 static void on_sigint(int sig)
 {
-  (void)sig;
   interrupted = 1;
-  signal(SIGINT, SIG_DFL);   /* a second Ctrl-C stops at once */
+  signal(sig, SIG_DFL);   /* a second Ctrl-C (or SIGTERM) stops at once */
 }
 
 static double wall_time(void) { return omp_get_wtime(); }
@@ -137,8 +136,19 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
     if (s->p.h[i] < hmin) hmin = s->p.h[i];
     if (s->p.h[i] > hmax) hmax = s->p.h[i];
   }
-  if (s->sph.h_max == HUGE_VAL) s->sph.h_max = 10.0 * hmax;
+  if (s->sph.h_max == 0.0) s->sph.h_max = 10.0 * hmax;
   if (s->sph.h_min == 0.0) s->sph.h_min = 0.1 * hmin;
+  /* a periodic dimension must hold two interaction radii (ghost layers of 2 h_max) */
+  for (int d = 0; d < 3; d++) {
+    const double L = s->bnd.hi[d] - s->bnd.lo[d];
+    if (s->bnd.kind[d][0] == BND_PERIODIC && L < 4.0 * hmax) {
+      char where[256];
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain: the periodic length in %c (%g m) is "
+                          "shorter than two interaction radii (4 h = %g m); make the domain "
+                          "longer or the spacing finer", cfg_where(c, "domain.boundary", where,
+                          sizeof where), "xyz"[d], L, 4.0 * hmax);
+    }
+  }
   return 0;
 }
 
@@ -156,6 +166,7 @@ static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error
   const int tty = isatty(STDERR_FILENO);
   const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end;
   double next_out = s->out.every > 0 ? t0 + s->out.every : tend, last_print = wall0;
+  long printed_step = -1;
   if (next_out > tend) next_out = tend;
   int k = 1;
   while (s->t < tend && !interrupted) {
@@ -179,10 +190,11 @@ static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error
       if ((tty && now - last_print > 0.25) || (!tty && s->step % s->out.log_every == 0)) {
         progress(s, t0, wall0, tty, 0);
         last_print = now;
+        printed_step = s->step;
       }
     }
   }
-  if (!quiet) progress(s, t0, wall0, tty, 1);
+  if (!quiet && (tty || printed_step != s->step)) progress(s, t0, wall0, tty, 1);
   int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * SUMMARY_COLS] == (double)s->step;
   if (!wrote_last && write_outputs(s, o, err)) return -1;
   return 0;
@@ -218,16 +230,19 @@ int run_main(const struct run_options *ro)
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
 
   if (!ro->quiet)
-    hv_info("case %s: %zu particles, %d bodies, %d threads, t_end = %g s, output to %s",
-            ro->case_path, s.p.n, s.nbody, omp_get_max_threads(), s.tp.end, o.dir);
+    hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
+            ro->case_path, s.p.n, s.nbody, s.nbody == 1 ? "y" : "ies", omp_get_max_threads(),
+            omp_get_max_threads() == 1 ? "" : "s", s.tp.end, o.dir);
   interrupted = 0;
   signal(SIGINT, on_sigint);
+  signal(SIGTERM, on_sigint);
   if (step_init(&s, &err) || write_outputs(&s, &o, &err) || run_loop(&s, &o, ro->quiet, &err))
     goto fail;
   signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
   if (interrupted) {
-    hv_log(0, "interrupted at t = %g s (step %ld); the state at that time is written to %s",
-           s.t, s.step, o.dir);
+    hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s",
+            s.t, s.step, o.dir);
     status = HV_EXIT_INTERRUPTED;
   } else if (!ro->quiet) {
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
@@ -236,6 +251,7 @@ int run_main(const struct run_options *ro)
   goto done;
 fail:
   signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
 done:

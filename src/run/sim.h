@@ -14,7 +14,7 @@ struct time_params {
   double cfl;          /* [-] Courant number on h / vsig */
   double cfl_acc;      /* [-] factor on sqrt(h/|a|) */
   double dt_init;      /* [s] first step (0: from the CFL condition) */
-  double dt_max;       /* [s] */
+  double dt_max;       /* [s] largest step (0: no limit) */
   double dt_min;       /* [s] a step below this ends the run as failed */
   double growth;       /* [-] largest ratio between consecutive steps */
   long max_steps;      /* 0: none */

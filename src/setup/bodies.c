@@ -17,6 +17,7 @@
  * `energy_deposit` adds energy E within a radius R about a point, shared with the
  * weights m_i W(r_i, R/2) (the Sedov blast).
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,7 +118,7 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   char key[256], key2[256], where[256];
   snprintf(key, sizeof key, "%s.density", path);
   const double *rdef = m->rho0 > 0 ? &m->rho0 : NULL;
-  if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, 1e-300, HUGE_VAL, &bs->rho, err)) return -1;
+  if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, DBL_MIN, HUGE_VAL, &bs->rho, err)) return -1;
   snprintf(key, sizeof key, "%s.pressure", path);
   snprintf(key2, sizeof key2, "%s.energy", path);
   if (cfg_has(c, key) && cfg_has(c, key2))
@@ -125,8 +126,10 @@ static int read_state(struct cfg *c, const char *path, const char *name,
                         cfg_where(c, key, where, sizeof where), name);
   if (cfg_has(c, key)) {
     double pr;
-    if (cfg_get_quantity(c, key, UNIT_PRESSURE, NULL, -HUGE_VAL, HUGE_VAL, &pr, err)) return -1;
-    if (eos_energy_from_pressure(m, bs->rho, pr, &bs->e))
+    /* a gas has no tension; a solid may start stretched, down to −ρ₀c₀² */
+    const double plo = m->eos == EOS_IDEAL_GAS ? 0.0 : -HUGE_VAL;
+    if (cfg_get_quantity(c, key, UNIT_PRESSURE, NULL, plo, HUGE_VAL, &pr, err)) return -1;
+    if (eos_energy_from_pressure(m, bs->rho, pr, &bs->e) || !isfinite(bs->e))
       return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': material '%s' cannot reach "
                           "p = %g Pa at rho = %g kg/m3", cfg_where(c, key, where, sizeof where),
                           name, m->name, pr, bs->rho);
@@ -169,7 +172,7 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give exactly one of 'spacing' and "
                         "'particles'", cfg_where(c, path, where, sizeof where), name);
   if (cfg_has(c, key)) {
-    if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &bs->spacing, err)) return -1;
+    if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &bs->spacing, err)) return -1;
     bs->spacing /= cbrt(resolution);
     return 0;
   }
@@ -197,9 +200,9 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
   bs->mat = material_find_or_load(c, key, mname, s->mat, &s->nmat, HV_MAX_MATERIALS, err);
-  if (bs->mat < 0) return hv_error_prefix(err, "body '%s': ", name);
+  if (bs->mat < 0) return -1;
   snprintf(key, sizeof key, "%s.shape", path);
-  if (shape_read(&bs->shape, c, key, err)) return hv_error_prefix(err, "body '%s': ", name);
+  if (shape_read(&bs->shape, c, key, err)) return -1;
   snprintf(key, sizeof key, "%s.lattice", path);
   if (cfg_get_choice(c, key, "cubic", lattice_names, &bs->lattice, err)) return -1;
   bs->vol = shape_volume(&bs->shape);
@@ -251,7 +254,7 @@ static int energy_deposit(struct sim *s, struct cfg *c, struct hv_error *err)
   char where[256];
   if (cfg_get_quantity(c, "energy_deposit.energy", UNIT_ENERGY, NULL, 0.0, HUGE_VAL, &E, err) ||
       cfg_get_vec3(c, "energy_deposit.center", UNIT_LENGTH, zero3, ctr, err) ||
-      cfg_get_quantity(c, "energy_deposit.radius", UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &R, err))
+      cfg_get_quantity(c, "energy_deposit.radius", UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &R, err))
     return -1;
   struct particles *p = &s->p;
   double wsum = 0.0;

@@ -7,6 +7,7 @@
  * inside it and they do not overlap each other (checked on bounding boxes); otherwise
  * shape_volume() returns -1 and the caller falls back to the lattice volume.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,7 +40,7 @@ static int read_sphere(struct shape *sh, struct cfg *c, const char *path, struct
   snprintf(key, sizeof key, "%s.center", path);
   if (cfg_get_vec3(c, key, UNIT_LENGTH, NULL, sh->center, err)) return -1;
   snprintf(key, sizeof key, "%s.radius", path);
-  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &sh->radius, err)) return -1;
+  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &sh->radius, err)) return -1;
   for (int d = 0; d < 3; d++) {
     sh->min[d] = sh->center[d] - sh->radius;
     sh->max[d] = sh->center[d] + sh->radius;
@@ -61,9 +62,9 @@ static int read_cylinder(struct shape *sh, struct cfg *c, const char *path, stru
                         cfg_where(c, key, where, sizeof where), key);
   for (int d = 0; d < 3; d++) sh->axis[d] /= na;
   snprintf(key, sizeof key, "%s.radius", path);
-  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &sh->radius, err)) return -1;
+  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &sh->radius, err)) return -1;
   snprintf(key, sizeof key, "%s.length", path);
-  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, 1e-300, HUGE_VAL, &sh->length, err)) return -1;
+  if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &sh->length, err)) return -1;
   for (int d = 0; d < 3; d++) { /* bounding box of the two end discs */
     double a = sh->axis[d], half = 0.5 * sh->length * fabs(a);
     double rad = sh->radius * sqrt(fmax(0.0, 1.0 - a * a));

@@ -22,7 +22,8 @@
 struct sph_params {
   enum kernel_kind kernel;
   double eta;          /* [-] h = eta (m/ρ)^(1/3) */
-  double h_min, h_max; /* [m] bounds on h */
+  double h_min, h_max; /* [m] bounds on h (0 in the case file: automatic, 1/10 and
+                          10 times the initial extremes) */
   double alpha, beta;  /* [-] artificial viscosity */
   double eps;          /* [-] ε in μᵢⱼ */
   /* artificial stress (Monaghan 2000; Gray, Monaghan & Swift 2001) for solids:

@@ -97,3 +97,93 @@ double exact_sedov_radius(double xi0, double E, double rho0, double t)
 {
   return xi0 * pow(E * t * t / rho0, 0.2);
 }
+
+double exact_noh_shock_radius(double t, double g) { return 0.5 * (g - 1.0) * t; }
+
+/* Sedov similarity ODEs in ξ = ln λ, with u = (r/t)V, ρ = ρ₀G, c² = (r/t)²Z and
+ * r_s ∝ t^δ, δ = 2/5. Continuity, momentum and entropy (p ρ^−γ constant along
+ * particle paths) give, with g = G'/G, z = Z'/Z and W = V − δ:
+ *   g  = [3VW − V(V − 1) − 2(1 − δ)Z/(γW)] / (Z − W²)
+ *   V' = −3V − W g
+ *   z  = 2(1 − δ)/W − 2 − (1 − γ) g                                          */
+static void sedov_rhs(double g, const double y[3], double d[3])
+{
+  const double delta = 0.4, V = y[0], G = y[1], Z = y[2], W = V - delta;
+  double gg = (3.0 * V * W - V * (V - 1.0) - 2.0 * (1.0 - delta) * Z / (g * W)) / (Z - W * W);
+  double zz = 2.0 * (1.0 - delta) / W - 2.0 - (1.0 - g) * gg;
+  d[0] = -3.0 * V - W * gg;
+  d[1] = G * gg;
+  d[2] = Z * zz;
+}
+
+void exact_sedov_solve(double g, struct sedov_solution *s)
+{
+  const int N = EXACT_SEDOV_N;
+  const double delta = 0.4, lmin = 1e-6;
+  /* strong-shock (Rankine–Hugoniot) state at λ = 1, shock speed D = δ r_s/t */
+  double y[3] = {2.0 * delta / (g + 1.0), (g + 1.0) / (g - 1.0),
+                 2.0 * g * (g - 1.0) * delta * delta / ((g + 1.0) * (g + 1.0))};
+  s->gamma = g;
+  /* steps uniform in ξ = ln λ from 0 down to ln(lmin), stored at decreasing λ */
+  const double h = log(lmin) / (double)(N - 2);
+  s->lam[N - 1] = 1.0;
+  s->V[N - 1] = y[0];
+  s->G[N - 1] = y[1];
+  s->Z[N - 1] = y[2];
+  for (int k = N - 2; k >= 1; k--) {
+    double k1[3], k2[3], k3[3], k4[3], t[3];
+    sedov_rhs(g, y, k1);
+    for (int c = 0; c < 3; c++) t[c] = y[c] + 0.5 * h * k1[c];
+    sedov_rhs(g, t, k2);
+    for (int c = 0; c < 3; c++) t[c] = y[c] + 0.5 * h * k2[c];
+    sedov_rhs(g, t, k3);
+    for (int c = 0; c < 3; c++) t[c] = y[c] + h * k3[c];
+    sedov_rhs(g, t, k4);
+    for (int c = 0; c < 3; c++) y[c] += h / 6.0 * (k1[c] + 2.0 * k2[c] + 2.0 * k3[c] + k4[c]);
+    s->lam[k] = exp(h * (double)(N - 1 - k));
+    s->V[k] = y[0];
+    s->G[k] = y[1];
+    s->Z[k] = y[2];
+  }
+  s->lam[0] = 0.0;   /* the centre: G → 0, V → δ/γ, G·Z·λ² (the pressure) finite */
+  s->V[0] = delta / g;
+  s->G[0] = 0.0;
+  s->Z[0] = s->Z[1];
+  /* energy E = 4π ρ₀ r_s⁵/t² ∫ G (V²/2 + Z/(γ(γ−1))) λ⁴ dλ (trapezoid in λ) */
+  double I = 0.0;
+  for (int k = 1; k < N; k++) {
+    double f0 = s->G[k - 1] * (0.5 * s->V[k - 1] * s->V[k - 1] + s->Z[k - 1] / (g * (g - 1.0))) *
+                pow(s->lam[k - 1], 4.0);
+    double f1 = s->G[k] * (0.5 * s->V[k] * s->V[k] + s->Z[k] / (g * (g - 1.0))) *
+                pow(s->lam[k], 4.0);
+    I += 0.5 * (f0 + f1) * (s->lam[k] - s->lam[k - 1]);
+  }
+  s->xi0 = pow(4.0 * 3.14159265358979323846 * I, -0.2);
+}
+
+void exact_sedov(const struct sedov_solution *s, double E, double rho0, double t, double r,
+                 struct gas_state *o)
+{
+  const double rs = exact_sedov_radius(s->xi0, E, rho0, t), lam = r / rs, g = s->gamma;
+  if (lam >= 1.0) {
+    *o = (struct gas_state){rho0, 0.0, 0.0};
+    return;
+  }
+  /* bisection on the increasing λ table, linear interpolation */
+  int lo = 0, hi = EXACT_SEDOV_N - 1;
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (s->lam[mid] <= lam) lo = mid;
+    else hi = mid;
+  }
+  double w = (lam - s->lam[lo]) / (s->lam[hi] - s->lam[lo]);
+  double G = s->G[lo] + w * (s->G[hi] - s->G[lo]), V = s->V[lo] + w * (s->V[hi] - s->V[lo]);
+  /* pressure p = ρ₀ G Z r²/(γ t²): interpolate G·Z·λ², which stays finite at the centre */
+  double P0 = s->G[lo] * s->Z[lo] * s->lam[lo] * s->lam[lo];
+  double P1 = s->G[hi] * s->Z[hi] * s->lam[hi] * s->lam[hi];
+  if (lo == 0) P0 = P1;
+  double P = P0 + w * (P1 - P0);
+  o->rho = rho0 * G;
+  o->u = r / t * V;
+  o->p = rho0 * P * rs * rs / (g * t * t);
+}

@@ -408,7 +408,7 @@ static void test_late_input_error(void)
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2, "periodic box shorter than two interaction radii: exit status %d (want 2)", rc);
   check_message("periodic_short", out,
-                (const char *const[]){"periodic domain is 0.05 m long in y", NULL});
+                (const char *const[]){"base.yaml:7: domain: the periodic length in y (0.05 m)", NULL});
   int ntmp;
   count_entries(dir, &ntmp, names, sizeof names);
   char sp[4400];
@@ -432,7 +432,7 @@ int main(void)
   test_late_input_error();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
-             (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "rho = -", NULL});
+             (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "field rho: -", NULL});
   failed_run("not_finite", "--set bodies[0].pressure=1e306",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "nan", NULL});
   return test_finish();

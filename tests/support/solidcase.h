@@ -1,0 +1,63 @@
+/* solidcase.h — helpers for the solid verification tests (tests/verification/test_{hugoniot,
+ * elastic_wave,rings,taylor,spall}.c): run an example case with the hvsph binary, read
+ * its particle snapshots back (with the solid fields), follow particles by id, group
+ * a quasi-1D body into its initial lattice layers, find a wave front, fit a line.
+ *
+ * Every case is run with `--threads SC_THREADS` (1 by default: `make check` runs two
+ * tests at a time on two cores; HVSPH_TEST_THREADS overrides it) and `--quiet`.
+ */
+#ifndef HV_SOLIDCASE_H
+#define HV_SOLIDCASE_H
+
+#include <stddef.h>
+
+#include "particles/particles.h"
+
+/* Runs `$HVSPH_BIN run $HVSPH_SOURCE_DIR/examples/verification/<example>.yaml
+ * -o $HVSPH_TMP/<outname> --quiet --threads N <extra>` (extra may be NULL: a string of
+ * further arguments, e.g. "--set time.end=1e-6"). Returns the exit status; *seconds
+ * (may be NULL) gets the wall time [s]. On failure the last lines of the output are
+ * printed. */
+int sc_run(const char *example, const char *outname, const char *extra, double *seconds);
+
+/* $HVSPH_TMP/<outname> (static buffer, rotates 4). */
+const char *sc_outdir(const char *outname);
+
+/* Number of consecutive snapshots particles_00000.csv, particles_00001.csv, ... */
+int sc_count_snapshots(const char *dir);
+
+/* Reads <dir>/particles_<k>.csv into p (initialised here, solid fields on); *t [s]
+ * gets its time (may be NULL). Returns 0, or -1 with a message printed. */
+int sc_read(const char *dir, int k, struct particles *p, double *t);
+
+/* slot[id] = the slot of particle id in p, for ids 0 .. nid-1 (SIZE_MAX where absent).
+ * Returns a malloc'd array. */
+size_t *sc_slots_by_id(const struct particles *p, size_t nid);
+
+/* Quasi-1D bodies: numbers the lattice layers of the particles with sel[i] != 0 by
+ * their coordinate x[dim] in p (the initial snapshot): particles closer than tol in
+ * that coordinate share a layer; layers are numbered 0, 1, ... with increasing
+ * coordinate. layer_of_id[id] gets the layer (-1 for unselected particles; ids must be
+ * below nid). Returns the number of layers. */
+int sc_layers(const struct particles *p, const unsigned char *sel, int dim, double tol,
+              int *layer_of_id, size_t nid);
+
+/* Mean over each layer of a per-slot field f (f[slot]) at a later snapshot p:
+ * out[l] for l < nlayer (NAN for an empty layer). */
+void sc_layer_mean(const struct particles *p, const double *f, const int *layer_of_id,
+                   size_t nid, int nlayer, double *out);
+
+/* The position where the profile v(X) (layers in order, X increasing) first crosses
+ * `level`, scanning from the last layer towards the first when from_end is 1 (from the
+ * first towards the last otherwise); linear interpolation between the two layers.
+ * Returns NAN when it never crosses. */
+double sc_front(const double *X, const double *v, int n, double level, int from_end);
+
+/* Least-squares line y = a + b x through n points; returns b, *a gets a (may be NULL),
+ * *rms the rms residual (may be NULL). */
+double sc_linfit(const double *x, const double *y, int n, double *a, double *rms);
+
+/* Number of threads given to the runs. */
+int sc_threads(void);
+
+#endif

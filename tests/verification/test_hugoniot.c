@@ -1,0 +1,187 @@
+/* test_hugoniot.c — planar shock in al-alloy against the Rankine–Hugoniot solution of
+ * the same Mie–Grüneisen/Murnaghan EOS (issue 3, item 6; examples/verification/hugoniot.yaml).
+ *
+ * Two al-alloy plates collide at +1 km/s and −1 km/s (quasi-1D: periodic in y and z),
+ * so each is brought to rest by a shock of particle speed up = 1 km/s running out of
+ * the contact plane x = 0. The case runs hydrodynamically (yield 0, see the case file).
+ *
+ * Reference: the jump conditions from the state (ρ₀, p₀ = 0, E₀ = 0) at rest ahead
+ * (in the frame of the unshocked plate)
+ *   ρ₀ Us = ρ₁ (Us − up),   p₁ = ρ₀ Us up,   E₁ = ½ (p₀ + p₁)(1/ρ₀ − 1/ρ₁),
+ * closed by p₁ = p_EOS(ρ₁, E₁) with the paper's §2.1 EOS (written out again here,
+ * independently of src/eos), solved for ρ₁ by bisection:
+ *   p₁(ρ₁) = ρ₀ up² ρ₁/(ρ₁ − ρ₀) must equal p_c(ρ₁) + Γρ₁(E₁ − E_c(ρ₁)).
+ * For al-alloy: ρ₁ = 3258.7 kg/m³, Us = 6.807 km/s, p₁ = 18.92 GPa.
+ *
+ * Measured, on each plate separately:
+ *   - shock speed: the front is where the mean x-velocity of a lattice layer of the
+ *     plate crosses half way between the states ahead (∓up) and behind (0); its
+ *     position at every output time from T_FIT_START on is fitted by a line; the
+ *     shock speed relative to the material ahead is |slope| + up;
+ *   - post-shock pressure: the mean pressure of the layers between 30% and 80% of the
+ *     way from the contact plane to the front at the last output (away from the
+ *     wall-heating layer at the contact and from the front's smeared width).
+ * Thresholds: 3% each (SHOCK_SPEED_TOL, PRESSURE_TOL: issue 3's criterion). Measured
+ * at the time of writing: Us within −0.6%, p₁ within −0.5% at the CI resolution.
+ * What a wrong model does: a wrong c₀, n, a missing compression term or a mass/momentum
+ * error moves Us and p₁ by far more than 3% (n = 4.54 instead of 3.54: +3.6% in Us);
+ * the Grüneisen term alone moves them by only 0.6% at this strength (Γ = 0 gives
+ * Us = 6.770 km/s), so this test does not see Γ — tests/unit/test_eos.c does.
+ * Also checked: no particle splits (nothing is in tension before the release waves
+ * from the free ends arrive at t ≈ 0.88 µs, after the end of the run).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "solidcase.h"
+#include "testlib.h"
+
+/* al-alloy, data/materials.yaml (the paper's Tables 5 and 8) */
+#define RHO0 2780.0      /* [kg/m3] */
+#define C0 5612.0        /* [m/s] */
+#define N_MURN 3.54      /* [-] Murnaghan exponent */
+#define GAMMA_G 1.176    /* [-] Grüneisen coefficient */
+#define UP 1000.0        /* [m/s] particle speed behind the shock (the case's ±1 km/s) */
+
+#define SHOCK_SPEED_TOL 0.03   /* issue 3: shock speed within 3% */
+#define PRESSURE_TOL 0.03      /* issue 3: post-shock pressure within 3% */
+#define T_FIT_START 0.25e-6    /* [s] fit the front from here on (the shock has formed:
+                                  ~25 spacings behind it at the CI resolution) */
+
+static double eos_p(double rho, double E)
+{
+  const double eta = rho / RHO0;
+  const double pc = RHO0 * C0 * C0 / N_MURN * (pow(eta, N_MURN) - 1.0);
+  const double Ec = C0 * C0 / N_MURN *
+                    ((pow(eta, N_MURN - 1.0) - 1.0) / (N_MURN - 1.0) - 1.0 + RHO0 / rho);
+  return pc + GAMMA_G * rho * (E - Ec);
+}
+
+/* Hugoniot mismatch at ρ₁ for the particle speed up. */
+static double rh_residual(double rho1, double up)
+{
+  const double p1 = RHO0 * up * up * rho1 / (rho1 - RHO0);
+  const double E1 = 0.5 * p1 * (1.0 / RHO0 - 1.0 / rho1);
+  return eos_p(rho1, E1) - p1;
+}
+
+static void rankine_hugoniot(double up, double *rho1, double *Us, double *p1)
+{
+  double a = RHO0 * (1.0 + 1e-6), b = 3.0 * RHO0;   /* residual < 0 at a, > 0 at b */
+  for (int k = 0; k < 200; k++) {
+    double m = 0.5 * (a + b);
+    if (rh_residual(m, up) > 0) b = m;
+    else a = m;
+  }
+  *rho1 = 0.5 * (a + b);
+  *Us = up * *rho1 / (*rho1 - RHO0);
+  *p1 = RHO0 * *Us * up;
+}
+
+int main(void)
+{
+  double rho1, Us, p1;
+  rankine_hugoniot(UP, &rho1, &Us, &p1);
+  printf("Rankine-Hugoniot (al-alloy, up = %.0f m/s): rho1 = %.2f kg/m3, Us = %.2f m/s, "
+         "p1 = %.4f GPa, E1 = %.0f J/kg (residual %.2e Pa)\n", UP, rho1, Us, p1 * 1e-9,
+         0.5 * UP * UP, rh_residual(rho1, UP));
+  CHECK(fabs(rh_residual(rho1, UP)) < 1e-3 * p1, "Rankine-Hugoniot solution converged");
+
+  double secs;
+  int rc = sc_run("hugoniot", "hugoniot", NULL, &secs);
+  CHECK(rc == 0, "hugoniot.yaml runs (exit status %d, %.1f s)", rc, secs);
+  if (rc) return test_finish();
+  const char *dir = sc_outdir("hugoniot");
+  const int nsnap = sc_count_snapshots(dir);
+  CHECK(nsnap >= 6, "%d snapshots", nsnap);
+  if (nsnap < 6) return test_finish();
+
+  struct particles p0;
+  double t0;
+  if (sc_read(dir, 0, &p0, &t0)) return CHECK(0, "snapshot 0 readable"), test_finish();
+  const size_t nid = p0.n;
+  unsigned char *sel = malloc(nid);
+  int *layer[2];
+  int nl[2];
+  for (int b = 0; b < 2; b++) {
+    for (size_t i = 0; i < p0.n; i++) sel[i] = p0.body[i] == b;
+    layer[b] = malloc(nid * sizeof(int));
+    nl[b] = sc_layers(&p0, sel, 0, 0.2 * p0.h[0], layer[b], nid);
+  }
+  printf("particles: %zu; layers: left %d, right %d\n", nid, nl[0], nl[1]);
+
+  double *X = malloc((size_t)(nl[0] + nl[1]) * sizeof *X);
+  double *V = malloc((size_t)(nl[0] + nl[1]) * sizeof *V);
+  double *P = malloc((size_t)(nl[0] + nl[1]) * sizeof *P);
+  double *R = malloc((size_t)(nl[0] + nl[1]) * sizeof *R);
+  double tt[2][64], xf[2][64];
+  int nfit[2] = {0, 0};
+  double plateau_p[2] = {(double)NAN, (double)NAN}, plateau_rho[2] = {(double)NAN, (double)NAN};
+  long splits = 0;
+  for (int k = 1; k < nsnap && k < 64; k++) {
+    struct particles p;
+    double t;
+    if (sc_read(dir, k, &p, &t)) break;
+    for (size_t i = 0; i < p.n; i++) splits += p.damage[i] >= 1.0;
+    for (int b = 0; b < 2; b++) {
+      /* layers of the right plate (b = 1) are ahead of the shock at large x; the left
+         plate's at small x: scan from the undisturbed side */
+      sc_layer_mean(&p, p.x[0], layer[b], nid, nl[b], X);
+      sc_layer_mean(&p, p.v[0], layer[b], nid, nl[b], V);
+      sc_layer_mean(&p, p.p, layer[b], nid, nl[b], P);
+      sc_layer_mean(&p, p.rho, layer[b], nid, nl[b], R);
+      const double ahead = b ? -UP : UP;
+      const double front = sc_front(X, V, nl[b], 0.5 * ahead, b == 1);
+      printf("  t = %.3e s  %s plate: front at x = %+.4e m\n", t, b ? "right" : "left ", front);
+      if (t >= T_FIT_START && isfinite(front)) {
+        tt[b][nfit[b]] = t;
+        xf[b][nfit[b]++] = front;
+      }
+      if (k == nsnap - 1 && isfinite(front)) {
+        double sp = 0, sr = 0;
+        int c = 0;
+        for (int l = 0; l < nl[b]; l++) {
+          const double s = X[l] / front;   /* 0 at the contact, 1 at the front */
+          if (s > 0.3 && s < 0.8) {
+            sp += P[l];
+            sr += R[l];
+            c++;
+          }
+        }
+        plateau_p[b] = c ? sp / c : (double)NAN;
+        plateau_rho[b] = c ? sr / c : (double)NAN;
+        printf("  plateau (%d layers): p = %.4f GPa, rho = %.2f kg/m3\n", c,
+               plateau_p[b] * 1e-9, plateau_rho[b]);
+      }
+    }
+    particles_free(&p);
+  }
+  CHECK(splits == 0, "no particle splits in the compressed plates (%ld split-snapshots)", splits);
+  for (int b = 0; b < 2; b++) {
+    const char *name = b ? "right" : "left";
+    CHECK(nfit[b] >= 4, "%s plate: %d front positions to fit", name, nfit[b]);
+    if (nfit[b] < 4) continue;
+    double rms;
+    const double slope = sc_linfit(tt[b], xf[b], nfit[b], NULL, &rms);
+    const double us = fabs(slope) + UP;
+    printf("%s plate: lab shock speed %.1f m/s (fit rms %.2e m over %d times), "
+           "Us = %.1f m/s vs %.1f m/s (%+.2f%%); p1 = %.4f GPa vs %.4f GPa (%+.2f%%); "
+           "rho1 = %.2f vs %.2f kg/m3 (%+.2f%%)\n", name, fabs(slope), rms, nfit[b], us, Us,
+           100 * (us / Us - 1), plateau_p[b] * 1e-9, p1 * 1e-9, 100 * (plateau_p[b] / p1 - 1),
+           plateau_rho[b], rho1, 100 * (plateau_rho[b] / rho1 - 1));
+    CHECK(fabs(us / Us - 1) < SHOCK_SPEED_TOL, "%s plate: shock speed %.1f m/s within %.0f%% "
+          "of %.1f m/s", name, us, 100 * SHOCK_SPEED_TOL, Us);
+    CHECK(fabs(plateau_p[b] / p1 - 1) < PRESSURE_TOL, "%s plate: post-shock pressure %.4f GPa "
+          "within %.0f%% of %.4f GPa", name, plateau_p[b] * 1e-9, 100 * PRESSURE_TOL, p1 * 1e-9);
+  }
+  for (int b = 0; b < 2; b++) free(layer[b]);
+  free(sel);
+  free(X);
+  free(V);
+  free(P);
+  free(R);
+  particles_free(&p0);
+  return test_finish();
+}
