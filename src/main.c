@@ -8,6 +8,7 @@
 #include "render/render.h"
 #include "run/bench.h"
 #include "run/run.h"
+#include "run/validate.h"
 #include "version.h"
 
 static void usage(FILE *f)
@@ -26,6 +27,9 @@ static void usage(FILE *f)
           "      the material library: every entry, or one entry's parameters with units\n"
           "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
           "      simulated flash radiograph or particle picture (hvsph render --help)\n"
+          "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--no-run]\n"
+          "      run the paper's cases (examples/paper, particle counts x S) and compare\n"
+          "      with its experiments and simulations: DIR/validation.md and .csv\n"
           "  hvsph --version | --help\n"
           "\n"
           "exit status: 0 done, 1 bad command line, 2 bad input (case file, units,\n"
@@ -119,6 +123,7 @@ int main(int argc, char **argv)
   }
   if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
   if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
+  if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "render")) return render_main(argc - 2, argv + 2);
   fprintf(stderr, "hvsph: unknown command '%s' (see hvsph --help)\n", cmd);

@@ -1,0 +1,372 @@
+/* validate.c — `hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N]
+ * [--cases DIR] [--no-run]`.
+ *
+ * Runs each case of examples/paper/ (or --cases DIR) with its particle counts times S
+ * (resolution = S), into DIR/<case>/, then puts the final value of each measured
+ * quantity named in data/paper_results.yaml beside the experiment and the paper's own
+ * simulation: DIR/validation.csv (case,quantity,simulated,experiment,paper_simulation,
+ * unit,rel_error) and DIR/validation.md (tables, mean errors, runtimes, radiographs of
+ * the final states of the impact cases). --no-run only re-reads earlier runs' outputs.
+ */
+#include "run/validate.h"
+
+#include <dirent.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config/config.h"
+#include "io/afile.h"
+#include "io/snapshot.h"
+#include "material/material.h"
+#include "render/render.h"
+#include "run/run.h"
+#include "version.h"
+
+#define VAL_MAX_CASES 64
+#define VAL_MAX_ROWS 512
+
+struct val_row {
+  char cas[64], quantity[64], object[64], unit[16], note[256];
+  double sim, exp, paper, paper_lo, paper_hi;  /* NaN: none */
+  int approx;
+};
+
+struct val_case {
+  char name[64];
+  double runtime;   /* [s] wall clock, NaN if not run now */
+  long particles;
+  int status;       /* exit status of the run (0 ok, -1 not run) */
+};
+
+/* The last value of (quantity, object) in a measurements.csv; NaN if absent. */
+static double last_measurement(const char *path, const char *quantity, const char *object,
+                               char *unit, size_t ulen)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return NAN;
+  char line[1024];
+  double v = NAN;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#' || !strncmp(line, "time,", 5)) continue;
+    char *save = NULL, *tok[5] = {0};
+    int k = 0;
+    for (char *t = strtok_r(line, ",\n", &save); t && k < 5; t = strtok_r(NULL, ",\n", &save))
+      tok[k++] = t;
+    if (k < 3) continue;
+    /* time,quantity,value,unit,object (unit may be empty: then 4 tokens) */
+    const char *q = tok[1], *val = tok[2], *u = k == 5 ? tok[3] : "", *obj = k == 5 ? tok[4] : tok[3];
+    if (obj && !strcmp(q, quantity) && !strcmp(obj, object)) {
+      v = strtod(val, NULL);
+      snprintf(unit, ulen, "%s", u);
+    }
+  }
+  fclose(f);
+  return v;
+}
+
+static double get_opt(struct cfg *c, const char *path, enum unit_dim dim, struct hv_error *err)
+{
+  double v;
+  if (!cfg_has(c, path)) return NAN;
+  if (cfg_get_quantity(c, path, dim, NULL, -HUGE_VAL, HUGE_VAL, &v, err)) return NAN;
+  return v;
+}
+
+static enum unit_dim dim_of(const char *quantity)
+{
+  if (strstr(quantity, "velocity")) return UNIT_VELOCITY;
+  if (strstr(quantity, "angle")) return UNIT_ANGLE;
+  if (strstr(quantity, "pressure")) return UNIT_PRESSURE;
+  if (strstr(quantity, "count") || !strcmp(quantity, "perforated")) return UNIT_NONE;
+  return UNIT_LENGTH;
+}
+
+static long particles_of(const char *outdir)
+{
+  char path[4400], line[4096];
+  snprintf(path, sizeof path, "%s/summary.csv", outdir);
+  FILE *f = fopen(path, "r");
+  if (!f) return -1;
+  long n = -1;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#' || !strncmp(line, "step", 4)) continue;
+    char *c1 = strchr(line, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL, *c3 = c2 ? strchr(c2 + 1, ',') : NULL;
+    if (c3 && n < 0) n = strtol(c3 + 1, NULL, 10);
+  }
+  fclose(f);
+  return n;
+}
+
+/* The last particles_NNNNN.csv of a run folder, or "" */
+static void last_snapshot(const char *dir, char *out, size_t len)
+{
+  out[0] = 0;
+  DIR *d = opendir(dir);
+  if (!d) return;
+  struct dirent *e;
+  char best[256] = "";
+  while ((e = readdir(d)))
+    if (!strncmp(e->d_name, "particles_", 10) && strstr(e->d_name, ".csv") &&
+        strcmp(e->d_name, best) > 0)
+      snprintf(best, sizeof best, "%s", e->d_name);
+  closedir(d);
+  if (best[0]) snprintf(out, len, "%s/%s", dir, best);
+}
+
+/* Radiograph (side view along z, mirrored) of the final state. */
+static int render_final(const char *dir, const char *png, struct hv_error *err)
+{
+  char snap[4400];
+  last_snapshot(dir, snap, sizeof snap);
+  if (!snap[0]) return 0;
+  struct particles p;
+  particles_init(&p);
+  double t = NAN;
+  int rc = io_read_particles_csv(snap, &p, &t, err);
+  if (!rc) {
+    struct render_options o;
+    render_options_default(&o);
+    o.mode = RENDER_RADIOGRAPH;
+    o.axis = 2;
+    o.width = 900;
+    struct render_info info = {.time = t, .source = snap};
+    rc = render_png(png, &p, &o, &info, err);
+  }
+  particles_free(&p);
+  return rc;
+}
+
+static int run_case(const char *cases, const char *name, const char *outdir, double scale,
+                    int threads, struct val_case *vc)
+{
+  char casefile[8400], set1[64];
+  snprintf(casefile, sizeof casefile, "%s/%s.yaml", cases, name);
+  snprintf(set1, sizeof set1, "resolution=%.17g", scale);
+  const char *sets[] = {set1, "output.csv=true"};
+  struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets, .nsets = 2,
+                           .threads = threads};
+  fprintf(stderr, "hvsph validate: %s (resolution %g) -> %s\n", name, scale, outdir);
+  double t0 = omp_get_wtime();
+  vc->status = run_main(&ro);
+  vc->runtime = omp_get_wtime() - t0;
+  return vc->status;
+}
+
+static void fmt_val(char *buf, size_t len, double v, double scale)
+{
+  if (isnan(v)) snprintf(buf, len, "–");
+  else snprintf(buf, len, "%.4g", v * scale);
+}
+
+/* Display unit for a quantity: mm, km/s, deg, kbar or none, with the factor from SI. */
+static const char *display_unit(enum unit_dim d, double *f)
+{
+  switch (d) {
+  case UNIT_LENGTH: *f = 1e3; return "mm";
+  case UNIT_VELOCITY: *f = 1e-3; return "km/s";
+  case UNIT_ANGLE: *f = 180.0 / 3.14159265358979323846; return "deg";
+  case UNIT_PRESSURE: *f = 1e-8; return "kbar";
+  default: *f = 1.0; return "";
+  }
+}
+
+static int write_reports(const char *dir, const struct val_row *rows, int nrows,
+                         const struct val_case *cs, int ncase, double scale, struct hv_error *err)
+{
+  char path[4200];
+  struct afile af;
+  snprintf(path, sizeof path, "%s/validation.csv", dir);
+  if (afile_open(&af, path, err)) return -1;
+  afile_printf(&af, err, "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n");
+  for (int k = 0; k < nrows; k++) {
+    const struct val_row *r = &rows[k];
+    double f;
+    const char *u = display_unit(dim_of(r->quantity), &f);
+    double paper = r->paper;
+    if (isnan(paper)) paper = 0.5 * (r->paper_lo + r->paper_hi);
+    double rel = NAN;
+    if (!isnan(r->exp) && r->exp != 0) rel = (r->sim - r->exp) / r->exp;
+    afile_printf(&af, err, "%s,%s%s%s,%.6g,%.6g,%.6g,%s,%.4g\n", r->cas, r->quantity,
+                 strchr(r->object, ':') || strcmp(r->object, "") ? ":" : "", r->object,
+                 r->sim * f, r->exp * f, paper * f, u, rel);
+  }
+  if (afile_commit(&af, err)) return -1;
+
+  snprintf(path, sizeof path, "%s/validation.md", dir);
+  if (afile_open(&af, path, err)) return -1;
+  afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
+               "of the paper's (resolution %g), %d threads.\n\n"
+               "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
+               "|---|---|---|---|---|---|---|---|\n", HVSPH_VERSION, scale, scale,
+               omp_get_max_threads());
+  double sum_us = 0, sum_paper = 0;
+  int n_both = 0;
+  for (int k = 0; k < nrows; k++) {
+    const struct val_row *r = &rows[k];
+    double f;
+    const char *u = display_unit(dim_of(r->quantity), &f);
+    char s[32], e[32], pp[64], eu[32] = "–", ep[32] = "–";
+    fmt_val(s, sizeof s, r->sim, f);
+    fmt_val(e, sizeof e, r->exp, f);
+    if (!isnan(r->paper)) fmt_val(pp, sizeof pp, r->paper, f);
+    else if (!isnan(r->paper_lo)) snprintf(pp, sizeof pp, "%.3g–%.3g", r->paper_lo * f, r->paper_hi * f);
+    else snprintf(pp, sizeof pp, "–");
+    if (!isnan(r->exp) && r->exp != 0 && !isnan(r->sim)) {
+      double a = (r->sim - r->exp) / r->exp;
+      snprintf(eu, sizeof eu, "%+.1f %%", 100 * a);
+      if (!isnan(r->paper)) {
+        double b = (r->paper - r->exp) / r->exp;
+        snprintf(ep, sizeof ep, "%+.1f %%", 100 * b);
+        sum_us += fabs(a);
+        sum_paper += fabs(b);
+        n_both++;
+      }
+    }
+    afile_printf(&af, err, "| %s | %s (%s)%s | %s | %s%s | %s%s | %s | %s | %s |\n", r->cas,
+                 r->quantity, r->object, r->note[0] ? " ¹" : "", s, r->approx ? "~" : "", e,
+                 r->approx ? "~" : "", pp, u, eu, ep);
+  }
+  if (n_both)
+    afile_printf(&af, err, "\nMean |relative error| against the experiments, over the %d "
+                 "quantities where both simulations give a number: hvsph %.1f %%, the paper's "
+                 "KERNEL code %.1f %%.\n", n_both, 100 * sum_us / n_both, 100 * sum_paper / n_both);
+  afile_printf(&af, err, "\n¹ notes:\n\n");
+  for (int k = 0; k < nrows; k++)
+    if (rows[k].note[0])
+      afile_printf(&af, err, "- %s, %s: %s\n", rows[k].cas, rows[k].quantity, rows[k].note);
+  afile_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
+  for (int k = 0; k < ncase; k++)
+    afile_printf(&af, err, "| %s | %ld | %s%.0f | %s | ![%s](%s/final.png) |\n", cs[k].name,
+                 cs[k].particles, isnan(cs[k].runtime) ? "(earlier) " : "",
+                 isnan(cs[k].runtime) ? 0.0 : cs[k].runtime,
+                 cs[k].status == 0 ? "ok" : cs[k].status < 0 ? "not run" : "failed", cs[k].name,
+                 cs[k].name);
+  return afile_commit(&af, err);
+}
+
+static int usage(void)
+{
+  fprintf(stderr, "usage: hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] "
+                  "[--cases DIR] [--no-run]\n");
+  return HV_EXIT_USAGE;
+}
+
+int validate_main(int argc, char **argv)
+{
+  double scale = 1.0;
+  const char *outdir = "out/validation", *cases = NULL, *only[VAL_MAX_CASES];
+  int nonly = 0, threads = 0, norun = 0;
+  for (int i = 0; i < argc; i++) {
+    if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
+      char *end;
+      scale = strtod(argv[++i], &end);
+      if (*end || !(scale > 0)) return usage();
+    } else if ((!strcmp(argv[i], "-o") || !strcmp(argv[i], "--output")) && i + 1 < argc) {
+      outdir = argv[++i];
+    } else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
+      threads = atoi(argv[++i]);
+      if (threads <= 0) return usage();
+    } else if (!strcmp(argv[i], "--cases") && i + 1 < argc) {
+      cases = argv[++i];
+    } else if (!strcmp(argv[i], "--no-run")) {
+      norun = 1;
+    } else if (!strcmp(argv[i], "--only")) {
+      while (i + 1 < argc && argv[i + 1][0] != '-' && nonly < VAL_MAX_CASES) only[nonly++] = argv[++i];
+    } else {
+      return usage();
+    }
+  }
+  if (threads > 0) omp_set_num_threads(threads);
+  struct hv_error err;
+  hv_error_clear(&err);
+  char lib[4096], refpath[4200], casedir[4200];
+  if (material_library_path(lib, sizeof lib, &err)) goto fail;
+  char *slash = strrchr(lib, '/');
+  if (slash) *slash = 0;
+  snprintf(refpath, sizeof refpath, "%s/paper_results.yaml", lib);
+  snprintf(casedir, sizeof casedir, "%s", cases ? cases : "examples/paper");
+  if (!cases && slash) snprintf(casedir, sizeof casedir, "%s/../examples/paper", lib);
+  struct cfg *ref = cfg_load(refpath, &err);
+  if (!ref || io_mkdir_p(outdir, &err)) goto fail;
+  const char *const *names;
+  int nnames = cfg_keys(ref, NULL, &names);
+  for (int k = 0; k < nonly; k++) {
+    int found = 0;
+    for (int j = 0; j < nnames; j++) found |= !strcmp(names[j], only[k]);
+    if (!found) {
+      hv_error_set(&err, HV_EXIT_INPUT, "validate: no case '%s' in %s", only[k], refpath);
+      cfg_free(ref);
+      goto fail;
+    }
+  }
+  static struct val_row rows[VAL_MAX_ROWS];
+  static struct val_case cs[VAL_MAX_CASES];
+  int nrows = 0, ncase = 0, failed = 0;
+  for (int j = 0; j < nnames && ncase < VAL_MAX_CASES; j++) {
+    int want = nonly == 0;
+    for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
+    if (!want) continue;
+    struct val_case *vc = &cs[ncase++];
+    snprintf(vc->name, sizeof vc->name, "%s", names[j]);
+    vc->runtime = NAN;
+    vc->status = -1;
+    char dir[4200], mpath[4300], png[4300];
+    snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
+    if (!norun && run_case(casedir, names[j], dir, scale, threads, vc)) failed++;
+    if (norun) vc->status = 0;
+    vc->particles = particles_of(dir);
+    snprintf(png, sizeof png, "%s/final.png", dir);
+    if (render_final(dir, png, &err)) hv_warn("%s: no radiograph: %s", names[j], err.msg);
+    snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
+    char key[256];
+    int nq = cfg_len(ref, names[j]);
+    for (int q = 0; q < nq && nrows < VAL_MAX_ROWS; q++) {
+      struct val_row *r = &rows[nrows++];
+      const char *s;
+      memset(r, 0, sizeof *r);
+      snprintf(r->cas, sizeof r->cas, "%s", names[j]);
+      snprintf(key, sizeof key, "%s[%d].quantity", names[j], q);
+      if (cfg_get_string(ref, key, NULL, &s, &err)) goto fail_ref;
+      snprintf(r->quantity, sizeof r->quantity, "%s", s);
+      snprintf(key, sizeof key, "%s[%d].object", names[j], q);
+      if (cfg_get_string(ref, key, "", &s, &err)) goto fail_ref;
+      snprintf(r->object, sizeof r->object, "%s", s);
+      snprintf(key, sizeof key, "%s[%d].note", names[j], q);
+      if (cfg_get_string(ref, key, "", &s, &err)) goto fail_ref;
+      snprintf(r->note, sizeof r->note, "%s", s);
+      snprintf(key, sizeof key, "%s[%d].approx", names[j], q);
+      int no = 0;
+      if (cfg_get_bool(ref, key, &no, &r->approx, &err)) goto fail_ref;
+      enum unit_dim d = dim_of(r->quantity);
+      double one = 1.0, sc;
+      snprintf(key, sizeof key, "%s[%d].scale", names[j], q);
+      if (cfg_get_quantity(ref, key, UNIT_NONE, &one, -HUGE_VAL, HUGE_VAL, &sc, &err)) goto fail_ref;
+      snprintf(key, sizeof key, "%s[%d].experiment", names[j], q);
+      r->exp = get_opt(ref, key, d, &err);
+      snprintf(key, sizeof key, "%s[%d].paper", names[j], q);
+      r->paper = get_opt(ref, key, d, &err);
+      snprintf(key, sizeof key, "%s[%d].paper_low", names[j], q);
+      r->paper_lo = get_opt(ref, key, d, &err);
+      snprintf(key, sizeof key, "%s[%d].paper_high", names[j], q);
+      r->paper_hi = get_opt(ref, key, d, &err);
+      if (err.code) goto fail_ref;
+      char unit[16];
+      double v = last_measurement(mpath, r->quantity, r->object, unit, sizeof unit);
+      if (d == UNIT_ANGLE) v *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
+      r->sim = v * sc;
+    }
+  }
+  cfg_free(ref);
+  if (write_reports(outdir, rows, nrows, cs, ncase, scale, &err)) goto fail;
+  fprintf(stderr, "hvsph validate: %d case(s), %d failed; results in %s/validation.md and "
+                  "validation.csv\n", ncase, failed, outdir);
+  return failed ? HV_EXIT_RUN : 0;
+fail_ref:
+  cfg_free(ref);
+fail:
+  hv_log(0, "%s", err.msg);
+  return err.code ? err.code : HV_EXIT_RUN;
+}
