@@ -45,6 +45,7 @@ void nbr_grid_free(struct nbr_grid *g)
   free(g->cell_start);
   free(g->cell_key);
   free(g->cell_h);
+  free(g->cell_lo);
   free(g->nbr_start);
   free(g->nbr_list);
   free(g->hkey);
@@ -93,13 +94,14 @@ static int compute_keys(const double *const x[3], size_t n, double cell, double 
   int64_t maxc = 1;
   for (int d = 0; d < 3; d++) {
     origin[d] = n ? lo[d] - cell : 0.0;   /* one empty layer keeps i-1 >= 0 */
-    int64_t c = n ? (int64_t)((hi[d] - origin[d]) / cell) + 2 : 1;
-    if (!(c < GRID_MAXC - 1)) {
+    const double span = n ? (hi[d] - origin[d]) / cell + 2.0 : 1.0;   /* cells, before any cast */
+    if (!(span < (double)(GRID_MAXC - 1))) {
       snprintf(msg, msglen,
                "particles span %.6g m in direction %c, more than 2^21 cells of %.6g m",
                hi[d] - lo[d], "xyz"[d], cell);
       return -1;
     }
+    const int64_t c = (int64_t)span;
     if (c > maxc) maxc = c;
   }
   int bits1 = 1;
@@ -146,6 +148,7 @@ static void build_cells(struct nbr_grid *g)
     g->cell_start = hv_realloc(g->cell_start, (c + 1) * sizeof *g->cell_start, "cells");
     g->cell_key = hv_realloc(g->cell_key, c * sizeof *g->cell_key, "cells");
     g->cell_h = hv_realloc(g->cell_h, c * sizeof *g->cell_h, "cells");
+    g->cell_lo = hv_realloc(g->cell_lo, 3 * c * sizeof *g->cell_lo, "cells");
     g->nbr_start = hv_realloc(g->nbr_start, (c + 1) * sizeof *g->nbr_start, "cells");
     g->ccap = c;
   }
@@ -223,6 +226,13 @@ static void link_cells(struct nbr_grid *g, const double *h)
     g->cell_h[c] = hm;
     if (hm > hglob) hglob = hm;
   }
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < g->ncells; c++) {
+    const uint64_t k = g->cell_key[c];
+    g->cell_lo[3 * c] = g->origin[0] + (double)compact3(k) * g->cell;
+    g->cell_lo[3 * c + 1] = g->origin[1] + (double)compact3(k >> 1) * g->cell;
+    g->cell_lo[3 * c + 2] = g->origin[2] + (double)compact3(k >> 2) * g->cell;
+  }
 #pragma omp parallel for schedule(dynamic, 64)
   for (size_t c = 0; c < g->ncells; c++) g->nbr_start[c + 1] = cell_neighbours(g, c, hglob, NULL);
   g->nbr_start[0] = 0;
@@ -236,13 +246,6 @@ static void link_cells(struct nbr_grid *g, const double *h)
   for (size_t c = 0; c < g->ncells; c++) cell_neighbours(g, c, hglob, g->nbr_list + g->nbr_start[c]);
 }
 
-void nbr_cell_corner(const struct nbr_grid *g, size_t c, double lo[3])
-{
-  uint64_t k = g->cell_key[c];
-  lo[0] = g->origin[0] + (double)compact3(k) * g->cell;
-  lo[1] = g->origin[1] + (double)compact3(k >> 1) * g->cell;
-  lo[2] = g->origin[2] + (double)compact3(k >> 2) * g->cell;
-}
 
 double nbr_cell_size(double hmin, double hmax)
 {
@@ -288,7 +291,7 @@ int nbr_sort_order(const double *const x[3], size_t n, double cell, uint32_t *or
 size_t nbr_grid_bytes(const struct nbr_grid *g)
 {
   return g->wcap * (sizeof *g->order + 2 * sizeof *g->key + sizeof *g->idx2) +
-         g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + sizeof *g->cell_h +
+         g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + 4 * sizeof *g->cell_h +
                     sizeof *g->nbr_start) + g->nbr_cap * sizeof *g->nbr_list +
          g->hcap * (sizeof *g->hkey + sizeof *g->hval);
 }

@@ -27,6 +27,7 @@ struct nbr_grid {
   uint32_t *cell_start;  /* [ncells+1] ranges into order */
   uint64_t *cell_key;    /* [ncells] Morton key of each cell */
   double *cell_h;        /* [ncells] largest h in the cell [m] */
+  double *cell_lo;       /* [3*ncells] lower corner of each cell [m] */
   uint32_t *nbr_start;   /* [ncells+1] ranges into nbr_list */
   int32_t *nbr_list;     /* neighbour cells of each cell, self included, fixed order */
   size_t nbr_cap;
@@ -54,7 +55,12 @@ double nbr_cell_size(double hmin, double hmax);
 int nbr_sort_order(const double *const x[3], size_t n, double cell, uint32_t *order);
 
 /* Lower corner of cell c [m]. */
-void nbr_cell_corner(const struct nbr_grid *g, size_t c, double lo[3]);
+static inline void nbr_cell_corner(const struct nbr_grid *g, size_t c, double lo[3])
+{
+  lo[0] = g->cell_lo[3 * c];
+  lo[1] = g->cell_lo[3 * c + 1];
+  lo[2] = g->cell_lo[3 * c + 2];
+}
 
 /* Bytes held by the grid. */
 size_t nbr_grid_bytes(const struct nbr_grid *g);

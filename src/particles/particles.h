@@ -44,6 +44,8 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  rho0,  "kg/m3",  0,                            "density at step start")  \
   X(double,  e0,    "J/kg",   0,                            "energy at step start")   \
   X(double,  vsig,  "m/s",    0,                            "largest signal speed")  \
+  X(double,  vol,   "m3",     0,                            "m/rho (per pass, all slots)") \
+  X(double,  pr2,   "m5/kg/s2", 0,                          "p/rho^2 (per pass, all slots)") \
   X(double,  eps_p, "",       PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain") \
   X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split, no tension)")
 

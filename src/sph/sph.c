@@ -21,11 +21,13 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
     return;
   }
   if (cache) cache_layout(cache, g);
-  const size_t n = p->n;
+  const size_t n = p->n, nall = p->n + p->n_ghost;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
-  const double *m = p->m, *rho = p->rho, *h = p->h;
-  double *drho = p->drho;
+  const double *rho = p->rho, *h = p->h;
+  double *drho = p->drho, *vol = p->vol;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
   const enum kernel_kind kk = sp->kernel;
 
 #pragma omp parallel
@@ -52,7 +54,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
           const double r = sqrt(dx * dx + dy * dy + dz * dz);
           const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
-          sum += m[j] / rho[j] * vdx * f;
+          sum += vol[j] * vdx * f;
         }
         drho[i] = rho[i] * sum;
         p->de[i] = 0.0;
@@ -71,10 +73,13 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
     return;
   }
   if (cache && !cache->valid) cache = NULL;
-  const size_t n = p->n;
+  const size_t n = p->n, nall = p->n + p->n_ghost;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
-  const double *m = p->m, *rho = p->rho, *h = p->h, *pr = p->p, *cs = p->cs;
+  const double *m = p->m, *rho = p->rho, *h = p->h, *cs = p->cs;
+  double *pr2 = p->pr2;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < nall; i++) pr2[i] = p->p[i] / (rho[i] * rho[i]);
   double *ax = p->a[0], *ay = p->a[1], *az = p->a[2], *de = p->de, *vsig = p->vsig;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps;
@@ -94,7 +99,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         }
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const double Pi = pr[i] / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
+        const double Pi = pr2[i], ci = cs[i], rhoi = rho[i];
         const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
                                   : cand_select(&cd, i, xi, yi, zi, hi);
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
@@ -110,8 +115,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
             visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + rho[j]));
             if (-mu > mumax) mumax = -mu;
           }
-          const double Pj = pr[j] / (rho[j] * rho[j]);
-          const double fac = m[j] * (Pi + Pj + visc) * f;
+          const double fac = m[j] * (Pi + pr2[j] + visc) * f;
           sx -= fac * dx;
           sy -= fac * dy;
           sz -= fac * dz;
