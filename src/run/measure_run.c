@@ -124,7 +124,14 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     struct meas_debris cloud;
     meas_debris_defaults(&dp, &g);
     dp.x_limit = next_face(mr, s, mr->debris[k]);
-    if (measure_debris(&s->p, &dp, &cloud, err)) return -1;
+    /* the cloud is material from this plate and what lay in front of it (the
+       projectile): spall thrown back from the plates behind is not */
+    unsigned char *mask = hv_malloc(s->p.n + 1, "cloud mask");
+    for (size_t i = 0; i < s->p.n; i++) mask[i] = s->body[s->p.body[i]].lo[0] < dp.x_limit;
+    dp.mask = mask;
+    int rc = measure_debris(&s->p, &dp, &cloud, err);
+    free(mask);
+    if (rc) return -1;
     char obj[96];
     snprintf(obj, sizeof obj, "cloud:%s", s->body[mr->debris[k]].name);
     meas_table_add_debris(&mr->table, t, obj, &cloud);
@@ -136,6 +143,11 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     meas_backwall_defaults(&bp, &g);
     if (measure_backwall(&s->p, &g, &bp, &bw, err)) return -1;
     meas_table_add_backwall(&mr->table, t, s->body[mr->backwall].name, &bw);
+    struct meas_plate_params pp;
+    struct meas_plate hole;
+    meas_plate_defaults(&pp, &g);
+    if (measure_plate(&s->p, &g, &pp, &hole, err)) return -1;
+    meas_table_add(&mr->table, t, "perforated", hole.perforated, "", s->body[mr->backwall].name);
     meas_table_add(&mr->table, t, "peak_pressure_center",
                    mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa",
                    s->body[mr->backwall].name);

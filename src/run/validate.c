@@ -41,26 +41,39 @@ struct val_case {
   int status;       /* exit status of the run (0 ok, -1 not run) */
 };
 
-/* The last value of (quantity, object) in a measurements.csv; NaN if absent. */
-static double last_measurement(const char *path, const char *quantity, const char *object,
+/* The value of (quantity, object) in a measurements.csv: the last one, or for a debris
+ * cloud's quantities the one at the output time when the cloud held the most mass
+ * (before it reaches the next plate); NaN if absent. */
+static double pick_measurement(const char *path, const char *quantity, const char *object,
                                char *unit, size_t ulen)
 {
   FILE *f = fopen(path, "r");
   if (!f) return NAN;
+  const int cloud = !strncmp(quantity, "cloud_", 6);
   char line[1024];
-  double v = NAN;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#' || !strncmp(line, "time,", 5)) continue;
-    char *save = NULL, *tok[5] = {0};
-    int k = 0;
-    for (char *t = strtok_r(line, ",\n", &save); t && k < 5; t = strtok_r(NULL, ",\n", &save))
-      tok[k++] = t;
-    if (k < 3) continue;
-    /* time,quantity,value,unit,object (unit may be empty: then 4 tokens) */
-    const char *q = tok[1], *val = tok[2], *u = k == 5 ? tok[3] : "", *obj = k == 5 ? tok[4] : tok[3];
-    if (obj && !strcmp(q, quantity) && !strcmp(obj, object)) {
-      v = strtod(val, NULL);
-      snprintf(unit, ulen, "%s", u);
+  double v = NAN, best_mass = -1.0, best_time = NAN;
+  for (int pass = 0; pass < 1 + cloud; pass++) {
+    rewind(f);
+    while (fgets(line, sizeof line, f)) {
+      if (line[0] == '#' || !strncmp(line, "time,", 5)) continue;
+      char *save = NULL, *tok[5] = {0};
+      int k = 0;
+      for (char *t = strtok_r(line, ",\n", &save); t && k < 5; t = strtok_r(NULL, ",\n", &save))
+        tok[k++] = t;
+      if (k < 4) continue;
+      /* time,quantity,value,unit,object (an empty unit leaves 4 tokens) */
+      const char *q = tok[1], *u = k == 5 ? tok[3] : "", *obj = k == 5 ? tok[4] : tok[3];
+      const double time = strtod(tok[0], NULL), val = strtod(tok[2], NULL);
+      if (strcmp(obj, object)) continue;
+      if (cloud && pass == 0) {
+        if (!strcmp(q, "cloud_mass") && val > best_mass) {
+          best_mass = val;
+          best_time = time;
+        }
+      } else if (!strcmp(q, quantity) && (!cloud || time == best_time)) {
+        v = val;
+        snprintf(unit, ulen, "%s", u);
+      }
     }
   }
   fclose(f);
@@ -354,7 +367,7 @@ int validate_main(int argc, char **argv)
       r->paper_hi = get_opt(ref, key, d, &err);
       if (err.code) goto fail_ref;
       char unit[16];
-      double v = last_measurement(mpath, r->quantity, r->object, unit, sizeof unit);
+      double v = pick_measurement(mpath, r->quantity, r->object, unit, sizeof unit);
       if (d == UNIT_ANGLE) v *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
       r->sim = v * sc;
     }
