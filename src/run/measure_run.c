@@ -124,10 +124,14 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     struct meas_debris cloud;
     meas_debris_defaults(&dp, &g);
     dp.x_limit = next_face(mr, s, mr->debris[k]);
-    /* the cloud is material from this plate and what lay in front of it (the
-       projectile): spall thrown back from the plates behind is not */
+    /* the cloud is solid material from this plate and what lay in front of it (the
+       projectile): spall thrown back from the plates behind is not, nor a gas */
     unsigned char *mask = hv_malloc(s->p.n + 1, "cloud mask");
-    for (size_t i = 0; i < s->p.n; i++) mask[i] = s->body[s->p.body[i]].lo[0] < dp.x_limit;
+    for (size_t i = 0; i < s->p.n; i++) {
+      const struct material *m = &s->mat[s->p.mat[i]];
+      mask[i] = s->body[s->p.body[i]].lo[0] < dp.x_limit &&
+                (m->str.enabled || m->frac.kind != FRACTURE_NONE);   /* not a gas */
+    }
     dp.mask = mask;
     int rc = measure_debris(&s->p, &dp, &cloud, err);
     free(mask);
