@@ -31,22 +31,6 @@ static const char *join(char *buf, size_t len, const char *a, const char *b)
   return buf;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, r;
-  char *b = malloc(cap + 1);
-  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
-    n += r;
-    if (n == cap) b = realloc(b, (cap *= 2) + 1);
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  *len = n;
-  return b;
-}
-
 static int cmpstr(const void *a, const void *b)
 {
   return strcmp(*(char *const *)a, *(char *const *)b);
@@ -88,7 +72,7 @@ static long compare(const char *d1, const char *d2, const char *name, int thread
   join(p1, sizeof p1, d1, name);
   join(p2, sizeof p2, d2, name);
   size_t n1 = 0, n2 = 0;
-  char *a = slurp(p1, &n1), *b = slurp(p2, &n2);
+  char *a = test_slurp(p1, &n1), *b = test_slurp(p2, &n2);
   long result = -1;
   if (a && b) {
     if (!strcmp(name, "used_parameters.yaml")) {
@@ -234,7 +218,7 @@ int main(void)
   char sp[4200];
   join(sp, sizeof sp, dir[0], "summary.csv");
   size_t len;
-  char *sum = slurp(sp, &len);
+  char *sum = test_slurp(sp, &len);
   long last_step = -1;
   if (sum) {
     char *line = strtok(sum, "\n");

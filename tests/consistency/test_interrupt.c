@@ -44,22 +44,6 @@ static const char *in_dir(const char *name)
   return b;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, r;
-  char *b = malloc(cap + 1);
-  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
-    n += r;
-    if (n == cap) b = realloc(b, (cap *= 2) + 1);
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  if (len) *len = n;
-  return b;
-}
-
 static double now(void)
 {
   struct timespec ts;
@@ -76,7 +60,7 @@ static void sleep_s(double s)
 /* Last data row of summary.csv: step and time; returns the number of rows or -1. */
 static int summary_last(long *step, double *t, double *first_t)
 {
-  char *s = slurp(in_dir("summary.csv"), NULL);
+  char *s = test_slurp(in_dir("summary.csv"), NULL);
   if (!s || !*s || s[strlen(s) - 1] != '\n') {
     free(s);
     return -1;
@@ -107,7 +91,7 @@ static int summary_last(long *step, double *t, double *first_t)
 static int vtu_complete(const char *path, double *t, long *step, long *np)
 {
   size_t len;
-  char *b = slurp(path, &len);
+  char *b = test_slurp(path, &len);
   if (!b) return 0;
   static const char tail[] = "\n  </AppendedData>\n</VTKFile>\n";
   const char *start = strstr(b, "<AppendedData encoding=\"raw\">\n   _");
@@ -192,7 +176,7 @@ int main(void)
   CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130,
         "exit status 130 (got %s %d)", WIFEXITED(status) ? "exit" : "signal",
         WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1);
-  char *log = slurp(logfile, NULL);
+  char *log = test_slurp(logfile, NULL);
   CHECK(log && strstr(log, "interrupted at t = "), "the log says 'interrupted at t = ...'");
   if (log) printf("  log: %.*s\n", (int)strcspn(strstr(log, "interrupted") ? strstr(log, "interrupted") : log, "\n"),
                   strstr(log, "interrupted") ? strstr(log, "interrupted") : log);
@@ -224,7 +208,7 @@ int main(void)
         nvtu, ncsv, rows);
 
   /* run.pvd: lists the snapshots in order, the last at the final time */
-  char *pvd = slurp(in_dir("run.pvd"), NULL);
+  char *pvd = test_slurp(in_dir("run.pvd"), NULL);
   int nds = 0, order_ok = 1;
   double tlast = -1;
   for (const char *p = pvd ? strstr(pvd, "<DataSet ") : NULL; p; p = strstr(p + 1, "<DataSet ")) {

@@ -22,26 +22,10 @@ static const char *join(char *buf, size_t len, const char *a, const char *b)
   return buf;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, r;
-  char *b = malloc(cap + 1);
-  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
-    n += r;
-    if (n == cap) b = realloc(b, (cap *= 2) + 1);
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  if (len) *len = n;
-  return b;
-}
-
 /* used_parameters.yaml without comment lines and without the "default" markers. */
 static char *normalised(const char *path)
 {
-  char *s = slurp(path, NULL);
+  char *s = test_slurp(path, NULL);
   if (!s) return NULL;
   char *out = malloc(strlen(s) + 1), *o = out;
   for (char *line = strtok(s, "\n"); line; line = strtok(NULL, "\n")) {
@@ -96,8 +80,8 @@ int main(void)
   for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
     char p1[4400], p2[4400];
     size_t n1 = 0, n2 = 0;
-    char *a = slurp(join(p1, sizeof p1, d1, files[k]), &n1);
-    char *b = slurp(join(p2, sizeof p2, d2, files[k]), &n2);
+    char *a = test_slurp(join(p1, sizeof p1, d1, files[k]), &n1);
+    char *b = test_slurp(join(p2, sizeof p2, d2, files[k]), &n2);
     CHECK(a && b && n1 == n2 && !memcmp(a, b, n1), "%s: the rerun wrote the same %zu bytes "
           "(%zu)", files[k], n1, n2);
     free(a);

@@ -32,6 +32,9 @@ const char *test_source_dir(void);
 const char *test_tmpdir(void);
 /* Writes text to a file under the scratch folder; returns its full path (static buffer rotates 8). */
 const char *test_write_file(const char *name, const char *text);
+/* Reads a whole file (NUL-terminated); NULL when it cannot. *len (may be NULL) gets
+ * the size. The caller frees. */
+char *test_slurp(const char *path, size_t *len);
 /* Runs a shell command line; returns its exit status (or -1). If `output` is not NULL,
  * stdout+stderr are captured into it (up to len-1 bytes). */
 int test_run(const char *cmdline, char *output, size_t len);

@@ -82,22 +82,6 @@ static const char *path_of(const char *name)
   return b;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, r;
-  char *b = malloc(cap + 1);
-  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
-    n += r;
-    if (n == cap) b = realloc(b, (cap *= 2) + 1);
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  if (len) *len = n;
-  return b;
-}
-
 /* Entries of a folder other than . and ..; counts those with ".tmp." in *ntmp. */
 static int count_entries(const char *dir, int *ntmp, char *names, size_t len)
 {
@@ -193,7 +177,7 @@ static void bad_input(const char *name, const char *yaml, const char *extra, con
   int ntmp, n = count_entries(dir, &ntmp, names, sizeof names);
   char sp[4400];
   snprintf(sp, sizeof sp, "%s/summary.csv", dir);
-  char *prev = slurp(sp, NULL);
+  char *prev = test_slurp(sp, NULL);
   CHECK(n == 1 && ntmp == 0 && prev && !strcmp(prev, PREVIOUS),
         "%s: output folder untouched: only the earlier summary.csv, intact (has:%s)", name,
         names);
@@ -207,7 +191,7 @@ static int summary_rows(const char *dir)
   char sp[4400];
   snprintf(sp, sizeof sp, "%s/summary.csv", dir);
   size_t len;
-  char *s = slurp(sp, &len);
+  char *s = test_slurp(sp, &len);
   if (!s || !len || s[len - 1] != '\n') {
     free(s);
     return -1;
@@ -285,7 +269,7 @@ static void test_commands(void)
         "not on a terminal: plain log lines 'hvsph: step ...' (no carriage returns) and 'done'");
   char up[4400];
   snprintf(up, sizeof up, "%s/used_parameters.yaml", dir);
-  char *u = slurp(up, NULL), want[300];
+  char *u = test_slurp(up, NULL), want[300];
   snprintf(want, sizeof want, "# Parameters used by hvsph %s\n", version);
   CHECK(u && !strncmp(u, want, strlen(want)), "used_parameters.yaml starts with '%.*s'",
         (int)strlen(want) - 1, want);
@@ -386,7 +370,7 @@ static void test_outdir(void)
   snprintf(want, sizeof want, "cannot create folder '%s/sub' (at '%s'): exists and is not a "
            "folder", file, file);
   check_message("outdir below a file", out, (const char *const[]){want, NULL});
-  char *f = slurp(file, NULL);
+  char *f = test_slurp(file, NULL);
   CHECK(f && !strcmp(f, "not a folder\n"), "the regular file is untouched");
   free(f);
   snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, file);
@@ -413,7 +397,7 @@ static void test_late_input_error(void)
   count_entries(dir, &ntmp, names, sizeof names);
   char sp[4400];
   snprintf(sp, sizeof sp, "%s/summary.csv", dir);
-  char *prev = slurp(sp, NULL);
+  char *prev = test_slurp(sp, NULL);
   CHECK(ntmp == 0 && prev && !strcmp(prev, PREVIOUS),
         "periodic_short: no temporary file, the earlier summary.csv intact (folder has:%s)", names);
   free(prev);

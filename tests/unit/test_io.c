@@ -35,22 +35,6 @@ static const char *path_in(const char *name)
 }
 
 /* Reads a whole file; returns NULL when it cannot. *len gets the size. */
-static char *slurp(const char *path, size_t *len)
-{
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, r;
-  char *b = malloc(cap + 1);
-  while (b && (r = fread(b + n, 1, cap - n, f)) > 0) {
-    n += r;
-    if (n == cap) b = realloc(b, (cap *= 2) + 1);
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  if (len) *len = n;
-  return b;
-}
-
 /* Number of leftover temporary files (".<name>.tmp.<pid>") in the scratch folder. */
 static int count_tmp(void)
 {
@@ -122,7 +106,7 @@ static void test_csv(struct particles *p)
   struct snapshot_meta m = meta();
   const char *path = path_in("particles.csv");
   CHECK(io_write_particles_csv(path, p, &m, &err) == 0, "CSV written: %s", err.msg);
-  char *text = slurp(path, NULL);
+  char *text = test_slurp(path, NULL);
   CHECK(text && strncmp(text, "# hvsph v0.1-test case demo time 1.2345678901234567e-06 s step 4242\n",
                         67) == 0, "CSV comment line");
   CHECK(text && strstr(text, "\n# materials 0=al-2024 1=steel_4340 2=W--alloy\n"), "materials line");
@@ -193,7 +177,7 @@ static void test_vtu(struct particles *p)
   const char *path = path_in("particles_000001.vtu");
   CHECK(io_write_vtu(path, p, &m, &err) == 0, "VTU written: %s", err.msg);
   size_t len = 0;
-  char *text = slurp(path, &len);
+  char *text = test_slurp(path, &len);
   CHECK(text != NULL, "VTU read back");
   if (!text) return;
   CHECK(strstr(text, "NumberOfPoints=\"100\"") && strstr(text, "NumberOfCells=\"100\""),
@@ -246,7 +230,7 @@ static void test_pvd(void)
   const char *files[3] = {"particles_000000.vtu", "particles_000001.vtu", "a&b.vtu"};
   const char *path = path_in("run.pvd");
   CHECK(io_write_pvd(path, t, files, 3, &err) == 0, "PVD written: %s", err.msg);
-  char *text = slurp(path, NULL);
+  char *text = test_slurp(path, NULL);
   CHECK(text && strstr(text, "type=\"Collection\""), "PVD is a collection");
   CHECK(text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
             strstr(text, "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
@@ -264,7 +248,7 @@ static void test_table(void)
   const char *path = path_in("summary.csv");
   CHECK(io_write_table_csv(path, cols, 3, rows, 2, "hvsph v\ncase demo", &err) == 0,
         "table written: %s", err.msg);
-  char *text = slurp(path, NULL);
+  char *text = test_slurp(path, NULL);
   const char *want = "# hvsph v\n# case demo\nstep,time,e_total\n0,0,1.5\n1,9.9999999999999995e-07,-3\n";
   int same = text && strcmp(text, want) == 0;
   CHECK(same, "table text exact%s%s", same ? "" : ":\n", same ? "" : text ? text : "(none)");
@@ -281,14 +265,14 @@ static void test_atomic(struct particles *p)
   const char *cols[1] = {"a"};
   const double rows[2] = {1.0, 2.0};
   CHECK(io_write_table_csv(path, cols, 1, rows, 2, NULL, &err) == 0, "first file written");
-  char *before = slurp(path, NULL);
+  char *before = test_slurp(path, NULL);
   struct afile af;
   CHECK(afile_open(&af, path, &err) == 0 && count_tmp() == 1, "afile_open makes one tmp file");
   CHECK(strstr(af.tmp, "/.keep.csv.tmp.") != NULL, "tmp name '%s'", af.tmp);
   CHECK(afile_printf(&af, &err, "garbage\n") == 0, "write to tmp");
   afile_abort(&af);
   afile_abort(&af); /* twice is harmless */
-  char *after = slurp(path, NULL);
+  char *after = test_slurp(path, NULL);
   CHECK(before && after && strcmp(before, after) == 0, "abort leaves the first file intact");
   CHECK(count_tmp() == 0, "no tmp file after abort");
   free(after);
@@ -332,7 +316,7 @@ static void test_full_disk(int small_writes)
     return;
   }
   CHECK(io_write_table_csv(path, cols, 1, rows, 1, NULL, &err) == 0, "target written");
-  char *before = slurp(path, NULL);
+  char *before = test_slurp(path, NULL);
   struct afile af;
   CHECK(afile_open(&af, path, &err) == 0, "afile_open");
   if (fclose(af.f) != 0) CHECK(0, "fclose tmp");
@@ -352,7 +336,7 @@ static void test_full_disk(int small_writes)
   CHECK(afile_commit(&af, &err) != 0 && strstr(err.msg, "No space left") &&
             strstr(err.msg, "full.csv") && err.code == HV_EXIT_RUN,
         "commit on a full disk fails (%s writes): %s", small_writes ? "small" : "large", err.msg);
-  char *after = slurp(path, NULL);
+  char *after = test_slurp(path, NULL);
   CHECK(before && after && strcmp(before, after) == 0, "target untouched");
   CHECK(count_tmp() == 0, "no tmp file left");
   CHECK(af.f == NULL, "stream closed");
