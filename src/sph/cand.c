@@ -174,3 +174,18 @@ size_t cache_load(const struct sph_cache *cache, size_t c, uint32_t slot, uint32
   return k;
 }
 
+
+size_t cand_neighbours(struct cand *cd, int *gathered, const struct nbr_grid *g, size_t c,
+                       uint32_t ii, const struct particles *p, const struct sph_cache *load,
+                       const struct sph_cache *store)
+{
+  if (!*gathered) {
+    cand_gather(cd, g, c, p);
+    *gathered = 1;
+  }
+  const uint32_t slot = ii - g->cell_start[c], i = g->order[ii];
+  if (load && load->valid) return cache_load(load, c, slot, cd->sel);
+  const size_t nsel = cand_select(cd, i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
+  if (store) cache_store(store, c, slot, cd->sel, nsel);
+  return nsel;
+}

@@ -32,6 +32,14 @@ void cand_free_all(struct cand *cd);
 void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c, const struct particles *p);
 /* Selects into cd->sel the candidates within reach of particle i; returns the count. */
 size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi, double hi);
+/* The neighbours of the real particle at position ii of cell c, into cd->sel: the
+ * cell's candidates are gathered on first use (*gathered), then read from `load`
+ * when it holds this grid's neighbours, else selected (and kept in `store` if given).
+ * Returns the count. */
+size_t cand_neighbours(struct cand *cd, int *gathered, const struct nbr_grid *g, size_t c,
+                       uint32_t ii, const struct particles *p, const struct sph_cache *load,
+                       const struct sph_cache *store);
+
 /* Sizes the cache rows for grid g. */
 void cache_layout(struct sph_cache *cache, const struct nbr_grid *g);
 /* Stores / loads the selection of the particle at position `slot` within cell c. */

@@ -39,14 +39,9 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        if (!gathered) {
-          cand_gather(&cd, g, c, p);
-          gathered = 1;
-        }
+        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
-        if (cache) cache_store(cache, c, ii - g->cell_start[c], cd.sel, nsel);
         double sum = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
@@ -72,7 +67,6 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
     sph_forces_solid(p, g, sp, cache);
     return;
   }
-  if (cache && !cache->valid) cache = NULL;
   const size_t n = p->n, nall = p->n + p->n_ghost;
   const double *x = p->x[0], *y = p->x[1], *z = p->x[2];
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
@@ -93,15 +87,10 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        if (!gathered) {
-          cand_gather(&cd, g, c, p);
-          gathered = 1;
-        }
+        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double Pi = pr2[i], ci = cs[i], rhoi = rho[i];
-        const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
-                                  : cand_select(&cd, i, xi, yi, zi, hi);
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];

@@ -104,17 +104,12 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        if (!gathered) {
-          cand_gather(&cd, g, c, p);
-          gathered = 1;
-        }
+        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const struct material *mi = &mat[p->mat[i]];
         const int strong = has_strength(mi, p->damage[i]);
         const int32_t bi = body[i];
-        const size_t nsel = cand_select(&cd, i, xi, yi, zi, hi);
-        if (cache) cache_store(cache, c, ii - g->cell_start[c], cd.sel, nsel);
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         const int corr = strong && sp->grad_correction;
         for (size_t k = 0; k < nsel; k++) {
@@ -182,7 +177,6 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
                       const struct sph_params *sp, const struct sph_cache *cache)
 {
-  if (cache && !cache->valid) cache = NULL;
   const size_t n = p->n;
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho, *pr = p->p, *cs = p->cs;
@@ -202,10 +196,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        if (!gathered) {
-          cand_gather(&cd, g, c, p);
-          gathered = 1;
-        }
+        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
         const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double ri2 = 1.0 / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
@@ -218,8 +209,6 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           Ri_any |= Ri[k] != 0.0;
         }
         const int32_t bi = body[i];
-        const size_t nsel = cache ? cache_load(cache, c, ii - g->cell_start[c], cd.sel)
-                                  : cand_select(&cd, i, xi, yi, zi, hi);
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
