@@ -336,6 +336,13 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
       particles_enable_solid(&s->p);
   for (int b = 0; b < nb && !rc; b++) {
     snprintf(key, sizeof key, "bodies[%d]", b);
+    /* an upper bound first (the bounding box), so that an absurd spacing is refused
+       before the lattice is even counted */
+    const struct shape *sh = &bs[b].shape;
+    double bound = 1.0;
+    for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
+    const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
+    if (est > 1e8 && check_memory(s, c, b, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
     size_t cnt = lattice_points(&bs[b], s->bnd.half_model, NULL, 0);
     if (cnt == 0) {
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "

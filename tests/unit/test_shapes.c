@@ -1,0 +1,158 @@
+/* test_shapes.c — bodies filled with particles: each shape's exact volume, the total
+ * mass (exactly ρV when the volume is known), the lattice volume against the exact
+ * one, hcp packing, half models, and the set-up errors (overlap, outside the domain,
+ * zero particles, impact angle). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "config/config.h"
+#include "run/run.h"
+#include "run/sim.h"
+#include "setup/setup.h"
+#include "testlib.h"
+
+#define PI 3.14159265358979323846
+/* Lattice volume N·V_cell against the exact volume: a surface layer of about half a
+ * spacing is gained or lost at random, so the error scales as (surface/volume)·Δ/2; at
+ * R/Δ = 10 (sphere: 3Δ/(2R) = 15 % worst case) the measured errors are below 1 %, and
+ * the threshold allows 3 %. */
+#define LATTICE_VOLUME_TOL 0.03
+
+struct setup_result {
+  int rc;
+  char msg[2048];
+  size_t n;
+  double mass, vcells;
+};
+
+static struct setup_result setup_case(const char *yaml)
+{
+  struct setup_result r = {0};
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct cfg *c = cfg_load_string(yaml, "shape.yaml", &err);
+  struct sim s;
+  memset(&s, 0, sizeof s);
+  if (!c || run_setup(&s, c, &err)) {
+    r.rc = -1;
+    snprintf(r.msg, sizeof r.msg, "%s", err.msg);
+  } else {
+    r.n = s.p.n;
+    for (size_t i = 0; i < s.p.n; i++) r.mass += s.p.m[i];
+    r.vcells = 0;
+  }
+  sim_free(&s);
+  if (c) cfg_free(c);
+  return r;
+}
+
+static char *body_case(const char *shape, const char *extra)
+{
+  static char buf[4096];
+  snprintf(buf, sizeof buf,
+           "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+           "bodies:\n  - {name: b, material: gas, density: 2.0, pressure: 1.0, %s,\n"
+           "     shape: %s}\n"
+           "time: {end: 1}\n", extra, shape);
+  return buf;
+}
+
+static void check_volume(const char *what, const char *shape, double vexact, double spacing)
+{
+  char extra[64];
+  snprintf(extra, sizeof extra, "spacing: %.17g", spacing);
+  struct setup_result r = setup_case(body_case(shape, extra));
+  CHECK(r.rc == 0, "%s: set up (%s)", what, r.msg);
+  CHECK_CLOSE(r.mass, 2.0 * vexact, 1e-12 * 2.0 * vexact, "total mass = rho V (exact volume)");
+  double vl = (double)r.n * spacing * spacing * spacing;
+  CHECK(fabs(vl / vexact - 1) < LATTICE_VOLUME_TOL, "%s: lattice volume N dx^3 = %.5g vs exact "
+        "%.5g (%+.2f %%)", what, vl, vexact, 100 * (vl / vexact - 1));
+}
+
+static void test_volumes(void)
+{
+  check_volume("sphere R = 1", "{type: sphere, center: [0, 0, 0], radius: 1}", 4.0 / 3.0 * PI, 0.1);
+  check_volume("box 2 x 1 x 0.5", "{type: box, min: [0, 0, 0], max: [2, 1, 0.5]}", 1.0, 0.05);
+  check_volume("cylinder along x", "{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], "
+               "radius: 0.5, length: 3}", PI * 0.25 * 3, 0.05);
+  check_volume("oblique cylinder", "{type: cylinder, center: [1, 2, 3], axis: [1, 1, 1], "
+               "radius: 0.5, length: 3}", PI * 0.25 * 3, 0.05);
+  check_volume("hollow cylinder (vessel wall)", "{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], "
+               "radius: 1, length: 2, minus: [{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], "
+               "radius: 0.8, length: 1.6}]}", PI * (2.0 - 0.64 * 1.6), 0.04);
+  check_volume("box minus box", "{type: box, min: [0, 0, 0], max: [1, 1, 1], minus: [{type: box, "
+               "min: [0.25, 0.25, 0.25], max: [0.75, 0.75, 0.75]}]}", 1.0 - 0.125, 0.05);
+  /* particle count from `particles`: spacing (V/N)^(1/3), the count comes out near N */
+  struct setup_result r = setup_case(body_case("{type: sphere, center: [0, 0, 0], radius: 1}",
+                                               "particles: 20000"));
+  CHECK(r.rc == 0 && fabs((double)r.n / 20000 - 1) < LATTICE_VOLUME_TOL,
+        "particles: 20000 gives %zu particles", r.n);
+  /* hcp: volume per particle dx^3/sqrt(2) */
+  r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
+  double vl = (double)r.n * 0.05 * 0.05 * 0.05 / sqrt(2.0);
+  CHECK(r.rc == 0 && fabs(vl - 1.0) < LATTICE_VOLUME_TOL, "hcp: N dx^3/sqrt2 = %.4f (box volume 1)", vl);
+}
+
+static void test_half_model(void)
+{
+  const char *full =
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "bodies:\n  - {name: b, material: gas, density: 1.0, pressure: 1.0, spacing: 0.1,\n"
+      "     shape: {type: sphere, center: [0, 0, 0], radius: 1}}\n"
+      "time: {end: 1}\n";
+  const char *half =
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "domain: {min: [-2, -2, 0], max: [2, 2, 2], half_model: true}\n"
+      "bodies:\n  - {name: b, material: gas, density: 1.0, pressure: 1.0, spacing: 0.1,\n"
+      "     shape: {type: sphere, center: [0, 0, 0], radius: 1}}\n"
+      "time: {end: 1}\n";
+  struct setup_result f = setup_case(full), h = setup_case(half);
+  CHECK(f.rc == 0 && h.rc == 0, "full and half sphere set up (%s%s)", f.msg, h.msg);
+  CHECK(2 * h.n == f.n, "half model holds exactly half the particles (%zu of %zu)", h.n, f.n);
+  CHECK_CLOSE(h.mass, 0.5 * f.mass, 1e-12 * f.mass, "half model holds half the mass");
+}
+
+static void expect_error(const char *what, const char *yaml, const char *needle)
+{
+  struct setup_result r = setup_case(yaml);
+  CHECK(r.rc != 0 && strstr(r.msg, needle), "%s: error mentions '%s': %s", what, needle, r.msg);
+}
+
+static void test_errors(void)
+{
+  expect_error("overlap",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+               "  - {name: b, material: gas, density: 1, spacing: 0.1, shape: {type: sphere, center: [1, 0.5, 0.5], radius: 0.3}}\n"
+               "time: {end: 1}\n",
+               "bodies 'a' and 'b' overlap");
+  expect_error("outside the domain",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: wall}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0.5, 0, 0], max: [1.5, 1, 1]}}\n"
+               "time: {end: 1}\n",
+               "reaches outside the domain");
+  expect_error("zero particles", body_case("{type: sphere, center: [0, 0, 0], radius: 0.01}", "spacing: 1"),
+               "gives no particle");
+  expect_error("impact angle 0",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1, speed: 1 km/s, impact_angle: 0 deg,\n"
+               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+               "time: {end: 1}\n",
+               "outside (0, 90] deg");
+  expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
+               "more than this machine");
+  expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
+}
+
+int main(void)
+{
+  test_volumes();
+  test_half_model();
+  test_errors();
+  return test_finish();
+}
