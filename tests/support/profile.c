@@ -136,6 +136,6 @@ void profile_bin(const double *r, const double *m, const double *q, size_t n, do
     msum[b] += m[i];
     count[b]++;
   }
-  for (int b = 0; b < nb; b++) mean[b] = count[b] ? mean[b] / msum[b] : NAN;
+  for (int b = 0; b < nb; b++) mean[b] = count[b] ? mean[b] / msum[b] : (double)NAN;
   free(msum);
 }

@@ -3,8 +3,11 @@
  * its particle snapshots back (with the solid fields), follow particles by id, group
  * a quasi-1D body into its initial lattice layers, find a wave front, fit a line.
  *
- * Every case is run with `--threads SC_THREADS` (1 by default: `make check` runs two
- * tests at a time on two cores; HVSPH_TEST_THREADS overrides it) and `--quiet`.
+ * Every case is run with `--threads N` (1 by default: `make check` runs two tests at a
+ * time on two cores; the environment variable HVSPH_TEST_THREADS overrides it) and
+ * `--quiet`. HVSPH_CASE_ARGS, when set, is appended to every run's command line: e.g.
+ * HVSPH_CASE_ARGS="--set resolution=8" runs a test at a finer resolution (the numbers
+ * in docs/verification-solids.md).
  */
 #ifndef HV_SOLIDCASE_H
 #define HV_SOLIDCASE_H
@@ -15,7 +18,7 @@
 
 /* Runs `$HVSPH_BIN run $HVSPH_SOURCE_DIR/examples/verification/<example>.yaml
  * -o $HVSPH_TMP/<outname> --quiet --threads N <extra>` (extra may be NULL: a string of
- * further arguments, e.g. "--set time.end=1e-6"). Returns the exit status; *seconds
+ * further arguments, e.g. "--set time.end=1e-6"; then $HVSPH_CASE_ARGS). Returns the exit status; *seconds
  * (may be NULL) gets the wall time [s]. On failure the last lines of the output are
  * printed. */
 int sc_run(const char *example, const char *outname, const char *extra, double *seconds);

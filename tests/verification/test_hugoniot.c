@@ -23,8 +23,8 @@
  *     wall-heating layer at the contact and from the front's smeared width).
  * Thresholds: 3% each (SHOCK_SPEED_TOL, PRESSURE_TOL: issue 3's criterion). Measured
  * at the time of writing: Us within −0.6%, p₁ within −0.5% at the CI resolution.
- * What a wrong model does: a wrong c₀, n, a missing compression term or a mass/momentum
- * error moves Us and p₁ by far more than 3% (n = 4.54 instead of 3.54: +3.6% in Us);
+ * What a wrong model does: a wrong c₀ or n moves the solution by more than 3% (the
+ * reference itself, solved with n = 4.54 instead of 3.54, gives Us +3.6%, p₁ +3.6%);
  * the Grüneisen term alone moves them by only 0.6% at this strength (Γ = 0 gives
  * Us = 6.770 km/s), so this test does not see Γ — tests/unit/test_eos.c does.
  * Also checked: no particle splits (nothing is in tension before the release waves

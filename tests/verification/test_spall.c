@@ -1,0 +1,157 @@
+/* test_spall.c — spall in a flyer-plate impact (issue 3, item 6; examples/verification/spall.yaml).
+ *
+ * An al-alloy flyer of thickness t = 2 mm hits an al-alloy target of thickness 2t at
+ * 100 m/s (quasi-1D). The compression pulse in the target (length 2t) reflects from the
+ * target's free rear face as tension; for a square pulse the reflected tension first
+ * overcomes the incoming compression at the distance t (half the pulse length) from
+ * the rear face, where the release wave from the flyer's rear face meets it: the
+ * expected spall plane is x_s = (target rear face) − t, the middle of the target.
+ * The tension there (≈ the pulse amplitude, ~1 GPa) exceeds the Tresca limit
+ * |σ_c| = 0.59 GPa of the library's al-alloy: particles split (damage = 1).
+ *
+ * Checked:
+ *  1. At 100 m/s, at the end: particles split, at least one full lattice layer's worth
+ *     (a complete spall plane, not a few stray particles), and every split particle lies
+ *     within ±SPALL_BAND initial spacings of x_s (initial positions). The band: the SPH
+ *     pulse fronts are smeared over ~2h ≈ 2.4 spacings, so the first point where the net
+ *     tension exceeds |σ_c| is known to about that; measured at the time of writing: the
+ *     5 layers 1.75–2.15 mm (±2.5 spacings around 2 mm), all on the first output after
+ *     the tension arrives.
+ *  2. At 50 m/s (pulse ~0.46 GPa): the tension stays below |σ_c| (the largest principal
+ *     stress over the outputs, every 0.05 µs, is reported and must be below |σ_c|) and
+ *     no particle splits.
+ * Both exclude the particles within EXCLUDE_CONTACT initial spacings of the impact plane
+ * x = 0 (the flyer's and the target's contact faces). When the flyer and target separate
+ * (the release reaches the interface at ~0.6 µs), the continuity equation still sums
+ * the receding neighbours of the other body, so the two contact layers expand and go
+ * into tension with no physical cause, and split (~1.2 µs here, in both runs). This is a
+ * defect of the contact treatment in the continuity sum (reported; see
+ * docs/verification-solids.md), not of the fracture model under test; the excluded
+ * splits are counted and printed.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "fracture/fracture.h"
+#include "solidcase.h"
+#include "testlib.h"
+
+#define SIGMA_C 0.59e9        /* [Pa] |σ_c| of al-alloy (data/materials.yaml, Tables 5, 8) */
+#define SPALL_BAND 4.0        /* [initial spacings] half-width of the band around x_s */
+#define EXCLUDE_CONTACT 2.0   /* [initial spacings] contact layers left out (see above) */
+
+struct outcome {
+  size_t split_inside, split_band, split_outside, split_contact;
+  double xlo, xhi;           /* [m] range of initial x of the split particles (not contact) */
+  double sigmax;             /* [Pa] largest principal tension over the outputs (not contact) */
+  double xs, dx;             /* [m] expected spall plane, initial spacing */
+  size_t layer_count;        /* particles in one lattice layer */
+};
+
+static int analyse(const char *out, const char *extra, struct outcome *o)
+{
+  double secs;
+  int rc = sc_run("spall", out, extra, &secs);
+  CHECK(rc == 0, "spall.yaml %s runs (exit status %d, %.1f s)", extra ? extra : "", rc, secs);
+  if (rc) return -1;
+  const char *dir = sc_outdir(out);
+  const int nsnap = sc_count_snapshots(dir);
+  struct particles p0;
+  if (nsnap < 2 || sc_read(dir, 0, &p0, NULL)) return CHECK(0, "snapshots readable"), -1;
+  const size_t nid = p0.n;
+  double *x0 = malloc(nid * sizeof *x0);
+  double fmin = HUGE_VAL, fmax = -HUGE_VAL, tmax = -HUGE_VAL, tmin = HUGE_VAL;
+  for (size_t i = 0; i < p0.n; i++) {
+    x0[p0.id[i]] = p0.x[0][i];
+    if (p0.body[i] == 0) {
+      fmin = fmin < p0.x[0][i] ? fmin : p0.x[0][i];
+      fmax = fmax > p0.x[0][i] ? fmax : p0.x[0][i];
+    } else {
+      tmin = tmin < p0.x[0][i] ? tmin : p0.x[0][i];
+      tmax = tmax > p0.x[0][i] ? tmax : p0.x[0][i];
+    }
+  }
+  o->layer_count = 0;
+  for (size_t i = 0; i < p0.n; i++) o->layer_count += p0.body[i] == 1 && p0.x[0][i] == tmin;
+  o->dx = tmin - fmax;                       /* the lattices meet at x = 0, dx apart */
+  const double contact = 0.5 * (tmin + fmax);
+  const double t_flyer = fmax - fmin + o->dx, rear = tmax + 0.5 * o->dx;
+  o->xs = rear - t_flyer;
+  printf("  flyer %.3f mm thick, target rear face at %.3f mm, spacing %.4f mm: expected spall "
+         "plane x_s = %.3f mm (initial coordinates)\n", t_flyer * 1e3, rear * 1e3, o->dx * 1e3,
+         o->xs * 1e3);
+  o->sigmax = 0;
+  for (int k = 1; k < nsnap; k++) {
+    struct particles p;
+    double t;
+    if (sc_read(dir, k, &p, &t)) return -1;
+    double smax = 0, xsm = 0;
+    for (size_t i = 0; i < p.n; i++) {
+      if (fabs(x0[p.id[i]] - contact) < EXCLUDE_CONTACT * o->dx || p.damage[i] >= 1) continue;
+      double S[6];
+      for (int c = 0; c < 6; c++) S[c] = p.S[c][i];
+      const double s1 = fracture_max_principal(p.p[i], S);
+      if (s1 > smax) {
+        smax = s1;
+        xsm = x0[p.id[i]];
+      }
+    }
+    if (smax > o->sigmax) o->sigmax = smax;
+    if (k == nsnap - 1) {
+      o->split_inside = o->split_band = o->split_outside = o->split_contact = 0;
+      o->xlo = HUGE_VAL;
+      o->xhi = -HUGE_VAL;
+      for (size_t i = 0; i < p.n; i++) {
+        if (p.damage[i] < 1) continue;
+        const double xi = x0[p.id[i]];
+        if (fabs(xi - contact) < EXCLUDE_CONTACT * o->dx) {
+          o->split_contact++;
+          continue;
+        }
+        o->split_inside++;
+        if (fabs(xi - o->xs) <= SPALL_BAND * o->dx) o->split_band++;
+        else o->split_outside++;
+        o->xlo = xi < o->xlo ? xi : o->xlo;
+        o->xhi = xi > o->xhi ? xi : o->xhi;
+      }
+    }
+    size_t nsplit = 0;
+    for (size_t i = 0; i < p.n; i++) nsplit += p.damage[i] >= 1;
+    printf("  t = %.2f us: largest principal tension (unsplit, away from the contact) %.4f GPa "
+           "at x0 = %.2f mm; %zu split\n", t * 1e6, smax * 1e-9, xsm * 1e3, nsplit);
+    particles_free(&p);
+  }
+  free(x0);
+  particles_free(&p0);
+  return 0;
+}
+
+int main(void)
+{
+  struct outcome hi, lo;
+  printf("run 1: flyer at 100 m/s\n");
+  if (analyse("spall", NULL, &hi)) return test_finish();
+  printf("  split: %zu away from the contact (initial x from %.3f to %.3f mm), of which %zu in "
+         "the band x_s +- %.0f spacings = [%.3f, %.3f] mm; %zu outside; %zu in the contact "
+         "layers (excluded)\n", hi.split_inside, hi.xlo * 1e3, hi.xhi * 1e3, hi.split_band,
+         SPALL_BAND, (hi.xs - SPALL_BAND * hi.dx) * 1e3, (hi.xs + SPALL_BAND * hi.dx) * 1e3,
+         hi.split_outside, hi.split_contact);
+  CHECK(hi.split_inside >= hi.layer_count, "the target spalls: %zu particles split (a full "
+        "layer is %zu)", hi.split_inside, hi.layer_count);
+  CHECK(hi.split_outside == 0, "every split particle lies within %.0f spacings of the expected "
+        "plane %.3f mm (split from %.3f to %.3f mm; %zu outside)", SPALL_BAND, hi.xs * 1e3,
+        hi.xlo * 1e3, hi.xhi * 1e3, hi.split_outside);
+
+  printf("run 2: flyer at 50 m/s\n");
+  if (analyse("spall_low", "--set 'bodies[0].velocity=[50 m/s, 0, 0]' --set output.every=5e-8",
+              &lo))
+    return test_finish();
+  printf("  split: %zu away from the contact; %zu in the contact layers (excluded)\n",
+         lo.split_inside, lo.split_contact);
+  CHECK(lo.sigmax < SIGMA_C, "at 50 m/s the tension stays below |sigma_c|: largest principal "
+        "stress over the outputs %.4f GPa < %.2f GPa", lo.sigmax * 1e-9, SIGMA_C * 1e-9);
+  CHECK(lo.split_inside == 0, "no particle splits where the tension stayed below |sigma_c| "
+        "(%zu split)", lo.split_inside);
+  return test_finish();
+}
