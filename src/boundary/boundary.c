@@ -176,7 +176,7 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         if (kind == BND_PERIODIC) {
           size_t g = add_ghost(b, p, i, 0);
           p->x[d][g] = xi + (s ? -L : L);
-        } else { /* wall: mirror */
+        } else { /* wall or symmetry plane: mirror */
           size_t g = add_ghost(b, p, i, mirror_flip(d));
           p->x[d][g] = 2.0 * face - xi;
           p->v[d][g] = -p->v[d][i];

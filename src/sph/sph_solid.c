@@ -12,7 +12,10 @@
  * with fᵢⱼ = W(rᵢⱼ)/W(Δp) and Δp = hᵢⱼ/η the particle spacing (Gray, Monaghan & Swift
  * 2001, CMAME 190:6641, eqs. 22–24).
  * Contact: a pair of particles of different bodies exchanges only compressive
- * pressure (max(p, 0)) and viscosity, so bodies push but never pull each other.
+ * pressure (max(p, 0)) and viscosity, and while it separates it can unload a
+ * compressed particle to its reference density but not stretch it further: bodies
+ * push but never pull each other. (Wall ghosts belong to their source's body: a wall
+ * is a mirror, exact for compression; it can hold a body that rebounds from it.)
  * Tensors are 6-component, VTK order (particles.h).
  */
 #include <math.h>
@@ -118,8 +121,12 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           const double r = sqrt(dx * dx + dy * dy + dz * dz);
           const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
           const double ux = vx[j] - vxi, uy = vy[j] - vyi, uz = vz[j] - vzi;
-          const double w = m[j] / rho[j] * f;
-          sum -= w * (ux * dx + uy * dy + uz * dz);
+          const double w = m[j] / rho[j] * f, udx = ux * dx + uy * dy + uz * dz;
+          /* a pair of different bodies separating may unload a compressed particle
+             back to its reference density, but not stretch it beyond: contact carries
+             no tension, in the density as in the forces */
+          if (body[j] != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
+          sum -= w * udx;
           if (strong && body[j] == bi) {
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
             L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
@@ -224,7 +231,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           }
           const double rj2 = 1.0 / (rho[j] * rho[j]);
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
-          double ax, ay, az, Pme;
+          double ax, ay, az, Pme, eas = 0.0;
           if (body[j] == bi) {
             /* T = σᵢ/ρᵢ² + σⱼ/ρⱼ² (+ artificial stress), deviatoric part explicitly */
             double T[6];
@@ -240,6 +247,12 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
                 const double fr = kernel_w(kk, r, hij) * hij * hij * hij / w_dp;
                 const double fn = as_n == 4.0 ? (fr * fr) * (fr * fr) : pow(fr, as_n);
                 for (int t = 0; t < 6; t++) T[t] += Rs[t] * fn;
+                /* its work, −½ vᵢⱼ·(Rₛ fⁿ ∇ᵢW) per unit m_j: the pair force is
+                   symmetric, so this keeps the total energy */
+                const double rx = (Rs[T_XX] * gx + Rs[T_XY] * gy + Rs[T_XZ] * gz) * fn;
+                const double ry = (Rs[T_XY] * gx + Rs[T_YY] * gy + Rs[T_YZ] * gz) * fn;
+                const double rz = (Rs[T_XZ] * gx + Rs[T_YZ] * gy + Rs[T_ZZ] * gz) * fn;
+                eas = -0.5 * ((vxi - vx[j]) * rx + (vyi - vy[j]) * ry + (vzi - vz[j]) * rz);
               }
             }
             const double P = Pi + pr[j] * rj2 + visc;
@@ -257,7 +270,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           sx += m[j] * ax;
           sy += m[j] * ay;
           sz += m[j] * az;
-          se += m[j] * (Pme + 0.5 * visc) * vdx * f;
+          se += m[j] * ((Pme + 0.5 * visc) * vdx * f + eas);
         }
         p->a[0][i] = sx;
         p->a[1][i] = sy;
