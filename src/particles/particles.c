@@ -63,13 +63,14 @@ int particles_fields(struct particles *p, struct pfield *out)
   return k;
 }
 
-size_t particles_bytes_per_particle(void)
+size_t particles_bytes_per_particle(const struct particles *p)
 {
   struct pfield f[HV_MAX_FIELDS];
   int nf = all_fields(NULL, f);
   size_t b = 0;
   for (int i = 0; i < nf; i++)
-    if (!(f[i].flags & PF_SOLID)) b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
+    if (!(f[i].flags & PF_SOLID) || (p && p->solid))
+      b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }
 

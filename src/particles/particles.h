@@ -97,8 +97,9 @@ int particles_fields(struct particles *p, struct pfield *out);
  * the indices are the same for every store. */
 int particles_fields_all(struct particles *p, struct pfield *out);
 size_t pf_type_size(enum pf_type t);
-/* Bytes of particle storage per slot (sum over fields). */
-size_t particles_bytes_per_particle(void);
+/* Bytes of particle storage per slot (sum over the fields allocated in p; the base
+ * fields when p is NULL). */
+size_t particles_bytes_per_particle(const struct particles *p);
 
 void particles_init(struct particles *p);
 /* Allocates the PF_SOLID fields (zeroed) from now on. */
