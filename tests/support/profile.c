@@ -37,23 +37,35 @@ static void append_quoted(char *buf, size_t len, const char *s)
   buf[k] = 0;
 }
 
+int verif_threads(void)
+{
+  const char *s = getenv("HVSPH_TEST_THREADS");
+  int n = s ? atoi(s) : 1;
+  return n > 0 ? n : 1;
+}
+
 int verif_run(const char *name, int argc, char **argv, double *wall)
 {
   static char cmd[16384], out[65536];
+  const char *more = getenv("HVSPH_CASE_ARGS");
   snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s/%s' --quiet "
-           "--threads 2", test_bin(), test_source_dir(), name, test_tmpdir(), name);
+           "--threads %d", test_bin(), test_source_dir(), name, test_tmpdir(), name,
+           verif_threads());
   for (int i = 1; i < argc; i++) append_quoted(cmd, sizeof cmd, argv[i]);
+  if (more && *more) {
+    size_t k = strlen(cmd);
+    snprintf(cmd + k, sizeof cmd - k, " %s", more);
+  }
   printf("  running: %s\n", cmd);
   fflush(stdout);
   double t0 = now();
   int rc = test_run(cmd, out, sizeof out);
   *wall = now() - t0;
   if (out[0]) printf("  hvsph says:\n%s\n", out);
-  printf("  wall-clock time of the run: %.1f s (2 threads)\n", *wall);
+  printf("  wall-clock time of the run: %.1f s (%d thread%s)\n", *wall, verif_threads(),
+         verif_threads() > 1 ? "s" : "");
   return rc;
 }
-
-int verif_custom(int argc) { return argc > 1; }
 
 int verif_read_last(const char *name, struct particles *p, double *t)
 {

@@ -1,9 +1,11 @@
 /* profile.h — shared plumbing of the verification tests (tests/verification/).
  *
  * verif_run() runs `$HVSPH_BIN run $HVSPH_SOURCE_DIR/examples/verification/<name>.yaml
- * -o $HVSPH_TMP/<name> --quiet --threads 2` plus any extra arguments (the test
+ * -o $HVSPH_TMP/<name> --quiet --threads N` plus any extra arguments (the test
  * program's own command-line arguments, e.g. `--set bodies[0].spacing=0.0025` for a
- * finer run), times it, and returns the exit status. verif_read_last() reads the
+ * finer run, then $HVSPH_CASE_ARGS as in tests/support/solidcase.h), times it, and
+ * returns the exit status. N is $HVSPH_TEST_THREADS, default 1 (`make check` runs
+ * two tests at a time on two cores). verif_read_last() reads the
  * last particles_NNNNN.csv of that output folder. Profiles are CSV files under
  * $HVSPH_TMP for tools/plot_verification.py: a comment line naming the problem,
  * time and measured numbers, then a header whose first column is the coordinate
@@ -24,8 +26,8 @@ int verif_run(const char *name, int argc, char **argv, double *wall);
 /* Reads the highest-numbered particles_NNNNN.csv of $HVSPH_TMP/<name> into p (which
  * must be initialised); *t gets its time [s]. Returns 0, or -1 with a message. */
 int verif_read_last(const char *name, struct particles *p, double *t);
-/* 1 when the test program was given extra arguments (a non-default resolution). */
-int verif_custom(int argc);
+/* Threads for the run: $HVSPH_TEST_THREADS, default 1. */
+int verif_threads(void);
 
 /* Opens $HVSPH_TMP/<file> for writing, with a first comment line `# <comment>` and
  * the header line `header` (e.g. "r,rho,rho_exact"); exits on failure. */

@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""Plot hvsph verification profiles: SPH particles against the exact solution.
+
+Usage:
+    /usr/bin/python3 tools/plot_verification.py [-o OUTDIR] PROFILE.csv [PROFILE.csv ...]
+
+Each PROFILE.csv is written by a verification test (tests/verification/test_*.c) into
+its scratch folder, e.g. build/testtmp/test_sod/sod_profile.csv. Its first line is a
+comment "# <problem> t=<time> n=<particles>: ...", then a header whose first column is
+the coordinate (x or r) followed by pairs "q,q_exact", one row per particle. When the
+same folder holds <problem>_exact.csv (coordinate and q_exact columns on a fine grid,
+also written by the tests) the exact line is drawn from it, else from the particles'
+own exact values. One PNG per file, OUTDIR/verif_<problem>.png (default OUTDIR:
+docs/img), with one panel per pair: the particles as small dots, the exact solution as
+a line. The vertical range covers the exact solution and 99.9 % of the particles; the
+few beyond it (e.g. the hot particles at the centre of the Sedov blast) are counted in
+the panel's corner.
+
+Needs python3-numpy and python3-matplotlib (tools/install-deps.sh --docs).
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+LABELS = {
+    "x": "x [m]",
+    "r": "r [m]",
+    "rho": "density ρ [kg/m³]",
+    "vx": "velocity vₓ [m/s]",
+    "vr": "radial velocity v_r [m/s]",
+    "p": "pressure p [Pa]",
+}
+# plotted coordinate range per problem (the region the tests compare, and a margin)
+XRANGE = {"sod": (-0.5, 0.5), "noh": (0.0, 0.5), "sedov": (0.0, 0.45)}
+
+
+def read_profile(path, pairs=True):
+    with open(path) as f:
+        first = f.readline()
+        if not first.startswith("#"):
+            sys.exit(f"{path}: the first line should be a '# problem ...' comment")
+        comment = first[1:].strip()
+        header = f.readline().strip().split(",")
+        data = np.loadtxt(f, delimiter=",", ndmin=2)
+    if data.shape[1] != len(header) or (pairs and (len(header) < 3 or len(header) % 2 == 0)):
+        sys.exit(f"{path}: expected a coordinate column and pairs q,q_exact; got {header}")
+    return comment, header, data
+
+
+def exact_table(path, problem):
+    """The fine-grid exact solution beside the profile, as {column: values}, or None."""
+    ex = os.path.join(os.path.dirname(path), f"{problem}_exact.csv")
+    if not os.path.exists(ex):
+        return None
+    _, header, data = read_profile(ex, pairs=False)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def plot(path, outdir):
+    comment, header, data = read_profile(path)
+    problem = comment.split()[0]
+    coord = data[:, 0]
+    order = np.argsort(coord, kind="stable")
+    fine = exact_table(path, problem)
+    npairs = (len(header) - 1) // 2
+    fig, axes = plt.subplots(npairs, 1, figsize=(7.0, 2.6 * npairs), sharex=True, squeeze=False)
+    for k in range(npairs):
+        ax = axes[k, 0]
+        q, qe = data[:, 1 + 2 * k], data[:, 2 + 2 * k]
+        ax.plot(coord, q, ".", ms=1.0, alpha=0.35, color="tab:blue", rasterized=True,
+                label="SPH particles")
+        name = header[2 + 2 * k]
+        if fine is not None and name in fine:
+            xe, ye = fine[header[0]], fine[name]
+        else:
+            xe, ye = coord[order], qe[order]
+        ax.plot(xe, ye, "-", lw=1.2, color="black", label="exact")
+        lo = min(np.nanmin(ye), np.nanpercentile(q, 0.05))
+        hi = max(np.nanmax(ye), np.nanpercentile(q, 99.95))
+        pad = 0.06 * (hi - lo if hi > lo else 1.0)
+        ax.set_ylim(lo - pad, hi + pad)
+        off = int(np.sum((q < lo - pad) | (q > hi + pad)))
+        if off:
+            ax.text(0.99, 0.97, f"{off} particle{'s' if off > 1 else ''} off scale",
+                    transform=ax.transAxes, ha="right", va="top", fontsize=7)
+        ax.set_ylabel(LABELS.get(header[1 + 2 * k], header[1 + 2 * k]))
+        ax.grid(alpha=0.3)
+        if k == 0:
+            ax.legend(loc="best", fontsize=8, markerscale=6)
+    if problem in XRANGE:
+        axes[0, 0].set_xlim(*XRANGE[problem])
+    axes[-1, 0].set_xlabel(LABELS.get(header[0], header[0]))
+    fig.suptitle(comment, fontsize=8)
+    fig.tight_layout()
+    os.makedirs(outdir, exist_ok=True)
+    out = os.path.join(outdir, f"verif_{problem}.png")
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    print(f"{path} -> {out}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("profiles", nargs="+", help="profile CSV files written by the tests")
+    ap.add_argument("-o", "--outdir", default="docs/img", help="output folder (docs/img)")
+    args = ap.parse_args()
+    for p in args.profiles:
+        plot(p, args.outdir)
+
+
+if __name__ == "__main__":
+    main()
