@@ -136,18 +136,23 @@ static int check_state(const struct sim *s, struct hv_error *err)
 
 /* End of step for solids: S takes the end-of-step stress, fracture is tested on
  * σ = −pI + S; a particle that splits drops its deviatoric stress. */
-static void end_stress(struct sim *s, double dt)
+static long end_stress(struct sim *s, double dt)
 {
   struct particles *p = &s->p;
-#pragma omp parallel for schedule(static)
+  long splits = 0;   /* split particles still in tension */
+#pragma omp parallel for schedule(static) reduction(+ : splits)
   for (size_t i = 0; i < p->n; i++) {
     double S[6];
     for (int k = 0; k < 6; k++) S[k] = p->S[k][i] = p->S1[k][i];
     const struct material *m = &s->mat[p->mat[i]];
-    p->damage[i] = fracture_tension(&m->frac, p->damage[i], p->p[i], S, dt);
-    if (p->damage[i] >= 1.0)
+    const double d0 = p->damage[i];
+    p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
+    if (p->damage[i] >= 1.0) {
       for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
+      splits += p->p[i] < 0.0;   /* split (now or in the first pass) and in tension */
+    }
   }
+  return splits;
 }
 
 int step_init(struct sim *s, struct hv_error *err)
@@ -227,8 +232,8 @@ int step_advance(struct sim *s, struct hv_error *err)
   s->step++;
   if (check_state(s, err) || update_eos(s, err)) return -1;
   if (p->solid) {
-    end_stress(s, dt);
-    if (update_eos(s, err)) return -1;   /* new splits lose their tension */
+    /* new splits in tension lose it: re-evaluate only when there are some */
+    if (end_stress(s, dt) > 0 && update_eos(s, err)) return -1;
   }
   update_h(s);
   s->dt = s->dt_prop = next_dt(s);
