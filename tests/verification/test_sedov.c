@@ -16,6 +16,8 @@
  *   peak density  the largest binned density; against 4. At finite resolution the
  *                 smeared peak is lower, so the check is a band around the measured
  *                 value (which excludes what γ = 1.4, jump 6, gives).
+ * Also printed (no threshold): the kinetic and internal energy against the exact
+ * profile's, and the internal energy within r < 0.3 r_s (the hot centre).
  * Writes $HVSPH_TMP/sedov_profile.csv (r, ρ, ρ_exact, v_r, v_r_exact, p, p_exact per
  * particle) and sedov_exact.csv (the exact solution on a fine grid) for
  * tools/plot_verification.py. Extra arguments are passed to `hvsph run` (finer runs).
@@ -89,6 +91,33 @@ int main(int argc, char **argv)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g\n", rr, e.rho, e.u, e.p);
   }
   profile_close(f);
+
+  /* where the energy is: kinetic and internal, in all and within λ = r/r_s < 0.3,
+   * against the exact profile integrated over the octant (dV = (π/2) r² dr) */
+  double ek = 0.0, ei = 0.0, ei_in = 0.0, xk = 0.0, xi = 0.0, xi_in = 0.0;
+  long n_in = 0;
+  for (size_t i = 0; i < p.n; i++) {
+    double v2 = p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i];
+    ek += 0.5 * p.m[i] * v2;
+    ei += p.m[i] * p.e[i];
+    if (r[i] < 0.3 * rs) {
+      ei_in += p.m[i] * p.e[i];
+      n_in++;
+    }
+  }
+  for (int k = 0; k < 20000; k++) {
+    const double rr = (k + 0.5) * rs / 20000.0, dv = 0.5 * 3.14159265358979323846 * rr * rr *
+                                                     rs / 20000.0;
+    struct gas_state e;
+    exact_sedov(&sol, E_BLAST, 1.0, t, rr, &e);
+    xk += 0.5 * e.rho * e.u * e.u * dv;
+    xi += e.p / (GAMMA - 1.0) * dv;
+    if (rr < 0.3 * rs) xi_in += e.p / (GAMMA - 1.0) * dv;
+  }
+  printf("  energy [J]: kinetic %.4f (exact %.4f), internal %.4f (exact %.4f); kinetic "
+         "fraction %.3f (exact %.3f)\n", ek, xk, ei, xi, ek / (ek + ei), xk / (xk + xi));
+  printf("  internal energy within r < 0.3 r_s: %.4f in %ld particles (exact %.4f)\n", ei_in,
+         n_in, xi_in);
 
   double mean[NB];
   long count[NB];

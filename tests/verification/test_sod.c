@@ -11,6 +11,9 @@
  *   the star plateau: mean p and vx of the particles with 0.03 < x < 0.15 (between the
  *           rarefaction tail at −0.014 and the contact at 0.185, a smoothing length
  *           clear of both) against p* = 0.30313, u* = 0.92745.
+ * The L1 sums are also printed split by wave region (undisturbed |x| outside the waves,
+ * rarefaction −0.25 < x < −0.01, left star −0.01 < x < 0.17, contact 0.17 < x < 0.20,
+ * right star 0.20 < x < 0.33, shock 0.33 < x < 0.37), to show where the error lies.
  * Writes $HVSPH_TMP/sod_profile.csv (x, ρ, ρ_exact, vx, vx_exact, p, p_exact per
  * particle) and sod_exact.csv (the exact solution on a fine grid) for
  * tools/plot_verification.py.
@@ -70,6 +73,12 @@ int main(int argc, char **argv)
   double ps, us;
   exact_riemann_star(L, R, gamma, &ps, &us);
   double l1[3] = {0, 0, 0}, psum = 0.0, usum = 0.0;
+  /* where the error lies: the L1 sums split by wave region (edges at t = 0.2) */
+  enum { NREG = 6 };
+  static const char *const reg_name[NREG] = {"undisturbed", "rarefaction", "left star",
+                                              "contact", "right star", "shock"};
+  static const double reg_edge[NREG - 1] = {-0.25, -0.01, 0.17, 0.20, 0.33};
+  double reg[NREG][3] = {{0}};
   long n = 0, nstar = 0;
   char comment[512];
   snprintf(comment, sizeof comment, "sod t=%.6g n=%zu: particles vs the exact Riemann "
@@ -82,9 +91,14 @@ int main(int argc, char **argv)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", x, p.rho[i], e.rho, p.v[0][i], e.u,
             p.p[i], e.p);
     if (fabs(x) < X_MAX) {
-      l1[0] += fabs(p.rho[i] - e.rho);
-      l1[1] += fabs(p.v[0][i] - e.u);
-      l1[2] += fabs(p.p[i] - e.p);
+      const double d[3] = {fabs(p.rho[i] - e.rho), fabs(p.v[0][i] - e.u), fabs(p.p[i] - e.p)};
+      int k = 0;
+      while (k < NREG - 1 && x >= reg_edge[k]) k++;
+      if (k == NREG - 1 && x >= 0.37) k = 0;  /* beyond the shock: undisturbed right state */
+      for (int c = 0; c < 3; c++) {
+        l1[c] += d[c];
+        reg[k][c] += d[c];
+      }
       n++;
     }
     if (x > 0.03 && x < 0.15) {
@@ -111,6 +125,10 @@ int main(int argc, char **argv)
   printf("  Sod at t = %g: %zu particles, %ld with |x| < %g, wall %.1f s\n", t, p.n, n, X_MAX,
          wall);
   printf("  L1(rho) = %.5f  L1(vx) = %.5f  L1(p) = %.5f\n", l1[0], l1[1], l1[2]);
+  printf("  L1 by region (share of the sums above): region: rho vx p\n");
+  for (int k = 0; k < NREG; k++)
+    printf("    %-12s %.5f %.5f %.5f\n", reg_name[k], reg[k][0] / (double)n, reg[k][1] / (double)n,
+           reg[k][2] / (double)n);
   printf("  star plateau (0.03 < x < 0.15, %ld particles): p = %.5f (exact %.5f, %+.2f %%), "
          "vx = %.5f (exact %.5f, %+.2f %%)\n", nstar, pm, ps, 100 * (pm / ps - 1), um, us,
          100 * (um / us - 1));
