@@ -103,10 +103,3 @@ void sim_free(struct sim *s)
   nbr_grid_free(&s->grid);
   sph_cache_free(&s->cache);
 }
-
-int sim_material_index(const struct sim *s, const char *name)
-{
-  for (int i = 0; i < s->nmat; i++)
-    if (!strcmp(s->mat[i].name, name)) return i;
-  return -1;
-}

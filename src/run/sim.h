@@ -59,7 +59,5 @@ struct sim {
 /* Reads everything but the bodies (sph, time, output, materials, domain). */
 int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err);
 void sim_free(struct sim *s);
-/* Index of a material by name, or -1. */
-int sim_material_index(const struct sim *s, const char *name);
 
 #endif
