@@ -203,8 +203,11 @@ int step_advance(struct sim *s, struct hv_error *err)
   /* 2. density rate (and, for solids, the stress update) at mid-step; mid-step
    *    density and pressure; artificial stress; ghosts take the mid-step values */
   sph_density_rate(p, &s->grid, &s->sph, &s->cache, s->mat, dt);
+  const int summed = s->sph.summation && !p->solid;   /* rho holds the mid-step sum */
+  if (!summed) {
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) p->rho[i] = p->rho0[i] + hdt * p->drho[i];
+    for (size_t i = 0; i < n; i++) p->rho[i] = p->rho0[i] + hdt * p->drho[i];
+  }
   if (update_eos(s, err)) return -1;
   sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
@@ -218,7 +221,8 @@ int step_advance(struct sim *s, struct hv_error *err)
       p->v[k][i] = p->v0[k][i] + dt * p->a[k][i];
       p->x[k][i] += hdt * p->v[k][i];
     }
-    p->rho[i] = p->rho0[i] + dt * p->drho[i];
+    /* continuity: over the whole step; summation: from the mid-step sum */
+    p->rho[i] = summed ? p->rho[i] + hdt * p->drho[i] : p->rho0[i] + dt * p->drho[i];
     p->e[i] = p->e0[i] + dt * p->de[i];
   }
   p->n_ghost = 0;

@@ -334,6 +334,11 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   for (int m = 0; m < s->nmat && !rc; m++)
     if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)
       particles_enable_solid(&s->p);
+  if (!rc && s->sph.summation && s->p.solid) {
+    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
+                      "strength or fracture (a free surface of a solid would lose density); "
+                      "use continuity", cfg_where(c, "sph.density", where, sizeof where));
+  }
   for (int b = 0; b < nb && !rc; b++) {
     snprintf(key, sizeof key, "bodies[%d]", b);
     /* an upper bound first (the bounding box), so that an absurd spacing is refused

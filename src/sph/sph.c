@@ -29,6 +29,9 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
   const enum kernel_kind kk = sp->kernel;
+  const int summation = sp->summation;
+  const double *m = p->m;
+  double *rhow = p->rho;   /* summation: written for i only; neighbours read vol */
 
 #pragma omp parallel
   {
@@ -42,16 +45,23 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
         const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        double sum = 0.0;
+        double sum = 0.0, rsum = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
-          const double r = sqrt(dx * dx + dy * dy + dz * dz);
-          const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
+          const double r = sqrt(dx * dx + dy * dy + dz * dz), hij = 0.5 * (hi + cd.h[q]);
+          const double f = kernel_f(kk, r, hij);
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           sum += vol[j] * vdx * f;
+          if (summation) rsum += m[j] * kernel_w(kk, r, hij);
         }
-        drho[i] = rho[i] * sum;
+        if (summation) {
+          const double rs = rsum + m[i] * kernel_w(kk, 0.0, hi);
+          drho[i] = rs * sum;
+          rhow[i] = rs;
+        } else {
+          drho[i] = rho[i] * sum;
+        }
         p->de[i] = 0.0;
       }
     }

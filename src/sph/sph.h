@@ -32,6 +32,9 @@ struct sph_params {
   double as_n;         /* [-] n */
   int grad_correction; /* normalise the velocity gradient by the kernel-gradient
                           correction matrix (Randles & Libersky 1996) */
+  int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
+                          Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
+                          the continuity equation; see sph_density_rate */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
@@ -52,7 +55,9 @@ size_t sph_cache_bytes(const struct sph_cache *c);
 
 /* First pass of a step of length dt: drho for the reals, from x, v, m, rho, h of
  * all slots (reals and ghosts); fills the cache (if not NULL) with the neighbours it
- * found. With solids (p->solid), also the velocity gradient of each strength
+ * found. With sp->summation (gas only) it also writes the summed density into rho
+ * (the continuity rate drho is still computed: it carries ρ from mid-step to the end
+ * of the step). With solids (p->solid), also the velocity gradient of each strength
  * particle and from it (strength.h) the mid-step deviatoric stress S (written to S),
  * the end-of-step stress S1, the plastic strain, and the deviatoric heating rate
  * S:ε̇/ρ (written to de; 0 for the others). */
