@@ -139,6 +139,7 @@ static size_t add_ghost(struct boundary *b, struct particles *p, size_t src, uin
 {
   size_t g = p->n + p->n_ghost;
   particles_reserve(p, g + 1);
+  particles_touch(p, g);
   if (p->n_ghost + 1 > b->cap) {
     b->cap = 2 * (p->n_ghost + 1) + 1024;
     b->src = hv_realloc(b->src, b->cap * sizeof *b->src, "ghost sources");

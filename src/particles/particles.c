@@ -85,11 +85,13 @@ void particles_free(struct particles *p)
   memset(p, 0, sizeof *p);
 }
 
-/* Grows (or first allocates, from `from` = 0) one component array to newcap, zeroed. */
-static void *grow_array(void *a, size_t from, size_t newcap, size_t s, const char *name)
+/* Grows one component array to newcap. A new array (a == NULL) gets its first `used`
+ * slots zeroed; the capacity beyond the used slots is left unwritten, so the pages
+ * are not touched (they count in no resident set until a slot is used). */
+static void *grow_array(void *a, size_t used, size_t newcap, size_t s, const char *name)
 {
   char *q = hv_realloc(a, newcap * s, name);
-  memset(q + from * s, 0, (newcap - from) * s);
+  if (!a) memset(q, 0, used * s);
   return q;
 }
 
@@ -117,8 +119,7 @@ static void reserve_to(struct particles *p, size_t newcap)
     if (!field_allocated(p, &f[i])) continue;
     size_t s = pf_type_size(f[i].type);
     for (int c = 0; c < f[i].ncomp; c++) {
-      size_t from = *slot[i][c] ? p->cap : 0;
-      *slot[i][c] = grow_array(*slot[i][c], from, newcap, s, f[i].name);
+      *slot[i][c] = grow_array(*slot[i][c], p->touched, newcap, s, f[i].name);
     }
   }
   p->cap = newcap;
@@ -151,7 +152,21 @@ size_t particles_add(struct particles *p, size_t count)
     for (int c = 0; c < f[i].ncomp; c++) memset((char *)f[i].comp[c] + first * s, 0, count * s);
   }
   p->n += count;
+  if (p->n > p->touched) p->touched = p->n;
   return first;
+}
+
+void particles_touch(struct particles *p, size_t slot)
+{
+  if (slot < p->touched) return;
+  struct pfield f[HV_MAX_FIELDS];
+  int nf = particles_fields(p, f);
+  const size_t from = p->touched, count = slot + 1 - from;
+  for (int i = 0; i < nf; i++) {
+    size_t s = pf_type_size(f[i].type);
+    for (int c = 0; c < f[i].ncomp; c++) memset((char *)f[i].comp[c] + from * s, 0, count * s);
+  }
+  p->touched = slot + 1;
 }
 
 void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask)

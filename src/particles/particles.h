@@ -69,6 +69,9 @@ struct particles {
   size_t n;        /* real particles */
   size_t n_ghost;  /* ghosts after the reals */
   size_t cap;      /* allocated length of every array */
+  size_t touched;  /* slots [0, touched) are initialised in every allocated array; the
+                      rest of the capacity is never written, so it costs address space
+                      but no memory */
 #define HV_X(type, name, unit, flags, desc) type *name;
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
@@ -107,6 +110,9 @@ void particles_enable_solid(struct particles *p);
 void particles_free(struct particles *p);
 /* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
 void particles_reserve(struct particles *p, size_t cap);
+/* Zeroes slot `slot` in every allocated array if it has not been used before (ghost
+ * slots: their non-ghost fields are then defined, though never read). */
+void particles_touch(struct particles *p, size_t slot);
 /* Appends `count` zeroed real particles (drops ghosts); returns the first index. */
 size_t particles_add(struct particles *p, size_t count);
 /* Copies every field of slot src into slot dst (either may be a ghost slot). */

@@ -82,7 +82,7 @@ int bench_main(const struct bench_options *o)
   double nb = 0;
   for (size_t i = 0; i < n; i += n / 64 + 1) nb += sph_count_neighbours(&s.p, &s.grid, i);
   nb /= (double)((n - 1) / (n / 64 + 1) + 1);
-  size_t arrays = s.p.cap * particles_bytes_per_particle(&s.p) + nbr_grid_bytes(&s.grid) +
+  size_t arrays = s.p.touched * particles_bytes_per_particle(&s.p) + nbr_grid_bytes(&s.grid) +
                   s.bnd.cap * sizeof *s.bnd.src + sph_cache_bytes(&s.cache);
   long rss = peak_rss_kib();
   printf("particles            %zu (%ld^3 lattice, periodic, %s)\n", n, side,
@@ -95,7 +95,7 @@ int bench_main(const struct bench_options *o)
   printf("us per particle-step %.3f (x %d threads = %.3f core-us)\n",
          1e6 * el / ((double)n * (double)o->steps), omp_get_max_threads(),
          1e6 * el * omp_get_max_threads() / ((double)n * (double)o->steps));
-  printf("bytes per particle   %.0f (solver arrays incl. ghosts and grid), %.0f (peak RSS)\n",
+  printf("bytes per particle   %.0f (solver arrays in use, incl. ghosts and grid), %.0f (peak RSS)\n",
          (double)arrays / (double)n, rss > 0 ? 1024.0 * (double)rss / (double)n : -1.0);
   sim_free(&s);
   cfg_free(c);
