@@ -44,7 +44,7 @@
  * The physics they guard (measured with the same test, extra --set):
  *   γ = 1.4 (r_s −10 %, jump 6):  half-height −6.1 %, peak radius −10.8 %, peak 3.04
  *                                                                      → fails
- *   no viscosity (α = β = 0):     see docs/verification.md              → fails
+ *   no viscosity (α = β = 0):     half-height −39 %, peak radius −50 %  → fails
  *   continuity density (sph.density: continuity): peak radius −8.8 %   → fails */
 #define RADIUS_RTOL 0.055     /* |r_half/r_s − 1| */
 #define RPEAK_RTOL 0.04       /* |r_peak/r_s − 1| */
