@@ -251,12 +251,16 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
     if (rows[k].note[0])
       afile_printf(&af, err, "- %s, %s: %s\n", rows[k].cas, rows[k].quantity, rows[k].note);
   afile_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
-  for (int k = 0; k < ncase; k++)
-    afile_printf(&af, err, "| %s | %ld | %s%.0f | %s | ![%s](%s/final.png) |\n", cs[k].name,
-                 cs[k].particles, isnan(cs[k].runtime) ? "(earlier) " : "",
-                 isnan(cs[k].runtime) ? 0.0 : cs[k].runtime,
-                 cs[k].status == 0 ? "ok" : cs[k].status < 0 ? "not run" : "failed", cs[k].name,
+  for (int k = 0; k < ncase; k++) {
+    char rt[64];
+    if (isnan(cs[k].runtime)) snprintf(rt, sizeof rt, "(earlier run)");
+    else snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
+    afile_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
+                 cs[k].particles, rt,
+                 cs[k].status == 0 ? "ok" : cs[k].status < 0 ? "not run"
+                 : cs[k].status == HV_EXIT_INTERRUPTED ? "interrupted" : "failed", cs[k].name,
                  cs[k].name);
+  }
   return afile_commit(&af, err);
 }
 
@@ -317,8 +321,8 @@ int validate_main(int argc, char **argv)
   }
   static struct val_row rows[VAL_MAX_ROWS];
   static struct val_case cs[VAL_MAX_CASES];
-  int nrows = 0, ncase = 0, failed = 0;
-  for (int j = 0; j < nnames && ncase < VAL_MAX_CASES; j++) {
+  int nrows = 0, ncase = 0, failed = 0, interrupted = 0;
+  for (int j = 0; j < nnames && ncase < VAL_MAX_CASES && !interrupted; j++) {
     int want = nonly == 0;
     for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
     if (!want) continue;
@@ -329,6 +333,9 @@ int validate_main(int argc, char **argv)
     char dir[4200], mpath[4300], png[4300];
     snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
     if (!norun && run_case(casedir, names[j], dir, scale, threads, vc)) failed++;
+    /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
+       too: the tables are written for the cases so far */
+    interrupted = vc->status == HV_EXIT_INTERRUPTED;
     if (norun) vc->status = 0;
     vc->particles = particles_of(dir);
     snprintf(png, sizeof png, "%s/final.png", dir);
@@ -374,9 +381,10 @@ int validate_main(int argc, char **argv)
   }
   cfg_free(ref);
   if (write_reports(outdir, rows, nrows, cs, ncase, scale, &err)) goto fail;
-  fprintf(stderr, "hvsph validate: %d case(s), %d failed; results in %s/validation.md and "
-                  "validation.csv\n", ncase, failed, outdir);
-  return failed ? HV_EXIT_RUN : 0;
+  fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
+                  "validation.csv\n", ncase, failed - interrupted,
+          interrupted ? ", interrupted (the later cases were not run)" : "", outdir);
+  return interrupted ? HV_EXIT_INTERRUPTED : failed ? HV_EXIT_RUN : 0;
 fail_ref:
   cfg_free(ref);
 fail:
