@@ -335,6 +335,11 @@ static void test_bad_input(void)
   bad_input("unknown_library", variant(3, "  gas: {library: unobtainium}"), NULL,
             (const char *const[]){"unknown_library.yaml:3: ", "materials.gas.library",
                                   "unobtainium", NULL});
+  /* summation density with strength: refused, naming the key */
+  bad_input("summation_solid",
+            variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"), NULL,
+            (const char *const[]){"summation_solid.yaml:4: sph.density: ",
+                                  "summation is for cases without strength", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
