@@ -4,6 +4,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,6 +51,9 @@ void nbr_grid_free(struct nbr_grid *g)
   free(g->nbr_list);
   free(g->hkey);
   free(g->hval);
+  free(g->row_cell);
+  free(g->row_x);
+  free(g->row_start);
   free(g->key);
   free(g->key2);
   free(g->idx2);
@@ -138,44 +142,6 @@ static int32_t hash_find(const struct nbr_grid *g, uint64_t key)
   return -1;
 }
 
-static void build_cells(struct nbr_grid *g)
-{
-  size_t n = g->n, nc = 0;
-  for (size_t i = 0; i < n; i++)
-    if (i == 0 || g->key[i] != g->key[i - 1]) nc++;
-  if (nc + 1 > g->ccap) {
-    size_t c = nc + nc / 4 + 64;
-    g->cell_start = hv_realloc(g->cell_start, (c + 1) * sizeof *g->cell_start, "cells");
-    g->cell_key = hv_realloc(g->cell_key, c * sizeof *g->cell_key, "cells");
-    g->cell_h = hv_realloc(g->cell_h, c * sizeof *g->cell_h, "cells");
-    g->cell_lo = hv_realloc(g->cell_lo, 3 * c * sizeof *g->cell_lo, "cells");
-    g->nbr_start = hv_realloc(g->nbr_start, (c + 1) * sizeof *g->nbr_start, "cells");
-    g->ccap = c;
-  }
-  nc = 0;
-  for (size_t i = 0; i < n; i++)
-    if (i == 0 || g->key[i] != g->key[i - 1]) {
-      g->cell_start[nc] = (uint32_t)i;
-      g->cell_key[nc++] = g->key[i];
-    }
-  g->cell_start[nc] = (uint32_t)n;
-  g->ncells = nc;
-  size_t hcap = 16;
-  while (hcap < 2 * nc) hcap *= 2;
-  if (hcap != g->hcap) {
-    g->hkey = hv_realloc(g->hkey, hcap * sizeof *g->hkey, "cell hash");
-    g->hval = hv_realloc(g->hval, hcap * sizeof *g->hval, "cell hash");
-    g->hcap = hcap;
-  }
-  for (size_t s = 0; s < hcap; s++) g->hval[s] = -1;
-  for (size_t c = 0; c < nc; c++) {
-    size_t s = hash64(g->cell_key[c]) & (hcap - 1);
-    while (g->hval[s] >= 0) s = (s + 1) & (hcap - 1);
-    g->hkey[s] = g->cell_key[c];
-    g->hval[s] = (int32_t)c;
-  }
-}
-
 /* Cell coordinates back from a Morton key. */
 static uint64_t compact3(uint64_t v)
 {
@@ -188,6 +154,71 @@ static uint64_t compact3(uint64_t v)
   return v;
 }
 
+/* The rows of the grid (see grid.h). The particles' key arrays are free by now and
+ * serve as scratch. */
+static void build_rows(struct nbr_grid *g)
+{
+  const size_t nc = g->ncells;
+  uint64_t *rk = g->key;
+  for (size_t c = 0; c < nc; c++) {
+    const uint64_t k = g->cell_key[c];
+    rk[c] = compact3(k >> 2) << (2 * GRID_BITS) | compact3(k >> 1) << GRID_BITS | compact3(k);
+    g->row_cell[c] = (uint32_t)c;
+  }
+  radix_sort(rk, g->row_cell, g->key2, g->idx2, nc, 3 * GRID_BITS);
+  size_t nr = 0;
+  for (size_t s = 0; s < nc; s++) {
+    g->row_x[s] = (uint32_t)(rk[s] & (GRID_MAXC - 1));
+    if (s == 0 || rk[s] >> GRID_BITS != rk[s - 1] >> GRID_BITS) g->row_start[nr++] = (uint32_t)s;
+  }
+  g->row_start[nr] = (uint32_t)nc;
+  g->nrows = nr;
+  size_t hcap = 16;
+  while (hcap < 2 * nr) hcap *= 2;
+  if (hcap != g->hcap) {
+    g->hkey = hv_realloc(g->hkey, hcap * sizeof *g->hkey, "row hash");
+    g->hval = hv_realloc(g->hval, hcap * sizeof *g->hval, "row hash");
+    g->hcap = hcap;
+  }
+  for (size_t s = 0; s < hcap; s++) g->hval[s] = -1;
+  for (size_t r = 0; r < nr; r++) {
+    const uint64_t key = rk[g->row_start[r]] >> GRID_BITS;
+    size_t s = hash64(key) & (hcap - 1);
+    while (g->hval[s] >= 0) s = (s + 1) & (hcap - 1);
+    g->hkey[s] = key;
+    g->hval[s] = (int32_t)r;
+  }
+}
+
+static void build_cells(struct nbr_grid *g)
+{
+  size_t n = g->n, nc = 0;
+  for (size_t i = 0; i < n; i++)
+    if (i == 0 || g->key[i] != g->key[i - 1]) nc++;
+  if (nc + 1 > g->ccap) {
+    size_t c = nc + nc / 4 + 64;
+    g->cell_start = hv_realloc(g->cell_start, (c + 1) * sizeof *g->cell_start, "cells");
+    g->cell_key = hv_realloc(g->cell_key, c * sizeof *g->cell_key, "cells");
+    g->cell_h = hv_realloc(g->cell_h, c * sizeof *g->cell_h, "cells");
+    g->cell_lo = hv_realloc(g->cell_lo, 3 * c * sizeof *g->cell_lo, "cells");
+    g->nbr_start = hv_realloc(g->nbr_start, (c + 1) * sizeof *g->nbr_start, "cells");
+    g->row_cell = hv_realloc(g->row_cell, c * sizeof *g->row_cell, "cell rows");
+    g->row_x = hv_realloc(g->row_x, c * sizeof *g->row_x, "cell rows");
+    g->row_start = hv_realloc(g->row_start, (c + 1) * sizeof *g->row_start, "cell rows");
+    g->ccap = c;
+  }
+  nc = 0;
+  for (size_t i = 0; i < n; i++)
+    if (i == 0 || g->key[i] != g->key[i - 1]) {
+      g->cell_start[nc] = (uint32_t)i;
+      g->cell_key[nc++] = g->key[i];
+    }
+  g->cell_start[nc] = (uint32_t)n;
+  g->ncells = nc;
+  build_rows(g);
+}
+
+
 /* Visits the candidate neighbour cells of cell c in a fixed order; stores them in
  * out (if not NULL) and returns their count. */
 static uint32_t cell_neighbours(const struct nbr_grid *g, size_t c, double hglob, int32_t *out)
@@ -198,21 +229,33 @@ static uint32_t cell_neighbours(const struct nbr_grid *g, size_t c, double hglob
   int R = (int)ceil((hc + hglob) / cell);
   if (R < 1) R = 1;
   uint32_t m = 0;
+  /* row by row: only occupied cells are visited, in the order of a scan over
+     dk, dj, di (so the neighbour order, and with it every sum, is as before) */
   for (int dk = -R; dk <= R; dk++)
-    for (int dj = -R; dj <= R; dj++)
-      for (int di = -R; di <= R; di++) {
-        int64_t a = ci + di, b = cj + dj, d = ck + dk;
-        if (a < 0 || b < 0 || d < 0) continue;
-        int32_t nc = hash_find(g, morton((uint64_t)a, (uint64_t)b, (uint64_t)d));
-        if (nc < 0) continue;
-        double gi = abs(di) > 1 ? (abs(di) - 1) * cell : 0.0;
-        double gj = abs(dj) > 1 ? (abs(dj) - 1) * cell : 0.0;
-        double gk = abs(dk) > 1 ? (abs(dk) - 1) * cell : 0.0;
-        double reach = hc + g->cell_h[nc];
+    for (int dj = -R; dj <= R; dj++) {
+      const int64_t b = cj + dj, d = ck + dk;
+      if (b < 0 || d < 0) continue;
+      const int32_t r = hash_find(g, (uint64_t)d << GRID_BITS | (uint64_t)b);
+      if (r < 0) continue;
+      uint32_t lo = g->row_start[r], hi = g->row_start[r + 1];
+      const int64_t xmin = ci - R, xmax = ci + R;
+      while (lo < hi) {   /* first cell with x >= xmin */
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if ((int64_t)g->row_x[mid] < xmin) lo = mid + 1;
+        else hi = mid;
+      }
+      const double gj = abs(dj) > 1 ? (abs(dj) - 1) * cell : 0.0;
+      const double gk = abs(dk) > 1 ? (abs(dk) - 1) * cell : 0.0;
+      for (uint32_t s = lo; s < g->row_start[r + 1] && (int64_t)g->row_x[s] <= xmax; s++) {
+        const int32_t nc = (int32_t)g->row_cell[s];
+        const int64_t di = (int64_t)g->row_x[s] - ci;
+        const double gi = llabs(di) > 1 ? (double)(llabs(di) - 1) * cell : 0.0;
+        const double reach = hc + g->cell_h[nc];
         if (gi * gi + gj * gj + gk * gk >= reach * reach) continue;
         if (out) out[m] = nc;
         m++;
       }
+    }
   return m;
 }
 
@@ -233,17 +276,44 @@ static void link_cells(struct nbr_grid *g, const double *h)
     g->cell_lo[3 * c + 1] = g->origin[1] + (double)compact3(k >> 1) * g->cell;
     g->cell_lo[3 * c + 2] = g->origin[2] + (double)compact3(k >> 2) * g->cell;
   }
-#pragma omp parallel for schedule(dynamic, 64)
-  for (size_t c = 0; c < g->ncells; c++) g->nbr_start[c + 1] = cell_neighbours(g, c, hglob, NULL);
+  /* one search per cell: each thread appends its cells' lists to its own buffer, then
+     the lists are copied in cell order (the result does not depend on the threads) */
+  const size_t nc = g->ncells;
+  const int nt = omp_get_max_threads();
+  struct tbuf { int32_t *a; size_t n, cap; } *tb = hv_calloc((size_t)nt, sizeof *tb, "cell lists");
+  size_t *where = hv_malloc((nc + 1) * sizeof *where, "cell lists");   /* thread << 40 | offset */
+#pragma omp parallel
+  {
+    struct tbuf *b = &tb[omp_get_thread_num()];
+#pragma omp for schedule(dynamic, 64)
+    for (size_t c = 0; c < nc; c++) {
+      int R = (int)ceil((g->cell_h[c] + hglob) / g->cell);
+      if (R < 1) R = 1;
+      const size_t worst = (size_t)(2 * R + 1) * (size_t)(2 * R + 1) * (size_t)(2 * R + 1);
+      if (b->n + worst > b->cap) {
+        b->cap = 2 * (b->n + worst) + 4096;
+        b->a = hv_realloc(b->a, b->cap * sizeof *b->a, "cell lists");
+      }
+      const uint32_t m = cell_neighbours(g, c, hglob, b->a + b->n);
+      where[c] = (size_t)omp_get_thread_num() << 40 | b->n;
+      g->nbr_start[c + 1] = m;
+      b->n += m;
+    }
+  }
   g->nbr_start[0] = 0;
-  for (size_t c = 0; c < g->ncells; c++) g->nbr_start[c + 1] += g->nbr_start[c];
-  size_t total = g->nbr_start[g->ncells];
+  for (size_t c = 0; c < nc; c++) g->nbr_start[c + 1] += g->nbr_start[c];
+  size_t total = g->nbr_start[nc];
   if (total > g->nbr_cap) {
     g->nbr_cap = total + total / 4 + 64;
     g->nbr_list = hv_realloc(g->nbr_list, g->nbr_cap * sizeof *g->nbr_list, "neighbour cells");
   }
-#pragma omp parallel for schedule(dynamic, 64)
-  for (size_t c = 0; c < g->ncells; c++) cell_neighbours(g, c, hglob, g->nbr_list + g->nbr_start[c]);
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < nc; c++)
+    memcpy(g->nbr_list + g->nbr_start[c], tb[where[c] >> 40].a + (where[c] & (((size_t)1 << 40) - 1)),
+           (g->nbr_start[c + 1] - g->nbr_start[c]) * sizeof *g->nbr_list);
+  for (int t = 0; t < nt; t++) free(tb[t].a);
+  free(tb);
+  free(where);
 }
 
 
@@ -293,5 +363,6 @@ size_t nbr_grid_bytes(const struct nbr_grid *g)
   return g->wcap * (sizeof *g->order + 2 * sizeof *g->key + sizeof *g->idx2) +
          g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + 4 * sizeof *g->cell_h +
                     sizeof *g->nbr_start) + g->nbr_cap * sizeof *g->nbr_list +
-         g->hcap * (sizeof *g->hkey + sizeof *g->hval);
+         g->hcap * (sizeof *g->hkey + sizeof *g->hval) +
+         g->ccap * (2 * sizeof *g->row_cell + sizeof *g->row_start);
 }
