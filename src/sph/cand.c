@@ -27,13 +27,9 @@ void cand_free_all(struct cand *cd)
   free(cd->hc);
 }
 
-void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
-                        const struct particles *p)
+/* Room for the n candidates of a cell. */
+static void cand_reserve(struct cand *cd, size_t n)
 {
-  const int32_t *nb = g->nbr_list + g->nbr_start[c];
-  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
-  size_t n = 0;
-  for (uint32_t k = 0; k < nnb; k++) n += g->cell_start[nb[k] + 1] - g->cell_start[nb[k]];
   if (n > cd->cap) {
     cand_free_arrays(cd);
     cd->cap = n + n / 2 + 64;
@@ -45,6 +41,36 @@ void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
     cd->sel = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
     cd->d = hv_malloc(cd->cap * sizeof(double), "candidates");
   }
+}
+
+static size_t cand_count(const struct nbr_grid *g, size_t c)
+{
+  const int32_t *nb = g->nbr_list + g->nbr_start[c];
+  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
+  size_t n = 0;
+  for (uint32_t k = 0; k < nnb; k++) n += g->cell_start[nb[k] + 1] - g->cell_start[nb[k]];
+  return n;
+}
+
+/* Only the slots (cd->j) of the candidates of cell c, in the order cand_gather uses. */
+static void cand_gather_slots(struct cand *cd, const struct nbr_grid *g, size_t c)
+{
+  cand_reserve(cd, cand_count(g, c));
+  const int32_t *nb = g->nbr_list + g->nbr_start[c];
+  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
+  size_t q = 0;
+  for (uint32_t k = 0; k < nnb; k++)
+    for (uint32_t jj = g->cell_start[nb[k]]; jj < g->cell_start[nb[k] + 1]; jj++)
+      cd->j[q++] = g->order[jj];
+  cd->n = q;
+}
+
+void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
+                        const struct particles *p)
+{
+  const int32_t *nb = g->nbr_list + g->nbr_start[c];
+  const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
+  cand_reserve(cd, cand_count(g, c));
   if (nnb + 1 > cd->ccap) {
     cd->ccap = nnb + 32;
     cd->off = hv_realloc(cd->off, cd->ccap * sizeof *cd->off, "candidate cells");
@@ -179,12 +205,18 @@ size_t cand_neighbours(struct cand *cd, int *gathered, const struct nbr_grid *g,
                        uint32_t ii, const struct particles *p, const struct sph_cache *load,
                        const struct sph_cache *store)
 {
+  const uint32_t slot = ii - g->cell_start[c], i = g->order[ii];
+  if (load && load->valid) {   /* the stored selection needs only the candidates' slots */
+    if (!*gathered) {
+      cand_gather_slots(cd, g, c);
+      *gathered = 1;
+    }
+    return cache_load(load, c, slot, cd->sel);
+  }
   if (!*gathered) {
     cand_gather(cd, g, c, p);
     *gathered = 1;
   }
-  const uint32_t slot = ii - g->cell_start[c], i = g->order[ii];
-  if (load && load->valid) return cache_load(load, c, slot, cd->sel);
   const size_t nsel = cand_select(cd, i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
   if (store) cache_store(store, c, slot, cd->sel, nsel);
   return nsel;

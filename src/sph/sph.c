@@ -104,8 +104,8 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
-          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + cd.h[q]);
+          const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
+          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + h[j]);
           const double f = kernel_f(kk, sqrt(r2), hij);
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           double visc = 0.0;

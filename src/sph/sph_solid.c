@@ -187,6 +187,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const size_t n = p->n;
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho, *pr = p->p, *cs = p->cs;
+  const double *px = p->x[0], *py = p->x[1], *pz = p->x[2], *ph = p->h;
   const int32_t *body = p->body;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
@@ -219,8 +220,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
-          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + cd.h[q]);
+          const double dx = xi - px[j], dy = yi - py[j], dz = zi - pz[j];
+          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + ph[j]);
           const double r = sqrt(r2), f = kernel_f(kk, r, hij);
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           double visc = 0.0;
