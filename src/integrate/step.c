@@ -26,7 +26,7 @@ static int cmp_double(const void *a, const void *b)
 /* The h that sizes the cells: the 10th percentile of the reals' h (from an evenly
  * spaced sample of at most 4096), so that a few small particles (a projectile in a
  * gas-filled vessel) do not make the cells of everything else tiny. */
-static double hmin_reals(const struct particles *p)
+static double cell_h_reals(const struct particles *p)
 {
   enum { NS = 4096 };
   double s[NS];
@@ -89,7 +89,7 @@ static int build_neighbours(struct sim *s, struct hv_error *err)
     p->n_ghost = 0;
   }
   const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
-  const double cell = nbr_cell_size(hmin_reals(p), hmax);
+  const double cell = nbr_cell_size(cell_h_reals(p), hmax);
   if (nbr_grid_build(&s->grid, xs, p->h, p->n + p->n_ghost, cell, msg, sizeof msg))
     return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s: neighbour grid: %s", s->t, msg);
   return 0;
@@ -186,7 +186,7 @@ static void reorder(struct sim *s)
   struct particles *p = &s->p;
   uint32_t *order = hv_malloc((p->n + 1) * sizeof *order, "reorder");
   const double *xs[3] = {p->x[0], p->x[1], p->x[2]};
-  if (nbr_sort_order(xs, p->n, nbr_cell_size(hmin_reals(p), step_hmax(p)), order) == 0)
+  if (nbr_sort_order(xs, p->n, nbr_cell_size(cell_h_reals(p), step_hmax(p)), order) == 0)
     particles_permute(p, order);
   free(order);
 }

@@ -32,7 +32,8 @@ static inline double kernel_w(enum kernel_kind k, double r, double h)
 }
 
 /* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0.
- * One division (the loops' hot path). */
+ * One division, two in the outer shell 1 ≤ q < 2 (h/r); computing 1/h and 1/r
+ * from one 1/(r h) was measured slower (docs/performance.md). */
 static inline double kernel_f(enum kernel_kind k, double r, double h)
 {
   const double ih = 1.0 / h, q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;
