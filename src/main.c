@@ -7,6 +7,7 @@
 #include "material/material.h"
 #include "render/render.h"
 #include "run/bench.h"
+#include "run/remeasure.h"
 #include "run/run.h"
 #include "run/validate.h"
 #include "version.h"
@@ -27,6 +28,9 @@ static void usage(FILE *f)
           "      the material library: every entry, or one entry's parameters with units\n"
           "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
           "      simulated flash radiograph or particle picture (hvsph render --help)\n"
+          "  hvsph measure RUNDIR [--case FILE]\n"
+          "      take a run's measurements again from its particle snapshots\n"
+          "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"
           "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--no-run]\n"
           "      run the paper's cases (examples/paper, particle counts x S) and compare\n"
           "      with its experiments and simulations: DIR/validation.md and .csv\n"
@@ -126,6 +130,7 @@ int main(int argc, char **argv)
   if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "render")) return render_main(argc - 2, argv + 2);
+  if (!strcmp(cmd, "measure")) return remeasure_main(argc - 2, argv + 2);
   fprintf(stderr, "hvsph: unknown command '%s' (see hvsph --help)\n", cmd);
   return HV_EXIT_USAGE;
 }

@@ -245,6 +245,8 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->damage_min = 1.0;
   par->eps_p_min = 0.1;
   par->crater_min = s;
+  par->ring = 2.0 * s;
+  par->area_fraction = 0.5;
   par->mask = NULL;
 }
 
@@ -256,9 +258,12 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   if (geom_ok(g, "backwall measurement", err)) return -1;
   if (!(par->tol > 0 && isfinite(par->tol) && par->cell > 0 && isfinite(par->cell) &&
         par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
-        isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min)))
-    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell (> 0), footprint, "
-                        "margin_front and crater_min (>= 0) must be finite");
+        isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
+        par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
+        par->area_fraction <= 1))
+    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
+                        "footprint, margin_front and crater_min (>= 0) must be finite and "
+                        "area_fraction in (0, 1]");
   const double xlo = g->x0 - par->margin_front, fp = par->footprint, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (size_t i = 0; i < p->n; i++) {
@@ -285,12 +290,17 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   const int nu = (int)ceil((hi[0] - lo[0]) / c) > 0 ? (int)ceil((hi[0] - lo[0]) / c) : 1;
   const int nw = (int)ceil((hi[1] - lo[1]) / c) > 0 ? (int)ceil((hi[1] - lo[1]) / c) : 1;
   double *xf = hv_malloc((size_t)nu * (size_t)nw * sizeof *xf, "backwall columns");
-  for (size_t k = 0; k < (size_t)nu * (size_t)nw; k++) xf[k] = INFINITY;
+  unsigned char *hit = hv_malloc((size_t)nu * (size_t)nw, "backwall columns");
+  for (size_t k = 0; k < (size_t)nu * (size_t)nw; k++) {
+    xf[k] = INFINITY;
+    hit[k] = 0;
+  }
   /* In a half model a column with centre w >= 0 is never nearer a mirrored particle
    * (u, −z) than the particle itself, so the mirror images add nothing. */
   for (size_t i = 0; i < p->n; i++) {
     if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
     const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i];
+    const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
     int a0 = (int)ceil((u - tol - lo[0]) / c - 0.5), a1 = (int)floor((u + tol - lo[0]) / c - 0.5);
     int b0 = (int)ceil((w - tol - lo[1]) / c - 0.5), b1 = (int)floor((w + tol - lo[1]) / c - 0.5);
     if (a0 < 0) a0 = 0;
@@ -302,27 +312,53 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       for (int a = a0; a <= a1; a++) {
         const double du = lo[0] + ((double)a + 0.5) * c - u;
         const size_t k = (size_t)b * (size_t)nu + (size_t)a;
-        if (du * du + dw * dw <= tol * tol && x < xf[k]) xf[k] = x;
+        if (du * du + dw * dw > tol * tol) continue;
+        if (x < xf[k]) xf[k] = x;
+        if (dmg) hit[k] = 1;
       }
     }
   }
+  /* rings around the axis: columns counted, and damaged columns among them */
+  const double rmax = hypot(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
+  const size_t nring = (size_t)(rmax / par->ring) + 2;
+  size_t *ring_n = hv_calloc(2 * nring, sizeof *ring_n, "backwall rings");
   double dmax = -INFINITY;
   for (int b = 0; b < nw; b++)
     for (int a = 0; a < nu; a++) {
-      const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
-      if (!isfinite(x)) continue;
-      const double d = x - fp - g->x0;
+      const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+      const double x = xf[k];
       const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
-      if (d > dmax) {
-        dmax = d;
-        out->crater_pos[0] = u + g->yc;
-        out->crater_pos[1] = w;
+      const double r = hypot(u, w);
+      const size_t q = (size_t)(r / par->ring);
+      int damaged = !isfinite(x) || hit[k];   /* a hole, or damaged material */
+      if (isfinite(x)) {
+        const double d = x - fp - g->x0;
+        if (d > dmax) {
+          dmax = d;
+          out->crater_pos[0] = u + g->yc;
+          out->crater_pos[1] = w;
+        }
+        if (d > par->crater_min) {
+          out->r_crater = fmax(out->r_crater, r);
+          damaged = 1;
+        }
       }
-      if (d > par->crater_min) out->r_crater = fmax(out->r_crater, hypot(u, w));
+      if (q < nring) {
+        ring_n[2 * q]++;
+        ring_n[2 * q + 1] += (size_t)damaged;
+      }
     }
   free(xf);
+  free(hit);
   out->crater_depth = fmax(dmax, 0.0);
-  out->r_damage = fmax(out->r_crater, out->r_damage_particles);
+  out->r_damage = 0.0;
+  for (size_t q = 0; q < nring; q++) {
+    if (!ring_n[2 * q] ||
+        (double)ring_n[2 * q + 1] < par->area_fraction * (double)ring_n[2 * q])
+      break;
+    out->r_damage = (double)(q + 1) * par->ring;
+  }
+  free(ring_n);
   return 0;
 }
 

@@ -192,8 +192,15 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  *    untouched wall far from the impact); crater_pos its column (y, z).
  * r_crater: the largest radial distance ρ of a column cratered deeper than crater_min.
  * r_damage_particles: the largest ρ of a wall particle with damage >= damage_min or
- *    plastic strain eps_p >= eps_p_min (solid fields; 0 when the store has none).
- * r_damage: the radius of the damaged area, max(r_crater, r_damage_particles).
+ *    plastic strain eps_p >= eps_p_min (solid fields; 0 when the store has none) —
+ *    the extent of any damage, however sparse.
+ * r_damage: the radius of the damaged area around the axis. A column is damaged when
+ *    it is cratered deeper than crater_min, holds a damaged particle (within tol), or
+ *    holds no wall material (a hole). Rings of width `ring` around the axis are swept
+ *    outwards from ρ = 0; a ring is damaged when at least `area_fraction` of its
+ *    columns are; r_damage is the outer radius of the last ring of the unbroken run of
+ *    damaged rings from the centre (0 when the first is not). Scattered damage far from
+ *    the impact (plate edges at a wall, reflected waves) does not extend it.
  * m_damaged: mass of the damaged particles (full picture). */
 struct meas_backwall_params {
   double tol;           /* [m] (default Δ) */
@@ -203,6 +210,8 @@ struct meas_backwall_params {
   double damage_min;    /* (default 1: split) */
   double eps_p_min;     /* (default 0.1) */
   double crater_min;    /* [m] (default Δ) */
+  double ring;          /* [m] ring width for r_damage (default 2Δ) */
+  double area_fraction; /* damaged share of a ring's columns, in (0, 1] (default 0.5) */
   const unsigned char *mask;  /* optional [p->n] */
 };
 struct meas_backwall {

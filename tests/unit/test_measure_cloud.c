@@ -184,13 +184,19 @@ static void test_backwall(void)
         "(r_crater %.2fΔ)", r.r_crater / S);
   CHECK(fabs(r.r_damage_particles - 19 * S) <= S, "damaged particles out to 19Δ: %.3fΔ",
         r.r_damage_particles / S);
-  CHECK_CLOSE(r.r_damage, fmax(r.r_crater, r.r_damage_particles), 0.0, "damage radius = max");
+  /* the damaged area: the disc of damage to 15.5Δ; the plastic ring at 18.2..19Δ lies
+     beyond an undamaged gap of 2.7Δ and is not part of it */
+  CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
+        "damaged area: the disc to 15.5Δ, not the separate plastic ring: r_damage %.2fΔ "
+        "(ring %.1fΔ)", r.r_damage / S, par.ring / S);
   CHECK(r.n_damaged > 0 && fabs(r.m_damaged - 2e-6 * (double)r.n_damaged) < 1e-9 * r.m_damaged,
         "damaged mass mirrored: %zu particles", r.n_damaged);
   par.eps_p_min = 0.5;
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 &&
             fabs(r.r_damage_particles - 15.5 * S) <= S,
         "plastic strain below the threshold: damage radius 15.5Δ (%.3fΔ)", r.r_damage_particles / S);
+  CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
+        "... and the damaged area ends at 15.5Δ: r_damage %.2fΔ", r.r_damage / S);
   /* ejecta flying back out in front of the wall are not wall */
   const size_t e = add_particle(&p, x0 - 0.05, 0.0, 0.5 * S, 1e-6, 4);
   p.damage[e] = 1.0;
@@ -198,6 +204,25 @@ static void test_backwall(void)
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.crater_depth - 4.4 * S) <= S &&
             r.r_damage_particles < 16.5 * S,
         "ejecta beyond margin_front are ignored");
+  /* scattered damage outside the disc (through the thickness at 1 lattice site (y, z) in
+     7 beyond 16Δ, as plate edges at a rigid wall give; each marks the columns within
+     tol = Δ, so about 1 − (6/7)^π = 38 % of the columns): the extent of damage reaches
+     the edge, the damaged area does not */
+  for (size_t i = 0; i < p.n; i++) {
+    const long a = lround(p.x[1][i] / S - 0.5), b = lround(p.x[2][i] / S - 0.5);
+    if (hypot(p.x[1][i], p.x[2][i]) > 16 * S && ((3 * a + 5 * b) % 7 + 7) % 7 == 0)
+      p.damage[i] = 1.0;
+  }
+  int rc = measure_backwall(&p, &g, &par, &r, &err);
+  CHECK(rc == 0 && r.r_damage_particles > 29 * S &&
+            r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
+        "scattered damage: extent %.2fΔ, damaged area still %.2fΔ", r.r_damage_particles / S,
+        r.r_damage / S);
+  par.area_fraction = 0.25;   /* the scattered damage now counts as an area */
+  rc = measure_backwall(&p, &g, &par, &r, &err);
+  CHECK(rc == 0 && r.r_damage > 29 * S,
+        "... unless area_fraction is lowered below its share: %.2fΔ", r.r_damage / S);
+  par.area_fraction = 0.5;
   particles_free(&p);
 
   /* the whole wall bulged by 2Δ: measured from the original face, the depth grows by 2Δ */
@@ -206,6 +231,26 @@ static void test_backwall(void)
   meas_backwall_defaults(&par, &g);
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.crater_depth - 6.4 * S) <= S,
         "bulged wall: depth from the original face %.3fΔ", r.crater_depth / S);
+  particles_free(&p);
+
+  /* a wall perforated by a hole of radius 5Δ, no other damage: the hole is the area */
+  particles_init(&p);
+  for (int k = 0; k < 20; k++)
+    for (int j = -20; j < 20; j++)
+      for (int i = 0; i < 4; i++) {
+        const double y = (j + 0.5) * S, z = (k + 0.5) * S;
+        if (hypot(y, z) < 5 * S) continue;
+        add_particle(&p, x0 + (i + 0.5) * S, y, z, 1e-6, 4);
+      }
+  meas_backwall_defaults(&par, &g);
+  rc = measure_backwall(&p, &g, &par, &r, &err);
+  CHECK(rc == 0 && r.r_damage >= 4 * S - 1e-12 &&
+            r.r_damage <= 5 * S + par.ring && r.crater_depth < 1e-12,
+        "perforated wall: the hole is the damaged area (%.2fΔ for radius 5Δ)", r.r_damage / S);
+  par.ring = 0;
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "ring 0: an error");
+  meas_backwall_defaults(&par, &g);
   particles_free(&p);
 
   /* an intact wall: no crater, no damage, no solid fields needed */

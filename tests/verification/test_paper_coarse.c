@@ -4,7 +4,9 @@
  * `hvsph validate --no-run` over it. Checks: exit statuses; the plate is perforated
  * and its hole is larger than the projectile's diameter (13.5 mm: at 3 km/s a steel
  * sphere punches a hole wider than itself, the paper's Fig. 1) but smaller than 3
- * diameters; the radiograph PNG and validation.md exist. */
+ * diameters; the radiograph PNG and validation.md exist; `hvsph measure` on the run's
+ * folder rewrites measurements.csv with the same rows (the snapshots are written
+ * round-trip exact), and refuses a folder without snapshots or a case (exit 2). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +40,26 @@ int main(void)
   double perf = measured(path, "perforated"), d = measured(path, "hole_diameter");
   CHECK(perf == 1.0, "the plate is perforated");
   CHECK(d > 13.5e-3 && d < 3 * 13.5e-3, "hole diameter %.2f mm between 13.5 and 40.5 mm", 1e3 * d);
+  /* measurements taken again from the snapshots: the same file, row for row */
+  char *before = test_slurp(path, NULL);
+  snprintf(cmd, sizeof cmd, "%s measure %s/validation/bumper-1 --quiet", test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  char *after = test_slurp(path, NULL);
+  const char *b1 = before ? strchr(before, '\n') : NULL, *a1 = after ? strchr(after, '\n') : NULL;
+  CHECK(st == 0 && b1 && a1 && !strcmp(b1, a1),   /* the first line names the version */
+        "hvsph measure reproduces the run's measurements.csv (exit %d): %s", st, out);
+  free(before);
+  free(after);
+  snprintf(cmd, sizeof cmd, "rm -rf %s/empty && mkdir %s/empty && %s measure %s/empty --quiet",
+           tmp, tmp, test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "used_parameters.yaml"), "measure: a folder without a case: exit %d: %s",
+        st, out);
+  snprintf(cmd, sizeof cmd, "%s measure %s/empty --case %s/examples/paper/bumper-1.yaml --quiet",
+           test_bin(), tmp, test_source_dir());
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "no particles_NNNNN.csv"), "measure: a folder without snapshots: "
+        "exit %d: %s", st, out);
   snprintf(cmd, sizeof cmd, "%s render %s/validation/bumper-1/particles_00002.csv -o %s/r.png "
            "--mode radiograph --axis z", test_bin(), tmp, tmp);
   st = test_run(cmd, out, sizeof out);

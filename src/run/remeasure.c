@@ -1,0 +1,191 @@
+/* remeasure.c — `hvsph measure RUNDIR [--case FILE]`: the measurements of a finished
+ * (or interrupted) run taken again from its particle snapshots.
+ *
+ * A run writes measurements.csv as it goes; when the definitions of the measurements
+ * change (docs/measurements.md), or a run was made without them, this command
+ * re-reads the run's own used_parameters.yaml (every value it ran with), rebuilds the
+ * bodies' geometry from it (original faces, thicknesses, spacings), loads every
+ * particles_NNNNN.csv of the folder in turn and writes measurements.csv and the
+ * fragments_NNNNN.csv files anew (each to a temporary name, then renamed).
+ *
+ * The backwall's peak pressure at the centre is a running maximum over every time
+ * step, which snapshots cannot give; the value of the run's earlier measurements.csv
+ * at the same time is kept when it is larger than the maximum over the snapshots.
+ */
+#include "run/remeasure.h"
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config/config.h"
+#include "io/snapshot.h"
+#include "run/measure_run.h"
+#include "run/run.h"
+#include "run/sim.h"
+
+struct snap {
+  int k;
+  char name[64];
+};
+
+static int snap_cmp(const void *a, const void *b)
+{
+  const struct snap *x = a, *y = b;
+  return (x->k > y->k) - (x->k < y->k);
+}
+
+/* particles_NNNNN.csv of dir, sorted by number; returns the count or -1 */
+static int list_snapshots(const char *dir, struct snap **out, struct hv_error *err)
+{
+  *out = NULL;
+  DIR *d = opendir(dir);
+  if (!d) return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
+  struct dirent *e;
+  int n = 0;
+  while ((e = readdir(d))) {
+    int k, len = 0;
+    if (sscanf(e->d_name, "particles_%d.csv%n", &k, &len) == 1 && len > 0 &&
+        e->d_name[len] == 0 && k >= 0 && strlen(e->d_name) < sizeof((*out)->name)) {
+      *out = hv_realloc(*out, (size_t)(n + 1) * sizeof **out, "snapshot list");
+      (*out)[n].k = k;
+      snprintf((*out)[n].name, sizeof (*out)[n].name, "%s", e->d_name);
+      n++;
+    }
+  }
+  closedir(d);
+  if (n) qsort(*out, (size_t)n, sizeof **out, snap_cmp);
+  return n;
+}
+
+/* The earlier file's peak_pressure_center rows: (time, value) pairs. */
+static int old_peaks(const char *path, double **tv)
+{
+  *tv = NULL;
+  FILE *f = fopen(path, "r");
+  if (!f) return 0;
+  char line[1024];
+  int n = 0;
+  while (fgets(line, sizeof line, f)) {
+    double t, v;
+    char q[128];
+    if (line[0] == '#') continue;
+    if (sscanf(line, "%lf,%127[^,],%lf", &t, q, &v) == 3 && !strcmp(q, "peak_pressure_center") &&
+        isfinite(v)) {
+      *tv = hv_realloc(*tv, (size_t)(n + 1) * 2 * sizeof **tv, "peak pressures");
+      (*tv)[2 * n] = t;
+      (*tv)[2 * n + 1] = v;
+      n++;
+    }
+  }
+  fclose(f);
+  return n;
+}
+
+static void usage(FILE *f)
+{
+  fprintf(f, "usage: hvsph measure RUNDIR [--case FILE] [--quiet]\n"
+             "  takes the measurements of a run again from its particle snapshots\n"
+             "  (RUNDIR/particles_NNNNN.csv, written with output.csv: true) and rewrites\n"
+             "  RUNDIR/measurements.csv and fragments_NNNNN.csv; the case is\n"
+             "  RUNDIR/used_parameters.yaml unless --case names another (docs/measurements.md)\n");
+}
+
+int remeasure_main(int argc, char **argv)
+{
+  const char *dir = NULL, *casefile = NULL;
+  int quiet = 0;
+  for (int i = 0; i < argc; i++) {
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      usage(stdout);
+      return HV_EXIT_OK;
+    } else if (!strcmp(argv[i], "--case") && i + 1 < argc) {
+      casefile = argv[++i];
+    } else if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) {
+      quiet = 1;
+    } else if (argv[i][0] != '-' && !dir) {
+      dir = argv[i];
+    } else {
+      fprintf(stderr, "hvsph measure: bad argument '%s'\n", argv[i]);
+      usage(stderr);
+      return HV_EXIT_USAGE;
+    }
+  }
+  if (!dir) {
+    usage(stderr);
+    return HV_EXIT_USAGE;
+  }
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct sim s;
+  struct measure_run mr;
+  memset(&s, 0, sizeof s);
+  memset(&mr, 0, sizeof mr);
+  meas_table_init(&mr.table);
+  struct snap *snaps = NULL;
+  double *peaks = NULL;
+  struct cfg *c = NULL;
+  int status = HV_EXIT_OK;
+  char path[4400];
+  if (!casefile) {
+    snprintf(path, sizeof path, "%s/used_parameters.yaml", dir);
+    casefile = path;
+  }
+  c = cfg_load(casefile, &err);
+  if (!c || run_setup(&s, c, &err) || measure_run_read(&mr, &s, c, &err) ||
+      cfg_check_unused(c, &err))
+    goto fail;
+  if (!mr.any) {
+    hv_error_set(&err, HV_EXIT_INPUT, "%s: the case has no 'measure' section: nothing to "
+                 "measure (docs/case-files.md)", casefile);
+    goto fail;
+  }
+  const int ns = list_snapshots(dir, &snaps, &err);
+  if (ns < 0) goto fail;
+  if (ns == 0) {
+    hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv snapshots (run the case with "
+                 "output.csv: true)", dir);
+    goto fail;
+  }
+  char mpath[4400];
+  snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
+  const int np = old_peaks(mpath, &peaks);
+  const char *matnames[HV_MAX_MATERIALS];
+  for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
+  for (int j = 0; j < ns; j++) {
+    char spath[4400];
+    snprintf(spath, sizeof spath, "%s/%s", dir, snaps[j].name);
+    s.p.n = 0;
+    double t = NAN;
+    if (io_read_particles_csv(spath, &s.p, &t, &err)) goto fail;
+    for (size_t i = 0; i < s.p.n; i++)
+      if (s.p.body[i] < 0 || s.p.body[i] >= s.nbody || s.p.mat[i] < 0 || s.p.mat[i] >= s.nmat) {
+        hv_error_set(&err, HV_EXIT_INPUT, "%s: particle id %lld: body %d or material %d is not "
+                     "one of the case's (%s)", spath, (long long)s.p.id[i], (int)s.p.body[i],
+                     (int)s.p.mat[i], casefile);
+        goto fail;
+      }
+    s.t = isfinite(t) ? t : 0.0;
+    if (snaps[j].k > 0) measure_run_step(&mr, &s);   /* as a run: no step before snapshot 0 */
+    for (int q = 0; q < np; q++)
+      if (fabs(peaks[2 * q] - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) &&
+          peaks[2 * q + 1] > mr.peak_pressure)
+        mr.peak_pressure = peaks[2 * q + 1];
+    if (measure_run_output(&mr, &s, snaps[j].k, dir, matnames, &err)) goto fail;
+    if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
+  }
+  if (!quiet) hv_info("measurements of %d snapshot%s written to %s", ns, ns == 1 ? "" : "s", mpath);
+  goto done;
+fail:
+  hv_log(0, "%s", err.msg);
+  status = err.code ? err.code : HV_EXIT_RUN;
+done:
+  free(snaps);
+  free(peaks);
+  measure_run_free(&mr);
+  sim_free(&s);
+  if (c) cfg_free(c);
+  return status;
+}
