@@ -23,9 +23,14 @@ static int cmp_double(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-/* The h that sizes the cells: the 10th percentile of the reals' h (from an evenly
- * spaced sample of at most 4096), so that a few small particles (a projectile in a
- * gas-filled vessel) do not make the cells of everything else tiny. */
+/* The h that sizes the cells: 1.1 × the 10th percentile of the reals' h (from an
+ * evenly spaced sample of at most 4096), so that a few small particles (a projectile
+ * in a gas-filled vessel) do not make the cells of everything else tiny. The 10 %
+ * margin keeps a pair's support h_i + h_j within one cell edge (2 × this) for the
+ * particles just above the percentile: with the percentile alone, the largest h of
+ * almost every cell exceeded it a little and each cell also searched the cells two
+ * away (125 instead of 27; measured on the uniform benchmark: 2.33 → 1.97 µs per
+ * particle-step for gas, 4.2 → 3.8 for solids, 1 thread). */
 static double cell_h_reals(const struct particles *p)
 {
   enum { NS = 4096 };
@@ -35,7 +40,7 @@ static double cell_h_reals(const struct particles *p)
   for (size_t i = 0; i < n && k < NS; i += stride) s[k++] = p->h[i];
   if (k == 0) return HUGE_VAL;
   qsort(s, k, sizeof *s, cmp_double);
-  return s[k / 10];
+  return 1.1 * s[k / 10];
 }
 
 /* p and cs of every real from its ρ and e; the failure of the lowest slot is reported. */
