@@ -187,7 +187,8 @@ static const char *display_unit(enum unit_dim d, double *f)
 }
 
 static int write_reports(const char *dir, const struct val_row *rows, int nrows,
-                         const struct val_case *cs, int ncase, double scale, struct hv_error *err)
+                         const struct val_case *cs, int ncase, double scale, int norun,
+                         struct hv_error *err)
 {
   char path[4200];
   struct afile af;
@@ -210,11 +211,17 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
 
   snprintf(path, sizeof path, "%s/validation.md", dir);
   if (afile_open(&af, path, err)) return -1;
-  afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
-               "of the paper's (resolution %g), %d threads.\n\n"
+  if (norun)
+    afile_printf(&af, err, "# Validation against the seed paper\n\nTables re-read by hvsph %s "
+                 "(`--no-run`) from earlier runs; the version, resolution and thread count "
+                 "of each run are in its `used_parameters.yaml` and log.\n\n", HVSPH_VERSION);
+  else
+    afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
+                 "of the paper's (resolution %g), %d threads.\n\n", HVSPH_VERSION, scale, scale,
+                 omp_get_max_threads());
+  afile_printf(&af, err,
                "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
-               "|---|---|---|---|---|---|---|---|\n", HVSPH_VERSION, scale, scale,
-               omp_get_max_threads());
+               "|---|---|---|---|---|---|---|---|\n");
   double sum_us = 0, sum_paper = 0;
   int n_both = 0;
   for (int k = 0; k < nrows; k++) {
@@ -380,7 +387,7 @@ int validate_main(int argc, char **argv)
     }
   }
   cfg_free(ref);
-  if (write_reports(outdir, rows, nrows, cs, ncase, scale, &err)) goto fail;
+  if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &err)) goto fail;
   fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
                   "validation.csv\n", ncase, failed - interrupted,
           interrupted ? ", interrupted (the later cases were not run)" : "", outdir);
