@@ -84,6 +84,27 @@ static int old_peaks(const char *path, double **tv)
   return n;
 }
 
+/* The output times of the run, from its summary.csv (row k: snapshot k); -1 when
+ * there is no readable summary. */
+static int summary_times(const char *dir, double **times)
+{
+  char path[4400], line[4096];
+  *times = NULL;
+  snprintf(path, sizeof path, "%s/summary.csv", dir);
+  FILE *f = fopen(path, "r");
+  if (!f) return -1;
+  int n = 0;
+  while (fgets(line, sizeof line, f)) {
+    long step;
+    double t;
+    if (line[0] == '#' || sscanf(line, "%ld,%lf", &step, &t) != 2) continue;
+    *times = hv_realloc(*times, (size_t)(n + 1) * sizeof **times, "output times");
+    (*times)[n++] = t;
+  }
+  fclose(f);
+  return n;
+}
+
 static void usage(FILE *f)
 {
   fprintf(f, "usage: hvsph measure RUNDIR [--case FILE] [--quiet]\n"
@@ -125,7 +146,7 @@ int remeasure_main(int argc, char **argv)
   memset(&mr, 0, sizeof mr);
   meas_table_init(&mr.table);
   struct snap *snaps = NULL;
-  double *peaks = NULL;
+  double *peaks = NULL, *times = NULL;
   struct cfg *c = NULL;
   int status = HV_EXIT_OK;
   char path[4400];
@@ -154,12 +175,24 @@ int remeasure_main(int argc, char **argv)
   const int np = old_peaks(mpath, &peaks);
   const char *matnames[HV_MAX_MATERIALS];
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
+  /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
+     those that match this run's summary.csv (number and time) are its own */
+  const int nt = summary_times(dir, &times);
+  if (nt < 0) hv_warn("%s/summary.csv cannot be read: every snapshot is taken as the run's", dir);
+  int measured = 0;
   for (int j = 0; j < ns; j++) {
     char spath[4400];
     snprintf(spath, sizeof spath, "%s/%s", dir, snaps[j].name);
     s.p.n = 0;
     double t = NAN;
     if (io_read_particles_csv(spath, &s.p, &t, &err)) goto fail;
+    if (nt >= 0 && (snaps[j].k >= nt || !(fabs(t - times[snaps[j].k]) <=
+                                          1e-9 * fmax(fabs(t), 1e-30)))) {
+      hv_warn("%s (t = %g s) is not one of the outputs in summary.csv (an earlier run's, "
+              "left in the folder): skipped", spath, t);
+      continue;
+    }
+    measured++;
     for (size_t i = 0; i < s.p.n; i++)
       if (s.p.body[i] < 0 || s.p.body[i] >= s.nbody || s.p.mat[i] < 0 || s.p.mat[i] >= s.nmat) {
         hv_error_set(&err, HV_EXIT_INPUT, "%s: particle id %lld: body %d or material %d is not "
@@ -176,7 +209,14 @@ int remeasure_main(int argc, char **argv)
     if (measure_run_output(&mr, &s, snaps[j].k, dir, matnames, &err)) goto fail;
     if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
   }
-  if (!quiet) hv_info("measurements of %d snapshot%s written to %s", ns, ns == 1 ? "" : "s", mpath);
+  if (!measured) {
+    hv_error_set(&err, HV_EXIT_INPUT, "%s: none of the snapshots matches the run's summary.csv",
+                 dir);
+    goto fail;
+  }
+  if (!quiet)
+    hv_info("measurements of %d snapshot%s written to %s", measured, measured == 1 ? "" : "s",
+            mpath);
   goto done;
 fail:
   hv_log(0, "%s", err.msg);
@@ -184,6 +224,7 @@ fail:
 done:
   free(snaps);
   free(peaks);
+  free(times);
   measure_run_free(&mr);
   sim_free(&s);
   if (c) cfg_free(c);

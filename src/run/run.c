@@ -7,6 +7,7 @@
  */
 #include "run/run.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -152,6 +153,19 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
   return 0;
 }
 
+/* Snapshots already in the output folder (an earlier run's). */
+static int count_snapshots(const char *dir)
+{
+  DIR *d = opendir(dir);
+  if (!d) return 0;
+  int n = 0;
+  struct dirent *e;
+  while ((e = readdir(d)))
+    if (!strncmp(e->d_name, "particles_", 10)) n++;
+  closedir(d);
+  return n;
+}
+
 static const char *default_name(const char *path, char *buf, size_t len)
 {
   const char *b = strrchr(path, '/');
@@ -224,6 +238,11 @@ int run_main(const struct run_options *ro)
   else snprintf(o.dir, sizeof o.dir, "out/%s", cfg_has(c, "name") ? s.case_name
                 : default_name(ro->case_path, nbuf, sizeof nbuf));
   if (io_mkdir_p(o.dir, &err)) goto fail;
+  const int old_snaps = count_snapshots(o.dir);
+  if (old_snaps > 0)
+    hv_warn("%s already holds %d particle snapshot file%s of an earlier run: this run "
+            "overwrites those with its own numbers and leaves the rest; summary.csv and "
+            "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
   char path[4200];
   snprintf(path, sizeof path, "%s/used_parameters.yaml", o.dir);
   if (cfg_write_used(c, path, HVSPH_VERSION, &err)) goto fail;

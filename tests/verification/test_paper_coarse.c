@@ -6,7 +6,8 @@
  * sphere punches a hole wider than itself, the paper's Fig. 1) but smaller than 3
  * diameters; the radiograph PNG and validation.md exist; `hvsph measure` on the run's
  * folder rewrites measurements.csv with the same rows (the snapshots are written
- * round-trip exact), and refuses a folder without snapshots or a case (exit 2). */
+ * round-trip exact), skipping a stale snapshot of an earlier run left in the folder,
+ * and refuses a folder without snapshots or a case (exit 2). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,12 +43,17 @@ int main(void)
   CHECK(d > 13.5e-3 && d < 3 * 13.5e-3, "hole diameter %.2f mm between 13.5 and 40.5 mm", 1e3 * d);
   /* measurements taken again from the snapshots: the same file, row for row */
   char *before = test_slurp(path, NULL);
-  snprintf(cmd, sizeof cmd, "%s measure %s/validation/bumper-1 --quiet", test_bin(), tmp);
+  /* ... with a stale snapshot of an earlier, longer run left in the folder */
+  snprintf(cmd, sizeof cmd, "cp %s/validation/bumper-1/particles_00002.csv "
+           "%s/validation/bumper-1/particles_00007.csv && %s measure %s/validation/bumper-1 "
+           "--quiet", tmp, tmp, test_bin(), tmp);
   st = test_run(cmd, out, sizeof out);
   char *after = test_slurp(path, NULL);
   const char *b1 = before ? strchr(before, '\n') : NULL, *a1 = after ? strchr(after, '\n') : NULL;
   CHECK(st == 0 && b1 && a1 && !strcmp(b1, a1),   /* the first line names the version */
         "hvsph measure reproduces the run's measurements.csv (exit %d): %s", st, out);
+  CHECK(strstr(out, "particles_00007.csv") && strstr(out, "skipped"),
+        "... skipping the stale particles_00007.csv: %s", out);
   free(before);
   free(after);
   snprintf(cmd, sizeof cmd, "rm -rf %s/empty && mkdir %s/empty && %s measure %s/empty --quiet",
