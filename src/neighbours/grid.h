@@ -55,8 +55,8 @@ void nbr_grid_free(struct nbr_grid *g);
 int nbr_grid_build(struct nbr_grid *g, const double *const x[3], const double *h, size_t n,
                    double cell, char *msg, size_t msglen);
 /* The cell edge: 2 hmin, but at least hmax/2 so that no cell searches more than 4
- * cells away. `hmin` is the small h the cells are sized for: the solver passes the
- * 10th percentile of h (step.c), the friends-of-friends grid its smallest length. */
+ * cells away. `hmin` is the h the cells are sized for: the solver passes 1.1 × the
+ * median of h (step.c), the friends-of-friends grid its smallest length. */
 double nbr_cell_size(double hmin, double hmax);
 /* The order that sorts particles [0, n) by cell: fills order[n] (a permutation). */
 int nbr_sort_order(const double *const x[3], size_t n, double cell, uint32_t *order);
