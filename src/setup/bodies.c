@@ -339,11 +339,6 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
                       "strength or fracture (a free surface of a solid would lose density); "
                       "use continuity", cfg_where(c, "sph.density", where, sizeof where));
   }
-  if (!rc && s->sph.reconstruct && s->p.solid) {
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct is for cases without "
-                      "strength or fracture (the stress pass does not use it); set it to false",
-                      cfg_where(c, "sph.viscosity.reconstruct", where, sizeof where));
-  }
   for (int b = 0; b < nb && !rc; b++) {
     snprintf(key, sizeof key, "bodies[%d]", b);
     /* an upper bound first (the bounding box), so that an absurd spacing is refused

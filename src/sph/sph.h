@@ -35,9 +35,6 @@ struct sph_params {
   int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */
-  int reconstruct;     /* gas-only cases: the viscosity sees the velocity difference
-                          reconstructed linearly to the pair's midpoint, slope-limited;
-                          see sph_forces */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
@@ -50,11 +47,6 @@ struct sph_cache {
   uint32_t *cell_words;  /* [ncells] words per row in each cell */
   size_t ccap;
   int valid;             /* filled for the current grid */
-  /* sph.reconstruct: velocity gradient Gᵢ[a][b] = ∂v_a/∂x_b of every slot (reals from
-     the first pass, ghosts from boundary_refresh_gradv), 9 per slot, row-major */
-  double *gradv;
-  size_t gcap;           /* slots allocated */
-  int gradv_valid;       /* filled in this step's first pass (ghosts included) */
 };
 
 void sph_cache_free(struct sph_cache *c);

@@ -340,10 +340,6 @@ static void test_bad_input(void)
             variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"), NULL,
             (const char *const[]){"summation_solid.yaml:4: sph.density: ",
                                   "summation is for cases without strength", NULL});
-  bad_input("reconstruct_solid",
-            variant(3, "  gas: {library: al-alloy}\nsph: {viscosity: {reconstruct: true}}"), NULL,
-            (const char *const[]){"reconstruct_solid.yaml:4: sph.viscosity.reconstruct ",
-                                  "is for cases without strength", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
