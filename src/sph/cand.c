@@ -43,7 +43,9 @@ static void cand_reserve(struct cand *cd, size_t n)
     cd->h = hv_malloc(cd->cap * sizeof(double), "candidates");
     cd->j = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
     cd->sel = hv_malloc(cd->cap * sizeof(uint32_t), "candidates");
+#if !defined(__AVX512F__)
     cd->d = hv_malloc(cd->cap * sizeof(double), "candidates");
+#endif
   }
 }
 
@@ -114,9 +116,16 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
 {
   const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
   const uint32_t *restrict jj = cd->j;
-  double *restrict d = cd->d;
   uint32_t *restrict sel = cd->sel;
   size_t k = 0;
+#if defined(__AVX512F__)
+  const __m512d vx = _mm512_set1_pd(xi), vy = _mm512_set1_pd(yi), vz = _mm512_set1_pd(zi);
+  const __m512d vh = _mm512_set1_pd(hi), zero = _mm512_setzero_pd();
+  const __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+  const __m512i vi = _mm512_set1_epi32((int)i);
+#else
+  double *restrict d = cd->d;
+#endif
   for (size_t c = 0; c < cd->ncell; c++) {
     const double *lo = cd->lo + 3 * c, cell = cd->cellw, reach = hi + cd->hc[c];
     double d2 = 0.0, t;
@@ -129,10 +138,6 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
     /* 16 candidates at a time: the same distance test in two 8-lane halves (the same
        operations in the same order as the scalar code below, so the same selection),
        the selected indices packed by a compress and stored 16 wide (sel has room) */
-    const __m512d vx = _mm512_set1_pd(xi), vy = _mm512_set1_pd(yi), vz = _mm512_set1_pd(zi);
-    const __m512d vh = _mm512_set1_pd(hi), zero = _mm512_setzero_pd();
-    const __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
-    const __m512i vi = _mm512_set1_epi32((int)i);
     for (size_t q = q0; q < q1; q += 16) {
       const size_t left = q1 - q;
       const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
@@ -156,7 +161,6 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
       _mm512_storeu_si512((void *)(sel + k), _mm512_maskz_compress_epi32(m, idx));
       k += (size_t)__builtin_popcount((unsigned)m);
     }
-    (void)d;
 #else
     for (size_t q = q0; q < q1; q++) {
       const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];

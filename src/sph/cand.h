@@ -18,7 +18,8 @@ struct cand {
   double *x, *y, *z, *h;
   uint32_t *j;        /* particle slot of each candidate */
   uint32_t *sel;      /* candidates selected for the current particle */
-  double *d;          /* r² − (h_i + h_j)² of the current particle (< 0: within reach) */
+  double *d;          /* r² − (h_i + h_j)² of the current particle (< 0: within reach);
+                         the portable selection loop only (NULL with AVX-512) */
   /* the neighbour cells: candidate ranges, box corners [m] and largest h [m] */
   size_t ncell, ccap;
   double cellw;       /* [m] cell edge */
