@@ -14,21 +14,15 @@
 #include "diag/fof.h"
 #include "particles/particles.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 static size_t add_particle(struct particles *p, double x, double y, double z, double m,
                            const double v[3], int mat, int body)
 {
-  const size_t i = particles_add(p, 1);
-  p->x[0][i] = x;
-  p->x[1][i] = y;
-  p->x[2][i] = z;
+  const size_t i = tp_add(p, x, y, z, m, 1.0, 1.0, body);
   for (int d = 0; d < 3; d++) p->v[d][i] = v[d];
-  p->m[i] = m;
   p->mat[i] = mat;
-  p->body[i] = body;
   p->id[i] = (int64_t)i + 1000;
-  p->h[i] = 1.0;
-  p->rho[i] = 1.0;
   return i;
 }
 

@@ -22,19 +22,13 @@
 #include "diag/measure.h"
 #include "particles/particles.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 static const double S = 1e-3;  /* [m] lattice spacing Δ */
 
 static size_t add_particle(struct particles *p, const double x[3], int body)
 {
-  const size_t i = particles_add(p, 1);
-  for (int d = 0; d < 3; d++) p->x[d][i] = x[d];
-  p->m[i] = 7.8e3 * S * S * S;
-  p->rho[i] = 7.8e3;
-  p->h[i] = 1.2 * S;
-  p->body[i] = body;
-  p->id[i] = (int64_t)i;
-  return i;
+  return tp_add(p, x[0], x[1], x[2], 7.8e3 * S * S * S, 1.2 * S, 7.8e3, body);
 }
 
 /* What to cut out of a lattice. */

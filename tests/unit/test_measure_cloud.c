@@ -22,22 +22,14 @@
 #include "diag/measure.h"
 #include "particles/particles.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 static const double S = 1e-3;  /* [m] lattice spacing Δ */
 static const double DEG = HV_MEAS_PI / 180.0;
 
 static size_t add_particle(struct particles *p, double x, double y, double z, double m, int body)
 {
-  const size_t i = particles_add(p, 1);
-  p->x[0][i] = x;
-  p->x[1][i] = y;
-  p->x[2][i] = z;
-  p->m[i] = m;
-  p->rho[i] = 1.0;
-  p->h[i] = 1.2 * S;
-  p->body[i] = body;
-  p->id[i] = (int64_t)i;
-  return i;
+  return tp_add(p, x, y, z, m, 1.2 * S, 1.0, body);
 }
 
 static void test_debris(void)

@@ -24,6 +24,7 @@
 #include "particles/particles.h"
 #include "sph/sph.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 static uint64_t rng = 0x2545F4914F6CDD1Dull;
 static double uniform(void) /* [0, 1) */
@@ -36,14 +37,7 @@ static double uniform(void) /* [0, 1) */
 
 static void add(struct particles *p, double x, double y, double z, double h)
 {
-  const size_t i = particles_add(p, 1);
-  p->x[0][i] = x;
-  p->x[1][i] = y;
-  p->x[2][i] = z;
-  p->h[i] = h;
-  p->m[i] = 1.0;
-  p->rho[i] = 1.0;
-  p->id[i] = (int64_t)i;
+  tp_add(p, x, y, z, 1.0, h, 1.0, 0);
 }
 
 static int brute_count(const struct particles *p, size_t i)

@@ -13,6 +13,7 @@
 #include "io/snapshot.h"
 #include "render/render.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 #define PI 3.14159265358979323846
 #define RHO_STEEL 7850.0
@@ -22,16 +23,9 @@
 static void put(struct particles *p, double x, double y, double z, double m, double h,
                 double rho, int mat, double vx)
 {
-  size_t i = particles_add(p, 1);
-  p->x[0][i] = x;
-  p->x[1][i] = y;
-  p->x[2][i] = z;
+  const size_t i = tp_add(p, x, y, z, m, h, rho, 0);
   p->v[0][i] = vx;
-  p->m[i] = m;
-  p->h[i] = h;
-  p->rho[i] = rho;
   p->mat[i] = mat;
-  p->id[i] = (int64_t)i;
   p->p[i] = 1e9 * vx / 3000.0;
 }
 
