@@ -2,6 +2,7 @@
 #include "diag/measure_table.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -182,4 +183,49 @@ void meas_table_add_fragments(struct meas_table *t, double time, const char *obj
   meas_table_add(t, time, "fragment_mass_mean", r->m_total > 0 ? m2sum / r->m_total : 0.0, "kg",
                  object);
   meas_table_add(t, time, "fragments_mass", r->m_total, "kg", object);
+}
+
+/* The next CSV field of *s (RFC 4180 quotes undone) into buf; advances *s past the
+ * comma. Returns 0, or -1 at the end of the line. */
+static int next_field(const char **s, char *buf, size_t len)
+{
+  const char *c = *s;
+  size_t k = 0;
+  if (!c) return -1;
+  if (*c == '"') {
+    for (c++; *c; c++) {
+      if (*c == '"' && c[1] == '"') c++;
+      else if (*c == '"') { c++; break; }
+      if (k + 1 < len) buf[k++] = *c;
+    }
+  } else {
+    for (; *c && *c != ',' && *c != '\n' && *c != '\r'; c++)
+      if (k + 1 < len) buf[k++] = *c;
+  }
+  buf[k] = 0;
+  *s = *c == ',' ? c + 1 : NULL;
+  return 0;
+}
+
+int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s'", path);
+  char line[4096];
+  int header = 1;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#') continue;
+    if (header) {   /* time,quantity,value,unit,object */
+      header = 0;
+      continue;
+    }
+    char fld[5][512];
+    const char *s = line;
+    int k = 0;
+    while (k < 5 && next_field(&s, fld[k], sizeof fld[k]) == 0) k++;
+    if (k < 5) continue;
+    meas_table_add(t, strtod(fld[0], NULL), fld[1], strtod(fld[2], NULL), fld[3], fld[4]);
+  }
+  fclose(f);
+  return 0;
 }

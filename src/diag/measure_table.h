@@ -43,6 +43,9 @@ void meas_table_add(struct meas_table *t, double time, const char *quantity, dou
 /* Rewrites the whole file at path; comment (may be NULL) becomes "# " lines. */
 int meas_table_write(const struct meas_table *t, const char *path, const char *comment,
                      struct hv_error *err);
+/* Reads a file written by meas_table_write, adding its rows to t (quoted fields
+ * unquoted; "nan" and "inf" read back); -1 (err, HV_EXIT_INPUT) when it cannot be read. */
+int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err);
 
 /* The rows of each measurement (quantity names and units in docs/measurements.md):
  * cavity:    penetration_depth m, cavity_diameter m, cavity_diameter_mean m, perforated

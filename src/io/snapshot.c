@@ -7,8 +7,10 @@
  */
 #include "io/snapshot.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "io/afile.h"
@@ -150,4 +152,65 @@ int io_write_table_csv(const char *path, const char *const *cols, int ncols, con
     return -1;
   }
   return afile_commit(&af, err);
+}
+
+int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err)
+{
+  *vals = NULL;
+  FILE *f = fopen(path, "r");
+  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s'", path);
+  char line[8192];
+  int which = -1, n = 0;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#') continue;
+    line[strcspn(line, "\r\n")] = 0;
+    if (which < 0) {   /* the header */
+      int c = 0;
+      for (char *save = NULL, *t = strtok_r(line, ",", &save); t; t = strtok_r(NULL, ",", &save), c++)
+        if (!strcmp(t, col)) which = c;
+      if (which < 0) {
+        fclose(f);
+        return hv_error_set(err, HV_EXIT_INPUT, "%s: no column '%s'", path, col);
+      }
+      continue;
+    }
+    const char *s = line;
+    for (int c = 0; c < which && s; c++) {
+      s = strchr(s, ',');
+      if (s) s++;
+    }
+    if (!s || !*s) continue;
+    *vals = hv_realloc(*vals, (size_t)(n + 1) * sizeof **vals, "table column");
+    (*vals)[n++] = strtod(s, NULL);
+  }
+  fclose(f);
+  return n;
+}
+
+static int int_cmp(const void *a, const void *b)
+{
+  const int x = *(const int *)a, y = *(const int *)b;
+  return (x > y) - (x < y);
+}
+
+int io_list_snapshots(const char *dir, const char *ext, int **nums)
+{
+  *nums = NULL;
+  DIR *d = opendir(dir);
+  if (!d) return -1;
+  char want[32];
+  snprintf(want, sizeof want, ".%s", ext);
+  int n = 0;
+  struct dirent *e;
+  while ((e = readdir(d))) {
+    int k, len = 0;
+    if (sscanf(e->d_name, "particles_%d%n", &k, &len) == 1 && k >= 0 &&
+        !strcmp(e->d_name + len, want)) {
+      *nums = hv_realloc(*nums, (size_t)(n + 1) * sizeof **nums, "snapshot list");
+      (*nums)[n++] = k;
+    }
+  }
+  closedir(d);
+  if (n) qsort(*nums, (size_t)n, sizeof **nums, int_cmp);
+  return n;
 }

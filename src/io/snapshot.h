@@ -57,4 +57,13 @@ int io_write_pvd(const char *path, const double *times, const char *const *files
 int io_write_table_csv(const char *path, const char *const *cols, int ncols, const double *rows,
                        int nrows, const char *comment, struct hv_error *err);
 
+/* Reading back a run's folder. io_read_table_column: the values of column `col` of a
+ * table written by io_write_table_csv (e.g. summary.csv's "time"), in row order, into a
+ * new array (the caller frees); returns the row count, or -1 (err, HV_EXIT_INPUT) when
+ * the file cannot be read or has no such column. io_list_snapshots: the numbers NNNNN
+ * of the files particles_NNNNN.<ext> in dir, sorted ascending, into a new array;
+ * returns the count, or -1 when dir cannot be read. */
+int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err);
+int io_list_snapshots(const char *dir, const char *ext, int **nums);
+
 #endif

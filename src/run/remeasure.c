@@ -14,96 +14,17 @@
  */
 #include "run/remeasure.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "config/config.h"
+#include "diag/measure_table.h"
 #include "io/snapshot.h"
 #include "run/measure_run.h"
 #include "run/run.h"
 #include "run/sim.h"
-
-struct snap {
-  int k;
-  char name[64];
-};
-
-static int snap_cmp(const void *a, const void *b)
-{
-  const struct snap *x = a, *y = b;
-  return (x->k > y->k) - (x->k < y->k);
-}
-
-/* particles_NNNNN.csv of dir, sorted by number; returns the count or -1 */
-static int list_snapshots(const char *dir, struct snap **out, struct hv_error *err)
-{
-  *out = NULL;
-  DIR *d = opendir(dir);
-  if (!d) return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
-  struct dirent *e;
-  int n = 0;
-  while ((e = readdir(d))) {
-    int k, len = 0;
-    if (sscanf(e->d_name, "particles_%d.csv%n", &k, &len) == 1 && len > 0 &&
-        e->d_name[len] == 0 && k >= 0 && strlen(e->d_name) < sizeof((*out)->name)) {
-      *out = hv_realloc(*out, (size_t)(n + 1) * sizeof **out, "snapshot list");
-      (*out)[n].k = k;
-      snprintf((*out)[n].name, sizeof (*out)[n].name, "%s", e->d_name);
-      n++;
-    }
-  }
-  closedir(d);
-  if (n) qsort(*out, (size_t)n, sizeof **out, snap_cmp);
-  return n;
-}
-
-/* The earlier file's peak_pressure_center rows: (time, value) pairs. */
-static int old_peaks(const char *path, double **tv)
-{
-  *tv = NULL;
-  FILE *f = fopen(path, "r");
-  if (!f) return 0;
-  char line[1024];
-  int n = 0;
-  while (fgets(line, sizeof line, f)) {
-    double t, v;
-    char q[128];
-    if (line[0] == '#') continue;
-    if (sscanf(line, "%lf,%127[^,],%lf", &t, q, &v) == 3 && !strcmp(q, "peak_pressure_center") &&
-        isfinite(v)) {
-      *tv = hv_realloc(*tv, (size_t)(n + 1) * 2 * sizeof **tv, "peak pressures");
-      (*tv)[2 * n] = t;
-      (*tv)[2 * n + 1] = v;
-      n++;
-    }
-  }
-  fclose(f);
-  return n;
-}
-
-/* The output times of the run, from its summary.csv (row k: snapshot k); -1 when
- * there is no readable summary. */
-static int summary_times(const char *dir, double **times)
-{
-  char path[4400], line[4096];
-  *times = NULL;
-  snprintf(path, sizeof path, "%s/summary.csv", dir);
-  FILE *f = fopen(path, "r");
-  if (!f) return -1;
-  int n = 0;
-  while (fgets(line, sizeof line, f)) {
-    long step;
-    double t;
-    if (line[0] == '#' || sscanf(line, "%ld,%lf", &step, &t) != 2) continue;
-    *times = hv_realloc(*times, (size_t)(n + 1) * sizeof **times, "output times");
-    (*times)[n++] = t;
-  }
-  fclose(f);
-  return n;
-}
 
 static void usage(FILE *f)
 {
@@ -145,8 +66,10 @@ int remeasure_main(int argc, char **argv)
   memset(&s, 0, sizeof s);
   memset(&mr, 0, sizeof mr);
   meas_table_init(&mr.table);
-  struct snap *snaps = NULL;
-  double *peaks = NULL, *times = NULL;
+  int *snaps = NULL;
+  double *times = NULL;
+  struct meas_table old;   /* the earlier measurements.csv: its peak pressures */
+  meas_table_init(&old);
   struct cfg *c = NULL;
   int status = HV_EXIT_OK;
   char path[4400];
@@ -163,8 +86,11 @@ int remeasure_main(int argc, char **argv)
                  "measure (docs/case-files.md)", casefile);
     goto fail;
   }
-  const int ns = list_snapshots(dir, &snaps, &err);
-  if (ns < 0) goto fail;
+  const int ns = io_list_snapshots(dir, "csv", &snaps);
+  if (ns < 0) {
+    hv_error_set(&err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
+    goto fail;
+  }
   if (ns == 0) {
     hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv snapshots (run the case with "
                  "output.csv: true)", dir);
@@ -172,24 +98,26 @@ int remeasure_main(int argc, char **argv)
   }
   char mpath[4400];
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
-  const int np = old_peaks(mpath, &peaks);
+  struct hv_error ignored;
+  meas_table_read(&old, mpath, &ignored);   /* none: no earlier peak pressures */
   const char *matnames[HV_MAX_MATERIALS];
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
   /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
      those that match this run's summary.csv (number and time) are its own */
-  const int nt = summary_times(dir, &times);
-  if (nt < 0) hv_warn("%s/summary.csv cannot be read: every snapshot is taken as the run's", dir);
+  char spath[4400];
+  snprintf(spath, sizeof spath, "%s/summary.csv", dir);
+  const int nt = io_read_table_column(spath, "time", &times, &ignored);
+  if (nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
   int measured = 0;
   for (int j = 0; j < ns; j++) {
-    char spath[4400];
-    snprintf(spath, sizeof spath, "%s/%s", dir, snaps[j].name);
+    const int k = snaps[j];
+    snprintf(spath, sizeof spath, "%s/particles_%05d.csv", dir, k);
     s.p.n = 0;
     double t = NAN;
-    if (io_read_particles_csv(spath, &s.p, &t, &err)) goto fail;
-    if (nt >= 0 && (snaps[j].k >= nt || !(fabs(t - times[snaps[j].k]) <=
-                                          1e-9 * fmax(fabs(t), 1e-30)))) {
-      hv_warn("%s (t = %g s) is not one of the outputs in summary.csv (an earlier run's, "
-              "left in the folder): skipped", spath, t);
+    if ((nt < 0 || k < nt) && io_read_particles_csv(spath, &s.p, &t, &err)) goto fail;
+    if (nt >= 0 && (k >= nt || !(fabs(t - times[k]) <= 1e-9 * fmax(fabs(t), 1e-30)))) {
+      hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
+              "folder): skipped", spath);
       continue;
     }
     measured++;
@@ -201,12 +129,14 @@ int remeasure_main(int argc, char **argv)
         goto fail;
       }
     s.t = isfinite(t) ? t : 0.0;
-    if (snaps[j].k > 0) measure_run_step(&mr, &s);   /* as a run: no step before snapshot 0 */
-    for (int q = 0; q < np; q++)
-      if (fabs(peaks[2 * q] - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) &&
-          peaks[2 * q + 1] > mr.peak_pressure)
-        mr.peak_pressure = peaks[2 * q + 1];
-    if (measure_run_output(&mr, &s, snaps[j].k, dir, matnames, &err)) goto fail;
+    if (k > 0) measure_run_step(&mr, &s);   /* as a run: no step before snapshot 0 */
+    for (size_t q = 0; q < old.n; q++) {
+      const struct meas_row *r = &old.rows[q];
+      if (!strcmp(r->quantity, "peak_pressure_center") && isfinite(r->value) &&
+          fabs(r->time - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) && r->value > mr.peak_pressure)
+        mr.peak_pressure = r->value;
+    }
+    if (measure_run_output(&mr, &s, k, dir, matnames, &err)) goto fail;
     if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
   }
   if (!measured) {
@@ -223,8 +153,8 @@ fail:
   status = err.code ? err.code : HV_EXIT_RUN;
 done:
   free(snaps);
-  free(peaks);
   free(times);
+  meas_table_free(&old);
   measure_run_free(&mr);
   sim_free(&s);
   if (c) cfg_free(c);

@@ -7,7 +7,6 @@
  */
 #include "run/run.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -153,16 +152,15 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
   return 0;
 }
 
-/* Snapshots already in the output folder (an earlier run's). */
+/* Snapshot files already in the output folder (an earlier run's). */
 static int count_snapshots(const char *dir)
 {
-  DIR *d = opendir(dir);
-  if (!d) return 0;
-  int n = 0;
-  struct dirent *e;
-  while ((e = readdir(d)))
-    if (!strncmp(e->d_name, "particles_", 10)) n++;
-  closedir(d);
+  int *nums = NULL, n = 0;
+  for (int e = 0; e < 2; e++) {
+    const int k = io_list_snapshots(dir, e ? "vtu" : "csv", &nums);
+    n += k > 0 ? k : 0;
+    free(nums);
+  }
   return n;
 }
 

@@ -10,7 +10,6 @@
  */
 #include "run/validate.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -18,6 +17,7 @@
 #include <string.h>
 
 #include "config/config.h"
+#include "diag/measure_table.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
 #include "material/material.h"
@@ -41,42 +41,30 @@ struct val_case {
   int status;       /* exit status of the run (0 ok, -1 not run) */
 };
 
-/* The value of (quantity, object) in a measurements.csv: the last one, or for a debris
+/* The value of (quantity, object) in a run's measurements: the last one, or for a debris
  * cloud's quantities the one at the output time when the cloud held the most mass
  * (before it reaches the next plate); NaN if absent. */
-static double pick_measurement(const char *path, const char *quantity, const char *object,
-                               char *unit, size_t ulen)
+static double pick_measurement(const struct meas_table *t, const char *quantity,
+                               const char *object, char *unit, size_t ulen)
 {
-  FILE *f = fopen(path, "r");
-  if (!f) return NAN;
-  const int cloud = !strncmp(quantity, "cloud_", 6);
-  char line[1024];
-  double v = NAN, best_mass = -1.0, best_time = NAN;
-  for (int pass = 0; pass < 1 + cloud; pass++) {
-    rewind(f);
-    while (fgets(line, sizeof line, f)) {
-      if (line[0] == '#' || !strncmp(line, "time,", 5)) continue;
-      char *save = NULL, *tok[5] = {0};
-      int k = 0;
-      for (char *t = strtok_r(line, ",\n", &save); t && k < 5; t = strtok_r(NULL, ",\n", &save))
-        tok[k++] = t;
-      if (k < 4) continue;
-      /* time,quantity,value,unit,object (an empty unit leaves 4 tokens) */
-      const char *q = tok[1], *u = k == 5 ? tok[3] : "", *obj = k == 5 ? tok[4] : tok[3];
-      const double time = strtod(tok[0], NULL), val = strtod(tok[2], NULL);
-      if (strcmp(obj, object)) continue;
-      if (cloud && pass == 0) {
-        if (!strcmp(q, "cloud_mass") && val > best_mass) {
-          best_mass = val;
-          best_time = time;
-        }
-      } else if (!strcmp(q, quantity) && (!cloud || time == best_time)) {
-        v = val;
-        snprintf(unit, ulen, "%s", u);
+  double v = NAN, best_time = NAN;
+  if (!strncmp(quantity, "cloud_", 6)) {
+    double best_mass = -1.0;
+    for (size_t k = 0; k < t->n; k++) {
+      const struct meas_row *r = &t->rows[k];
+      if (!strcmp(r->object, object) && !strcmp(r->quantity, "cloud_mass") && r->value > best_mass) {
+        best_mass = r->value;
+        best_time = r->time;
       }
     }
   }
-  fclose(f);
+  for (size_t k = 0; k < t->n; k++) {
+    const struct meas_row *r = &t->rows[k];
+    if (strcmp(r->object, object) || strcmp(r->quantity, quantity)) continue;
+    if (!isnan(best_time) && r->time != best_time) continue;
+    v = r->value;
+    snprintf(unit, ulen, "%s", r->unit);
+  }
   return v;
 }
 
@@ -97,36 +85,27 @@ static enum unit_dim dim_of(const char *quantity)
   return UNIT_LENGTH;
 }
 
+/* Particles in the run's first summary row (-1 without a summary). */
 static long particles_of(const char *outdir)
 {
-  char path[4400], line[4096];
+  char path[4400];
+  struct hv_error e;
+  double *n = NULL;
   snprintf(path, sizeof path, "%s/summary.csv", outdir);
-  FILE *f = fopen(path, "r");
-  if (!f) return -1;
-  long n = -1;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#' || !strncmp(line, "step", 4)) continue;
-    char *c1 = strchr(line, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL, *c3 = c2 ? strchr(c2 + 1, ',') : NULL;
-    if (c3 && n < 0) n = strtol(c3 + 1, NULL, 10);
-  }
-  fclose(f);
-  return n;
+  const int rows = io_read_table_column(path, "n", &n, &e);
+  const long v = rows > 0 ? (long)n[0] : -1;
+  free(n);
+  return v;
 }
 
 /* The last particles_NNNNN.csv of a run folder, or "" */
 static void last_snapshot(const char *dir, char *out, size_t len)
 {
+  int *nums = NULL;
+  const int n = io_list_snapshots(dir, "csv", &nums);
   out[0] = 0;
-  DIR *d = opendir(dir);
-  if (!d) return;
-  struct dirent *e;
-  char best[256] = "";
-  while ((e = readdir(d)))
-    if (!strncmp(e->d_name, "particles_", 10) && strstr(e->d_name, ".csv") &&
-        strcmp(e->d_name, best) > 0)
-      snprintf(best, sizeof best, "%s", e->d_name);
-  closedir(d);
-  if (best[0]) snprintf(out, len, "%s/%s", dir, best);
+  if (n > 0) snprintf(out, len, "%s/particles_%05d.csv", dir, nums[n - 1]);
+  free(nums);
 }
 
 /* Radiograph (side view along z, mirrored) of the final state. */
@@ -329,6 +308,8 @@ int validate_main(int argc, char **argv)
   static struct val_row rows[VAL_MAX_ROWS];
   static struct val_case cs[VAL_MAX_CASES];
   int nrows = 0, ncase = 0, failed = 0, interrupted = 0;
+  struct meas_table mt;
+  meas_table_init(&mt);
   for (int j = 0; j < nnames && ncase < VAL_MAX_CASES && !interrupted; j++) {
     int want = nonly == 0;
     for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
@@ -348,6 +329,9 @@ int validate_main(int argc, char **argv)
     snprintf(png, sizeof png, "%s/final.png", dir);
     if (render_final(dir, png, &err)) hv_warn("%s: no radiograph: %s", names[j], err.msg);
     snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
+    meas_table_free(&mt);
+    struct hv_error merr;
+    if (meas_table_read(&mt, mpath, &merr)) hv_warn("%s: %s", names[j], merr.msg);
     char key[256];
     int nq = cfg_len(ref, names[j]);
     for (int q = 0; q < nq && nrows < VAL_MAX_ROWS; q++) {
@@ -381,11 +365,12 @@ int validate_main(int argc, char **argv)
       r->paper_hi = get_opt(ref, key, d, &err);
       if (err.code) goto fail_ref;
       char unit[16];
-      double v = pick_measurement(mpath, r->quantity, r->object, unit, sizeof unit);
+      double v = pick_measurement(&mt, r->quantity, r->object, unit, sizeof unit);
       if (d == UNIT_ANGLE) v *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
       r->sim = v * sc;
     }
   }
+  meas_table_free(&mt);
   cfg_free(ref);
   if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &err)) goto fail;
   fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
@@ -393,6 +378,7 @@ int validate_main(int argc, char **argv)
           interrupted ? ", interrupted (the later cases were not run)" : "", outdir);
   return interrupted ? HV_EXIT_INTERRUPTED : failed ? HV_EXIT_RUN : 0;
 fail_ref:
+  meas_table_free(&mt);
   cfg_free(ref);
 fail:
   hv_log(0, "%s", err.msg);

@@ -253,8 +253,22 @@ static void test_table(void)
   int same = text && strcmp(text, want) == 0;
   CHECK(same, "table text exact%s%s", same ? "" : ":\n", same ? "" : text ? text : "(none)");
   free(text);
+  double *col = NULL;
+  int n = io_read_table_column(path, "time", &col, &err);
+  CHECK(n == 2 && col[0] == 0.0 && col[1] == 1e-6, "column 'time' read back: %d rows", n);
+  free(col);
+  CHECK(io_read_table_column(path, "mass", &col, &err) == -1 && strstr(err.msg, "mass"),
+        "a missing column: %s", err.msg);
   const char *badc[1] = {"a,b"};
   CHECK(io_write_table_csv(path, badc, 1, rows, 1, NULL, &err) != 0, "comma in a column name");
+  /* snapshot numbers, sorted, by extension only */
+  const char *names[] = {"particles_00010.csv", "particles_00002.csv", "particles_00002.vtu",
+                         "particles_x.csv", "particles_00003.csv.tmp"};
+  for (int k = 0; k < 5; k++) test_write_file(names[k], "");
+  int *nums = NULL;
+  n = io_list_snapshots(test_tmpdir(), "csv", &nums);
+  CHECK(n == 2 && nums[0] == 2 && nums[1] == 10, "io_list_snapshots: %d csv snapshots (2, 10)", n);
+  free(nums);
 }
 
 static void test_atomic(struct particles *p)

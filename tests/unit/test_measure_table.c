@@ -58,6 +58,22 @@ static void test_rows_and_text(void)
   CHECK(text && strcmp(text, expect) == 0, "file text:\n%s", text ? text : "(none)");
   free(text);
 
+  /* read back: the same rows, quotes undone, nan kept */
+  struct meas_table back;
+  meas_table_init(&back);
+  int same = meas_table_read(&back, path, &err) == 0 && back.n == t.n;
+  for (size_t k = 0; same && k < t.n; k++) {
+    const struct meas_row *a = &t.rows[k], *b = &back.rows[k];
+    same = a->time == b->time && !strcmp(a->quantity, b->quantity) &&
+           !strcmp(a->unit, b->unit) && !strcmp(a->object, b->object) &&
+           (a->value == b->value || (isnan(a->value) && isnan(b->value)));
+  }
+  CHECK(same, "meas_table_read gives back the %zu rows written (object with a comma and "
+        "quotes: '%s')", back.n, back.n > 3 ? back.rows[3].object : "");
+  meas_table_free(&back);
+  CHECK(meas_table_read(&back, "/nonexistent/measurements.csv", &err) == -1 &&
+            err.code == HV_EXIT_INPUT, "a missing file: an error");
+
   /* a failed write (folder missing) reports the file and leaves nothing behind */
   char bad[4300];
   snprintf(bad, sizeof bad, "%s/no/such/folder/measurements.csv", test_tmpdir());
