@@ -1,4 +1,4 @@
-/* main.c — the hvsph command line: subcommands run, bench, materials, help, version. */
+/* main.c — the hvsph command line: subcommands run, restart, bench, materials, help, version. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +21,9 @@ static void usage(FILE *f)
           "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--threads N] [--quiet]\n"
           "      run a case file; results in OUTDIR (default out/<case name>)\n"
           "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
+          "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
+          "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
+          "      --set time.end=\"60 us\" carries a finished run further\n"
           "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid]\n"
           "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
           "      elastic-plastic aluminium): particle-steps per second, bytes per particle\n"
@@ -51,36 +54,41 @@ static int parse_long(const char *s, long lo, long hi, long *out)
   return 0;
 }
 
-static int cmd_run(int argc, char **argv)
+static int cmd_run(int argc, char **argv, int restart)
 {
+  const char *cmd = restart ? "restart" : "run";
   struct run_options o = {0};
   const char **sets = calloc((size_t)argc, sizeof *sets);
   for (int i = 0; i < argc; i++) {
     const char *a = argv[i];
     long v;
-    if ((!strcmp(a, "-o") || !strcmp(a, "--output")) && i + 1 < argc) o.outdir = argv[++i];
+    if (!restart && (!strcmp(a, "-o") || !strcmp(a, "--output")) && i + 1 < argc)
+      o.outdir = argv[++i];
     else if (!strcmp(a, "--set") && i + 1 < argc) sets[o.nsets++] = argv[++i];
     else if (!strncmp(a, "--set=", 6)) sets[o.nsets++] = a + 6;
     else if (!strcmp(a, "--threads") && i + 1 < argc) {
       if (parse_long(argv[++i], 1, 4096, &v)) {
-        fprintf(stderr, "hvsph run: --threads needs a positive integer, not '%s'\n", argv[i]);
+        fprintf(stderr, "hvsph %s: --threads needs a positive integer, not '%s'\n", cmd,
+                argv[i]);
         free(sets);
         return HV_EXIT_USAGE;
       }
       o.threads = (int)v;
     } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o.quiet = 1;
     else if (a[0] == '-' || o.case_path) {
-      fprintf(stderr, "hvsph run: unexpected argument '%s' (see hvsph --help)\n", a);
+      fprintf(stderr, "hvsph %s: unexpected argument '%s' (see hvsph --help)\n", cmd, a);
       free(sets);
       return HV_EXIT_USAGE;
     } else o.case_path = a;
   }
   if (!o.case_path) {
-    fprintf(stderr, "hvsph run: missing case file (see hvsph --help)\n");
+    fprintf(stderr, "hvsph %s: missing %s (see hvsph --help)\n", cmd,
+            restart ? "run folder" : "case file");
     free(sets);
     return HV_EXIT_USAGE;
   }
   o.sets = sets;
+  if (restart) o.restart_dir = o.case_path;
   int st = run_main(&o);
   free(sets);
   return st;
@@ -125,7 +133,8 @@ int main(int argc, char **argv)
     printf("hvsph %s\n", HVSPH_VERSION);
     return 0;
   }
-  if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
+  if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2, 0);
+  if (!strcmp(cmd, "restart")) return cmd_run(argc - 2, argv + 2, 1);
   if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
   if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);

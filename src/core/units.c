@@ -61,6 +61,8 @@ static const struct unit_atom atoms[] = {
     {"cc", 1.0, -6, {0, 3, 0, 0, 0}, 0},
     {"us", 1.0, -6, {0, 0, 1, 0, 0}, 0},
     {"mks", 1.0, -6, {0, 0, 1, 0, 0}, 0},
+    {"min", 60.0, 0, {0, 0, 1, 0, 0}, 0},
+    {"h", 3600.0, 0, {0, 0, 1, 0, 0}, 0},
 };
 #define NATOMS ((int)(sizeof atoms / sizeof atoms[0]))
 

@@ -37,10 +37,10 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  h,     "m",      PF_OUT | PF_GHOST | PF_STATE, "smoothing length")       \
   X(double,  rho,   "kg/m3",  PF_OUT | PF_GHOST | PF_STATE, "density")                \
   X(double,  e,     "J/kg",   PF_OUT | PF_GHOST | PF_STATE, "specific internal energy") \
-  X(double,  p,     "Pa",     PF_OUT | PF_GHOST,            "pressure")               \
-  X(double,  cs,    "m/s",    PF_OUT | PF_GHOST,            "sound speed")            \
+  X(double,  p,     "Pa",     PF_OUT | PF_GHOST | PF_STATE, "pressure")               \
+  X(double,  cs,    "m/s",    PF_OUT | PF_GHOST | PF_STATE, "sound speed")            \
   X(double,  drho,  "kg/m3/s", 0,                           "density rate")           \
-  X(double,  de,    "J/kg/s", 0,                            "energy rate")            \
+  X(double,  de,    "J/kg/s", PF_STATE,                     "energy rate (the predictor's)")            \
   X(double,  rho0,  "kg/m3",  0,                            "density at step start")  \
   X(double,  e0,    "J/kg",   0,                            "energy at step start")   \
   X(double,  vsig,  "m/s",    0,                            "largest signal speed")  \

@@ -56,7 +56,11 @@ static int read_output(struct output_params *op, struct cfg *c, struct hv_error 
   double zero = 0.0;
   int yes = 1, no = 0;
   long every = 100;
+  double ten_min = 600.0;
   return cfg_get_quantity(c, "output.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &op->every, err) ||
+         cfg_get_bool(c, "output.checkpoint", &yes, &op->checkpoint, err) ||
+         cfg_get_quantity(c, "output.checkpoint_wall", UNIT_TIME, &ten_min, 0.0, HUGE_VAL,
+                          &op->checkpoint_wall, err) ||
          cfg_get_bool(c, "output.vtu", &yes, &op->vtu, err) ||
          cfg_get_bool(c, "output.csv", &no, &op->csv, err) ||
          cfg_get_int(c, "output.log_every", &every, 1, 1000000000L, &op->log_every, err)

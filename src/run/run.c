@@ -7,6 +7,7 @@
  */
 #include "run/run.h"
 
+#include <errno.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -22,6 +23,7 @@
 #include "io/afile.h"
 #include "io/snapshot.h"
 #include "run/measure_run.h"
+#include "run/restart.h"
 #include "run/sim.h"
 #include "setup/setup.h"
 #include "version.h"
@@ -36,26 +38,14 @@ static void on_sigint(int sig)
 
 static double wall_time(void) { return omp_get_wtime(); }
 
-#define SUMMARY_COLS 18
 /* totals over the particles; absorbed_*: what absorbing faces removed so far, so that
    mass + absorbed_mass etc. are conserved */
-static const char *const summary_cols[SUMMARY_COLS] = {
+static const char *const summary_cols[RUN_SUMMARY_COLS] = {
     "step", "time", "dt", "n", "mass", "px", "py", "pz", "e_kin", "e_int", "e_total",
     "absorbed_n", "absorbed_mass", "absorbed_px", "absorbed_py", "absorbed_pz",
     "absorbed_e_kin", "absorbed_e_int"};
 
-struct outputs {
-  struct measure_run mr;
-  char dir[4000];
-  int count;
-  double *times;
-  char **files;
-  double *rows;
-  int nrows;
-  const char *matnames[HV_MAX_MATERIALS];
-};
-
-static void outputs_free(struct outputs *o)
+static void outputs_free(struct run_outputs *o)
 {
   measure_run_free(&o->mr);
   for (int i = 0; i < o->count; i++) free(o->files[i]);
@@ -64,18 +54,18 @@ static void outputs_free(struct outputs *o)
   free(o->rows);
 }
 
-static int write_outputs(struct sim *s, struct outputs *o, struct hv_error *err)
+static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *err)
 {
   char path[4200], name[64];
   struct totals t;
   diag_totals(&s->p, &t);
-  o->rows = hv_realloc(o->rows, (size_t)(o->nrows + 1) * SUMMARY_COLS * sizeof(double), "summary");
+  o->rows = hv_realloc(o->rows, (size_t)(o->nrows + 1) * RUN_SUMMARY_COLS * sizeof(double), "summary");
   const struct absorbed *ab = &s->bnd.absorbed;
-  double row[SUMMARY_COLS] = {(double)s->step, s->t, s->dt, (double)s->p.n, t.mass,
+  double row[RUN_SUMMARY_COLS] = {(double)s->step, s->t, s->dt, (double)s->p.n, t.mass,
                               t.mom[0], t.mom[1], t.mom[2], t.e_kin, t.e_int, t.e_total,
                               (double)ab->n, ab->mass, ab->mom[0], ab->mom[1], ab->mom[2],
                               ab->e_kin, ab->e_int};
-  memcpy(o->rows + (size_t)o->nrows * SUMMARY_COLS, row, sizeof row);
+  memcpy(o->rows + (size_t)o->nrows * RUN_SUMMARY_COLS, row, sizeof row);
   o->nrows++;
   struct snapshot_meta meta = {.time = s->t, .step = s->step, .version = HVSPH_VERSION,
                                .case_name = s->case_name, .material_names = o->matnames,
@@ -105,7 +95,7 @@ static int write_outputs(struct sim *s, struct outputs *o, struct hv_error *err)
   snprintf(comment, sizeof comment, "hvsph %s case %s: totals over the particles at each "
            "output time (SI units)", HVSPH_VERSION, s->case_name);
   snprintf(path, sizeof path, "%s/summary.csv", o->dir);
-  return io_write_table_csv(path, summary_cols, SUMMARY_COLS, o->rows, o->nrows, comment, err);
+  return io_write_table_csv(path, summary_cols, RUN_SUMMARY_COLS, o->rows, o->nrows, comment, err);
 }
 
 static void progress(const struct sim *s, double t0, double wall0, int tty, int final)
@@ -173,14 +163,33 @@ static const char *default_name(const char *path, char *buf, size_t len)
   return buf;
 }
 
-static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error *err)
+/* Checkpoints: at every output time, every output.checkpoint_wall seconds of wall-clock
+ * time, and when the run stops between output times. */
+struct ckpt_clock {
+  double wall;   /* when the last one was written */
+  long step;     /* its step */
+};
+
+static int checkpoint(struct sim *s, struct run_outputs *o, struct ckpt_clock *cc,
+                      struct hv_error *err)
+{
+  if (!s->out.checkpoint || cc->step == s->step) return 0;
+  if (restart_write(s, o, err)) return -1;
+  cc->wall = wall_time();
+  cc->step = s->step;
+  return 0;
+}
+
+static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_error *err)
 {
   const int tty = isatty(STDERR_FILENO);
-  const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end;
-  double next_out = s->out.every > 0 ? t0 + s->out.every : tend, last_print = wall0;
+  const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end, every = s->out.every;
+  struct ckpt_clock cc = {wall0, s->step};   /* the state at the start is on disk already */
+  double last_print = wall0;
   long printed_step = -1;
-  if (next_out > tend) next_out = tend;
-  int k = 1;
+  /* output k falls at t_start + k × every (the last one at the end time) */
+  double next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
+  if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
   while (s->t < tend && !interrupted) {
     if (s->tp.max_steps && s->step >= s->tp.max_steps) break;
     int hit = 0;
@@ -192,10 +201,12 @@ static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error
     measure_run_step(&o->mr, s);
     if (hit) {
       s->t = next_out;
-      k++;
-      next_out = s->out.every > 0 ? t0 + k * s->out.every : tend;
-      if (next_out > tend || tend - next_out < 1e-9 * s->out.every) next_out = tend;
-      if (write_outputs(s, o, err)) return -1;
+      o->next_k++;
+      next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
+      if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
+      if (write_outputs(s, o, err) || checkpoint(s, o, &cc, err)) return -1;
+    } else if (s->out.checkpoint_wall > 0 && wall_time() - cc.wall >= s->out.checkpoint_wall) {
+      if (checkpoint(s, o, &cc, err)) return -1;
     }
     if (!quiet) {
       double now = wall_time();
@@ -207,8 +218,10 @@ static int run_loop(struct sim *s, struct outputs *o, int quiet, struct hv_error
     }
   }
   if (!quiet && (tty || printed_step != s->step)) progress(s, t0, wall0, tty, 1);
-  int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * SUMMARY_COLS] == (double)s->step;
-  if (!wrote_last && write_outputs(s, o, err)) return -1;
+  int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * RUN_SUMMARY_COLS] == (double)s->step;
+  /* stopped between output times (interrupted, max_steps): the checkpoint first, with
+     the outputs so far, so that a restart numbers its snapshots as an uninterrupted run */
+  if (!wrote_last && (checkpoint(s, o, &cc, err) || write_outputs(s, o, err))) return -1;
   return 0;
 }
 
@@ -217,13 +230,27 @@ int run_main(const struct run_options *ro)
   struct hv_error err;
   hv_error_clear(&err);
   struct sim s;
-  struct outputs o;
+  struct run_outputs o;
   memset(&o, 0, sizeof o);
   memset(&s, 0, sizeof s);
   int status = HV_EXIT_OK;
   if (ro->threads > 0) omp_set_num_threads(ro->threads);
+  const char *restart = ro->restart_dir;
+  char path[4200], ckpt[4200];
+  struct cfg *c = NULL;
+  if (restart) {   /* the case is the run's used_parameters.yaml */
+    snprintf(path, sizeof path, "%s/used_parameters.yaml", restart);
+    restart_path(restart, ckpt, sizeof ckpt);
+    if (access(ckpt, R_OK)) {
+      hv_error_set(&err, HV_EXIT_INPUT, "%s: no checkpoint to restart from (%s); runs write "
+                   "one at every output time unless output.checkpoint is false", ckpt,
+                   strerror(errno));
+      goto fail;
+    }
+  }
+  const char *case_path = restart ? path : ro->case_path;
 
-  struct cfg *c = cfg_load(ro->case_path, &err);
+  c = cfg_load(case_path, &err);
   if (!c) goto fail;
   for (int i = 0; i < ro->nsets; i++)
     if (cfg_apply_set(c, ro->sets[i], &err)) goto fail;
@@ -232,34 +259,56 @@ int run_main(const struct run_options *ro)
     goto fail;
 
   char nbuf[256];
-  if (ro->outdir) snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);
+  if (restart) snprintf(o.dir, sizeof o.dir, "%s", restart);
+  else if (ro->outdir) snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);
   else snprintf(o.dir, sizeof o.dir, "out/%s", cfg_has(c, "name") ? s.case_name
                 : default_name(ro->case_path, nbuf, sizeof nbuf));
-  if (io_mkdir_p(o.dir, &err)) goto fail;
-  const int old_snaps = count_snapshots(o.dir);
-  if (old_snaps > 0)
-    hv_warn("%s already holds %d particle snapshot file%s of an earlier run: this run "
-            "overwrites those with its own numbers and leaves the rest; summary.csv and "
-            "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
-  char path[4200];
-  snprintf(path, sizeof path, "%s/used_parameters.yaml", o.dir);
-  if (cfg_write_used(c, path, HVSPH_VERSION, &err)) goto fail;
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
+  if (restart) {
+    if (restart_read(&s, &o, ckpt, &err)) goto fail;
+  } else {
+    if (io_mkdir_p(o.dir, &err)) goto fail;
+    const int old_snaps = count_snapshots(o.dir);
+    if (old_snaps > 0)
+      hv_warn("%s already holds %d particle snapshot file%s of an earlier run: this run "
+              "overwrites those with its own numbers and leaves the rest; summary.csv and "
+              "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
+    o.t_start = s.t;
+    o.next_k = 1;
+  }
+  /* a restart records its overrides (the file is what the continued run used) */
+  if (!restart || ro->nsets > 0) {
+    snprintf(path, sizeof path, "%s/used_parameters.yaml", o.dir);
+    if (cfg_write_used(c, path, HVSPH_VERSION, &err)) goto fail;
+  }
 
-  if (!ro->quiet)
-    hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
-            ro->case_path, s.p.n, s.nbody, s.nbody == 1 ? "y" : "ies", omp_get_max_threads(),
-            omp_get_max_threads() == 1 ? "" : "s", s.tp.end, o.dir);
+  if (!ro->quiet) {
+    if (restart)
+      hv_info("restart of %s from its checkpoint at t = %g s (step %ld, %d outputs written): "
+              "%zu particles, %d thread%s, t_end = %g s", o.dir, s.t, s.step, o.count, s.p.n,
+              omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s", s.tp.end);
+    else
+      hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
+              ro->case_path, s.p.n, s.nbody, s.nbody == 1 ? "y" : "ies", omp_get_max_threads(),
+              omp_get_max_threads() == 1 ? "" : "s", s.tp.end, o.dir);
+  }
+  if (restart && s.t >= s.tp.end) {
+    if (!ro->quiet)
+      hv_info("nothing to do: the run reached t_end = %g s (continue it with --set "
+              "time.end=LATER)", s.tp.end);
+    goto done;
+  }
   interrupted = 0;
   signal(SIGINT, on_sigint);
   signal(SIGTERM, on_sigint);
-  if (step_init(&s, &err) || write_outputs(&s, &o, &err) || run_loop(&s, &o, ro->quiet, &err))
+  if ((!restart && (step_init(&s, &err) || write_outputs(&s, &o, &err))) ||
+      run_loop(&s, &o, ro->quiet, &err))
     goto fail;
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
   if (interrupted) {
-    hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s",
-            s.t, s.step, o.dir);
+    hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s%s",
+            s.t, s.step, o.dir, s.out.checkpoint ? " (continue with hvsph restart)" : "");
     status = HV_EXIT_INTERRUPTED;
   } else if (!ro->quiet) {
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,

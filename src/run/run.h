@@ -12,6 +12,8 @@ struct run_options {
   int nsets;
   int threads;                  /* 0: OpenMP default */
   int quiet;
+  const char *restart_dir;      /* continue the run in this folder from its checkpoint
+                                   (case_path and outdir unused) */
 };
 
 /* Returns an exit status (enum hv_exit); prints its own messages. */

@@ -24,6 +24,9 @@ struct output_params {
   double every;        /* [s] interval between snapshots (0: only start and end) */
   int vtu, csv;        /* which particle files */
   long log_every;      /* steps between log lines when not on a terminal */
+  int checkpoint;      /* write OUTDIR/checkpoint.hvc (restart) */
+  double checkpoint_wall; /* [s] of wall-clock time between checkpoints besides those at
+                             output times (0: only at output times and at the end) */
 };
 
 struct body_info {
