@@ -35,6 +35,7 @@ static void usage(FILE *f)
           "      take a run's measurements again from its particle snapshots\n"
           "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"
           "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--no-run]\n"
+          "                 [--resume]\n"
           "      run the paper's cases (examples/paper, particle counts x S) and compare\n"
           "      with its experiments and simulations: DIR/validation.md and .csv\n"
           "  hvsph --version | --help\n"

@@ -1,8 +1,11 @@
 /* afile.c — files written whole or not at all (see afile.h), and mkdir -p. */
 #include "io/afile.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -161,4 +164,27 @@ int io_mkdir_p(const char *dir, struct hv_error *err)
     if (r) return -1;
   }
   return mkdir_one(buf, dir, err);
+}
+
+int afile_remove_stale(const char *dir)
+{
+  DIR *d = opendir(dir);
+  if (!d) return 0;
+  int removed = 0;
+  struct dirent *e;
+  char path[4400];
+  while ((e = readdir(d))) {
+    /* ".<base>.tmp.<pid>" */
+    const char *t = e->d_name[0] == '.' ? strstr(e->d_name, ".tmp.") : NULL;
+    if (!t) continue;
+    char *end;
+    long pid = strtol(t + 5, &end, 10);
+    if (*end || pid <= 0 || pid == (long)getpid()) continue;
+    if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue;   /* that writer may live */
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) < sizeof path &&
+        unlink(path) == 0)
+      removed++;
+  }
+  closedir(d);
+  return removed;
 }

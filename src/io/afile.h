@@ -48,6 +48,10 @@ int afile_write(struct afile *af, const void *buf, size_t len, struct hv_error *
 int afile_printf(struct afile *af, struct hv_error *err, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* Removes the temporary files ".<base>.tmp.<pid>" in dir left by writers that no
+ * longer run (a killed run's unfinished file); returns how many. */
+int afile_remove_stale(const char *dir);
+
 /* Like `mkdir -p`: creates `dir` and any missing parents (mode 0777 & ~umask).
  * An existing folder is fine; an existing non-folder is an error. */
 int io_mkdir_p(const char *dir, struct hv_error *err);

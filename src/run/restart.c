@@ -106,6 +106,7 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
     const size_t ntimes = s->out.vtu ? (size_t)o->count : 0;
     rc = ckpt_put(&w, "out.count.next_k.nrows", CKPT_I64, 3, ints, err) ||
          ckpt_put(&w, "out.t_start", CKPT_F64, 1, &o->t_start, err) ||
+
          ckpt_put(&w, "out.summary_cols", CKPT_I64, 1, &ncols, err) ||
          ckpt_put(&w, "out.summary", CKPT_F64, (size_t)o->nrows * RUN_SUMMARY_COLS, o->rows,
                   err) ||
@@ -174,6 +175,7 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   int64_t ints[3], ncols;
   if (ckpt_get(c, "out.count.next_k.nrows", CKPT_I64, 3, ints, err) ||
       ckpt_get(c, "out.t_start", CKPT_F64, 1, &o->t_start, err) ||
+
       ckpt_get(c, "out.summary_cols", CKPT_I64, 1, &ncols, err))
     return -1;
   if (ncols != RUN_SUMMARY_COLS || ints[0] < 0 || ints[0] > 100000000 || ints[2] < 0 ||

@@ -266,6 +266,10 @@ int run_main(const struct run_options *ro)
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
   if (restart) {
     if (restart_read(&s, &o, ckpt, &err)) goto fail;
+    const int stale = afile_remove_stale(o.dir);
+    if (stale > 0 && !ro->quiet)
+      hv_info("removed %d unfinished temporary file%s of the stopped run", stale,
+              stale == 1 ? "" : "s");
   } else {
     if (io_mkdir_p(o.dir, &err)) goto fail;
     const int old_snaps = count_snapshots(o.dir);
@@ -313,6 +317,7 @@ int run_main(const struct run_options *ro)
   } else if (!ro->quiet) {
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
             o.dir);
+
   }
   goto done;
 fail:

@@ -7,6 +7,8 @@
  * simulation: DIR/validation.csv (case,quantity,simulated,experiment,paper_simulation,
  * unit,rel_error) and DIR/validation.md (tables, mean errors, runtimes, radiographs of
  * the final states of the impact cases). --no-run only re-reads earlier runs' outputs.
+ * --resume continues each case that has a checkpoint in DIR/<case>/ (hvsph restart:
+ * a stopped run goes on, a finished one is only re-read) and runs the others.
  */
 #include "run/validate.h"
 
@@ -15,9 +17,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "config/config.h"
 #include "diag/measure_table.h"
+#include "run/restart.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
 #include "material/material.h"
@@ -132,7 +136,7 @@ static int render_final(const char *dir, const char *png, struct hv_error *err)
 }
 
 static int run_case(const char *cases, const char *name, const char *outdir, double scale,
-                    int threads, struct val_case *vc)
+                    int threads, int resume, struct val_case *vc)
 {
   char casefile[8400], set1[64];
   snprintf(casefile, sizeof casefile, "%s/%s.yaml", cases, name);
@@ -140,7 +144,16 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
   const char *sets[] = {set1, "output.csv=true"};
   struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets, .nsets = 2,
                            .threads = threads};
-  fprintf(stderr, "hvsph validate: %s (resolution %g) -> %s\n", name, scale, outdir);
+  char ckpt[8400];
+  restart_path(outdir, ckpt, sizeof ckpt);
+  if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
+    ro.restart_dir = outdir;
+    ro.nsets = 0;
+    fprintf(stderr, "hvsph validate: %s: continuing the run in %s from its checkpoint\n", name,
+            outdir);
+  } else {
+    fprintf(stderr, "hvsph validate: %s (resolution %g) -> %s\n", name, scale, outdir);
+  }
   double t0 = omp_get_wtime();
   vc->status = run_main(&ro);
   vc->runtime = omp_get_wtime() - t0;
@@ -253,7 +266,7 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
 static int usage(void)
 {
   fprintf(stderr, "usage: hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] "
-                  "[--cases DIR] [--no-run]\n");
+                  "[--cases DIR] [--no-run] [--resume]\n");
   return HV_EXIT_USAGE;
 }
 
@@ -261,7 +274,7 @@ int validate_main(int argc, char **argv)
 {
   double scale = 1.0;
   const char *outdir = "out/validation", *cases = NULL, *only[VAL_MAX_CASES];
-  int nonly = 0, threads = 0, norun = 0;
+  int nonly = 0, threads = 0, norun = 0, resume = 0;
   for (int i = 0; i < argc; i++) {
     if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
       char *end;
@@ -276,6 +289,8 @@ int validate_main(int argc, char **argv)
       cases = argv[++i];
     } else if (!strcmp(argv[i], "--no-run")) {
       norun = 1;
+    } else if (!strcmp(argv[i], "--resume")) {
+      resume = 1;
     } else if (!strcmp(argv[i], "--only")) {
       while (i + 1 < argc && argv[i + 1][0] != '-' && nonly < VAL_MAX_CASES) only[nonly++] = argv[++i];
     } else {
@@ -320,7 +335,7 @@ int validate_main(int argc, char **argv)
     vc->status = -1;
     char dir[4200], mpath[4300], png[4300];
     snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
-    if (!norun && run_case(casedir, names[j], dir, scale, threads, vc)) failed++;
+    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, vc)) failed++;
     /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
        too: the tables are written for the cases so far */
     interrupted = vc->status == HV_EXIT_INTERRUPTED;

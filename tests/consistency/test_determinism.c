@@ -3,8 +3,8 @@
  * examples/verification/tiny.yaml (two colliding gas slabs with radial velocities,
  * walls and periodic faces, two spacings; 45 steps with particle reordering every
  * 10) is run through the hvsph binary with --threads 1, 2 and 3. Every output file
- * (particles_NNNNN.vtu and .csv at all five output times, run.pvd, summary.csv)
- * must be byte for byte the same; used_parameters.yaml too, except its
+ * (particles_NNNNN.vtu and .csv at all five output times, run.pvd, summary.csv, the
+ * final checkpoint.hvc) must be byte for byte the same; used_parameters.yaml too, except its
  * "# written:" date line. The test also checks that the case really moves (so that
  * equal files mean something): particles travel and change velocity between the
  * first and the last snapshot, and the run takes many steps.
@@ -179,7 +179,7 @@ int main(void)
 
   char **names = NULL;
   int n = list_dir(dir[0], &names);
-  int nvtu = 0, ncsv = 0, ntmp = 0, pvd = 0, summary = 0, used = 0;
+  int nvtu = 0, ncsv = 0, ntmp = 0, pvd = 0, summary = 0, used = 0, ckpt = 0;
   for (int i = 0; i < n; i++) {
     int k;
     char ext[8];
@@ -189,10 +189,12 @@ int main(void)
     pvd += !strcmp(names[i], "run.pvd");
     summary += !strcmp(names[i], "summary.csv");
     used += !strcmp(names[i], "used_parameters.yaml");
+    ckpt += !strcmp(names[i], "checkpoint.hvc");
   }
-  CHECK(n == 2 * NSNAP + 3 && nvtu == NSNAP && ncsv == NSNAP && pvd && summary && used && !ntmp,
-        "1-thread run wrote %d files: %d .vtu, %d particle .csv (want %d each), run.pvd, "
-        "summary.csv, used_parameters.yaml, %d temporary", n, nvtu, ncsv, NSNAP, ntmp);
+  CHECK(n == 2 * NSNAP + 4 && nvtu == NSNAP && ncsv == NSNAP && pvd && summary && used && ckpt &&
+        !ntmp, "1-thread run wrote %d files: %d .vtu, %d particle .csv (want %d each), run.pvd, "
+        "summary.csv, used_parameters.yaml, checkpoint.hvc, %d temporary", n, nvtu, ncsv, NSNAP,
+        ntmp);
 
   for (int k = 1; k < nt; k++) {
     char **other = NULL;

@@ -58,6 +58,13 @@ static void test_exact_values(void)
         "35 us == 3.5e-5 exactly");
   CHECK(units_parse("6.2 km/s", UNIT_VELOCITY, &v, NULL, 0) == 0 && v == 6200.0,
         "6.2 km/s == 6200 exactly");
+  /* wall-clock intervals (output.checkpoint_wall) */
+  CHECK(units_parse("10 min", UNIT_TIME, &v, NULL, 0) == 0 && v == 600.0, "10 min == 600 s");
+  CHECK(units_parse("1.5 h", UNIT_TIME, &v, NULL, 0) == 0 && v == 5400.0, "1.5 h == 5400 s");
+  CHECK(units_parse("36 km/h", UNIT_VELOCITY, &v, NULL, 0) == 0 && fabs(v - 10.0) < 1e-12,
+        "36 km/h == 10 m/s (got %.17g)", v);
+  CHECK(units_parse("10 min", UNIT_LENGTH, &v, NULL, 0) != 0, "10 min is not a length");
+  CHECK(units_parse("2 mh", UNIT_TIME, &v, NULL, 0) != 0, "'mh' (no prefix on h) is refused");
   CHECK(units_parse("2.78 g/cm3", UNIT_DENSITY, &v, NULL, 0) == 0 && v == 2780.0,
         "2.78 g/cm3 == 2780 exactly");
   CHECK(units_parse("1.5 mm", UNIT_LENGTH, &v, NULL, 0) == 0 && v == 1.5e-3, "1.5 mm == 1.5e-3");
@@ -132,7 +139,7 @@ static void test_junk(void)
   bad("5 m^", UNIT_LENGTH, "power", NULL);
   bad("5 ks2x", UNIT_LENGTH, NULL, NULL);
   bad("5 kdeg", UNIT_ANGLE, "unknown unit", NULL);
-  bad("5 h", UNIT_TIME, "unknown unit", NULL);
+  bad("5 hr", UNIT_TIME, "unknown unit", NULL);
   bad("5 %", UNIT_NONE, NULL, NULL);
 }
 

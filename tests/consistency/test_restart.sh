@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# test_restart.sh — a run continued from its checkpoint writes the same files, bit for
+# bit, as a run that was never stopped; a bad checkpoint is refused without harm.
+#
+# Case: examples/paper/bumper-1.yaml at resolution 0.08 (1402 particles: an aluminium
+# sphere through a plate at 6.3 km/s, half model with a symmetry plane, absorbing
+# faces, elastic-plastic with fracture, measurements and fragments), to 12 us with
+# outputs every 3 us; the far face is moved to x = 15 mm, so that particles are
+# absorbed (removed) from 5 us on, before the stop. The reference run goes straight through. Then:
+#  1. stopped by time.max_steps after 200 steps (between output times: it writes an
+#     extra snapshot there), continued by `hvsph restart` on 1 thread (the reference
+#     used 2): every file of the reference — snapshots .vtu/.csv, fragments, summary.csv,
+#     run.pvd, measurements.csv, the final checkpoint — is identical;
+#  2. killed with SIGKILL while writing a checkpoint every step (output.checkpoint_wall
+#     1 us), then continued: identical again (the checkpoint on disk is always whole);
+#  3. the finished reference carried on to 15 us (--set time.end=15us) equals a run
+#     made to 15 us at once (so the final checkpoint holds the final state);
+#  4. a finished run restarted again does nothing (exit 0); a damaged checkpoint (one
+#     byte changed), a truncated one, a missing one and one from another resolution
+#     end with exit status 2 and a message naming the file, and leave every file of
+#     the folder as it was.
+set -u
+BIN=${HVSPH_BIN:-build/hvsph}
+SRC=${HVSPH_SOURCE_DIR:-.}
+T=${HVSPH_TMP:-/tmp/hvsph_test_restart}
+rm -rf "$T" && mkdir -p "$T"
+CASE=$SRC/examples/paper/bumper-1.yaml
+# the far face at x = 15 mm (not 100) so that debris leaves through it from 5 us on
+SETS=(--set resolution=0.08 --set time.end=12us --set output.every=3us --set output.csv=true
+      --set 'domain.max=[15 mm, 50 mm, 50 mm]')
+pass=0 fail=0
+check() {  # check CONDITION-STATUS MESSAGE
+  if [ "$1" -eq 0 ]; then pass=$((pass + 1)); echo "PASS: $2"; else fail=$((fail + 1)); echo "FAIL: $2"; fi
+}
+# every file of folder $1 (but used_parameters.yaml) is in $2 with the same bytes
+same_files() {
+  local n=0 bad=0
+  for f in "$1"/*; do
+    b=$(basename "$f")
+    [ "$b" = used_parameters.yaml ] && continue
+    n=$((n + 1))
+    if ! cmp -s "$f" "$2/$b"; then echo "  differs: $b"; bad=1; fi
+  done
+  echo "  compared $n files"
+  [ $bad -eq 0 ] && [ $n -ge 15 ]
+}
+
+"$BIN" run "$CASE" -o "$T/ref" "${SETS[@]}" --threads 2 --quiet 2> "$T/ref.log"
+check $? "reference run to 12 us"
+steps=$(tail -1 "$T/ref/summary.csv" | cut -d, -f1)
+absorbed=$(tail -1 "$T/ref/summary.csv" | cut -d, -f12)
+echo "  reference: $steps steps, $absorbed particles absorbed, $(ls "$T/ref" | wc -l) files"
+[ "$steps" -gt 280 ] && [ "$absorbed" -gt 100 ]
+check $? "the reference takes more than 280 steps ($steps), so step 200 is mid-run; over 100 particles absorbed ($absorbed)"
+
+# 1. stopped between outputs, continued on another thread count
+"$BIN" run "$CASE" -o "$T/a" "${SETS[@]}" --set time.max_steps=200 --threads 2 --quiet 2> "$T/a1.log"
+check $? "run stopped by time.max_steps = 200"
+stop_absorbed=$(tail -1 "$T/a/summary.csv" | cut -d, -f12)
+[ -f "$T/a/checkpoint.hvc" ] && [ -f "$T/a/particles_00003.vtu" ] && [ "$stop_absorbed" -gt 0 ]
+check $? "it left a checkpoint and an extra snapshot (particles_00003) at step 200, with $stop_absorbed particles absorbed by then"
+"$BIN" restart "$T/a" --set time.max_steps=0 --threads 1 --quiet 2> "$T/a2.log"
+check $? "hvsph restart continues it (1 thread)"
+same_files "$T/ref" "$T/a"
+check $? "continued run: every file identical to the reference"
+
+# 2. killed (SIGKILL) while checkpointing every step, then continued
+"$BIN" run "$CASE" -o "$T/k" "${SETS[@]}" --set output.checkpoint_wall=1us --threads 2 --quiet \
+  2> "$T/k1.log" &
+pid=$!
+for _ in $(seq 1 2000); do   # until the run is past its first output and a few steps on
+  [ -f "$T/k/checkpoint.hvc" ] && [ "$(grep -c '^[0-9]' "$T/k/summary.csv" 2>/dev/null)" -ge 2 ] && break
+  sleep 0.01
+done
+kill -KILL $pid 2> /dev/null
+wait $pid 2> /dev/null
+ls -a "$T/k" | grep -q '\.tmp\.' && echo "  (a temporary file of the killed write is left: $(ls -a "$T/k" | grep '\.tmp\.'))"
+rows=$(grep -c '^[0-9]' "$T/k/summary.csv")
+echo "  killed with $rows summary rows"
+"$BIN" restart "$T/k" --threads 2 --quiet 2> "$T/k2.log"
+check $? "restart after SIGKILL"
+grep -o "from its checkpoint at t = [^)]*)" "$T/k2.log" | head -1
+same_files "$T/ref" "$T/k"
+check $? "killed and continued run: every file identical to the reference"
+
+# 3. a finished run carried further equals a longer run
+"$BIN" run "$CASE" -o "$T/long" "${SETS[@]}" --set time.end=15us --threads 2 --quiet 2> /dev/null
+check $? "reference run to 15 us"
+cp -r "$T/ref" "$T/ext"
+"$BIN" restart "$T/ext" --set time.end=15us --threads 2 --quiet 2> "$T/ext.log"
+check $? "the 12 us run carried on to 15 us"
+same_files "$T/long" "$T/ext"
+check $? "carried-on run: every file identical to the 15 us run"
+
+# 4. nothing to do; bad checkpoints
+"$BIN" restart "$T/ref" --threads 2 2> "$T/done.log"
+st=$?
+grep -q "nothing to do" "$T/done.log"
+check $((st + $?)) "restarting a finished run does nothing, exit 0 (status $st)"
+bad_case() {  # bad_case NAME SETUP-COMMAND EXPECTED-MESSAGE [restart args]
+  local d="$T/bad_$1"
+  cp -r "$T/ref" "$d"
+  eval "$2"
+  (cd "$d" && md5sum * > "$T/before_$1.md5")
+  "$BIN" restart "$d" "${@:4}" --threads 2 2> "$T/bad_$1.log"
+  local st=$?
+  echo "  $1: exit $st: $(tail -1 "$T/bad_$1.log")"
+  [ $st -eq 2 ] && grep -q "$3" "$T/bad_$1.log" && grep -q "$d/checkpoint.hvc" "$T/bad_$1.log"
+  check $? "$1 checkpoint: exit 2, message names the file and says '$3'"
+  (cd "$d" && md5sum -c --quiet "$T/before_$1.md5") && [ -z "$(ls -a "$d" | grep '\.tmp\.')" ]
+  check $? "$1 checkpoint: every file of the folder left as it was"
+}
+bad_case damaged "printf '\\x55' | dd of=\$d/checkpoint.hvc bs=1 seek=5000 conv=notrunc status=none" \
+  "checksum does not match"
+bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph checkpoint"
+bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
+bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
