@@ -189,6 +189,10 @@ static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_e
   long printed_step = -1;
   /* output k falls at t_start + k × every (the last one at the end time) */
   double next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
+  while (every > 0 && next_out <= s->t) {   /* a restart with a shorter output.every */
+    o->next_k++;
+    next_out = o->t_start + (double)o->next_k * every;
+  }
   if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
   while (s->t < tend && !interrupted) {
     if (s->tp.max_steps && s->step >= s->tp.max_steps) break;
