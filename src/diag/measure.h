@@ -94,7 +94,10 @@ void meas_cavity_free(struct meas_cavity *c);
 /* ---- Plate: perforation and hole diameter ----------------------------------------
  * Plate particles: those of g->body (and mask) within the slab
  * x0 − slab_front <= x <= x0 + thickness + slab_rear (ejecta and debris that have left
- * the slab are not plate). Their positions are projected along x onto the (y, z)
+ * the slab are not plate) and, with attached_only (the default), in the largest
+ * connected piece among them (friends-of-friends at 1.5 Δ, fof.h): a fragment that has
+ * broken loose and drifts in the plane of the hole is debris, not the plate an
+ * experiment recovers and measures. Their positions are projected along x onto the (y, z)
  * plane — the view through the plate along the flight direction — and, in a half
  * model, mirrored to (y, −z). A square grid of cells of edge `cell` covers the window
  * |y − yc| <= W, |z| <= W (W = r_max, or the projected extent of the plate); a cell is
@@ -125,6 +128,7 @@ struct meas_plate_params {
   double seed_radius;  /* [m] the hole must come this close to the impact point (default Δ) */
   double r_max;        /* [m] half-width W of the window (default 0: the plate's extent) */
   const unsigned char *mask;  /* optional [p->n] */
+  int attached_only;   /* 1 (default): only the plate's largest connected piece is plate */
 };
 struct meas_plate {
   int perforated;
@@ -136,6 +140,7 @@ struct meas_plate {
   double area;              /* [m2] hole area (full plane, mirrored) */
   double cell;              /* [m] grid cell used */
   size_t n_plate;           /* particles taken as plate */
+  size_t n_detached;        /* particles in the slab left out as loose fragments */
 };
 void meas_plate_defaults(struct meas_plate_params *par, const struct meas_geom *g);
 int measure_plate(const struct particles *p, const struct meas_geom *g,

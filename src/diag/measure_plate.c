@@ -2,8 +2,9 @@
  * and docs/measurements.md.
  *
  * Steps:
- * 1. Plate particles in the slab are projected along x onto (u, w) = (y − yc, z) and,
- *    in a half model, mirrored to (u, −z).
+ * 1. Plate particles in the slab (with attached_only, those of the largest
+ *    friends-of-friends group among them) are projected along x onto
+ *    (u, w) = (y − yc, z) and, in a half model, mirrored to (u, −z).
  * 2. A grid of cells of edge c covers the window; cells whose centre lies within tol of
  *    a projected particle are material.
  * 3. The hole is the 4-connected set of empty cells grown from the empty cell nearest
@@ -21,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag/fof.h"
 #include "diag/measure.h"
 
 #define PLATE_MAX_CELLS 4096  /* per side of the projection grid */
@@ -38,6 +40,7 @@ void meas_plate_defaults(struct meas_plate_params *par, const struct meas_geom *
   par->seed_radius = s;
   par->r_max = 0.0;
   par->mask = NULL;
+  par->attached_only = 1;
 }
 
 /* 1D squared distance transform of f along n samples (f[q] = INFINITY: no site);
@@ -226,19 +229,54 @@ static int check_params(const struct meas_geom *g, const struct meas_plate_param
   return 0;
 }
 
-/* Projected plate points (mirrored in a half model): returns their count (pairs in *pts). */
-static size_t project(const struct particles *p, const struct meas_geom *g,
-                      const struct meas_plate_params *par, double **pts, size_t *nplate)
+/* The plate's particles: in the slab, of the body (and mask); with attached_only, only
+ * those of the largest friends-of-friends group among them. Returns a new [p->n] mask
+ * and the count left out as detached. */
+static unsigned char *select_plate(const struct particles *p, const struct meas_geom *g,
+                                   const struct meas_plate_params *par, size_t *ndetached,
+                                   struct hv_error *err)
 {
   const double xlo = g->x0 - par->slab_front, xhi = g->x0 + g->thickness + par->slab_rear;
-  const int mirror = g->half_model ? 1 : 0;
-  size_t np = 0, cnt = 0;
-  double *q = hv_malloc((2 * (size_t)(1 + mirror) * p->n + 2) * sizeof *q, "plate points");
+  unsigned char *sel = hv_calloc(p->n + 1, 1, "plate selection");
+  size_t nsel = 0;
   for (size_t i = 0; i < p->n; i++) {
     if (g->body >= 0 && p->body[i] != g->body) continue;
     if (par->mask && !par->mask[i]) continue;
     const double x = p->x[0][i], y = p->x[1][i], z = p->x[2][i];
     if (!(isfinite(x) && isfinite(y) && isfinite(z)) || x < xlo || x > xhi) continue;
+    sel[i] = 1;
+    nsel++;
+  }
+  *ndetached = 0;
+  if (!par->attached_only || nsel == 0) return sel;
+  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .mask = sel, .nmat = 0,
+                          .half_model = g->half_model};
+  struct fof_result fr;
+  fof_result_init(&fr);
+  if (fof_find(p, &fp, &fr, err)) {
+    fof_result_free(&fr);
+    free(sel);
+    return NULL;
+  }
+  for (size_t i = 0; i < p->n; i++)
+    if (sel[i] && fr.group[i] != 0) {   /* fragments are sorted by mass: 0 is the plate */
+      sel[i] = 0;
+      (*ndetached)++;
+    }
+  fof_result_free(&fr);
+  return sel;
+}
+
+/* Projected plate points (mirrored in a half model): returns their count (pairs in *pts). */
+static size_t project(const struct particles *p, const struct meas_geom *g,
+                      const unsigned char *sel, double **pts, size_t *nplate)
+{
+  const int mirror = g->half_model ? 1 : 0;
+  size_t np = 0, cnt = 0;
+  double *q = hv_malloc((2 * (size_t)(1 + mirror) * p->n + 2) * sizeof *q, "plate points");
+  for (size_t i = 0; i < p->n; i++) {
+    if (!sel[i]) continue;
+    const double y = p->x[1][i], z = p->x[2][i];
     cnt++;
     q[2 * np] = y - g->yc;
     q[2 * np + 1] = z;
@@ -431,8 +469,11 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
 {
   memset(out, 0, sizeof *out);
   if (check_params(g, par, err)) return -1;
+  unsigned char *sel = select_plate(p, g, par, &out->n_detached, err);
+  if (!sel) return hv_error_prefix(err, "plate measurement: ");
   double *pts;
-  const size_t np = project(p, g, par, &pts, &out->n_plate);
+  const size_t np = project(p, g, sel, &pts, &out->n_plate);
+  free(sel);
   struct pgrid G;
   mark(&G, pts, np, par);
   out->cell = G.c;

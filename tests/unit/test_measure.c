@@ -171,12 +171,63 @@ static void test_blind_and_slab(void)
             fabs(r.d_circle - 12 * S) <= S,
         "debris of the plate beyond the slab is not plate (D %.3fΔ)", r.d_circle / S);
   const double plo[3] = {X0 + TH + 0.5 * S, -2 * S, 0}, phi[3] = {X0 + TH + 1.5 * S, 2 * S, 2 * S};
+  const size_t before_plug = p.n;
   add_lattice(&p, plo, phi, 0, &none, 1, 1.0);
+  const size_t nplug = p.n - before_plug;
+  /* the plug's first layer is 1.5Δ behind the plate's last one: not linked to it */
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated &&
+            fabs(r.d_circle - 12 * S) <= S && r.n_detached == nplug && nplug > 0,
+        "a plug broken loose, still inside the slab, is debris: D %.3fΔ, %zu particles left "
+        "out (its %zu)", r.d_circle / S, r.n_detached, nplug);
+  par.attached_only = 0;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated,
-        "a plug still inside the slab blocks the line of sight");
+        "with attached_only 0 the plug blocks the line of sight");
   par.slab_rear = 0.2 * S;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated,
         "... and is left out with a thinner slab");
+  particles_free(&p);
+}
+
+/* A hole of 12Δ with loose fragments drifting in its plane, and with a petal still
+ * joined to the rim. */
+static void test_detached(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double lo[3] = {X0, -W, 0}, hi[3] = {X0 + TH, W, W};
+  const struct cut h = {.yc = 0, .R = 6 * S, .xcut = 1.0};
+  add_lattice(&p, lo, hi, 0, &h, 1, 1.0);
+  const size_t nplate = p.n;
+  /* three single particles in the hole, 2Δ and more from each other and from the rim */
+  const double loose[3][3] = {{X0 + 1.5 * S, 0.0, 0.5 * S}, {X0 + 1.5 * S, 2.2 * S, 1.0 * S},
+                              {X0 + 0.5 * S, -1.5 * S, 2.5 * S}};
+  for (int k = 0; k < 3; k++) add_particle(&p, loose[k], 1);
+  struct meas_geom g;
+  plate_geom(&g, 0.0, 1);
+  struct meas_plate_params par;
+  meas_plate_defaults(&par, &g);
+  struct meas_plate r;
+  struct hv_error err;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated &&
+            fabs(r.d_circle - 12 * S) <= S && r.n_detached == 3 && r.n_plate == nplate,
+        "three loose particles in the hole are not plate: D %.3fΔ (12Δ punched), %zu left out",
+        r.d_circle / S, r.n_detached);
+  par.attached_only = 0;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.d_circle < 8 * S,
+        "counted as plate they shrink the circle to %.3fΔ", r.d_circle / S);
+  particles_free(&p);
+
+  /* a petal: a chain at Δ spacing from the rim (radius 6Δ) in to radius 3Δ */
+  particles_init(&p);
+  add_lattice(&p, lo, hi, 0, &h, 1, 1.0);
+  for (int k = 0; k < 3; k++) {
+    const double q[3] = {X0 + 1.5 * S, 0.0, (5.5 - k) * S};
+    add_particle(&p, q, 1);
+  }
+  par.attached_only = 1;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.n_detached == 0 && r.d_circle < 10.5 * S,
+        "a petal joined to the rim is plate: D %.3fΔ, %zu left out", r.d_circle / S,
+        r.n_detached);
   particles_free(&p);
 }
 
@@ -328,6 +379,7 @@ int main(void)
 {
   test_holes();
   test_blind_and_slab();
+  test_detached();
   test_ellipse_and_open();
   test_cavity();
   return test_finish();
