@@ -150,6 +150,10 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     struct meas_plate_params pp;
     struct meas_plate hole;
     meas_plate_defaults(&pp, &g);
+    /* perforation of the backwall: any of its material in the flight path blocks it,
+       joined or not (a cracked bulge whose particles have drifted apart still stops
+       the debris; a bumper's hole is measured on its joined piece) */
+    pp.attached_only = 0;
     if (measure_plate(&s->p, &g, &pp, &hole, err)) return -1;
     meas_table_add(&mr->table, t, "perforated", hole.perforated, "", s->body[mr->backwall].name);
     meas_table_add(&mr->table, t, "peak_pressure_center",
