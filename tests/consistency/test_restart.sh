@@ -18,7 +18,9 @@
 #  4. a finished run restarted again does nothing (exit 0); a damaged checkpoint (one
 #     byte changed), a truncated one, a missing one and one from another resolution
 #     end with exit status 2 and a message naming the file, and leave every file of
-#     the folder as it was.
+#     the folder as it was;
+#  5. `hvsph validate --resume` continues a validation run stopped by SIGINT, and its
+#     validation.csv and measurements.csv equal those of a straight run.
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -115,6 +117,28 @@ bad_case damaged "printf '\\x55' | dd of=\$d/checkpoint.hvc bs=1 seek=5000 conv=
 bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph checkpoint"
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
 bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
+
+# 5. hvsph validate --resume continues an interrupted validation run
+VSETS=(--scale 0.08 --only bumper-1 --threads 2)
+"$BIN" validate "${VSETS[@]}" -o "$T/val_ref" > "$T/val_ref.log" 2>&1
+check $? "validate bumper-1 at scale 0.08 straight through"
+"$BIN" validate "${VSETS[@]}" -o "$T/val" > "$T/val1.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 2000); do
+  [ "$(grep -c '^[0-9]' "$T/val/bumper-1/summary.csv" 2>/dev/null)" -ge 2 ] && break
+  sleep 0.01
+done
+kill -INT $pid 2> /dev/null
+wait $pid
+st=$?
+echo "  validate interrupted: exit $st, $(grep -c '^[0-9]' "$T/val/bumper-1/summary.csv") summary rows"
+"$BIN" validate --resume "${VSETS[@]}" -o "$T/val" > "$T/val2.log" 2>&1
+st2=$?
+grep -q "continuing the run" "$T/val2.log"
+check $((st2 + $?)) "validate --resume continues it from its checkpoint (exit $st2)"
+cmp -s "$T/val_ref/validation.csv" "$T/val/validation.csv" &&
+  cmp -s "$T/val_ref/bumper-1/measurements.csv" "$T/val/bumper-1/measurements.csv"
+check $? "its validation.csv and measurements.csv are identical to the straight run's"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
