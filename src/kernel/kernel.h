@@ -31,6 +31,19 @@ static inline double kernel_w(enum kernel_kind k, double r, double h)
   return 0.25 * t * t * t / (HV_KERNEL_PI * h3);
 }
 
+/* h³ W(r, h) as a function of q = r/h: the kernel's shape, dimensionless (no division). */
+static inline double kernel_w_h3(enum kernel_kind k, double q)
+{
+  if (q >= 2.0) return 0.0;
+  if (k == KERNEL_WENDLAND_C2) {
+    double t = 1.0 - 0.5 * q;
+    return 21.0 / (16.0 * HV_KERNEL_PI) * t * t * t * t * (2.0 * q + 1.0);
+  }
+  if (q < 1.0) return (1.0 - 1.5 * q * q + 0.75 * q * q * q) * (1.0 / HV_KERNEL_PI);
+  double t = 2.0 - q;
+  return 0.25 / HV_KERNEL_PI * t * t * t;
+}
+
 /* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0.
  * One division, two in the outer shell 1 ≤ q < 2 (h/r); computing 1/h and 1/r
  * from one 1/(r h) was measured slower (docs/performance.md). */

@@ -196,7 +196,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
   const int use_as = sp->as_eps > 0;
   /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
-  const double w_dp = kernel_w(kk, 1.0 / sp->eta, 1.0);
+  const double inv_w_dp = 1.0 / kernel_w_h3(kk, 1.0 / sp->eta);
   /* Each particle's data as a partner (ghosts included) in two cache lines, read
      together for every pair instead of from 17 arrays: x, y, z, h, v, m, then p/ρ²,
      S/ρ² (computed once instead of once per pair: the same operations, so the same
@@ -278,7 +278,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
               double Rs[6];
               if (Ri_any | (bfj & 1)) {
                 for (int t = 0; t < 6; t++) Rs[t] = Ri[t] + wj[TW_R + t];
-                const double fr = kernel_w(kk, r, hij) * hij * hij * hij / w_dp;
+                const double fr = kernel_w_h3(kk, r * (1.0 / hij)) * inv_w_dp;
                 const double fn = as_n == 4.0 ? (fr * fr) * (fr * fr) : pow(fr, as_n);
                 for (int t = 0; t < 6; t++) T[t] += Rs[t] * fn;
                 /* its work, −½ vᵢⱼ·(Rₛ fⁿ ∇ᵢW) per unit m_j: the pair force is
