@@ -205,7 +205,10 @@ static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_e
     measure_run_step(&o->mr, s);
     if (hit) {
       s->t = next_out;
-      o->next_k++;
+      /* the k-th output time reached (not an end time between two of them, which a
+         run carried further with a later end would otherwise skip the next one for) */
+      if (every > 0 && next_out >= o->t_start + (double)o->next_k * every - 1e-9 * every)
+        o->next_k++;
       next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
       if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
       if (write_outputs(s, o, err) || checkpoint(s, o, &cc, err)) return -1;
