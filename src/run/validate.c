@@ -41,6 +41,7 @@ struct val_row {
 struct val_case {
   char name[64];
   double runtime;   /* [s] wall clock, NaN if not run now */
+  int resumed;      /* continued from a checkpoint: runtime is this part's only */
   long particles;
   int status;       /* exit status of the run (0 ok, -1 not run) */
 };
@@ -149,6 +150,7 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
   if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
     ro.restart_dir = outdir;
     ro.nsets = 0;
+    vc->resumed = 1;
     fprintf(stderr, "hvsph validate: %s: continuing the run in %s from its checkpoint\n", name,
             outdir);
   } else {
@@ -253,6 +255,7 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   for (int k = 0; k < ncase; k++) {
     char rt[64];
     if (isnan(cs[k].runtime)) snprintf(rt, sizeof rt, "(earlier run)");
+    else if (cs[k].resumed) snprintf(rt, sizeof rt, "%.0f (continued part)", cs[k].runtime);
     else snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
     afile_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
                  cs[k].particles, rt,
