@@ -202,6 +202,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
   for (size_t i = 0; i < p->n; i++)
     if (taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit) n++;
   out->v_mean = out->v_lead = out->v_max = out->x_lead = out->half_angle = NAN;
+  out->gap = par->x_limit - par->x_rear;
   if (!n) return 0;
   struct wval *vx = hv_malloc(n * sizeof *vx, "cloud"), *xs = hv_malloc(n * sizeof *xs, "cloud");
   struct wval *th = hv_malloc(n * sizeof *th, "cloud");

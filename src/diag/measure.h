@@ -180,6 +180,8 @@ struct meas_debris {
   double v_max;       /* [m/s] */
   double x_lead;      /* [m] */
   double half_angle;  /* [rad] */
+  double gap;         /* [m] x_limit − x_rear: how far the leading edge can go (INFINITY:
+                         no next plate) */
 };
 /* Defaults for the cloud behind plate g: body any, x_rear = x0 + thickness, margin 2Δ. */
 void meas_debris_defaults(struct meas_debris_params *par, const struct meas_geom *g);

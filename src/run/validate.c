@@ -46,9 +46,23 @@ struct val_case {
   int status;       /* exit status of the run (0 ok, -1 not run) */
 };
 
+/* The row (quantity, object) at time `time` (bitwise), or NULL. */
+static const struct meas_row *row_at(const struct meas_table *t, const char *quantity,
+                                     const char *object, double time)
+{
+  for (size_t k = 0; k < t->n; k++) {
+    const struct meas_row *r = &t->rows[k];
+    if (r->time == time && !strcmp(r->quantity, quantity) && !strcmp(r->object, object))
+      return r;
+  }
+  return NULL;
+}
+
 /* The value of (quantity, object) in a run's measurements: the last one, or for a debris
- * cloud's quantities the one at the output time when the cloud held the most mass
- * (before it reaches the next plate); NaN if absent. */
+ * cloud's quantities the one at the output time when the cloud in free flight held the
+ * most mass: its leading edge still short of the next plate by 5 % of the gap
+ * (cloud_lead_distance < 0.95 cloud_gap; debris that has reached the plate piles up
+ * there at rest and is still inside the cloud's region); NaN if absent. */
 static double pick_measurement(const struct meas_table *t, const char *quantity,
                                const char *object, char *unit, size_t ulen)
 {
@@ -57,10 +71,13 @@ static double pick_measurement(const struct meas_table *t, const char *quantity,
     double best_mass = -1.0;
     for (size_t k = 0; k < t->n; k++) {
       const struct meas_row *r = &t->rows[k];
-      if (!strcmp(r->object, object) && !strcmp(r->quantity, "cloud_mass") && r->value > best_mass) {
-        best_mass = r->value;
-        best_time = r->time;
-      }
+      if (strcmp(r->object, object) || strcmp(r->quantity, "cloud_mass") || !(r->value > best_mass))
+        continue;
+      const struct meas_row *lead = row_at(t, "cloud_lead_distance", object, r->time);
+      const struct meas_row *gap = row_at(t, "cloud_gap", object, r->time);
+      if (lead && gap && !(lead->value < 0.95 * gap->value)) continue;   /* arrived */
+      best_mass = r->value;
+      best_time = r->time;
     }
   }
   for (size_t k = 0; k < t->n; k++) {

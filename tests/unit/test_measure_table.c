@@ -95,7 +95,8 @@ static void test_measurement_rows(void)
   struct meas_cavity cav = {.L = 0.08, .D = 0.0125, .D_mean = 0.012};
   struct meas_plate pl = {.perforated = 1, .d_circle = 0.0105, .d_equiv = 0.011, .area = 9e-5};
   struct meas_debris db = {.count = 10, .m = 1e-3, .v_mean = 3000, .v_lead = 6000,
-                           .v_max = 6500, .x_lead = 0.05, .half_angle = HV_MEAS_PI / 6};
+                           .v_max = 6500, .x_lead = 0.05, .half_angle = HV_MEAS_PI / 6,
+                           .gap = 0.2};
   struct meas_backwall bw = {.crater_depth = 0.004, .r_damage = 0.15};
   struct meas_gas_front gf = {.n_shocked = 5, .x_axial = 0.03, .r_radial = 0.02, .r_max = 0.031};
   struct fof_fragment fr[3] = {{.m = 0.5, .count = 10, .multiplicity = 1},
@@ -110,7 +111,7 @@ static void test_measurement_rows(void)
     meas_table_add_gas(&t, 1e-4, "nitrogen", &gf);
     meas_table_add_fragments(&t, 1e-4, "all", &fo);
   }
-  CHECK(t.n == 4 + 6 + 7 + 5 + 4 + 6, "one row per quantity and object: %zu", t.n);
+  CHECK(t.n == 4 + 6 + 8 + 5 + 4 + 6, "one row per quantity and object: %zu", t.n);
   CHECK(count_rows(&t, "penetration_depth", "target") == 1 &&
             count_rows(&t, "hole_diameter", "bumper") == 1 &&
             count_rows(&t, "cloud_half_angle", "cloud1") == 1 &&

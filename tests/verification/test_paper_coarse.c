@@ -7,7 +7,9 @@
  * diameters; the radiograph PNG and validation.md exist; `hvsph measure` on the run's
  * folder rewrites measurements.csv with the same rows (the snapshots are written
  * round-trip exact), skipping a stale snapshot of an earlier run left in the folder,
- * and refuses a folder without snapshots or a case (exit 2). */
+ * and refuses a folder without snapshots or a case (exit 2). Last, on a hand-written
+ * W.P.2 measurements table, that validate compares a debris cloud in free flight (the
+ * output of most cloud mass before its leading edge reaches the next plate). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -78,5 +80,35 @@ int main(void)
   CHECK(st == 0 && md && strstr(md, "| bumper-1 | hole_diameter (bumper) |"),
         "validate --no-run writes validation.md with the case (exit %d)", st);
   free(md);
+
+  /* which time validate compares a debris cloud at: a hand-written W.P.2 table whose
+     cloud arrives at the backwall (gap 200 mm) between 10 and 15 us and piles up there:
+     the cloud in free flight (lead < 0.95 gap) with the most mass is the one at 10 us */
+  snprintf(path, sizeof path, "%s/val2/wp2", tmp);
+  snprintf(cmd, sizeof cmd, "mkdir -p %s", path);
+  test_run(cmd, NULL, 0);
+  snprintf(path, sizeof path, "%s/val2/wp2/measurements.csv", tmp);
+  FILE *f = fopen(path, "w");
+  if (f) {
+    fprintf(f, "time,quantity,value,unit,object\n");
+    const double t[3] = {5e-6, 1e-5, 1.5e-5}, mass[3] = {1e-3, 2e-3, 3e-3};
+    const double lead[3] = {0.05, 0.15, 0.199}, vmean[3] = {2000, 1900, 100};
+    for (int k = 0; k < 3; k++)
+      fprintf(f, "%.17g,cloud_mass,%g,kg,cloud:bumper\n%.17g,cloud_lead_distance,%g,m,"
+              "cloud:bumper\n%.17g,cloud_gap,0.2,m,cloud:bumper\n%.17g,cloud_velocity_mean,"
+              "%g,m/s,cloud:bumper\n%.17g,hole_diameter,%g,m,bumper\n", t[k], mass[k], t[k],
+              lead[k], t[k], t[k], vmean[k], t[k], 0.016 + 0.001 * k);
+    fclose(f);
+  }
+  snprintf(cmd, sizeof cmd, "cd %s && %s validate --no-run --only wp2 -o %s/val2",
+           test_source_dir(), test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  snprintf(path, sizeof path, "%s/val2/validation.csv", tmp);
+  char *csv = test_slurp(path, NULL);
+  CHECK(st == 0 && csv && strstr(csv, "wp2,cloud_velocity_mean:cloud:bumper,1.9,") &&
+            strstr(csv, "wp2,hole_diameter:bumper,18,"),
+        "validate takes the cloud at 10 us (1.9 km/s: in free flight, most mass) and the hole "
+        "at the end (18 mm) (exit %d):\n%s", st, csv ? csv : "(no validation.csv)");
+  free(csv);
   return test_finish();
 }
