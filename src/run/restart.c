@@ -54,7 +54,8 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
   const size_t n = p->n;
 
   /* what this is */
-  const char *names[HV_MAX_MATERIALS > 64 ? HV_MAX_MATERIALS : 64];
+  _Static_assert(HV_MAX_MATERIALS <= 64, "name lists hold 64 bodies or materials");
+  const char *names[64];
   size_t len;
   int rc = ckpt_put(&w, "version", CKPT_BYTES, strlen(HVSPH_VERSION), HVSPH_VERSION, err) ||
            ckpt_put(&w, "case", CKPT_BYTES, strlen(s->case_name), s->case_name, err);
