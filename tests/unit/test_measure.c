@@ -90,6 +90,13 @@ static void plate_geom(struct meas_geom *g, double yc, int half)
                           .half_model = half};
 }
 
+/* The half-model plate on the axis yc = 0 with default measurement parameters. */
+static void half_plate(struct meas_geom *g, struct meas_plate_params *par)
+{
+  plate_geom(g, 0.0, 1);
+  meas_plate_defaults(par, g);
+}
+
 static void check_hole(double D, double yc, int half, int hcp)
 {
   struct particles p;
@@ -150,9 +157,8 @@ static void test_blind_and_slab(void)
   const struct cut c = {.yc = 0, .R = 6 * S, .xcut = X0 + 2 * S};  /* leaves the last layer */
   add_lattice(&p, lo, hi, 0, &c, 1, 1.0);
   struct meas_geom g;
-  plate_geom(&g, 0.0, 1);
   struct meas_plate_params par;
-  meas_plate_defaults(&par, &g);
+  half_plate(&g, &par);
   struct meas_plate r;
   struct hv_error err;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated, "blind crater: not "
@@ -203,9 +209,8 @@ static void test_detached(void)
                               {X0 + 0.5 * S, -1.5 * S, 2.5 * S}};
   for (int k = 0; k < 3; k++) add_particle(&p, loose[k], 1);
   struct meas_geom g;
-  plate_geom(&g, 0.0, 1);
   struct meas_plate_params par;
-  meas_plate_defaults(&par, &g);
+  half_plate(&g, &par);
   struct meas_plate r;
   struct hv_error err;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated &&
@@ -239,9 +244,8 @@ static void test_ellipse_and_open(void)
   const struct cut c = {.a = 10 * S, .b = 5 * S, .ey = 2 * S};
   add_lattice(&p, lo, hi, 0, &c, 1, 1.0);
   struct meas_geom g;
-  plate_geom(&g, 0.0, 1);
   struct meas_plate_params par;
-  meas_plate_defaults(&par, &g);
+  half_plate(&g, &par);
   struct meas_plate r;
   struct hv_error err;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated, "elliptical hole found");
