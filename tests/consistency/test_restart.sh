@@ -118,6 +118,15 @@ bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph ch
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
 bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
 
+# output.checkpoint: false writes none, and a restart then says so
+"$BIN" run "$CASE" -o "$T/nock" "${SETS[@]}" --set output.checkpoint=false \
+  --set time.max_steps=50 --threads 2 --quiet 2> /dev/null
+[ ! -e "$T/nock/checkpoint.hvc" ] && [ -f "$T/nock/summary.csv" ]
+check $? "output.checkpoint: false writes no checkpoint"
+"$BIN" restart "$T/nock" --threads 2 2> "$T/nock.log"
+[ $? -eq 2 ] && grep -q "no checkpoint to restart from" "$T/nock.log"
+check $? "... and hvsph restart then ends with exit 2: $(tail -1 "$T/nock.log")"
+
 # 5. hvsph validate --resume continues an interrupted validation run
 VSETS=(--scale 0.08 --only bumper-1 --threads 2)
 "$BIN" validate "${VSETS[@]}" -o "$T/val_ref" > "$T/val_ref.log" 2>&1
