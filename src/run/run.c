@@ -163,6 +163,70 @@ static const char *default_name(const char *path, char *buf, size_t len)
   return buf;
 }
 
+/* run_segments.csv: one row per run or restart of this folder — which hvsph, how many
+ * threads, when, from which step and time to which, how long, how it ended — rewritten
+ * (through afile) at every checkpoint and at the end. A restart keeps the rows before
+ * it. Provenance only: nothing reads it back but `validate` (the total wall time). */
+struct segment {
+  char *prev;         /* the rows of the earlier segments (with the header), or NULL */
+  int index;
+  char started[32];   /* UTC */
+  long step0;
+  double t0, wall0;
+};
+
+static const char SEG_HEADER[] =
+    "# hvsph run segments: one row per run or restart of this folder (docs/output-files.md)\n"
+    "segment,version,threads,started_utc,step_from,time_from,step_to,time_to,wall_s,end\n";
+
+static void segment_begin(struct segment *g, const char *dir, int restart, const struct sim *s)
+{
+  memset(g, 0, sizeof *g);
+  char path[4200];
+  snprintf(path, sizeof path, "%s/run_segments.csv", dir);
+  FILE *f = restart ? fopen(path, "rb") : NULL;
+  if (f) {
+    size_t len = 0, cap = 4096;
+    g->prev = hv_malloc(cap, "run segments");
+    for (size_t k; (k = fread(g->prev + len, 1, cap - len - 1, f)) > 0;) {
+      len += k;
+      if (len + 1 == cap) g->prev = hv_realloc(g->prev, cap *= 2, "run segments");
+    }
+    fclose(f);
+    g->prev[len] = 0;
+    if (len == 0 || g->prev[len - 1] != '\n' || strncmp(g->prev, SEG_HEADER, sizeof SEG_HEADER - 1)) {
+      free(g->prev);   /* not ours or torn: start afresh */
+      g->prev = NULL;
+    } else {
+      for (const char *q = g->prev + sizeof SEG_HEADER - 1; *q; q++) g->index += *q == '\n';
+    }
+  }
+  time_t now = time(NULL);
+  struct tm tm;
+  gmtime_r(&now, &tm);
+  strftime(g->started, sizeof g->started, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  g->step0 = s->step;
+  g->t0 = s->t;
+  g->wall0 = wall_time();
+}
+
+static int segment_write(const struct segment *g, const char *dir, const struct sim *s,
+                         const char *end, struct hv_error *err)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/run_segments.csv", dir);
+  struct afile af;
+  if (afile_open(&af, path, err)) return -1;
+  if (afile_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
+      afile_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
+                   omp_get_max_threads(), g->started, g->step0, g->t0, s->step, s->t,
+                   wall_time() - g->wall0, end)) {
+    afile_abort(&af);
+    return -1;
+  }
+  return afile_commit(&af, err);
+}
+
 /* Checkpoints: at every output time, every output.checkpoint_wall seconds of wall-clock
  * time, and when the run stops between output times. */
 struct ckpt_clock {
@@ -171,16 +235,17 @@ struct ckpt_clock {
 };
 
 static int checkpoint(struct sim *s, struct run_outputs *o, struct ckpt_clock *cc,
-                      struct hv_error *err)
+                      const struct segment *g, struct hv_error *err)
 {
   if (!s->out.checkpoint || cc->step == s->step) return 0;
-  if (restart_write(s, o, err)) return -1;
+  if (restart_write(s, o, err) || segment_write(g, o->dir, s, "running", err)) return -1;
   cc->wall = wall_time();
   cc->step = s->step;
   return 0;
 }
 
-static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_error *err)
+static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *g, int quiet,
+                    struct hv_error *err)
 {
   const int tty = isatty(STDERR_FILENO);
   const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end, every = s->out.every;
@@ -211,9 +276,9 @@ static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_e
         o->next_k++;
       next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
       if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
-      if (write_outputs(s, o, err) || checkpoint(s, o, &cc, err)) return -1;
+      if (write_outputs(s, o, err) || checkpoint(s, o, &cc, g, err)) return -1;
     } else if (s->out.checkpoint_wall > 0 && wall_time() - cc.wall >= s->out.checkpoint_wall) {
-      if (checkpoint(s, o, &cc, err)) return -1;
+      if (checkpoint(s, o, &cc, g, err)) return -1;
     }
     if (!quiet) {
       double now = wall_time();
@@ -228,7 +293,7 @@ static int run_loop(struct sim *s, struct run_outputs *o, int quiet, struct hv_e
   int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * RUN_SUMMARY_COLS] == (double)s->step;
   /* stopped between output times (interrupted, max_steps): the checkpoint first, with
      the outputs so far, so that a restart numbers its snapshots as an uninterrupted run */
-  if (!wrote_last && (checkpoint(s, o, &cc, err) || write_outputs(s, o, err))) return -1;
+  if (!wrote_last && (checkpoint(s, o, &cc, g, err) || write_outputs(s, o, err))) return -1;
   return 0;
 }
 
@@ -245,6 +310,8 @@ int run_main(const struct run_options *ro)
   const char *restart = ro->restart_dir;
   char path[4200], ckpt[4200];
   struct cfg *c = NULL;
+  struct segment seg;
+  int seg_open = 0;
   if (restart) {   /* the case is the run's used_parameters.yaml */
     snprintf(path, sizeof path, "%s/used_parameters.yaml", restart);
     restart_path(restart, ckpt, sizeof ckpt);
@@ -312,11 +379,16 @@ int run_main(const struct run_options *ro)
   interrupted = 0;
   signal(SIGINT, on_sigint);
   signal(SIGTERM, on_sigint);
+  segment_begin(&seg, o.dir, restart != NULL, &s);
+  seg_open = 1;
   if ((!restart && (step_init(&s, &err) || write_outputs(&s, &o, &err))) ||
-      run_loop(&s, &o, ro->quiet, &err))
+      run_loop(&s, &o, &seg, ro->quiet, &err))
     goto fail;
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
+  if (segment_write(&seg, o.dir, &s, interrupted ? "interrupted" : s.t < s.tp.end ?
+                    "stopped (max_steps)" : "done", &err))
+    goto fail;
   if (interrupted) {
     hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s%s",
             s.t, s.step, o.dir, s.out.checkpoint ? " (continue with hvsph restart)" : "");
@@ -332,7 +404,13 @@ fail:
   signal(SIGTERM, SIG_DFL);
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
+  if (seg_open) {   /* the row says how it ended; a second failure here is not reported */
+    struct hv_error e2;
+    hv_error_clear(&e2);
+    segment_write(&seg, o.dir, &s, "failed", &e2);
+  }
 done:
+  if (seg_open) free(seg.prev);
   outputs_free(&o);
   sim_free(&s);
   if (c) cfg_free(c);

@@ -41,7 +41,7 @@ struct val_row {
 struct val_case {
   char name[64];
   double runtime;   /* [s] wall clock, NaN if not run now */
-  int resumed;      /* continued from a checkpoint: runtime is this part's only */
+  int segments;     /* rows of its run_segments.csv (runs and restarts); 0: none */
   long particles;
   int status;       /* exit status of the run (0 ok, -1 not run) */
 };
@@ -167,7 +167,6 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
   if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
     ro.restart_dir = outdir;
     ro.nsets = 0;
-    vc->resumed = 1;
     fprintf(stderr, "hvsph validate: %s: continuing the run in %s from its checkpoint\n", name,
             outdir);
   } else {
@@ -272,7 +271,8 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   for (int k = 0; k < ncase; k++) {
     char rt[64];
     if (isnan(cs[k].runtime)) snprintf(rt, sizeof rt, "(earlier run)");
-    else if (cs[k].resumed) snprintf(rt, sizeof rt, "%.0f (continued part)", cs[k].runtime);
+    else if (cs[k].segments > 1)
+      snprintf(rt, sizeof rt, "%.0f (%d segments)", cs[k].runtime, cs[k].segments);
     else snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
     afile_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
                  cs[k].particles, rt,
@@ -361,6 +361,19 @@ int validate_main(int argc, char **argv)
     interrupted = vc->status == HV_EXIT_INTERRUPTED;
     if (norun) vc->status = 0;
     vc->particles = particles_of(dir);
+    {   /* the run's wall time over all its segments (runs and restarts), when recorded */
+      char spath[4300];
+      snprintf(spath, sizeof spath, "%s/run_segments.csv", dir);
+      double *wall = NULL;
+      struct hv_error serr;
+      const int nseg = access(spath, R_OK) ? 0 : io_read_table_column(spath, "wall_s", &wall, &serr);
+      if (nseg > 0) {
+        vc->runtime = 0.0;
+        for (int k = 0; k < nseg; k++) vc->runtime += wall[k];
+        vc->segments = nseg;
+      }
+      free(wall);
+    }
     snprintf(png, sizeof png, "%s/final.png", dir);
     if (render_final(dir, png, &err)) hv_warn("%s: no radiograph: %s", names[j], err.msg);
     snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);

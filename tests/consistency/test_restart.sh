@@ -34,12 +34,13 @@ pass=0 fail=0
 check() {  # check CONDITION-STATUS MESSAGE
   if [ "$1" -eq 0 ]; then pass=$((pass + 1)); echo "PASS: $2"; else fail=$((fail + 1)); echo "FAIL: $2"; fi
 }
-# every file of folder $1 (but used_parameters.yaml) is in $2 with the same bytes
+# every file of folder $1 (but used_parameters.yaml and run_segments.csv, which records
+# wall times and thread counts) is in $2 with the same bytes
 same_files() {
   local n=0 bad=0
   for f in "$1"/*; do
     b=$(basename "$f")
-    [ "$b" = used_parameters.yaml ] && continue
+    [ "$b" = used_parameters.yaml ] || [ "$b" = run_segments.csv ] && continue
     n=$((n + 1))
     if ! cmp -s "$f" "$2/$b"; then echo "  differs: $b"; bad=1; fi
   done
@@ -65,6 +66,10 @@ check $? "it left a checkpoint and an extra snapshot (particles_00003) at step 2
 check $? "hvsph restart continues it (1 thread)"
 same_files "$T/ref" "$T/a"
 check $? "continued run: every file identical to the reference"
+seg=$(grep -c '^[0-9]' "$T/a/run_segments.csv")
+grep -q '^0,.*,2,.*,0,0,200,.*,stopped (max_steps)$' "$T/a/run_segments.csv" &&
+  grep -q '^1,.*,1,.*,200,.*,done$' "$T/a/run_segments.csv"
+check $((seg - 2 + $?)) "run_segments.csv: two rows, 2 threads steps 0-200 stopped, 1 thread from 200 done"
 
 # 2. killed (SIGKILL) while checkpointing every step, then continued
 "$BIN" run "$CASE" -o "$T/k" "${SETS[@]}" --set output.checkpoint_wall=1us --threads 2 --quiet \
@@ -148,6 +153,8 @@ check $((st2 + $?)) "validate --resume continues it from its checkpoint (exit $s
 cmp -s "$T/val_ref/validation.csv" "$T/val/validation.csv" &&
   cmp -s "$T/val_ref/bumper-1/measurements.csv" "$T/val/bumper-1/measurements.csv"
 check $? "its validation.csv and measurements.csv are identical to the straight run's"
+grep -q '^| bumper-1 | [0-9]* | [0-9]* (2 segments) | ok |' "$T/val/validation.md"
+check $? "validation.md gives its runtime summed over its 2 segments: $(grep '^| bumper-1 | [0-9]* |' "$T/val/validation.md")"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
