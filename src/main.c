@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/error.h"
 #include "material/material.h"
@@ -119,8 +120,22 @@ static int cmd_bench(int argc, char **argv)
   return bench_main(&o);
 }
 
+/* OpenMP threads that wait for work sleep instead of spinning, unless the user chose
+ * otherwise: on this project's 2-core machine a spinning run beside any other busy
+ * process (a second run, a build) became 20 to 30 times slower (bumper-1 at resolution
+ * 0.08: 34 s instead of 1 s beside a 2-thread run), while alone the two policies measure
+ * the same (docs/performance.md). libgomp reads the variable when it is loaded, so it
+ * is set and the program executed again once, before anything else. */
+static void wait_policy(char **argv)
+{
+  if (getenv("OMP_WAIT_POLICY")) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1)) return;
+  execv("/proc/self/exe", argv);   /* returns only on failure: go on as we are */
+}
+
 int main(int argc, char **argv)
 {
+  wait_policy(argv);
   if (argc < 2) {
     usage(stderr);
     return HV_EXIT_USAGE;

@@ -115,24 +115,63 @@ static void update_h(struct sim *s)
   }
 }
 
-/* Proposes the next step from the CFL and acceleration limits. */
-static double next_dt(const struct sim *s)
+/* Proposes the next step from the CFL and acceleration limits, and records which limit
+ * (and which particle: the smallest slot among equal minima, so it does not depend on
+ * the thread count) set it. */
+static double next_dt(struct sim *s)
 {
   const struct particles *p = &s->p;
   double dt = HUGE_VAL;
-#pragma omp parallel for schedule(static) reduction(min : dt)
-  for (size_t i = 0; i < p->n; i++) {
-    double d = s->tp.cfl * p->h[i] / (p->vsig[i] > 0 ? p->vsig[i] : 1e-300);
-    double a2 = p->a[0][i] * p->a[0][i] + p->a[1][i] * p->a[1][i] + p->a[2][i] * p->a[2][i];
-    if (a2 > 0) {
-      double da = s->tp.cfl_acc * sqrt(p->h[i] / sqrt(a2));
-      if (da < d) d = da;
+  size_t who = SIZE_MAX;
+  int kind = DT_CFL;
+#pragma omp parallel
+  {
+    double tdt = HUGE_VAL;
+    size_t twho = SIZE_MAX;
+    int tkind = DT_CFL;
+#pragma omp for schedule(static)
+    for (size_t i = 0; i < p->n; i++) {
+      double d = s->tp.cfl * p->h[i] / (p->vsig[i] > 0 ? p->vsig[i] : 1e-300);
+      int k = DT_CFL;
+      double a2 = p->a[0][i] * p->a[0][i] + p->a[1][i] * p->a[1][i] + p->a[2][i] * p->a[2][i];
+      if (a2 > 0) {
+        double da = s->tp.cfl_acc * sqrt(p->h[i] / sqrt(a2));
+        if (da < d) {
+          d = da;
+          k = DT_ACCELERATION;
+        }
+      }
+      if (d < tdt) {
+        tdt = d;
+        twho = i;
+        tkind = k;
+      }
     }
-    if (d < dt) dt = d;
+#pragma omp critical(hv_next_dt)
+    if (tdt < dt || (tdt == dt && twho < who)) {
+      dt = tdt;
+      who = twho;
+      kind = tkind;
+    }
   }
-  if (s->dt_prop > 0 && dt > s->tp.growth * s->dt_prop) dt = s->tp.growth * s->dt_prop;
-  if (s->tp.dt_max > 0 && dt > s->tp.dt_max) dt = s->tp.dt_max;
+  s->dt_limit = (enum dt_limit)kind;
+  s->dt_limit_id = who < p->n ? p->id[who] : -1;
+  if (s->dt_prop > 0 && dt > s->tp.growth * s->dt_prop) {
+    dt = s->tp.growth * s->dt_prop;
+    s->dt_limit = DT_GROWTH;
+  }
+  if (s->tp.dt_max > 0 && dt > s->tp.dt_max) {
+    dt = s->tp.dt_max;
+    s->dt_limit = DT_MAX;
+  }
   return dt;
+}
+
+const char *step_limit_name(enum dt_limit k)
+{
+  static const char *const names[] = {"CFL h/v_sig", "acceleration sqrt(h/|a|)",
+                                      "growth limit", "time.dt_max", "time.dt_init"};
+  return names[k];
 }
 
 /* After a step: every real finite with ρ > 0; names the offender of the lowest slot. */
@@ -187,6 +226,7 @@ int step_init(struct sim *s, struct hv_error *err)
   sph_forces(p, &s->grid, &s->sph, NULL);
   s->dt_prop = 0.0;
   s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
+  if (s->tp.dt_init > 0) s->dt_limit = DT_INIT;
   return 0;
 }
 

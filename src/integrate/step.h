@@ -24,5 +24,7 @@ int step_init(struct sim *s, struct hv_error *err);
 int step_advance(struct sim *s, struct hv_error *err);
 /* Largest smoothing length of the reals [m]. */
 double step_hmax(const struct particles *p);
+/* What set the last proposed step (s->dt_limit), in words. */
+const char *step_limit_name(enum dt_limit k);
 
 #endif

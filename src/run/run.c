@@ -102,11 +102,26 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
 {
   double el = wall_time() - wall0, frac = (s->t - t0) / (s->tp.end - t0 > 0 ? s->tp.end - t0 : 1);
   double eta = frac > 0 ? el * (1 - frac) / frac : 0.0;
-  char line[256];
+  char line[448];
+  char lim[160] = "";
+  if (s->step > 0 && (s->dt_limit == DT_CFL || s->dt_limit == DT_ACCELERATION)) {
+    const struct particles *p = &s->p;   /* the limiting particle's body, by its id */
+    const char *body = "?";
+    for (size_t i = 0; i < p->n; i++)
+      if (p->id[i] == s->dt_limit_id) {
+        body = s->body[p->body[i]].name;
+        break;
+      }
+    snprintf(lim, sizeof lim, "  [dt: %s, particle %lld in '%s']", step_limit_name(s->dt_limit),
+             (long long)s->dt_limit_id, body);
+  } else if (s->step > 0) {
+    snprintf(lim, sizeof lim, "  [dt: %s]", step_limit_name(s->dt_limit));
+  }
   snprintf(line, sizeof line, "step %ld  t = %.4e / %.4e s  dt = %.3e s  n = %zu  "
-           "elapsed %.1f s  remaining %.1f s", s->step, s->t, s->tp.end, s->dt, s->p.n, el, eta);
+           "elapsed %.1f s  remaining %.1f s%s", s->step, s->t, s->tp.end, s->dt, s->p.n, el, eta,
+           lim);
   if (tty)
-    fprintf(stderr, "\r%-110s%s", line, final ? "\n" : "");
+    fprintf(stderr, "\r%-160s%s", line, final ? "\n" : "");
   else
     fprintf(stderr, "hvsph: %s\n", line);
   fflush(stderr);

@@ -56,6 +56,9 @@ struct sim {
   double t;            /* [s] */
   double dt;           /* [s] next step (may be shortened to hit an output time) */
   double dt_prop;      /* [s] the step the stability limits proposed last */
+  enum dt_limit { DT_CFL = 0, DT_ACCELERATION, DT_GROWTH, DT_MAX, DT_INIT } dt_limit;
+                       /* which limit set dt_prop */
+  int64_t dt_limit_id; /* id of the particle whose CFL or acceleration limit it was */
   long step;
 };
 
