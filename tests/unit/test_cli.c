@@ -275,6 +275,16 @@ static void test_commands(void)
         (int)strlen(want) - 1, want);
   free(u);
   CHECK(summary_rows(dir) == 3, "summary.csv has 3 rows (t = 0, 0.005, 0.01)");
+  /* each log line says what set the step: a stability limit at a particle of 'slab' */
+  const char *lim = strstr(out, "[dt: CFL h/v_sig, particle ");
+  if (!lim) lim = strstr(out, "[dt: acceleration sqrt(h/|a|), particle ");
+  CHECK(lim && strstr(lim, " in 'slab']"), "log lines name the step's limit and particle: %.*s",
+        lim ? (int)strcspn(lim, "\n") : 4, lim ? lim : "none");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.dt_max=1e-5 --set output.log_every=1",
+           casefile, path_of("dtmax"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"), "with a small time.dt_max the lines say "
+        "'[dt: time.dt_max]' (exit %d)", rc);
 
   static const struct {
     const char *args, *what;
