@@ -247,6 +247,15 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   size_t len;
   const char *names[64];
 
+  /* another hvsph may continue it, but the numbers then differ from either's own run */
+  char *ver = NULL;
+  if (ckpt_get_alloc(&c, "version", CKPT_BYTES, (void **)&ver, &len, err)) goto out;
+  if (strcmp(ver, HVSPH_VERSION))
+    hv_warn("%s was written by hvsph %s; this is hvsph %s: where the two compute differently "
+            "the continued run matches neither's own run bit for bit (run_segments.csv "
+            "records both)", path, ver, HVSPH_VERSION);
+  free(ver);
+
   /* the same case: name, bodies (and their initial counts), materials */
   if (ckpt_get_alloc(&c, "case", CKPT_BYTES, (void **)&cname, &len, err)) goto out;
   if (strcmp(cname, s->case_name)) {
