@@ -4,7 +4,7 @@
 #   tools/install-deps.sh          build + test dependencies
 #   tools/install-deps.sh --docs   also python3-numpy/matplotlib for the doc plots
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev)
+pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3)
 if [ "${1:-}" = "--docs" ]; then pkgs+=(python3-numpy python3-matplotlib); fi
 missing=()
 for p in "${pkgs[@]}"; do

@@ -123,6 +123,25 @@ bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph ch
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
 bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
 
+# a checkpoint of another hvsph version: continued, with a warning (the version record
+# rewritten in place and the CRC-32 made good again)
+cp -r "$T/ref" "$T/ver"
+python3 - "$T/ver/checkpoint.hvc" <<'PY'
+import struct, sys, zlib
+p = sys.argv[1]; d = bytearray(open(p, 'rb').read()); pos = 16
+while True:
+    name = bytes(d[pos:pos + 56]).rstrip(b'\0'); t, _, n = struct.unpack('<IIQ', d[pos + 56:pos + 72])
+    if name == b'version':
+        d[pos + 72:pos + 72 + n] = b'v' * n; break
+    pos += 72 + n * {1: 1, 2: 4, 3: 8, 4: 8}[t]
+d[-4:] = struct.pack('<I', zlib.crc32(bytes(d[:-4])) & 0xffffffff)
+open(p, 'wb').write(bytes(d))
+PY
+"$BIN" restart "$T/ver" --set time.end=13us --threads 2 2> "$T/ver.log"
+st=$?
+grep -q "was written by hvsph vvv" "$T/ver.log"
+check $((st + $?)) "another version's checkpoint is continued with a warning (exit $st): $(grep -o 'warning: .\{0,60\}' "$T/ver.log")"
+
 # output.checkpoint: false writes none, and a restart then says so
 "$BIN" run "$CASE" -o "$T/nock" "${SETS[@]}" --set output.checkpoint=false \
   --set time.max_steps=50 --threads 2 --quiet 2> /dev/null
