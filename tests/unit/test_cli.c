@@ -124,7 +124,7 @@ static const char *prepare_outdir(const char *name)
 /* Runs hvsph with stdout discarded; *err gets stderr. Returns the exit status. */
 static int hvsph(const char *args, char *err, size_t len)
 {
-  char cmd[9000];
+  char cmd[13400];   /* the binary's path (4 kB) and args (9 kB) */
   snprintf(cmd, sizeof cmd, "{ '%s' %s 2>&1 >/dev/null; }", test_bin(), args);
   return test_run(cmd, err, len);
 }
@@ -285,6 +285,34 @@ static void test_commands(void)
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"), "with a small time.dt_max the lines say "
         "'[dt: time.dt_max]' (exit %d)", rc);
+
+  /* bodies of very different particle masses are warned about, once, with the remedy */
+  {
+    char two[16384];
+    snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
+                                                 "max: [0.05, 0.05, 0.05]}"));
+    char *t = strstr(two, "time:\n");
+    for (int k = 0; k < 2 && t; k++) {
+      char body[512], whole[16384];
+      snprintf(body, sizeof body, "  - name: fine\n    material: gas\n    shape: {type: box, "
+               "min: [0.05, 0, 0], max: [0.1, 0.05, 0.05]}\n    spacing: %s\n    density: "
+               "1.0\n    pressure: 1.0\n", k == 0 ? "1.5625 mm" : "6.25 mm");
+      snprintf(whole, sizeof whole, "%.*s%s%s", (int)(t - two), two, body, t);
+      const char *f = test_write_file(k == 0 ? "two_fine.yaml" : "two_same.yaml", whole);
+      snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0", f,
+               path_of(k == 0 ? "two_fine" : "two_same"));
+      rc = hvsph(args, out, sizeof out);
+      const char *w = strstr(out, "warning: bodies 'fine' and 'slab': their particle masses "
+                                  "differ 64-fold");
+      if (k == 0)
+        CHECK(rc == 0 && w && strstr(w, "A finer spacing for 'slab'"), "4 times finer "
+              "spacing, 64 times lighter particles: a warning naming both bodies (exit %d): "
+              "%.*s", rc, w ? (int)strcspn(w, "\n") : 4, w ? w : "none");
+      else
+        CHECK(rc == 0 && !strstr(out, "warning: bodies"), "equal spacings: no warning (exit %d)",
+              rc);
+    }
+  }
 
   static const struct {
     const char *args, *what;
