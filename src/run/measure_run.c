@@ -64,7 +64,7 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
     return -1;
   if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
   mr->peak_pressure = -HUGE_VAL;
-  return 0;
+  return cfg_get_quantity(c, "measure.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &mr->every, err);
 }
 
 void measure_run_free(struct measure_run *mr) { meas_table_free(&mr->table); }
@@ -203,8 +203,11 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
       return hv_error_prefix(err, "fragments: ");
     }
     meas_table_add_fragments(&mr->table, s->t, "all", &fr);
-    snprintf(path, sizeof path, "%s/fragments_%05d.csv", outdir, k);
-    int rc = fof_write_csv(path, &fr, s->t, matnames, comment, err);
+    int rc = 0;
+    if (k >= 0) {   /* an output time: the fragments' own file too */
+      snprintf(path, sizeof path, "%s/fragments_%05d.csv", outdir, k);
+      rc = fof_write_csv(path, &fr, s->t, matnames, comment, err);
+    }
     fof_result_free(&fr);
     if (rc) return -1;
   }

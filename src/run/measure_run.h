@@ -8,6 +8,7 @@
  *     backwall: backwall          # crater depth, damaged radius, peak centre pressure
  *     gas: nitrogen               # shock front position
  *     fragments: true             # friends-of-friends fragments
+ *     every: 1 us                 # also between output times (default: only at them)
  *
  * Bodies are named; their geometry (front face, thickness, spacing) comes from their
  * initial particles. Impact along +x, axis y = 0 (measure.axis_y), symmetry plane
@@ -31,6 +32,8 @@ struct measure_run {
   int gas;
   int fragments;
   double peak_pressure;  /* [Pa] running maximum at the backwall's centre */
+  double every;          /* [s] measurements also at these intervals between output times
+                            (measure.every; 0: at output times only) */
   struct meas_table table;
 };
 
@@ -38,7 +41,8 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
 void measure_run_free(struct measure_run *mr);
 /* Every step: cheap running quantities (the backwall's peak centre pressure). */
 void measure_run_step(struct measure_run *mr, const struct sim *s);
-/* At output k: every measurement, appended to the table and written. */
+/* At output k: every measurement, appended to the table and written; k < 0: a
+ * measurement time between outputs (measure.every): the same rows, no fragments file. */
 int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const char *outdir,
                        const char *const *matnames, struct hv_error *err);
 

@@ -129,7 +129,9 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
       text[3 * k + 2] = t->rows[k].object;
     }
     char *j = join(text, 3 * t->n, &len);
+    const int64_t mk = o->next_mk;
     rc = ckpt_put(&w, "measure.peak_pressure", CKPT_F64, 1, &o->mr.peak_pressure, err) ||
+         ckpt_put(&w, "measure.next_k", CKPT_I64, 1, &mk, err) ||
          ckpt_put(&w, "measure.time_value", CKPT_F64, 2 * t->n, tv, err) ||
          ckpt_put(&w, "measure.text", CKPT_BYTES, len, j, err);
     free(j);
@@ -210,8 +212,13 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   return 0;
 }
 
-static int read_measure(struct ckpt_file *c, struct measure_run *mr, struct hv_error *err)
+static int read_measure(struct ckpt_file *c, struct run_outputs *o, struct hv_error *err)
 {
+  struct measure_run *mr = &o->mr;
+  int64_t mk = 0;   /* absent in checkpoints before measure.every: the loop finds it */
+  if (ckpt_find(c, "measure.next_k") && ckpt_get(c, "measure.next_k", CKPT_I64, 1, &mk, err))
+    return -1;
+  o->next_mk = (long)mk;
   double *tv;
   char *b;
   size_t ntv, len;
@@ -325,7 +332,7 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
       goto out;
     }
 
-  if (read_outputs(&c, s, o, err) || read_measure(&c, &o->mr, err)) goto out;
+  if (read_outputs(&c, s, o, err) || read_measure(&c, o, err)) goto out;
   rc = 0;
 out:
   free(cname);

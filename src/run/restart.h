@@ -34,6 +34,7 @@ struct run_outputs {
   int nrows;
   double t_start;    /* [s] the run's start: output k falls at t_start + k × every */
   long next_k;       /* index of the next output time */
+  long next_mk;      /* index of the next measurement time (measure.every) */
   const char *matnames[HV_MAX_MATERIALS];
 };
 

@@ -274,15 +274,31 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
     next_out = o->t_start + (double)o->next_k * every;
   }
   if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
+  /* measurement times between outputs (measure.every): t_start + k × mevery; one within
+     1e-9 mevery of an output time is that output's */
+  const double mevery = o->mr.any ? o->mr.every : 0.0, mtol = 1e-9 * mevery;
+  double next_meas = INFINITY;
+  if (mevery > 0) {
+    next_meas = o->t_start + (double)o->next_mk * mevery;
+    while (next_meas <= s->t + mtol) next_meas = o->t_start + (double)++o->next_mk * mevery;
+  }
   while (s->t < tend && !interrupted) {
     if (s->tp.max_steps && s->step >= s->tp.max_steps) break;
-    int hit = 0;
-    if (s->t + s->dt >= next_out) {
+    int hit = 0, mhit = 0;
+    if (next_meas < next_out - mtol && s->t + s->dt >= next_meas) {
+      s->dt = next_meas - s->t;
+      mhit = 1;
+    } else if (s->t + s->dt >= next_out) {
       s->dt = next_out - s->t;
       hit = 1;
     }
     if (step_advance(s, err)) return -1;
     measure_run_step(&o->mr, s);
+    if (mhit) {
+      s->t = next_meas;
+      next_meas = o->t_start + (double)++o->next_mk * mevery;
+      if (measure_run_output(&o->mr, s, -1, o->dir, o->matnames, err)) return -1;
+    }
     if (hit) {
       s->t = next_out;
       /* the k-th output time reached (not an end time between two of them, which a
@@ -291,6 +307,7 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
         o->next_k++;
       next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
       if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
+      while (next_meas <= s->t + mtol) next_meas = o->t_start + (double)++o->next_mk * mevery;
       if (write_outputs(s, o, err) || checkpoint(s, o, &cc, g, err)) return -1;
     } else if (s->out.checkpoint_wall > 0 && wall_time() - cc.wall >= s->out.checkpoint_wall) {
       if (checkpoint(s, o, &cc, g, err)) return -1;
@@ -368,6 +385,7 @@ int run_main(const struct run_options *ro)
               "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
     o.t_start = s.t;
     o.next_k = 1;
+    o.next_mk = 1;
   }
   /* a restart records its overrides (the file is what the continued run used) */
   if (!restart || ro->nsets > 0) {

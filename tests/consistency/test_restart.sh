@@ -5,8 +5,8 @@
 # Case: examples/paper/bumper-1.yaml at resolution 0.08 (1402 particles: an aluminium
 # sphere through a plate at 6.3 km/s, half model with a symmetry plane, absorbing
 # faces, elastic-plastic with fracture, measurements and fragments), to 12 us with
-# outputs every 3 us; the far face is moved to x = 15 mm, so that particles are
-# absorbed (removed) from 5 us on, before the stop. The reference run goes straight through. Then:
+# outputs every 3 us and measurements every 1 us (measure.every); the far face is moved
+# to x = 15 mm, so that particles are absorbed (removed) from 5 us on, before the stop. The reference run goes straight through. Then:
 #  1. stopped by time.max_steps after 200 steps (between output times: it writes an
 #     extra snapshot there), continued by `hvsph restart` on 1 thread (the reference
 #     used 2): every file of the reference — snapshots .vtu/.csv, fragments, summary.csv,
@@ -29,7 +29,7 @@ rm -rf "$T" && mkdir -p "$T"
 CASE=$SRC/examples/paper/bumper-1.yaml
 # the far face at x = 15 mm (not 100) so that debris leaves through it from 5 us on
 SETS=(--set resolution=0.08 --set time.end=12us --set output.every=3us --set output.csv=true
-      --set 'domain.max=[15 mm, 50 mm, 50 mm]')
+      --set 'domain.max=[15 mm, 50 mm, 50 mm]' --set measure.every=1us)
 pass=0 fail=0
 check() {  # check CONDITION-STATUS MESSAGE
   if [ "$1" -eq 0 ]; then pass=$((pass + 1)); echo "PASS: $2"; else fail=$((fail + 1)); echo "FAIL: $2"; fi
@@ -53,6 +53,9 @@ check $? "reference run to 12 us"
 steps=$(tail -1 "$T/ref/summary.csv" | cut -d, -f1)
 absorbed=$(tail -1 "$T/ref/summary.csv" | cut -d, -f12)
 echo "  reference: $steps steps, $absorbed particles absorbed, $(ls "$T/ref" | wc -l) files"
+mtimes=$(grep -v '^#' "$T/ref/measurements.csv" | tail -n +2 | cut -d, -f1 | sort -u | wc -l)
+[ "$mtimes" -eq 13 ] && [ "$(grep -c '^[0-9]' "$T/ref/summary.csv")" -eq 5 ]
+check $? "measure.every = 1 us: measurements at $mtimes times (0, 1, ..., 12 us), outputs at 5"
 [ "$steps" -gt 280 ] && [ "$absorbed" -gt 100 ]
 check $? "the reference takes more than 280 steps ($steps), so step 200 is mid-run; over 100 particles absorbed ($absorbed)"
 
