@@ -188,6 +188,7 @@ measure:
   debris: [{", ".join(p[0] for p in plates[:-1])}]
   backwall: {last}
   fragments: true
+  every: {fmt(every / 5)} us   # the debris cloud in free flight between outputs
 """
     write(name, title, section, notes, body)
 
