@@ -339,19 +339,3 @@ out:
   ckpt_close(&c);
   return rc;
 }
-
-int restart_peek(const char *path, double *t, long *step, struct hv_error *err)
-{
-  struct ckpt_file c;
-  if (ckpt_open(&c, path, err)) return -1;
-  double clock[3];
-  int64_t ints[3];
-  int rc = ckpt_get(&c, "clock", CKPT_F64, 3, clock, err) ||
-           ckpt_get(&c, "step.n.solid", CKPT_I64, 3, ints, err) ? -1 : 0;
-  if (!rc) {
-    *t = clock[0];
-    *step = (long)ints[0];
-  }
-  ckpt_close(&c);
-  return rc;
-}

@@ -11,8 +11,8 @@
  * The bookkeeping is that of the last regular output: the extra snapshot an
  * interrupted run writes at the moment it stops is not in it, so the continued run
  * numbers its snapshots as the uninterrupted run would and replaces that extra one.
- * The file format is io/checkpoint.h's; the records are listed in docs/case-files.md
- * (section "Checkpoints and restarts").
+ * The file format is io/checkpoint.h's; the records are those restart_write puts
+ * (docs/cli.md, "hvsph restart", lists what they hold).
  */
 #ifndef HV_RESTART_H
 #define HV_RESTART_H
@@ -48,7 +48,5 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
  * Errors (HV_EXIT_INPUT) name the file and the record, or the mismatch between the
  * checkpoint and the case. */
 int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct hv_error *err);
-/* Time and step of a checkpoint without reading the rest (validate --resume). */
-int restart_peek(const char *path, double *t, long *step, struct hv_error *err);
 
 #endif

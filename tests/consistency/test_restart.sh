@@ -120,7 +120,7 @@ bad_case() {  # bad_case NAME SETUP-COMMAND EXPECTED-MESSAGE [restart args]
   (cd "$d" && md5sum -c --quiet "$T/before_$1.md5") && [ -z "$(ls -a "$d" | grep '\.tmp\.')" ]
   check $? "$1 checkpoint: every file of the folder left as it was"
 }
-bad_case damaged "printf '\\x55' | dd of=\$d/checkpoint.hvc bs=1 seek=5000 conv=notrunc status=none" \
+bad_case damaged "python3 -c 'import sys; p=sys.argv[1]; d=bytearray(open(p,\"rb\").read()); d[5000]^=0x10; open(p,\"wb\").write(bytes(d))' \$d/checkpoint.hvc" \
   "checksum does not match"
 bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph checkpoint"
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
