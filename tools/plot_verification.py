@@ -10,9 +10,10 @@ comment "# <problem> t=<time> n=<particles>: ...", then a header whose first col
 the coordinate (x or r) followed by pairs "q,q_exact", one row per particle. When the
 same folder holds <problem>_exact.csv (coordinate and q_exact columns on a fine grid,
 also written by the tests) the exact line is drawn from it, else from the particles'
-own exact values. One PNG per file, OUTDIR/verif_<problem>.png (default OUTDIR:
+own exact values. One PNG per problem, OUTDIR/verif_<problem>.png (default OUTDIR:
 docs/img), with one panel per pair: the particles as small dots, the exact solution as
-a line. The vertical range covers the exact solution and 99.9 % of the particles; the
+a line; profiles of the same problem (e.g. test_noh's two resolutions) share a figure,
+one colour each. The vertical range covers the exact solution and 99.9 % of the particles; the
 few beyond it (e.g. the hot particles at the centre of the Sedov blast) are counted in
 the panel's corner.
 
@@ -62,30 +63,46 @@ def exact_table(path, problem):
     return {name: data[:, k] for k, name in enumerate(header)}
 
 
-def plot(path, outdir):
-    comment, header, data = read_profile(path)
+COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
+
+
+def run_label(comment):
+    """'n=33512 spacing=0.025' from the comment's key=value words."""
+    words = [w.rstrip(":") for w in comment.split() if w.startswith(("n=", "spacing="))]
+    return " ".join(words) if words else "SPH particles"
+
+
+def plot(paths, outdir):
+    runs = [read_profile(p) for p in paths]
+    comment, header, _ = runs[0]
     problem = comment.split()[0]
-    coord = data[:, 0]
-    order = np.argsort(coord, kind="stable")
-    fine = exact_table(path, problem)
+    fine = exact_table(paths[0], problem)
     npairs = (len(header) - 1) // 2
     fig, axes = plt.subplots(npairs, 1, figsize=(7.0, 2.6 * npairs), sharex=True, squeeze=False)
     for k in range(npairs):
         ax = axes[k, 0]
-        q, qe = data[:, 1 + 2 * k], data[:, 2 + 2 * k]
-        ax.plot(coord, q, ".", ms=1.0, alpha=0.35, color="tab:blue", rasterized=True,
-                label="SPH particles")
+        lo, hi, off = np.inf, -np.inf, 0
+        for r, (cm, hd, data) in enumerate(runs):
+            coord, q, qe = data[:, 0], data[:, 1 + 2 * k], data[:, 2 + 2 * k]
+            lab = "SPH particles" if len(runs) == 1 else run_label(cm)
+            ax.plot(coord, q, ".", ms=1.0, alpha=0.35, color=COLOURS[r % len(COLOURS)],
+                    rasterized=True, label=lab)
+            lo = min(lo, np.nanpercentile(q, 0.05))
+            hi = max(hi, np.nanpercentile(q, 99.95))
         name = header[2 + 2 * k]
+        data = runs[0][2]
         if fine is not None and name in fine:
             xe, ye = fine[header[0]], fine[name]
         else:
-            xe, ye = coord[order], qe[order]
+            order = np.argsort(data[:, 0], kind="stable")
+            xe, ye = data[order, 0], data[order, 2 + 2 * k]
         ax.plot(xe, ye, "-", lw=1.2, color="black", label="exact")
-        lo = min(np.nanmin(ye), np.nanpercentile(q, 0.05))
-        hi = max(np.nanmax(ye), np.nanpercentile(q, 99.95))
+        lo, hi = min(np.nanmin(ye), lo), max(np.nanmax(ye), hi)
         pad = 0.06 * (hi - lo if hi > lo else 1.0)
         ax.set_ylim(lo - pad, hi + pad)
-        off = int(np.sum((q < lo - pad) | (q > hi + pad)))
+        for _, _, data in runs:
+            q = data[:, 1 + 2 * k]
+            off += int(np.sum((q < lo - pad) | (q > hi + pad)))
         if off:
             ax.text(0.99, 0.97, f"{off} particle{'s' if off > 1 else ''} off scale",
                     transform=ax.transAxes, ha="right", va="top", fontsize=7)
@@ -96,13 +113,13 @@ def plot(path, outdir):
     if problem in XRANGE:
         axes[0, 0].set_xlim(*XRANGE[problem])
     axes[-1, 0].set_xlabel(LABELS.get(header[0], header[0]))
-    fig.suptitle(comment, fontsize=8)
+    fig.suptitle("\n".join(cm for cm, _, _ in runs), fontsize=8)
     fig.tight_layout()
     os.makedirs(outdir, exist_ok=True)
     out = os.path.join(outdir, f"verif_{problem}.png")
     fig.savefig(out, dpi=110)
     plt.close(fig)
-    print(f"{path} -> {out}")
+    print(f"{', '.join(paths)} -> {out}")
 
 
 def main():
@@ -110,8 +127,12 @@ def main():
     ap.add_argument("profiles", nargs="+", help="profile CSV files written by the tests")
     ap.add_argument("-o", "--outdir", default="docs/img", help="output folder (docs/img)")
     args = ap.parse_args()
+    groups = {}
     for p in args.profiles:
-        plot(p, args.outdir)
+        with open(p) as f:
+            groups.setdefault(f.readline()[1:].split()[0], []).append(p)
+    for paths in groups.values():
+        plot(paths, args.outdir)
 
 
 if __name__ == "__main__":

@@ -10,11 +10,13 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {
   static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
   static const char *const densities[] = {"continuity", "summation", NULL};
-  int k, dens, no = 0;
+  static const char *const forms[] = {"volume", "mass", NULL};
+  int k, dens, form, no = 0;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0;
   double as_eps = 0.3, as_n = 4.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_choice(c, "sph.density", "continuity", densities, &dens, err) ||
+      cfg_get_choice(c, "sph.continuity", "volume", forms, &form, err) ||
       cfg_get_quantity(c, "sph.eta", UNIT_NONE, &eta, 0.8, 3.0, &sp->eta, err) ||
       cfg_get_quantity(c, "sph.h_min", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &sp->h_min, err) ||
       cfg_get_quantity(c, "sph.h_max", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &sp->h_max, err) ||
@@ -28,6 +30,7 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
     return -1;
   sp->kernel = (enum kernel_kind)k;
   sp->summation = dens;
+  sp->continuity_mass = form;
   char where[256];
   if (sp->h_max > 0 && sp->h_min > sp->h_max)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.h_min (%g m) exceeds sph.h_max (%g m)",

@@ -29,7 +29,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
   const enum kernel_kind kk = sp->kernel;
-  const int summation = sp->summation;
+  const int summation = sp->summation, massform = sp->continuity_mass && !summation;
   const double *m = p->m;
   double *rhow = p->rho;   /* summation: written for i only; neighbours read vol */
 
@@ -52,7 +52,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
           const double r = sqrt(dx * dx + dy * dy + dz * dz), hij = 0.5 * (hi + cd.h[q]);
           const double f = kernel_f(kk, r, hij);
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
-          sum += vol[j] * vdx * f;
+          sum += (massform ? m[j] : vol[j]) * vdx * f;
           if (summation) rsum += m[j] * kernel_w(kk, r, hij);
         }
         if (summation) {
@@ -60,7 +60,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
           drho[i] = rs * sum;
           rhow[i] = rs;
         } else {
-          drho[i] = rho[i] * sum;
+          drho[i] = massform ? sum : rho[i] * sum;
         }
         p->de[i] = 0.0;
       }

@@ -32,6 +32,8 @@ struct sph_params {
   double as_n;         /* [-] n */
   int grad_correction; /* normalise the velocity gradient by the kernel-gradient
                           correction matrix (Randles & Libersky 1996) */
+  int continuity_mass; /* gas loops: dρᵢ/dt = Σⱼ mⱼ vᵢⱼ·∇ᵢWᵢⱼ (the rate the energy
+                          equation's pdV work assumes) instead of the volume form */
   int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */

@@ -15,9 +15,10 @@
  *     the measured drift is printed and is well below it (7e-5 at the time of
  *     writing); it catches a sign error or a missing term, not round-off.
  *
- * Run twice: with the density from the continuity equation (the default) and from the
- * summation (sph.density: summation, the gas examples' choice); the momentum and energy
- * equations are the same symmetric pair sums in both, so both must conserve.
+ * Run three times: with the density from the continuity equation in its volume form
+ * (the default) and its mass form (sph.continuity: mass, the Noh example's), and from
+ * the summation (sph.density: summation, Sod's and Sedov's); the momentum and energy
+ * equations are the same symmetric pair sums in all, so all must conserve.
  *
  * The box holds two slabs of different density in pressure equilibrium (so the
  * particle masses differ and the mass sum is not a product), with random velocities
@@ -35,6 +36,7 @@
 #include "integrate/step.h"
 #include "run/run.h"
 #include "run/sim.h"
+#include "sph/sph.h"
 #include "testlib.h"
 
 #define NSTEPS 100
@@ -210,10 +212,87 @@ static void summation_recovers_density(void)
   cfg_free(c);
 }
 
+/* The mass form of the continuity equation (sph.continuity: mass) is the exact time
+ * derivative of the summed density at fixed smoothing lengths: on the two-slab box
+ * with random velocities, dρᵢ/dt = Σⱼ mⱼ vᵢⱼ·∇Wᵢⱼ must equal the central difference
+ * (ρ_sum(x + δv) − ρ_sum(x − δv)) / 2δ to MASS_RATE_TOL of the largest rate; the
+ * volume form ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇Wᵢⱼ does not (printed, and asserted to differ by
+ * more than VOLUME_DIFF_MIN across the slabs' density jump). */
+#define MASS_RATE_TOL 1e-6   /* measured ~1e-9 (δ = 1e-6 of the sound crossing) */
+#define VOLUME_DIFF_MIN 1e-2
+static void mass_form_is_summation_rate(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  char text[2048];
+  snprintf(text, sizeof text, "%scontinuity, continuity: mass}\n", case_text);
+  rng_state = 0x9E3779B97F4A7C15ull;
+  struct cfg *c = cfg_load_string(text, "conservation.yaml", &err);
+  struct sim s;
+  memset(&s, 0, sizeof s);
+  int ok = c && !run_setup(&s, c, &err) && !cfg_check_unused(c, &err);
+  CHECK(ok, "case sets up (%s)", ok ? "ok" : err.msg);
+  if (!ok) return;
+  struct particles *p = &s.p;
+  for (size_t i = 0; i < p->n; i++) {
+    double cs = sqrt(1.4 * 1.0 / p->rho[i]);
+    for (int k = 0; k < 3; k++) p->v[k][i] = 0.6 * cs * uniform();
+  }
+  ok = !step_init(&s, &err);   /* ghosts (with their sources' v) and the grid */
+  CHECK(ok, "step_init (%s)", ok ? "ok" : err.msg);
+  if (!ok) return;
+  const size_t n = p->n, nall = p->n + p->n_ghost;
+  double *rate_m = malloc(n * sizeof *rate_m), *rate_v = malloc(n * sizeof *rate_v);
+  double *rho0 = malloc(nall * sizeof *rho0), *sp_ = malloc(n * sizeof *sp_);
+  memcpy(rho0, p->rho, nall * sizeof *rho0);
+  struct sph_params sp = s.sph;
+  sp.summation = 0;
+  sp.continuity_mass = 1;
+  sph_density_rate(p, &s.grid, &sp, NULL, s.mat, 1e-9);
+  memcpy(rate_m, p->drho, n * sizeof *rate_m);
+  sp.continuity_mass = 0;
+  sph_density_rate(p, &s.grid, &sp, NULL, s.mat, 1e-9);
+  memcpy(rate_v, p->drho, n * sizeof *rate_v);
+  /* summed densities at x ± δv (reals and ghosts move together; h fixed) */
+  const double delta = 1e-6 * 0.0625 / sqrt(1.4);
+  sp.summation = 1;
+  for (int side = 0; side < 2; side++) {
+    const double d = side ? -delta : delta;
+    for (size_t i = 0; i < nall; i++)
+      for (int k = 0; k < 3; k++) p->x[k][i] += d * p->v[k][i];
+    memcpy(p->rho, rho0, nall * sizeof *rho0);
+    sph_density_rate(p, &s.grid, &sp, NULL, s.mat, 1e-9);
+    for (size_t i = 0; i < n; i++) sp_[i] = side ? (sp_[i] - p->rho[i]) / (2 * delta) : p->rho[i];
+    for (size_t i = 0; i < nall; i++)
+      for (int k = 0; k < 3; k++) p->x[k][i] -= d * p->v[k][i];
+  }
+  double big = 0.0, err_m = 0.0, diff_v = 0.0;
+  for (size_t i = 0; i < n; i++) {
+    if (fabs(sp_[i]) > big) big = fabs(sp_[i]);
+    if (fabs(rate_m[i] - sp_[i]) > err_m) err_m = fabs(rate_m[i] - sp_[i]);
+    if (fabs(rate_v[i] - sp_[i]) > diff_v) diff_v = fabs(rate_v[i] - sp_[i]);
+  }
+  printf("== continuity forms against d/dt of the summed density (h fixed): largest rate "
+         "%.4e; mass form off by %.3e, volume form by %.3e (relative)\n", big, err_m / big,
+         diff_v / big);
+  CHECK(big > 0 && err_m <= MASS_RATE_TOL * big, "mass form = d(rho_sum)/dt: %.3e <= %.0e",
+        err_m / big, MASS_RATE_TOL);
+  CHECK(diff_v >= VOLUME_DIFF_MIN * big, "the volume form differs across the density jump: "
+        "%.3e >= %.0e", diff_v / big, VOLUME_DIFF_MIN);
+  free(rate_m);
+  free(rate_v);
+  free(rho0);
+  free(sp_);
+  sim_free(&s);
+  cfg_free(c);
+}
+
 int main(void)
 {
   summation_recovers_density();
+  mass_form_is_summation_rate();
   run_case("continuity");
+  run_case("continuity, continuity: mass");
   run_case("summation");
   return test_finish();
 }

@@ -46,10 +46,15 @@ int verif_threads(void)
 
 int verif_run(const char *name, int argc, char **argv, double *wall)
 {
+  return verif_run_as(name, name, argc, argv, wall);
+}
+
+int verif_run_as(const char *name, const char *dirname, int argc, char **argv, double *wall)
+{
   static char cmd[16384], out[65536];
   const char *more = getenv("HVSPH_CASE_ARGS");
   snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s/%s' --quiet "
-           "--threads %d", test_bin(), test_source_dir(), name, test_tmpdir(), name,
+           "--threads %d", test_bin(), test_source_dir(), name, test_tmpdir(), dirname,
            verif_threads());
   for (int i = 1; i < argc; i++) append_quoted(cmd, sizeof cmd, argv[i]);
   if (more && *more) {

@@ -23,6 +23,9 @@
 /* Runs the example; *wall [s] gets the run's wall-clock time. argv/argc: extra
  * arguments passed through to `hvsph run` (each shell-quoted). Returns the exit status. */
 int verif_run(const char *name, int argc, char **argv, double *wall);
+/* The same with the output folder $HVSPH_TMP/<dirname> (several runs of one example);
+ * read it back with verif_read_last(dirname, ...). */
+int verif_run_as(const char *name, const char *dirname, int argc, char **argv, double *wall);
 /* Reads the highest-numbered particles_NNNNN.csv of $HVSPH_TMP/<name> into p (which
  * must be initialised); *t gets its time [s]. Returns 0, or -1 with a message. */
 int verif_read_last(const char *name, struct particles *p, double *t);

@@ -378,6 +378,10 @@ static void test_bad_input(void)
             variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"), NULL,
             (const char *const[]){"summation_solid.yaml:4: sph.density: ",
                                   "summation is for cases without strength", NULL});
+  bad_input("mass_form_solid",
+            variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"), NULL,
+            (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
+                                  "mass is for cases without strength", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
