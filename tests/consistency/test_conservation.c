@@ -91,29 +91,41 @@ static double momentum_scale(const struct particles *p)
   return s;
 }
 
-static void run_case(const char *density)
+/* The two-slab box with sph.density (and whatever follows it) = `density`, set up
+ * through the library, with random velocities of up to 0.3 c per component
+ * (c = sqrt(1.4 p / rho)) from the fixed generator. Returns 0, or -1 after a failed
+ * CHECK. */
+static int box_setup(const char *density, struct sim *s, struct cfg **cp)
 {
   struct hv_error err;
   hv_error_clear(&err);
   char text[2048];
   snprintf(text, sizeof text, "%s%s}\n", case_text, density);
-  printf("== sph.density: %s\n", density);
   rng_state = 0x9E3779B97F4A7C15ull;
-  struct cfg *c = cfg_load_string(text, "conservation.yaml", &err);
-  struct sim s;
-  memset(&s, 0, sizeof s);
-  int ok = c && !run_setup(&s, c, &err) && !cfg_check_unused(c, &err);
+  struct cfg *c = *cp = cfg_load_string(text, "conservation.yaml", &err);
+  memset(s, 0, sizeof *s);
+  int ok = c && !run_setup(s, c, &err) && !cfg_check_unused(c, &err);
   CHECK(ok, "case sets up (%s)", ok ? "ok" : err.msg);
-  if (!ok) return;
+  if (!ok) return -1;
+  for (size_t i = 0; i < s->p.n; i++) {
+    double cs = sqrt(1.4 * 1.0 / s->p.rho[i]);
+    for (int k = 0; k < 3; k++) s->p.v[k][i] = 0.6 * cs * uniform();
+  }
+  return 0;
+}
+
+static void run_case(const char *density)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  printf("== sph.density: %s\n", density);
+  struct cfg *c;
+  struct sim s;
+  if (box_setup(density, &s, &c)) return;
+  int ok = 1;
   const size_t n0 = s.p.n;
   CHECK(n0 == 16 * 16 * 8 + 12 * 12 * 6, "particles: %zu (expected %d)", n0,
         16 * 16 * 8 + 12 * 12 * 6);
-
-  /* random velocities: up to 0.3 c per component, c = sqrt(1.4 p / rho) */
-  for (size_t i = 0; i < s.p.n; i++) {
-    double cs = sqrt(1.4 * 1.0 / s.p.rho[i]);
-    for (int k = 0; k < 3; k++) s.p.v[k][i] = 0.6 * cs * uniform();
-  }
   double *m0 = malloc(n0 * sizeof *m0), *m1 = malloc(n0 * sizeof *m1);
   const double mass0_id = mass_by_id(&s.p, m0, n0);
   struct totals t0, t;
@@ -224,21 +236,11 @@ static void mass_form_is_summation_rate(void)
 {
   struct hv_error err;
   hv_error_clear(&err);
-  char text[2048];
-  snprintf(text, sizeof text, "%scontinuity, continuity: mass}\n", case_text);
-  rng_state = 0x9E3779B97F4A7C15ull;
-  struct cfg *c = cfg_load_string(text, "conservation.yaml", &err);
+  struct cfg *c;
   struct sim s;
-  memset(&s, 0, sizeof s);
-  int ok = c && !run_setup(&s, c, &err) && !cfg_check_unused(c, &err);
-  CHECK(ok, "case sets up (%s)", ok ? "ok" : err.msg);
-  if (!ok) return;
+  if (box_setup("continuity, continuity: mass", &s, &c)) return;
   struct particles *p = &s.p;
-  for (size_t i = 0; i < p->n; i++) {
-    double cs = sqrt(1.4 * 1.0 / p->rho[i]);
-    for (int k = 0; k < 3; k++) p->v[k][i] = 0.6 * cs * uniform();
-  }
-  ok = !step_init(&s, &err);   /* ghosts (with their sources' v) and the grid */
+  int ok = !step_init(&s, &err);   /* ghosts (with their sources' v) and the grid */
   CHECK(ok, "step_init (%s)", ok ? "ok" : err.msg);
   if (!ok) return;
   const size_t n = p->n, nall = p->n + p->n_ghost;
