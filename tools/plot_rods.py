@@ -7,7 +7,8 @@ Usage:
     /usr/bin/python3 tools/plot_rods.py VALIDATION.csv [-o FILE.png] [--label TEXT]
 
 VALIDATION.csv is the table `hvsph validate` writes (columns case, quantity,
-simulated, experiment, paper_simulation, unit, rel_error; lengths in m). The impact
+simulated, experiment, paper_simulation, unit, rel_error; lengths in the unit column's
+m, cm or mm). The impact
 velocity of each case is read from the header of examples/paper/<case>.yaml ("... at
 4.46 km/s ..."). Cases without a simulated value are drawn with the references only.
 
@@ -41,6 +42,9 @@ def impact_velocity(case):
     raise SystemExit("%s: no impact velocity in the header" % path)
 
 
+TO_CM = {"m": 100.0, "cm": 1.0, "mm": 0.1}   # the table's unit column
+
+
 def number(s):
     try:
         v = float(s)
@@ -60,7 +64,8 @@ def main():
         for r in csv.DictReader(line for line in f if not line.startswith("#")):
             if not r["case"].startswith("rod-"):
                 continue
-            rows.setdefault(r["case"], {})[r["quantity"]] = r
+            # "penetration_depth:target" -> "penetration_depth"
+            rows.setdefault(r["case"], {})[r["quantity"].split(":")[0]] = r
     if not rows:
         sys.exit("%s: no rod cases" % a.table)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
@@ -71,8 +76,11 @@ def main():
             if r is None:
                 continue
             v = impact_velocity(case)
-            exp, pap, sim = (100 * number(r[k]) for k in ("experiment", "paper_simulation",
-                                                           "simulated"))
+            cm = TO_CM.get(r.get("unit", "m"))
+            if cm is None:
+                sys.exit("%s: %s %s: unknown unit '%s'" % (a.table, case, q, r.get("unit")))
+            exp, pap, sim = (cm * number(r[k]) for k in ("experiment", "paper_simulation",
+                                                          "simulated"))
             ax.plot(v, exp, "ks", ms=7, label="experiment")
             ax.plot(v, pap, "o", mfc="none", mec="tab:red", ms=8, label="paper (KERNEL)")
             if not math.isnan(sim):
