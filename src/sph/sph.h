@@ -4,7 +4,8 @@
  * cell grid, so results are bitwise independent of the number of threads. These
  * loops are the only place with OpenMP parallel regions over pairs.
  *
- *   continuity   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ
+ *   continuity   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ   (volume form; sph.continuity: mass,
+ *                gas only: Σⱼ mⱼ vᵢⱼ·∇ᵢWᵢⱼ, the rate the energy equation's pdV work uses)
  *   momentum     dvᵢ/dt = −Σⱼ mⱼ (pᵢ/ρᵢ² + pⱼ/ρⱼ² + Πᵢⱼ) ∇ᵢWᵢⱼ
  *   energy       deᵢ/dt =  Σⱼ mⱼ (pᵢ/ρᵢ² + Πᵢⱼ/2) vᵢⱼ·∇ᵢWᵢⱼ
  *   viscosity    Πᵢⱼ = (−α c̄ᵢⱼ μᵢⱼ + β μᵢⱼ²)/ρ̄ᵢⱼ  if vᵢⱼ·xᵢⱼ < 0, else 0
