@@ -221,6 +221,22 @@ size_t boundary_absorb(struct boundary *b, struct particles *p)
   return count;
 }
 
+void boundary_refresh_gradv(const struct boundary *b, size_t n, size_t n_ghost, double *G)
+{
+  for (size_t k = 0; k < n_ghost; k++) {
+    const size_t g = n + k, s = b->src[k];
+    const uint8_t flip = b->flip[k] ^ (s >= n ? b->flip[s - n] : 0);
+    double *Gg = G + 9 * g;
+    for (int t = 0; t < 9; t++) Gg[t] = G[9 * s + t];
+    /* a mirror normal to axis d reverses v_d and x_d, so ∂v_a/∂x_b changes sign when
+       exactly one of a, b is d: the off-diagonal pairs whose shear bits the mirrors set
+       (bit 0: xy, 1: yz, 2: xz); the diagonal never does */
+    if (flip & 1u) { Gg[1] = -Gg[1]; Gg[3] = -Gg[3]; }
+    if (flip & 2u) { Gg[5] = -Gg[5]; Gg[7] = -Gg[7]; }
+    if (flip & 4u) { Gg[2] = -Gg[2]; Gg[6] = -Gg[6]; }
+  }
+}
+
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
 {
   /* in creation order, so a ghost made from a ghost copies an already refreshed,

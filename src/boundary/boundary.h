@@ -62,5 +62,8 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
 /* Copies the fields that change during a step (rho, p, cs, e; S and R with the
  * mirrors' sign changes) from sources to ghosts. */
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p);
+/* The same for a 3×3 velocity gradient per slot, G[9 slot + 3a + b] = ∂v_a/∂x_b
+ * (sph.viscosity.reconstruct): ghosts take their source's, mirrored. */
+void boundary_refresh_gradv(const struct boundary *b, size_t n, size_t n_ghost, double *G);
 
 #endif

@@ -273,10 +273,15 @@ int step_advance(struct sim *s, struct hv_error *err)
   if (update_eos(s, err)) return -1;
   sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
+  if (s->cache.gradv) {
+    boundary_refresh_gradv(&s->bnd, p->n, p->n_ghost, s->cache.gradv);
+    s->cache.gradv_valid = 1;
+  }
 
   /* 3–5. forces and energy rate at mid-step; velocity, coordinates, energy */
   sph_forces(p, &s->grid, &s->sph, &s->cache);
   s->cache.valid = 0;
+  s->cache.gradv_valid = 0;
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
     for (int k = 0; k < 3; k++) {

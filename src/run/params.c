@@ -26,7 +26,8 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_quantity(c, "sph.artificial_stress.epsilon", UNIT_NONE, &as_eps, 0.0, 2.0,
                        &sp->as_eps, err) ||
       cfg_get_quantity(c, "sph.artificial_stress.n", UNIT_NONE, &as_n, 1.0, 10.0, &sp->as_n, err) ||
-      cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err))
+      cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err) ||
+      cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err))
     return -1;
   sp->kernel = (enum kernel_kind)k;
   sp->summation = dens;

@@ -364,6 +364,12 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
                       "strength or fracture (a free surface of a solid would lose density); "
                       "use continuity", cfg_where(c, "sph.density", where, sizeof where));
   }
+  if (!rc && s->sph.reconstruct && !s->p.solid) {
+    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct: it acts on pairs of "
+                      "particles with strength, and no material here has strength or fracture; "
+                      "set it to false", cfg_where(c, "sph.viscosity.reconstruct", where,
+                                                  sizeof where));
+  }
   if (!rc && s->sph.continuity_mass && s->p.solid) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.continuity: mass is for cases without "
                       "strength or fracture (the solid loops use the volume form, which holds "

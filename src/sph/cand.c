@@ -180,12 +180,14 @@ void sph_cache_free(struct sph_cache *c)
   free(c->mask);
   free(c->cell_off);
   free(c->cell_words);
+  free(c->gradv);
   memset(c, 0, sizeof *c);
 }
 
 size_t sph_cache_bytes(const struct sph_cache *c)
 {
-  return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words);
+  return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words) +
+         c->gcap * 9 * sizeof *c->gradv;
 }
 
 /* Sizes the rows: a cell's row has one bit per candidate of that cell. */

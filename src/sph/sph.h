@@ -35,6 +35,9 @@ struct sph_params {
                           correction matrix (Randles & Libersky 1996) */
   int continuity_mass; /* gas loops: dρᵢ/dt = Σⱼ mⱼ vᵢⱼ·∇ᵢWᵢⱼ (the rate the energy
                           equation's pdV work assumes) instead of the volume form */
+  int reconstruct;     /* solids: the viscosity of a pair of one body, both with
+                          strength, sees the velocity difference reconstructed linearly
+                          to the pair's midpoint (slope-limited); see sph_forces_solid */
   int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */
@@ -50,6 +53,12 @@ struct sph_cache {
   uint32_t *cell_words;  /* [ncells] words per row in each cell */
   size_t ccap;
   int valid;             /* filled for the current grid */
+  /* sph.viscosity.reconstruct: velocity gradient Gᵢ[a][b] = ∂v_a/∂x_b of every slot
+     (reals from the first pass, 0 without strength; ghosts from
+     boundary_refresh_gradv), 9 per slot, row-major */
+  double *gradv;
+  size_t gcap;           /* slots allocated */
+  int gradv_valid;       /* filled in this step's first pass, ghosts included */
 };
 
 void sph_cache_free(struct sph_cache *c);

@@ -27,6 +27,29 @@
 #include "strength/strength.h"
 #include "strength/sym3.h"
 
+/* The approach speed (vᵢ − vⱼ)·rᵢⱼ of a pair (vdx < 0), rᵢⱼ = xᵢ − xⱼ, with the velocities
+ * reconstructed linearly from each particle to the pair's midpoint, vᵢ − ½Φ Gᵢ rᵢⱼ and
+ * vⱼ + ½Φ Gⱼ rᵢⱼ: vdx − ½Φ (gᵢ + gⱼ) with gₖ = rᵢⱼ·Gₖ rᵢⱼ. Φ = 4 gᵢ gⱼ / (gᵢ + gⱼ)² (van
+ * Leer's limiter in symmetric form; 0 when the slopes differ in sign) is 1 where the
+ * velocity is linear over the pair and falls to 0 across a jump, where the viscosity
+ * sees the whole difference (Frontiere, Raskin & Owen 2017, J. Comput. Phys. 332:160).
+ * Symmetric in i and j, so the pair force stays antisymmetric; clamped to [vdx, 0], so
+ * it only removes viscosity. */
+static inline double reconstructed(double vdx, const double *Gi, const double *Gj, double dx,
+                                   double dy, double dz)
+{
+  const double r[3] = {dx, dy, dz};
+  double gi = 0.0, gj = 0.0;
+  for (int a = 0; a < 3; a++) {
+    gi += r[a] * (Gi[3 * a] * dx + Gi[3 * a + 1] * dy + Gi[3 * a + 2] * dz);
+    gj += r[a] * (Gj[3 * a] * dx + Gj[3 * a + 1] * dy + Gj[3 * a + 2] * dz);
+  }
+  const double prod = gi * gj, sum = gi + gj;
+  if (!(prod > 0.0)) return vdx;
+  const double w = vdx - 0.5 * (4.0 * prod / (sum * sum)) * sum;
+  return w > 0.0 ? 0.0 : (w < vdx ? vdx : w);
+}
+
 static int has_strength(const struct material *m, double damage)
 {
   return m->str.enabled && damage < 1.0;
@@ -97,6 +120,17 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
   const double *m = p->m, *rho = p->rho;
   const int32_t *body = p->body;
   const enum kernel_kind kk = sp->kernel;
+  double *gradv = NULL;   /* sph.viscosity.reconstruct: L of every real */
+  if (sp->reconstruct && cache) {
+    const size_t nall = p->n + p->n_ghost;
+    if (nall > cache->gcap) {
+      cache->gcap = nall + nall / 4 + 64;
+      free(cache->gradv);
+      cache->gradv = hv_malloc(cache->gcap * 9 * sizeof *cache->gradv, "velocity gradients");
+    }
+    gradv = cache->gradv;
+    cache->gradv_valid = 0;
+  }
 
 #pragma omp parallel
   {
@@ -114,7 +148,9 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const int strong = has_strength(mi, p->damage[i]);
         const int32_t bi = body[i];
         double sum = 0.0, L[9] = {0}, A[9] = {0};
-        const int corr = strong && sp->grad_correction;
+        /* the correction matrix: for the stress with sph.gradient_correction, and for the
+           reconstruction always (its limiter needs gradients exact for linear fields) */
+        const int corr = strong && (sp->grad_correction || gradv);
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
@@ -139,7 +175,13 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           }
         }
         p->drho[i] = rho[i] * sum;
-        if (corr) correct_gradient(L, A);
+        if (gradv) {   /* 0 without strength: no reconstruction for its pairs */
+          double Lc[9];
+          for (int t = 0; t < 9; t++) Lc[t] = L[t];
+          if (strong) correct_gradient(Lc, A);
+          for (int t = 0; t < 9; t++) gradv[9 * (size_t)i + t] = strong ? Lc[t] : 0.0;
+        }
+        if (corr && sp->grad_correction) correct_gradient(L, A);
         if (strong) {
           update_stress(p, i, mi, L, dt);
         } else {
@@ -195,6 +237,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
   const int use_as = sp->as_eps > 0;
+  const double *gradv = sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL;
   /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
   const double inv_w_dp = 1.0 / kernel_w_h3(kk, 1.0 / sp->eta);
   /* Each particle's data as a partner (ghosts included) in two cache lines, read
@@ -263,9 +306,12 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           const double vdx = dvx * dx + dvy * dy + dvz * dz;
           double visc = 0.0;
           if (vdx < 0.0) {
-            const double mu = hij * vdx / (r2 + eps * hij * hij);
+            double mu = hij * vdx / (r2 + eps * hij * hij);
+            if (-mu > mumax) mumax = -mu;   /* the time step sees the whole jump */
+            if (gradv && (bf[j] >> 1) == bi)
+              mu = hij * reconstructed(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy,
+                                       dz) / (r2 + eps * hij * hij);
             visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
-            if (-mu > mumax) mumax = -mu;
           }
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
           double ax, ay, az, Pme, eas = 0.0;

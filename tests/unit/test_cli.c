@@ -378,6 +378,10 @@ static void test_bad_input(void)
             variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"), NULL,
             (const char *const[]){"summation_solid.yaml:4: sph.density: ",
                                   "summation is for cases without strength", NULL});
+  bad_input("reconstruct_gas", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                                      "{reconstruct: true}}"), NULL,
+            (const char *const[]){"reconstruct_gas.yaml:4: sph.viscosity.reconstruct: ",
+                                  "acts on pairs of particles with strength", NULL});
   bad_input("mass_form_solid",
             variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"), NULL,
             (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
