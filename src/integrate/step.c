@@ -156,6 +156,7 @@ static double next_dt(struct sim *s)
   }
   s->dt_limit = (enum dt_limit)kind;
   s->dt_limit_id = who < p->n ? p->id[who] : -1;
+  s->dt_limit_body = who < p->n ? p->body[who] : -1;
   if (s->dt_prop > 0 && dt > s->tp.growth * s->dt_prop) {
     dt = s->tp.growth * s->dt_prop;
     s->dt_limit = DT_GROWTH;

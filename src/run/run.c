@@ -105,13 +105,7 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
   char line[448];
   char lim[160] = "";
   if (s->step > 0 && (s->dt_limit == DT_CFL || s->dt_limit == DT_ACCELERATION)) {
-    const struct particles *p = &s->p;   /* the limiting particle's body, by its id */
-    const char *body = "?";
-    for (size_t i = 0; i < p->n; i++)
-      if (p->id[i] == s->dt_limit_id) {
-        body = s->body[p->body[i]].name;
-        break;
-      }
+    const char *body = s->dt_limit_body >= 0 ? s->body[s->dt_limit_body].name : "?";
     snprintf(lim, sizeof lim, "  [dt: %s, particle %lld in '%s']", step_limit_name(s->dt_limit),
              (long long)s->dt_limit_id, body);
   } else if (s->step > 0) {

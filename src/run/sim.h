@@ -59,6 +59,7 @@ struct sim {
   enum dt_limit { DT_CFL = 0, DT_ACCELERATION, DT_GROWTH, DT_MAX, DT_INIT } dt_limit;
                        /* which limit set dt_prop */
   int64_t dt_limit_id; /* id of the particle whose CFL or acceleration limit it was */
+  int dt_limit_body;   /* and its body */
   long step;
 };
 

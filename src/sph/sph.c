@@ -26,10 +26,12 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *rho = p->rho, *h = p->h;
   double *drho = p->drho, *vol = p->vol;
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
   const enum kernel_kind kk = sp->kernel;
   const int summation = sp->summation, massform = sp->continuity_mass && !summation;
+  if (!massform) {   /* the volume form's weights (the mass form weighs by mⱼ) */
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
+  }
   const double *m = p->m;
   double *rhow = p->rho;   /* summation: written for i only; neighbours read vol */
 

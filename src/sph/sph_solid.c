@@ -175,13 +175,15 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           }
         }
         p->drho[i] = rho[i] * sum;
-        if (gradv) {   /* 0 without strength: no reconstruction for its pairs */
-          double Lc[9];
-          for (int t = 0; t < 9; t++) Lc[t] = L[t];
-          if (strong) correct_gradient(Lc, A);
-          for (int t = 0; t < 9; t++) gradv[9 * (size_t)i + t] = strong ? Lc[t] : 0.0;
+        if (gradv) {   /* corrected; 0 without strength: no reconstruction for its pairs */
+          double *Gi = gradv + 9 * (size_t)i;
+          for (int t = 0; t < 9; t++) Gi[t] = strong ? L[t] : 0.0;
+          if (strong) correct_gradient(Gi, A);
+          if (sp->grad_correction)   /* the stress uses the same corrected gradient */
+            for (int t = 0; t < 9; t++) L[t] = Gi[t];
+        } else if (corr) {
+          correct_gradient(L, A);
         }
-        if (corr && sp->grad_correction) correct_gradient(L, A);
         if (strong) {
           update_stress(p, i, mi, L, dt);
         } else {

@@ -37,6 +37,7 @@
 #include "run/run.h"
 #include "run/sim.h"
 #include "sph/sph.h"
+#include "simtext.h"
 #include "testlib.h"
 
 #define NSTEPS 100
@@ -102,11 +103,7 @@ static int box_setup(const char *density, struct sim *s, struct cfg **cp)
   char text[2048];
   snprintf(text, sizeof text, "%s%s}\n", case_text, density);
   rng_state = 0x9E3779B97F4A7C15ull;
-  struct cfg *c = *cp = cfg_load_string(text, "conservation.yaml", &err);
-  memset(s, 0, sizeof *s);
-  int ok = c && !run_setup(s, c, &err) && !cfg_check_unused(c, &err);
-  CHECK(ok, "case sets up (%s)", ok ? "ok" : err.msg);
-  if (!ok) return -1;
+  if (sim_from_text(text, "conservation.yaml", s, cp)) return -1;
   for (size_t i = 0; i < s->p.n; i++) {
     double cs = sqrt(1.4 * 1.0 / s->p.rho[i]);
     for (int k = 0; k < 3; k++) s->p.v[k][i] = 0.6 * cs * uniform();
@@ -204,12 +201,10 @@ static void summation_recovers_density(void)
       "sph: {density: summation}\n";
   struct hv_error err;
   hv_error_clear(&err);
-  struct cfg *c = cfg_load_string(text, "lattice.yaml", &err);
+  struct cfg *c;
   struct sim s;
-  memset(&s, 0, sizeof s);
-  int ok = c && !run_setup(&s, c, &err) && !cfg_check_unused(c, &err);
-  CHECK(ok, "lattice case sets up (%s)", ok ? "ok" : err.msg);
-  if (!ok) return;
+  if (sim_from_text(text, "lattice.yaml", &s, &c)) return;
+  int ok;
   for (size_t i = 0; i < s.p.n; i++) s.p.rho[i] = 1.3;
   ok = !step_init(&s, &err) && !step_advance(&s, &err);
   CHECK(ok, "one step (%s)", ok ? "ok" : err.msg);

@@ -11,10 +11,14 @@
  *   standard:       must be positive (the viscosity acts on every approaching pair);
  *   reconstructed:  at most RATIO_MAX of the standard's (the field is linear over every
  *                   pair, so the reconstructed approach speed is zero).
- * Then a jump: the same block with the compression only in its left half (v = 0 for
+ * Then a kink: the same block with the compression only in its left half (v = 0 for
  * x > c): at the particles within 0.3 mm of the kink the reconstructed heating must stay
- * at least KINK_MIN of the standard's (the limiter turns the reconstruction off where
- * the slopes on the two sides differ).
+ * at least KINK_MIN of the standard's — the reconstruction is not a blanket switch-off
+ * (an error that removed the viscosity of every approaching pair gives 0 here). What
+ * this does not isolate is the slope limiter: with Φ = 1 everywhere (no limiter) the
+ * kink keeps 0.27 instead of 0.34 and would pass too; the solid Hugoniot test
+ * (test_hugoniot with --set sph.viscosity.reconstruct=true) also passes either way
+ * (shock speed −0.56 %, pressure −0.52 %), its jump being fixed by conservation.
  */
 #include <math.h>
 #include <stdio.h>
@@ -25,11 +29,12 @@
 #include "integrate/step.h"
 #include "run/run.h"
 #include "run/sim.h"
+#include "simtext.h"
 #include "testlib.h"
 
 #define RATIO_MAX 1e-3  /* measured 1.9e-5; with the uncorrected gradient (the lattice sum
                            of a cubic lattice at η = 1.2 is about 0.98, not 1) 1.8e-2 */
-#define KINK_MIN 0.25   /* measured 0.34 */
+#define KINK_MIN 0.25   /* measured 0.34; 0 if every approaching pair lost its viscosity */
 #define EDOT 1e4        /* [1/s] */
 #define C 2e-3          /* [m] centre of the block */
 
@@ -52,12 +57,10 @@ static int one_step(double alpha, double beta, int recon, int kink, double *de, 
   snprintf(text, sizeof text, CASE_FMT, alpha, beta, recon ? "true" : "false");
   struct hv_error err;
   hv_error_clear(&err);
-  struct cfg *c = cfg_load_string(text, "reconstruct.yaml", &err);
+  struct cfg *c;
   struct sim s;
-  memset(&s, 0, sizeof s);
-  int ok = c && !run_setup(&s, c, &err) && !cfg_check_unused(c, &err);
-  CHECK(ok, "case sets up (%s)", ok ? "ok" : err.msg);
-  if (!ok) return -1;
+  if (sim_from_text(text, "reconstruct.yaml", &s, &c)) return -1;
+  int ok;
   struct particles *p = &s.p;
   for (size_t i = 0; i < p->n; i++)
     for (int k = 0; k < 3; k++) {
@@ -120,7 +123,7 @@ int main(void)
             fabs(hr) / hs, RATIO_MAX);
     } else {
       CHECK(hs > 0 && hr >= KINK_MIN * hs, "at the kink the reconstruction keeps %.3f of the "
-            "standard heating (>= %.1f)", hr / hs, KINK_MIN);
+            "standard heating (>= %.2f)", hr / hs, KINK_MIN);
     }
   }
   free(d0);
