@@ -23,32 +23,10 @@
 
 #include "fracture/fracture.h"
 #include "sph/cand.h"
+#include "sph/recon.h"
 #include "sph/sph.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
-
-/* The approach speed (vᵢ − vⱼ)·rᵢⱼ of a pair (vdx < 0), rᵢⱼ = xᵢ − xⱼ, with the velocities
- * reconstructed linearly from each particle to the pair's midpoint, vᵢ − ½Φ Gᵢ rᵢⱼ and
- * vⱼ + ½Φ Gⱼ rᵢⱼ: vdx − ½Φ (gᵢ + gⱼ) with gₖ = rᵢⱼ·Gₖ rᵢⱼ. Φ = 4 gᵢ gⱼ / (gᵢ + gⱼ)² (van
- * Leer's limiter in symmetric form; 0 when the slopes differ in sign) is 1 where the
- * velocity is linear over the pair and falls to 0 across a jump, where the viscosity
- * sees the whole difference (Frontiere, Raskin & Owen 2017, J. Comput. Phys. 332:160).
- * Symmetric in i and j, so the pair force stays antisymmetric; clamped to [vdx, 0], so
- * it only removes viscosity. */
-static inline double reconstructed(double vdx, const double *Gi, const double *Gj, double dx,
-                                   double dy, double dz)
-{
-  const double r[3] = {dx, dy, dz};
-  double gi = 0.0, gj = 0.0;
-  for (int a = 0; a < 3; a++) {
-    gi += r[a] * (Gi[3 * a] * dx + Gi[3 * a + 1] * dy + Gi[3 * a + 2] * dz);
-    gj += r[a] * (Gj[3 * a] * dx + Gj[3 * a + 1] * dy + Gj[3 * a + 2] * dz);
-  }
-  const double prod = gi * gj, sum = gi + gj;
-  if (!(prod > 0.0)) return vdx;
-  const double w = vdx - 0.5 * (4.0 * prod / (sum * sum)) * sum;
-  return w > 0.0 ? 0.0 : (w < vdx ? vdx : w);
-}
 
 static int has_strength(const struct material *m, double damage)
 {
@@ -311,8 +289,9 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             double mu = hij * vdx / (r2 + eps * hij * hij);
             if (-mu > mumax) mumax = -mu;   /* the time step sees the whole jump */
             if (gradv && (bf[j] >> 1) == bi)
-              mu = hij * reconstructed(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy,
-                                       dz) / (r2 + eps * hij * hij);
+              mu = hij *
+                   sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
+                   (r2 + eps * hij * hij);
             visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
           }
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */

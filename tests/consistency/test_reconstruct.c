@@ -19,6 +19,8 @@
  * kink keeps 0.27 instead of 0.34 and would pass too; the solid Hugoniot test
  * (test_hugoniot with --set sph.viscosity.reconstruct=true) also passes either way
  * (shock speed −0.56 %, pressure −0.52 %), its jump being fixed by conservation.
+ * The limiter is checked pair by pair against hand results in tests/unit/test_recon.c
+ * (it fails with Φ = 1).
  */
 #include <math.h>
 #include <stdio.h>
