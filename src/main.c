@@ -25,9 +25,10 @@ static void usage(FILE *f)
           "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
           "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
           "      --set time.end=\"60 us\" carries a finished run further\n"
-          "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid]\n"
+          "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
           "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
-          "      elastic-plastic aluminium): particle-steps per second, bytes per particle\n"
+          "      elastic-plastic aluminium): particle-steps per second, bytes per particle;\n"
+          "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"
           "  hvsph materials [NAME]\n"
           "      the material library: every entry, or one entry's parameters with units\n"
           "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
@@ -99,6 +100,8 @@ static int cmd_run(int argc, char **argv, int restart)
 static int cmd_bench(int argc, char **argv)
 {
   struct bench_options o = {.particles = 100000, .steps = 10, .threads = 0};
+  const char **sets = calloc((size_t)argc + 1, sizeof *sets);
+  o.sets = sets;
   for (int i = 0; i < argc; i++) {
     long v;
     if (!strcmp(argv[i], "--particles") && i + 1 < argc && !parse_long(argv[i + 1], 512, 2000000000L, &v)) {
@@ -112,12 +115,19 @@ static int cmd_bench(int argc, char **argv)
       i++;
     } else if (!strcmp(argv[i], "--solid")) {
       o.solid = 1;
+    } else if (!strcmp(argv[i], "--set") && i + 1 < argc) {
+      sets[o.nsets++] = argv[++i];
+    } else if (!strncmp(argv[i], "--set=", 6)) {
+      sets[o.nsets++] = argv[i] + 6;
     } else {
       fprintf(stderr, "hvsph bench: bad argument '%s' (see hvsph --help)\n", argv[i]);
+      free(sets);
       return HV_EXIT_USAGE;
     }
   }
-  return bench_main(&o);
+  int st = bench_main(&o);
+  free(sets);
+  return st;
 }
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose

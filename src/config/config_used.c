@@ -100,6 +100,17 @@ static void unused_add(struct unused_list *u, const char *line)
   u->len += n;
 }
 
+/* The program asked for a key below `path` (a recorded path starts with it). */
+static int path_asked(const struct cfg *c, const char *path)
+{
+  size_t len = strlen(path);
+  for (int i = 0; i < c->nrec; i++) {
+    const char *p = c->rec[i].path;
+    if (!strncmp(p, path, len) && (p[len] == '.' || p[len] == '[')) return 1;
+  }
+  return 0;
+}
+
 /* Reports every unused key below n (whose own path is `path`, "" for the root). */
 static void find_unused(const struct cfg *c, const struct cfg_node *n, const char *path,
                         struct unused_list *u)
@@ -111,7 +122,9 @@ static void find_unused(const struct cfg *c, const struct cfg_node *n, const cha
       snprintf(sub, sizeof sub, "%s%s%s", path, *path ? "." : "", n->keys[i]);
     else
       snprintf(sub, sizeof sub, "%s[%d]", path, i);
-    if (node_any_used(ch)) {
+    if (node_any_used(ch) || (ch->kind != CFG_SCALAR && path_asked(c, sub))) {
+      /* a mapping the program asked into (its keys all defaulted, say `sph: {foo: 1}`)
+         is known: report what is unknown inside it, not the mapping */
       if (ch->kind != CFG_SCALAR) find_unused(c, ch, sub, u);
       continue;
     }

@@ -57,10 +57,16 @@ int bench_main(const struct bench_options *o)
   struct hv_error err;
   hv_error_clear(&err);
   struct cfg *c = cfg_load_string(yaml, "bench", &err);
+  for (int k = 0; c && k < o->nsets; k++)
+    if (cfg_apply_set(c, o->sets[k], &err)) {
+      fprintf(stderr, "hvsph bench: %s\n", err.msg);
+      cfg_free(c);
+      return err.code ? err.code : HV_EXIT_INPUT;
+    }
   struct sim s;
   if (!c || run_setup(&s, c, &err) || cfg_check_unused(c, &err)) {
     fprintf(stderr, "hvsph bench: %s\n", err.msg);
-    return HV_EXIT_RUN;
+    return err.code ? err.code : HV_EXIT_RUN;   /* a bad --set: 2 */
   }
   /* small random velocities (deterministic) so that the viscosity branch runs */
   const double vscale = o->solid ? 1.0 : 0.01;   /* [m/s]: elastic for the solid */

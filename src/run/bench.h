@@ -7,6 +7,8 @@ struct bench_options {
   long steps;
   int threads;      /* 0: OpenMP default */
   int solid;        /* elastic-plastic al-alloy with fracture instead of a gas */
+  const char **sets;   /* --set KEY=VALUE overrides of the benchmark's case */
+  int nsets;
 };
 
 int bench_main(const struct bench_options *o);

@@ -314,6 +314,16 @@ static void test_commands(void)
     }
   }
 
+  /* bench --set: its case changed like a run's, a bad key is bad input (exit 2) */
+  rc = hvsph("bench --particles 512 --steps 1 --threads 1 --solid --set "
+             "sph.viscosity.reconstruct=true", out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "override: sph.viscosity.reconstruct = true"),
+        "bench --solid --set sph.viscosity.reconstruct=true runs (exit %d)", rc);
+  rc = hvsph("bench --particles 512 --steps 1 --set sph.viscosity.alpa=1", out, sizeof out);
+  CHECK(rc == 2 && strstr(out, "unknown key 'sph.viscosity.alpa' (did you mean 'alpha'?)"),
+        "bench --set with an unknown key: exit %d (want 2), %.*s", rc, (int)strcspn(out, "\n"),
+        out);
+
   static const struct {
     const char *args, *what;
   } usage[] = {

@@ -190,7 +190,9 @@ static void test_unknown_keys(void)
                      "    a: 1\n"         /* 7 */
                      "sph:\n"             /* 8 */
                      "  etta: 0.1\n"      /* 9 */
-                     "  eta: 1.2\n";      /* 10 */
+                     "  eta: 1.2\n"       /* 10 */
+                     "time:\n"            /* 11: asked into, every key defaulted */
+                     "  ned: 1\n";        /* 12 */
   struct cfg *c = cfg_load_string(text, "case.yaml", &err);
   CHECK(c != NULL, "loads");
   if (!c) return;
@@ -198,6 +200,7 @@ static void test_unknown_keys(void)
   cfg_get_quantity(c, "material.density", UNIT_DENSITY, NULL, 0.0, HUGE_VAL, &v, &err);
   cfg_get_quantity(c, "material.yield", UNIT_PRESSURE, &def, 0.0, HUGE_VAL, &v, &err);
   cfg_get_quantity(c, "sph.eta", UNIT_NONE, NULL, 0.0, HUGE_VAL, &v, &err);
+  cfg_get_quantity(c, "time.end", UNIT_TIME, &def, 0.0, HUGE_VAL, &v, &err);
   const char *const *keys;
   CHECK(cfg_keys(c, "extra", &keys) == 1, "cfg_keys does not mark used");
   int rc = cfg_check_unused(c, &err);
@@ -205,8 +208,10 @@ static void test_unknown_keys(void)
             "case.yaml:3: unknown key 'material.yeild' (did you mean 'yield'?)\n"
             "case.yaml:4: unknown key 'material.shear'\n"
             "case.yaml:5: unknown key 'extra'\n"
-            "case.yaml:9: unknown key 'sph.etta' (did you mean 'eta'?)");
+            "case.yaml:9: unknown key 'sph.etta' (did you mean 'eta'?)\n"
+            "case.yaml:12: unknown key 'time.ned' (did you mean 'end'?)");
   cfg_mark_used(c, "extra");
+  cfg_mark_used(c, "time.ned");
   cfg_mark_used(c, "material");
   cfg_mark_used(c, "sph.etta");
   hv_error_clear(&err);
