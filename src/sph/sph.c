@@ -73,7 +73,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 }
 
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
-                const struct sph_cache *cache)
+                struct sph_cache *cache)
 {
   if (p->solid) {
     sph_forces_solid(p, g, sp, cache);

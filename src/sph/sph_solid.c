@@ -207,7 +207,7 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 enum { TW_X = 0, TW_H = 3, TW_V = 4, TW_M = 7, TW_P = 8, TW_S = 9, TW_RHO = 15, TW_R = 16, TW = 24 };
 
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, const struct sph_cache *cache)
+                      const struct sph_params *sp, struct sph_cache *cache)
 {
   const size_t n = p->n;
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
@@ -224,11 +224,35 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
      together for every pair instead of from 17 arrays: x, y, z, h, v, m, then p/ρ²,
      S/ρ² (computed once instead of once per pair: the same operations, so the same
      bits) and ρ; a third line with the artificial stress R, read only when a pair has
-     one (bf: body × 2 + 1 when R ≠ 0). 196 bytes per particle, for this pass only. */
+     one (bf: body × 2 + 1 when R ≠ 0). 196 bytes per particle, kept in the cache
+     between steps (allocated here for a call without one). */
   const size_t nt = p->n + p->n_ghost;
-  double *restrict tw = aligned_alloc(64, (nt + 1) * TW * sizeof *tw);
-  int32_t *restrict bf = malloc((nt + 1) * sizeof *bf);
-  if (!tw || !bf) HV_FATAL("out of memory: %zu bytes for the pair terms", (nt + 1) * (TW * sizeof *tw + 4));
+  double *tw0 = NULL;
+  int32_t *bf0 = NULL;
+  if (cache && cache->tcap >= nt + 1) {
+    tw0 = cache->tw;
+    bf0 = cache->bf;
+  } else {
+    const size_t cap = cache ? nt + nt / 4 + 64 : nt + 1;
+    if (cache) {
+      free(cache->tw);
+      free(cache->bf);
+      cache->tw = NULL;
+      cache->bf = NULL;
+      cache->tcap = 0;
+    }
+    tw0 = aligned_alloc(64, cap * TW * sizeof *tw0);
+    bf0 = malloc(cap * sizeof *bf0);
+    if (!tw0 || !bf0)
+      HV_FATAL("out of memory: %zu bytes for the pair terms", cap * (TW * sizeof *tw0 + 4));
+    if (cache) {
+      cache->tw = tw0;
+      cache->bf = bf0;
+      cache->tcap = cap;
+    }
+  }
+  double *restrict tw = tw0;
+  int32_t *restrict bf = bf0;
 #pragma omp parallel for schedule(static)
   for (size_t j = 0; j < nt; j++) {
     const double rj2 = 1.0 / (rho[j] * rho[j]);
@@ -343,6 +367,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
     }
     cand_free_all(&cd);
   }
-  free(tw);
-  free(bf);
+  if (!cache) {
+    free(tw0);
+    free(bf0);
+  }
 }
