@@ -23,7 +23,7 @@ struct setup_result {
   int rc;
   char msg[2048];
   size_t n;
-  double mass, vcells;
+  double mass, vcells, spacing;   /* spacing of the first body */
 };
 
 static struct setup_result setup_case(const char *yaml)
@@ -39,6 +39,7 @@ static struct setup_result setup_case(const char *yaml)
     snprintf(r.msg, sizeof r.msg, "%s", err.msg);
   } else {
     r.n = s.p.n;
+    r.spacing = s.body[0].spacing;
     for (size_t i = 0; i < s.p.n; i++) r.mass += s.p.m[i];
     r.vcells = 0;
   }
@@ -83,11 +84,32 @@ static void test_volumes(void)
                "radius: 0.8, length: 1.6}]}", PI * (2.0 - 0.64 * 1.6), 0.04);
   check_volume("box minus box", "{type: box, min: [0, 0, 0], max: [1, 1, 1], minus: [{type: box, "
                "min: [0.25, 0.25, 0.25], max: [0.75, 0.75, 0.75]}]}", 1.0 - 0.125, 0.05);
-  /* particle count from `particles`: spacing (V/N)^(1/3), the count comes out near N */
+  /* particle count from `particles`: at least N, and no more than the lattice's
+     discreteness needs (a spacing finer by 0.1 % steps from (V/N)^(1/3)) */
   struct setup_result r = setup_case(body_case("{type: sphere, center: [0, 0, 0], radius: 1}",
                                                "particles: 20000"));
-  CHECK(r.rc == 0 && fabs((double)r.n / 20000 - 1) < LATTICE_VOLUME_TOL,
-        "particles: 20000 gives %zu particles", r.n);
+  CHECK(r.rc == 0 && r.n >= 20000 && (double)r.n / 20000 - 1 < LATTICE_VOLUME_TOL,
+        "particles: 20000 gives %zu particles (at least 20000, within 3 %%)", r.n);
+  /* a small cylinder: its count jumps by whole rings and pairs of slices (here 4 960 ->
+     5 600), so "at least N" is checked with the spacing: the one chosen gives N or
+     more, one 0.1 % coarser fewer */
+  const char *cyl = "{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], radius: 0.5, "
+                    "length: 3}";
+  r = setup_case(body_case(cyl, "particles: 5000"));
+  char extra[64];
+  snprintf(extra, sizeof extra, "spacing: %.17g", 1.001 * r.spacing);
+  struct setup_result coarser = setup_case(body_case(cyl, extra));
+  CHECK(r.rc == 0 && r.n >= 5000 && coarser.rc == 0 && coarser.n < 5000,
+        "cylinder, particles: 5000: %zu particles; 0.1 %% coarser %zu (the coarsest spacing "
+        "with at least 5000)", r.n, coarser.n);
+  /* a thin plate: whole layers, rounded up so that the count is not below N. 1 mm
+     thick, 120 x 60 mm: (V/N)^(1/3) = 0.711 mm for N = 20 000 is 1.41 layers; to the
+     nearest that was one layer of 1 mm, 7 200 particles; rounded up, two of 0.5 mm,
+     240 x 120 x 2 = 57 600 */
+  r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1e-3, 0.12, 0.06]}",
+                           "particles: 20000"));
+  CHECK(r.rc == 0 && r.n == 57600, "1 mm plate, particles: 20000: %zu particles (want 57600: "
+        "two whole layers)", r.n);
   /* hcp: volume per particle dx^3/sqrt(2) */
   r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
   double vl = (double)r.n * 0.05 * 0.05 * 0.05 / sqrt(2.0);
