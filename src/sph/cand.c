@@ -189,7 +189,7 @@ void sph_cache_free(struct sph_cache *c)
 size_t sph_cache_bytes(const struct sph_cache *c)
 {
   return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words) +
-         c->gcap * 9 * sizeof *c->gradv + c->tcap * (24 * sizeof *c->tw + sizeof *c->bf);
+         c->gcap * 9 * sizeof *c->gradv + c->tcap * (SPH_TW * sizeof *c->tw + sizeof *c->bf);
 }
 
 /* Sizes the rows: a cell's row has one bit per candidate of that cell. */

@@ -46,6 +46,8 @@ struct sph_params {
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
  * bit per candidate (a particle of a neighbour cell) for every particle — about 50
  * bytes per particle instead of 4 bytes per neighbour. */
+enum { SPH_TW = 24 };   /* doubles in a partner record of the solid force pass */
+
 struct sph_cache {
   uint64_t *mask;        /* rows of bits */
   size_t cap;            /* words allocated */
@@ -64,7 +66,7 @@ struct sph_cache {
      the heap grow by their size at every step (hvsph bench --solid with the
      reconstruction: peak RSS 2 705 bytes per particle after 10 steps, 988 with a fixed
      threshold) */
-  double *tw;
+  double *tw;            /* SPH_TW doubles per slot */
   int32_t *bf;
   size_t tcap;           /* slots allocated */
 };

@@ -204,7 +204,7 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 }
 
 /* layout of a partner's record in sph_forces_solid (TW doubles, two cache lines) */
-enum { TW_X = 0, TW_H = 3, TW_V = 4, TW_M = 7, TW_P = 8, TW_S = 9, TW_RHO = 15, TW_R = 16, TW = 24 };
+enum { TW_X = 0, TW_H = 3, TW_V = 4, TW_M = 7, TW_P = 8, TW_S = 9, TW_RHO = 15, TW_R = 16, TW = SPH_TW };
 
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
                       const struct sph_params *sp, struct sph_cache *cache)
