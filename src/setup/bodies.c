@@ -139,6 +139,13 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
 }
 
+/* Physical memory of this machine [bytes] (1e18 when unknown). */
+static double machine_bytes(void)
+{
+  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+  return pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
+}
+
 /* The thinnest side of a box filled on a cubic lattice (0 for other shapes and
  * lattices): a count-given box's spacing is set so that it holds a whole number of
  * layers, else a thin plate could get no particle or an uneven last layer. */
@@ -185,7 +192,7 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
       bs->spacing = lo;
       cnt = (double)lattice_points(bs, half, NULL, 0);
     }
-    for (int it = 0; it < 40 && hi > lo * (1.0 + 1e-9); it++) {
+    for (int it = 0; it < 40 && hi > lo * (1.0 + 1e-6); it++) {
       bs->spacing = 0.5 * (lo + hi);
       if ((double)lattice_points(bs, half, NULL, 0) >= n) lo = bs->spacing;
       else hi = bs->spacing;
@@ -220,7 +227,9 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
                         "volume; give 'spacing' instead", cfg_where(c, key2, where, sizeof where), name);
   double n = (double)np * resolution, v1 = bs->vol / n;   /* volume per particle */
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
-  if (n <= 1e9) spacing_for_count(s, bs, name, n);   /* beyond, check_memory refuses it */
+  /* counted only where it could fit (600 bytes a particle at least): check_memory
+     refuses the rest before anything is allocated, without minutes of counting first */
+  if (n * 600.0 <= 0.8 * machine_bytes()) spacing_for_count(s, bs, name, n);
   return 0;
 }
 
@@ -341,8 +350,7 @@ static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struc
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
-  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-  double avail = pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
+  const double avail = machine_bytes();
   double need = (double)total * (s->p.solid ? 900.0 : 600.0);   /* bytes, incl. ghosts, grid */
   if (total >= ((size_t)1 << 31) || need > 0.8 * avail)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
