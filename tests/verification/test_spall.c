@@ -20,7 +20,16 @@
  *  2. At 50 m/s (pulse ~0.46 GPa): the tension stays below |σ_c| (the largest principal
  *     stress over the outputs, every 0.05 µs, is reported and must be below |σ_c|) and
  *     no particle splits.
- * Both exclude the particles within EXCLUDE_CONTACT initial spacings of the impact plane
+ *  3. The cumulative criterion as a time to failure (the paper's cases' model,
+ *     docs/models.md), at 100 m/s with outputs every 0.05 µs: with τ = TAU_SHORT the
+ *     target spalls, in a zone centred on x_s (measured: 1.55–2.45 mm, twice as wide as
+ *     Tresca's: the tension lasts τ over more layers before they fail), and no particle
+ *     away from the contact splits before the tension has exceeded |σ_c| for τ (the
+ *     first split comes at least τ minus one output interval after the first output
+ *     showing tension beyond |σ_c|; measured: 1.00 and 1.20 µs); with τ = TAU_LONG,
+ *     longer than the whole run, the tension exceeds |σ_c| (0.98 GPa) and nothing
+ *     splits.
+ * All exclude the particles within EXCLUDE_CONTACT initial spacings of the impact plane
  * x = 0 (the flyer's and the target's contact faces). When the flyer and target separate
  * (the release reaches the interface at ~0.6 µs), the continuity equation still sums
  * the receding neighbours of the other body, so the two contact layers expand and go
@@ -40,12 +49,17 @@
 #define SIGMA_C 0.59e9        /* [Pa] |σ_c| of al-alloy (data/materials.yaml, Tables 5, 8) */
 #define SPALL_BAND 4.0        /* [initial spacings] half-width of the band around x_s */
 #define EXCLUDE_CONTACT 2.0   /* [initial spacings] contact layers left out (see above) */
+#define TAU_SHORT 0.2e-6      /* [s] shorter than the tension at the spall plane lasts */
+#define TAU_LONG 5e-6         /* [s] longer than the run (1.6 µs) */
+#define DT_OUT 0.05e-6        /* [s] output interval of runs 2-4 */
 
 struct outcome {
   size_t split_inside, split_band, split_outside, split_contact;
   double xlo, xhi;           /* [m] range of initial x of the split particles (not contact) */
   double sigmax;             /* [Pa] largest principal tension over the outputs (not contact) */
   double xs, dx;             /* [m] expected spall plane, initial spacing */
+  double t_over, t_split;    /* [s] first output with an unsplit particle beyond |σ_c|, and
+                                with a split one (both away from the contact; HUGE_VAL: none) */
   size_t layer_count;        /* particles in one lattice layer */
 };
 
@@ -82,6 +96,7 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
          "plane x_s = %.3f mm (initial coordinates)\n", t_flyer * 1e3, rear * 1e3, o->dx * 1e3,
          o->xs * 1e3);
   o->sigmax = 0;
+  o->t_over = o->t_split = HUGE_VAL;
   for (int k = 1; k < nsnap; k++) {
     struct particles p;
     double t;
@@ -98,6 +113,10 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
       }
     }
     if (smax > o->sigmax) o->sigmax = smax;
+    if (smax > SIGMA_C && o->t_over == HUGE_VAL) o->t_over = t;
+    for (size_t i = 0; i < p.n && o->t_split == HUGE_VAL; i++)
+      if (p.damage[i] >= 1 && fabs(x0[p.id[i]] - contact) >= EXCLUDE_CONTACT * o->dx)
+        o->t_split = t;
     if (k == nsnap - 1) {
       o->split_inside = o->split_band = o->split_outside = o->split_contact = 0;
       o->xlo = HUGE_VAL;
@@ -153,5 +172,34 @@ int main(void)
         "stress over the outputs %.4f GPa < %.2f GPa", lo.sigmax * 1e-9, SIGMA_C * 1e-9);
   CHECK(lo.split_inside == 0, "no particle splits where the tension stayed below |sigma_c| "
         "(%zu split)", lo.split_inside);
+
+  char extra[512];
+  printf("run 3: flyer at 100 m/s, cumulative criterion, tau = %.2f us\n", TAU_SHORT * 1e6);
+  struct outcome cu;
+  snprintf(extra, sizeof extra, "--set 'materials.al={library: al-alloy, fracture: {model: "
+           "cumulative, tau: %.17g}}' --set output.every=%.17g", TAU_SHORT, DT_OUT);
+  if (analyse("spall_tau_short", extra, &cu)) return test_finish();
+  printf("  split: %zu away from the contact (%zu in the band), initial x from %.3f to %.3f mm; "
+         "tension beyond |sigma_c| first seen at %.2f us, the first split at %.2f us\n",
+         cu.split_inside, cu.split_band, cu.xlo * 1e3, cu.xhi * 1e3, cu.t_over * 1e6,
+         cu.t_split * 1e6);
+  CHECK(cu.split_inside >= cu.layer_count &&
+            fabs(0.5 * (cu.xlo + cu.xhi) - cu.xs) <= 1.0 * cu.dx,
+        "tau = %.2f us: the target spalls (%zu split, a layer is %zu) in a zone centred on the "
+        "expected plane (%.3f to %.3f mm, centre within one spacing of %.3f mm)",
+        TAU_SHORT * 1e6, cu.split_inside, cu.layer_count, cu.xlo * 1e3, cu.xhi * 1e3,
+        cu.xs * 1e3);
+  CHECK(cu.t_split - cu.t_over >= TAU_SHORT - DT_OUT - 1e-12,
+        "no split before the tension has lasted tau: first split %.2f us after the first "
+        "output beyond |sigma_c| (>= %.2f us)", (cu.t_split - cu.t_over) * 1e6,
+        (TAU_SHORT - DT_OUT) * 1e6);
+
+  printf("run 4: flyer at 100 m/s, cumulative criterion, tau = %.1f us\n", TAU_LONG * 1e6);
+  snprintf(extra, sizeof extra, "--set 'materials.al={library: al-alloy, fracture: {model: "
+           "cumulative, tau: %.17g}}' --set output.every=%.17g", TAU_LONG, DT_OUT);
+  if (analyse("spall_tau_long", extra, &cu)) return test_finish();
+  CHECK(cu.sigmax > SIGMA_C && cu.split_inside == 0, "tau = %.1f us: the tension reaches %.3f "
+        "GPa (> |sigma_c|) and nothing away from the contact splits (%zu split)",
+        TAU_LONG * 1e6, cu.sigmax * 1e-9, cu.split_inside);
   return test_finish();
 }
