@@ -234,6 +234,32 @@ static void test_detached(void)
         "a petal joined to the rim is plate: D %.3fΔ, %zu left out", r.d_circle / S,
         r.n_detached);
   particles_free(&p);
+
+  /* rubble: a ring of split particles joined to the rim (radius 6Δ) filling the hole to
+     radius 4Δ. As plate it shrinks the hole to about 8Δ; masked out as measure_run does
+     for hole_diameter_intact (damage < 1 only), the punched 12Δ comes back */
+  particles_init(&p);
+  add_lattice(&p, lo, hi, 0, &h, 1, 1.0);
+  const size_t nintact = p.n;
+  for (double y = -5.5 * S; y <= 5.5 * S + 1e-12; y += S)
+    for (double z = 0.5 * S; z <= 5.5 * S + 1e-12; z += S) {
+      const double rr = hypot(y, z);
+      if (rr < 4.0 * S || rr > 6.0 * S) continue;
+      for (int l = 0; l < 3; l++) {
+        const double q[3] = {X0 + (0.5 + l) * S, y, z};
+        add_particle(&p, q, 1);
+      }
+    }
+  unsigned char *intact = malloc(p.n);
+  for (size_t i = 0; i < p.n; i++) intact[i] = i < nintact;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.d_circle < 9 * S,
+        "rubble joined to the rim is plate: D %.3fΔ", r.d_circle / S);
+  par.mask = intact;
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && fabs(r.d_circle - 12 * S) <= S,
+        "without the rubble (the intact mask): D %.3fΔ (12Δ punched)", r.d_circle / S);
+  par.mask = NULL;
+  free(intact);
+  particles_free(&p);
 }
 
 static void test_ellipse_and_open(void)

@@ -43,6 +43,10 @@ int main(void)
   double perf = measured(path, "perforated"), d = measured(path, "hole_diameter");
   CHECK(perf == 1.0, "the plate is perforated");
   CHECK(d > 13.5e-3 && d < 3 * 13.5e-3, "hole diameter %.2f mm between 13.5 and 40.5 mm", 1e3 * d);
+  /* the hole in unsplit material: leaving particles out can only widen it */
+  const double di = measured(path, "hole_diameter_intact");
+  CHECK(di >= d - 1e-9, "hole_diameter_intact %.2f mm >= hole_diameter %.2f mm", 1e3 * di,
+        1e3 * d);
   /* measurements taken again from the snapshots: the same file, row for row */
   char *before = test_slurp(path, NULL);
   /* ... with a stale snapshot of an earlier, longer run left in the folder */
