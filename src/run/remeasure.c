@@ -128,6 +128,19 @@ int remeasure_main(int argc, char **argv)
                      (int)s.p.mat[i], casefile);
         goto fail;
       }
+    if (k == 0) {   /* the set-up must be the run's: its spacings feed the measurements */
+      size_t cnt[64] = {0};
+      for (size_t i = 0; i < s.p.n; i++) cnt[s.p.body[i]]++;
+      for (int b = 0; b < s.nbody && b < 64; b++)
+        if (cnt[b] != s.body[b].count) {
+          hv_error_set(&err, HV_EXIT_INPUT, "%s: %zu particles of body '%s', where %s set up "
+                       "by this hvsph gives %zu: the run was set up differently (by another "
+                       "version's particle counts, docs/case-files.md 'particles'); measure it "
+                       "with the hvsph that ran it", spath, cnt[b], s.body[b].name, casefile,
+                       s.body[b].count);
+          goto fail;
+        }
+    }
     s.t = isfinite(t) ? t : 0.0;
     if (k > 0) measure_run_step(&mr, &s);   /* as a run: no step before snapshot 0 */
     for (size_t q = 0; q < old.n; q++) {

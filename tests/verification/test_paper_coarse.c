@@ -72,6 +72,20 @@ int main(void)
   st = test_run(cmd, out, sizeof out);
   CHECK(st == 2 && strstr(out, "no particles_NNNNN.csv"), "measure: a folder without snapshots: "
         "exit %d: %s", st, out);
+  /* a case whose set-up differs from the run's (here the paper's counts against the run's
+     resolution 0.1, as another version's counts would be): refused, measurements.csv kept */
+  snprintf(path, sizeof path, "%s/validation/bumper-1/measurements.csv", tmp);
+  char *kept = test_slurp(path, NULL);
+  snprintf(cmd, sizeof cmd, "%s measure %s/validation/bumper-1 --case %s/examples/paper/"
+           "bumper-1.yaml --quiet", test_bin(), tmp, test_source_dir());
+  st = test_run(cmd, out, sizeof out);
+  char *now = test_slurp(path, NULL);
+  CHECK(st == 2 && strstr(out, "particles of body '") &&
+            strstr(out, "set up differently") && kept && now && !strcmp(kept, now),
+        "measure with a case set up differently: exit %d, measurements.csv unchanged: %s", st,
+        out);
+  free(kept);
+  free(now);
   snprintf(cmd, sizeof cmd, "%s render %s/validation/bumper-1/particles_00002.csv -o %s/r.png "
            "--mode radiograph --axis z", test_bin(), tmp, tmp);
   st = test_run(cmd, out, sizeof out);
