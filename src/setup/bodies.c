@@ -146,6 +146,14 @@ static double machine_bytes(void)
   return pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
 }
 
+/* Bytes n particles need (ghosts and grid included) and whether that fits: 80 % of
+ * the machine's memory. */
+static double particles_need(double n, int solid) { return n * (solid ? 900.0 : 600.0); }
+static int particles_fit(double n, int solid)
+{
+  return particles_need(n, solid) <= 0.8 * machine_bytes();
+}
+
 /* The thinnest side of a box filled on a cubic lattice (0 for other shapes and
  * lattices): a count-given box's spacing is set so that it holds a whole number of
  * layers, else a thin plate could get no particle or an uneven last layer. */
@@ -172,13 +180,11 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
                               double n)
 {
   const double d0 = bs->spacing, t = box_thickness(s, bs);
+  const int half = s->bnd.half_model;
   double layers = 0.0;
-  if (t > 0) {
+  if (t > 0) {   /* whole layers, rounded up, then a layer more while short */
     layers = fmax(1.0, ceil(t / d0 * (1.0 - 1e-9)));
     bs->spacing = t / layers;
-  }
-  const int half = s->bnd.half_model;
-  if (t > 0) {   /* a layer more while short */
     for (int it = 0; it < 60 && (double)lattice_points(bs, half, NULL, 0) < n; it++) {
       layers += 1.0;
       bs->spacing = t / layers;
@@ -227,9 +233,9 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
                         "volume; give 'spacing' instead", cfg_where(c, key2, where, sizeof where), name);
   double n = (double)np * resolution, v1 = bs->vol / n;   /* volume per particle */
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
-  /* counted only where it could fit (600 bytes a particle at least): check_memory
-     refuses the rest before anything is allocated, without minutes of counting first */
-  if (n * 600.0 <= 0.8 * machine_bytes()) spacing_for_count(s, bs, name, n);
+  /* counted only where it could fit (as gas, the least): check_memory refuses the rest
+     before anything is allocated, without minutes of counting first */
+  if (particles_fit(n, 0)) spacing_for_count(s, bs, name, n);
   return 0;
 }
 
@@ -350,9 +356,8 @@ static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struc
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
-  const double avail = machine_bytes();
-  double need = (double)total * (s->p.solid ? 900.0 : 600.0);   /* bytes, incl. ghosts, grid */
-  if (total >= ((size_t)1 << 31) || need > 0.8 * avail)
+  const double avail = machine_bytes(), need = particles_need((double)total, s->p.solid);
+  if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid))
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
                         "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
                         "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
