@@ -46,7 +46,7 @@ static int body_list(const struct sim *s, struct cfg *c, const char *path, int *
 int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struct hv_error *err)
 {
   memset(mr, 0, sizeof *mr);
-  mr->target = mr->backwall = mr->gas = -1;
+  mr->backwall = mr->gas = -1;
   meas_table_init(&mr->table);
   if (!cfg_has(c, "measure")) return 0;
   mr->any = 1;
@@ -58,8 +58,18 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       body_list(s, c, "measure.plates", mr->plate, &mr->nplate, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
-  if (cfg_has(c, "measure.thick_target") && body_by_name(s, c, "measure.thick_target", &mr->target, err))
-    return -1;
+  if (cfg_len(c, "measure.thick_target") >= 0) {
+    if (body_list(s, c, "measure.thick_target", mr->target, &mr->ntarget, err)) return -1;
+    if (mr->ntarget == 0) {
+      char where[256];
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.thick_target: an empty list (name "
+                          "the target's body, or its bodies)",
+                          cfg_where(c, "measure.thick_target", where, sizeof where));
+    }
+  } else if (cfg_has(c, "measure.thick_target")) {
+    if (body_by_name(s, c, "measure.thick_target", &mr->target[0], err)) return -1;
+    mr->ntarget = 1;
+  }
   if (cfg_has(c, "measure.backwall") && body_by_name(s, c, "measure.backwall", &mr->backwall, err))
     return -1;
   if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
@@ -98,18 +108,50 @@ static double next_face(const struct measure_run *mr, const struct sim *s, int b
   return x;
 }
 
+/* The thick target's cavity. A target of several bodies (a block refined near its
+ * axis) is measured as one: its particles are those of every listed body, its front face
+ * the foremost of theirs, its spacing the finest (where the cavity runs: footprint and
+ * r_open Δ/2 and Δ of it, slices Δ thick). */
+static int measure_target(struct measure_run *mr, const struct sim *s, double t,
+                          struct hv_error *err)
+{
+  struct meas_geom g = geom(mr, s, mr->target[0]);
+  unsigned char *mask = NULL;
+  if (mr->ntarget > 1) {
+    double hi = s->body[mr->target[0]].hi[0];
+    for (int k = 1; k < mr->ntarget; k++) {
+      const struct body_info *bi = &s->body[mr->target[k]];
+      if (bi->lo[0] < g.x0) g.x0 = bi->lo[0];
+      if (bi->hi[0] > hi) hi = bi->hi[0];
+      if (bi->spacing < g.spacing) g.spacing = bi->spacing;
+    }
+    g.thickness = hi - g.x0;
+    g.body = -1;
+    mask = hv_malloc(s->p.n ? s->p.n : 1, "thick-target mask");
+    for (size_t i = 0; i < s->p.n; i++) {
+      mask[i] = 0;
+      for (int k = 0; k < mr->ntarget; k++) mask[i] |= s->p.body[i] == mr->target[k];
+    }
+  }
+  struct meas_cavity_params cp;
+  struct meas_cavity cav;
+  meas_cavity_defaults(&cp, &g);
+  cp.mask = mask;
+  /* slices one fine spacing thick: each holds a layer of the fine body, so that no slice
+     sees only the coarse body's particles further out */
+  if (mask) cp.slice = g.spacing;
+  const int rc = measure_cavity(&s->p, &g, &cp, &cav, err);
+  free(mask);
+  if (rc) return -1;
+  meas_table_add_cavity(&mr->table, t, s->body[mr->target[0]].name, &cav);
+  meas_cavity_free(&cav);
+  return 0;
+}
+
 static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_error *err)
 {
   const double t = s->t;
-  if (mr->target >= 0) {
-    struct meas_geom g = geom(mr, s, mr->target);
-    struct meas_cavity_params cp;
-    struct meas_cavity cav;
-    meas_cavity_defaults(&cp, &g);
-    if (measure_cavity(&s->p, &g, &cp, &cav, err)) return -1;
-    meas_table_add_cavity(&mr->table, t, s->body[mr->target].name, &cav);
-    meas_cavity_free(&cav);
-  }
+  if (mr->ntarget > 0 && measure_target(mr, s, t, err)) return -1;
   for (int k = 0; k < mr->nplate; k++) {
     struct meas_geom g = geom(mr, s, mr->plate[k]);
     struct meas_plate_params pp;

@@ -2,7 +2,8 @@
  * and at the end, and written to OUTDIR/measurements.csv (and fragments_NNNNN.csv).
  *
  *   measure:
- *     thick_target: target        # penetration depth L, cavity diameter D
+ *     thick_target: target        # penetration depth L, cavity diameter D (or a list of
+ *                                 # bodies: a target refined near its axis, [target, core])
  *     plates: [bumper]            # perforated?, hole diameters
  *     debris: [bumper]            # debris cloud behind each of these plates
  *     backwall: backwall          # crater depth, damaged radius, peak centre pressure
@@ -25,7 +26,8 @@
 struct measure_run {
   int any;
   double axis_y;         /* [m] */
-  int target;            /* body index or -1 */
+  int target[MR_MAX], ntarget;  /* the thick target's bodies (its rows are named after
+                                   the first) */
   int plate[MR_MAX], nplate;
   int debris[MR_MAX], ndebris;
   int backwall;

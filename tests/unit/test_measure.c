@@ -12,6 +12,11 @@
  * Blocks: a cylindrical cavity of known depth and diameter gives L and D within Δ; a
  * wider entrance crater sets D (the largest) but not D_mean; a stray particle in the
  * cavity stops it unless min_count or v_max leave it out.
+ * A target of two bodies (`measure.thick_target: [block, core]`, a block refined near its
+ * axis, run through `hvsph run` to t = 0): a cavity 8 mm deep and 6 mm across cut into
+ * the fine core gives L and D within the core's spacing, in rows named after the first
+ * body; the outer block alone would read the core's 10 mm channel as a perforation; an
+ * empty list and an unknown body are refused (exit 2).
  */
 #include <math.h>
 #include <stdint.h>
@@ -405,6 +410,73 @@ static void test_cavity(void)
   particles_free(&p);
 }
 
+/* the last value of (quantity, object) in a measurements.csv; NAN if none */
+static double csv_value(const char *path, const char *quantity, const char *object)
+{
+  char *text = test_slurp(path, NULL);
+  double v = NAN;
+  for (char *line = text ? strtok(text, "\n") : NULL; line; line = strtok(NULL, "\n")) {
+    char q[64], o[64];
+    double t, val;
+    const char *last = strrchr(line, ',');  /* the object: after the last comma */
+    if (last && sscanf(line, "%lf,%63[^,],%lf", &t, q, &val) == 3 &&
+        sscanf(last + 1, "%63s", o) == 1 &&
+        !strcmp(q, quantity) && !strcmp(o, object))
+      v = val;
+  }
+  free(text);
+  return v;
+}
+
+static void test_cavity_two_bodies(void)
+{
+  static const char *const fmt =
+      "name: two-body-target\n"
+      "domain: {min: [-5 mm, -15 mm, 0], max: [25 mm, 15 mm, 15 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: block\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -15 mm, -15 mm], max: [20 mm, 15 mm, 15 mm],\n"
+      "            minus: [{type: box, min: [0, -5 mm, -5 mm], max: [20 mm, 5 mm, 5 mm]}]}\n"
+      "    spacing: 1 mm\n"
+      "  - name: core\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [20 mm, 5 mm, 5 mm],\n"
+      "            minus: [{type: cylinder, center: [4 mm, 0, 0], axis: [1, 0, 0],\n"
+      "                     radius: 3 mm, length: 8 mm}]}\n"
+      "    spacing: 0.5 mm\n"
+      "time: {end: 0}\n"
+      "measure: {thick_target: %s}\n";
+  char text[2048], cmd[8192], out[4096], path[4400];
+  const char *tmp = test_tmpdir();
+  const char *targets[] = {"[block, core]", "block", "[]", "[block, cores]"};
+  double L[2] = {NAN, NAN}, D[2] = {NAN, NAN}, perf[2] = {NAN, NAN};
+  for (int k = 0; k < 4; k++) {
+    snprintf(text, sizeof text, fmt, targets[k]);
+    char name[64];
+    snprintf(name, sizeof name, "two_body_target_%d.yaml", k);
+    const char *file = test_write_file(name, text);
+    snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s/two_body_%d' --quiet", test_bin(), file, tmp, k);
+    const int st = test_run(cmd, out, sizeof out);
+    if (k >= 2) {
+      CHECK(st == 2 && strstr(out, "thick_target"), "thick_target: %s is refused, exit 2 naming "
+            "the key (exit %d): %s", targets[k], st, out);
+      continue;
+    }
+    CHECK(st == 0, "thick_target: %s runs (exit %d): %s", targets[k], st, out);
+    snprintf(path, sizeof path, "%s/two_body_%d/measurements.csv", tmp, k);
+    L[k] = csv_value(path, "penetration_depth", "block");
+    D[k] = csv_value(path, "cavity_diameter", "block");
+    perf[k] = csv_value(path, "perforated", "block");
+  }
+  const double dc = 0.5e-3;  /* the core's spacing */
+  CHECK(fabs(L[0] - 8e-3) <= dc, "two bodies: L = %.3f mm, 8 mm within the core's 0.5 mm",
+        1e3 * L[0]);
+  CHECK(fabs(D[0] - 6e-3) <= dc, "two bodies: D = %.3f mm, 6 mm within 0.5 mm", 1e3 * D[0]);
+  CHECK(L[1] > 19e-3 && perf[1] == 1.0, "the outer block alone sees the core's channel as a "
+        "perforation: L = %.2f mm", 1e3 * L[1]);
+}
+
 int main(void)
 {
   test_holes();
@@ -412,5 +484,6 @@ int main(void)
   test_detached();
   test_ellipse_and_open();
   test_cavity();
+  test_cavity_two_bodies();
   return test_finish();
 }
