@@ -152,29 +152,36 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
 {
   const double t = s->t;
   if (mr->ntarget > 0 && measure_target(mr, s, t, err)) return -1;
+  /* the holes in unsplit material: split particles still joined to a plate carry no
+     tension, rubble that a recovered plate would not keep (one mask for every plate) */
+  unsigned char *intact = NULL;
+  if (s->p.solid && mr->nplate > 0) {
+    intact = hv_malloc(s->p.n + 1, "intact mask");
+    for (size_t i = 0; i < s->p.n; i++) intact[i] = s->p.damage[i] < 1.0;
+  }
   for (int k = 0; k < mr->nplate; k++) {
     struct meas_geom g = geom(mr, s, mr->plate[k]);
     struct meas_plate_params pp;
     struct meas_plate hole;
     meas_plate_defaults(&pp, &g);
-    if (measure_plate(&s->p, &g, &pp, &hole, err)) return -1;
+    if (measure_plate(&s->p, &g, &pp, &hole, err)) {
+      free(intact);
+      return -1;
+    }
     meas_table_add_plate(&mr->table, t, s->body[mr->plate[k]].name, &hole);
-    if (s->p.solid) {
-      /* the hole in unsplit material: split particles still joined to the plate carry
-         no tension, rubble that a recovered plate would not keep */
-      unsigned char *mask = hv_malloc(s->p.n + 1, "intact mask");
-      for (size_t i = 0; i < s->p.n; i++) mask[i] = s->p.damage[i] < 1.0;
-      pp.mask = mask;
-      struct meas_plate intact;
-      const int rc = measure_plate(&s->p, &g, &pp, &intact, err);
-      free(mask);
-      if (rc) return -1;
-      meas_table_add(&mr->table, t, "hole_diameter_intact", intact.d_circle, "m",
+    if (intact) {
+      pp.mask = intact;
+      if (measure_plate(&s->p, &g, &pp, &hole, err)) {
+        free(intact);
+        return -1;
+      }
+      meas_table_add(&mr->table, t, "hole_diameter_intact", hole.d_circle, "m",
                      s->body[mr->plate[k]].name);
-      meas_table_add(&mr->table, t, "hole_diameter_intact_equiv", intact.d_equiv, "m",
+      meas_table_add(&mr->table, t, "hole_diameter_intact_equiv", hole.d_equiv, "m",
                      s->body[mr->plate[k]].name);
     }
   }
+  free(intact);
   for (int k = 0; k < mr->ndebris; k++) {
     struct meas_geom g = geom(mr, s, mr->debris[k]);
     struct meas_debris_params dp;

@@ -129,9 +129,9 @@ int remeasure_main(int argc, char **argv)
         goto fail;
       }
     if (k == 0) {   /* the set-up must be the run's: its spacings feed the measurements */
-      size_t cnt[64] = {0};
+      size_t cnt[sizeof s.body / sizeof s.body[0]] = {0};
       for (size_t i = 0; i < s.p.n; i++) cnt[s.p.body[i]]++;
-      for (int b = 0; b < s.nbody && b < 64; b++)
+      for (int b = 0; b < s.nbody; b++)
         if (cnt[b] != s.body[b].count) {
           hv_error_set(&err, HV_EXIT_INPUT, "%s: %zu particles of body '%s', where %s set up "
                        "by this hvsph gives %zu: the run was set up differently (by another "

@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "diag/measure.h"
+#include "diag/measure_table.h"
 #include "particles/particles.h"
 #include "testlib.h"
 #include "testparticles.h"
@@ -413,18 +414,15 @@ static void test_cavity(void)
 /* the last value of (quantity, object) in a measurements.csv; NAN if none */
 static double csv_value(const char *path, const char *quantity, const char *object)
 {
-  char *text = test_slurp(path, NULL);
+  struct meas_table t;
+  struct hv_error err = {0};
   double v = NAN;
-  for (char *line = text ? strtok(text, "\n") : NULL; line; line = strtok(NULL, "\n")) {
-    char q[64], o[64];
-    double t, val;
-    const char *last = strrchr(line, ',');  /* the object: after the last comma */
-    if (last && sscanf(line, "%lf,%63[^,],%lf", &t, q, &val) == 3 &&
-        sscanf(last + 1, "%63s", o) == 1 &&
-        !strcmp(q, quantity) && !strcmp(o, object))
-      v = val;
-  }
-  free(text);
+  meas_table_init(&t);
+  if (meas_table_read(&t, path, &err) == 0)
+    for (size_t k = 0; k < t.n; k++)
+      if (!strcmp(t.rows[k].quantity, quantity) && !strcmp(t.rows[k].object, object))
+        v = t.rows[k].value;
+  meas_table_free(&t);
   return v;
 }
 
