@@ -14,19 +14,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag/measure_table.h"
 #include "testlib.h"
 
-/* the last value of a quantity in measurements.csv */
+/* the last value of a quantity in measurements.csv (any object); -1 if none */
 static double measured(const char *path, const char *quantity)
 {
-  char *text = test_slurp(path, NULL);
+  struct meas_table t;
+  struct hv_error err = {0};
   double v = -1;
-  for (char *line = text ? strtok(text, "\n") : NULL; line; line = strtok(NULL, "\n")) {
-    char q[64];
-    double t, val;
-    if (sscanf(line, "%lf,%63[^,],%lf", &t, q, &val) == 3 && !strcmp(q, quantity)) v = val;
-  }
-  free(text);
+  meas_table_init(&t);
+  if (meas_table_read(&t, path, &err) == 0)
+    for (size_t k = 0; k < t.n; k++)
+      if (!strcmp(t.rows[k].quantity, quantity)) v = t.rows[k].value;
+  meas_table_free(&t);
   return v;
 }
 
