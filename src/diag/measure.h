@@ -117,7 +117,14 @@ void meas_cavity_free(struct meas_cavity *c);
  * hole_open: the hole reaches the edge of the window (the plate is gone across the
  *    whole window): the diameters are then lower bounds.
  * Not perforated: the diameters and area are 0. Resolution: about Δ on the diameters
- * (the circle also depends on the rim particles' placement, within Δ/2 in radius). */
+ * (the circle also depends on the rim particles' placement, within Δ/2 in radius).
+ * A plate of several bodies of different spacings (a plate refined near the impact
+ * point: a fine disc inside a coarse plate) is measured with g->body < 0, a mask of its
+ * bodies, g->spacing the finest and `scale` [p->n] = Δ_i/Δ, each particle's own body
+ * spacing over the finest: particle i then covers the plane within scale_i tol, has the
+ * footprint scale_i footprint and links at 1.5 scale_i Δ (FoF linking (b_i + b_j)/2), so
+ * that the coarse part is as solid as it is alone; d_equiv's edge term keeps the finest
+ * spacing (the hole's rim lies in the fine part). */
 struct meas_plate_params {
   double tol;          /* [m] a projected particle covers the plane within tol (default Δ) */
   double footprint;    /* [m] (default Δ/2) */
@@ -128,6 +135,8 @@ struct meas_plate_params {
   double seed_radius;  /* [m] the hole must come this close to the impact point (default Δ) */
   double r_max;        /* [m] half-width W of the window (default 0: the plate's extent) */
   const unsigned char *mask;  /* optional [p->n] */
+  const double *scale; /* optional [p->n]: Δ_i/Δ per particle (a plate of several bodies);
+                          NULL: 1 for all */
   int attached_only;   /* 1 (default): only the plate's largest connected piece is plate */
 };
 struct meas_plate {

@@ -40,6 +40,7 @@ void meas_plate_defaults(struct meas_plate_params *par, const struct meas_geom *
   par->seed_radius = s;
   par->r_max = 0.0;
   par->mask = NULL;
+  par->scale = NULL;
   par->attached_only = 1;
 }
 
@@ -120,25 +121,27 @@ static int in_hole(const struct pgrid *G, double u, double w)
   return G->occ[(size_t)b * (size_t)G->nu + (size_t)a] == 2;
 }
 
-/* Smallest distance from (u, w) to the points pts[2k], pts[2k+1], k < n. */
-static double nearest(const double *pts, size_t n, double u, double w)
+/* Smallest distance from (u, w) to the edge of the points' footprints: min over k < n
+ * of |(u, w) − (pts[2k], pts[2k+1])| − fp[k]. */
+static double nearest(const double *pts, const double *fp, size_t n, double u, double w)
 {
   double best = INFINITY;
   for (size_t k = 0; k < n; k++) {
     const double du = pts[2 * k] - u, dw = pts[2 * k + 1] - w;
-    const double d2 = du * du + dw * dw;
-    if (d2 < best) best = d2;
+    const double d = sqrt(du * du + dw * dw) - fp[k];
+    if (d < best) best = d;
   }
-  return sqrt(best);
+  return best;
 }
 
 /* Compass search (16 directions, so that it can follow the ridge between two equally
  * near particles) for the largest nearest-point distance from the start (u, w), moving
  * only within the hole (so that it never climbs out through an open edge). */
-static double compass(const struct pgrid *G, const double *pts, size_t n, double *u, double *w)
+static double compass(const struct pgrid *G, const double *pts, const double *fp, size_t n,
+                      double *u, double *w)
 {
   const double c = G->c;
-  double best = nearest(pts, n, *u, *w);
+  double best = nearest(pts, fp, n, *u, *w);
   double dir[16][2];
   for (int d = 0; d < 16; d++) {
     dir[d][0] = cos(d * (HV_MEAS_PI / 8));
@@ -150,7 +153,7 @@ static double compass(const struct pgrid *G, const double *pts, size_t n, double
       for (int d = 0; d < 16; d++) {
         const double tu = *u + step * dir[d][0], tw = *w + step * dir[d][1];
         if (!in_hole(G, tu, tw)) continue;
-        const double r = nearest(pts, n, tu, tw);
+        const double r = nearest(pts, fp, n, tu, tw);
         if (r > best) {
           best = r;
           *u = tu;
@@ -249,11 +252,18 @@ static unsigned char *select_plate(const struct particles *p, const struct meas_
   }
   *ndetached = 0;
   if (!par->attached_only || nsel == 0) return sel;
-  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .mask = sel, .nmat = 0,
-                          .half_model = g->half_model};
+  double *b = NULL;
+  if (par->scale) {
+    b = hv_malloc((p->n + 1) * sizeof *b, "plate linking lengths");
+    for (size_t i = 0; i < p->n; i++) b[i] = FOF_B_FACTOR * g->spacing * par->scale[i];
+  }
+  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .b_particle = b, .mask = sel,
+                          .nmat = 0, .half_model = g->half_model};
   struct fof_result fr;
   fof_result_init(&fr);
-  if (fof_find(p, &fp, &fr, err)) {
+  const int rc = fof_find(p, &fp, &fr, err);
+  free(b);
+  if (rc) {
     fof_result_free(&fr);
     free(sel);
     return NULL;
@@ -267,33 +277,38 @@ static unsigned char *select_plate(const struct particles *p, const struct meas_
   return sel;
 }
 
-/* Projected plate points (mirrored in a half model): returns their count (pairs in *pts). */
+/* Projected plate points (mirrored in a half model): returns their count (pairs in *pts,
+ * each point's scale Δ_i/Δ in *sc). */
 static size_t project(const struct particles *p, const struct meas_geom *g,
-                      const unsigned char *sel, double **pts, size_t *nplate)
+                      const unsigned char *sel, const double *scale, double **pts, double **sc,
+                      size_t *nplate)
 {
   const int mirror = g->half_model ? 1 : 0;
   size_t np = 0, cnt = 0;
   double *q = hv_malloc((2 * (size_t)(1 + mirror) * p->n + 2) * sizeof *q, "plate points");
+  double *f = hv_malloc(((size_t)(1 + mirror) * p->n + 1) * sizeof *f, "plate point scales");
   for (size_t i = 0; i < p->n; i++) {
     if (!sel[i]) continue;
-    const double y = p->x[1][i], z = p->x[2][i];
+    const double y = p->x[1][i], z = p->x[2][i], si = scale ? scale[i] : 1.0;
     cnt++;
     q[2 * np] = y - g->yc;
     q[2 * np + 1] = z;
-    np++;
+    f[np++] = si;
     if (mirror) {
       q[2 * np] = y - g->yc;
       q[2 * np + 1] = -z;
-      np++;
+      f[np++] = si;
     }
   }
   *pts = q;
+  *sc = f;
   *nplate = cnt;
   return np;
 }
 
 /* Sets up the window and grid and marks the material cells. */
-static void mark(struct pgrid *G, const double *pts, size_t np, const struct meas_plate_params *par)
+static void mark(struct pgrid *G, const double *pts, const double *sc, size_t np,
+                 const struct meas_plate_params *par)
 {
   double lo[2], hi[2];
   if (par->r_max > 0) {
@@ -304,8 +319,8 @@ static void mark(struct pgrid *G, const double *pts, size_t np, const struct mea
     hi[0] = hi[1] = par->seed_radius + par->cell;
     for (size_t k = 0; k < np; k++)
       for (int d = 0; d < 2; d++) {
-        lo[d] = fmin(lo[d], pts[2 * k + d] - par->tol);
-        hi[d] = fmax(hi[d], pts[2 * k + d] + par->tol);
+        lo[d] = fmin(lo[d], pts[2 * k + d] - sc[k] * par->tol);
+        hi[d] = fmax(hi[d], pts[2 * k + d] + sc[k] * par->tol);
       }
   }
   double c = par->cell;
@@ -319,11 +334,10 @@ static void mark(struct pgrid *G, const double *pts, size_t np, const struct mea
   if (G->nu < 1) G->nu = 1;
   if (G->nw < 1) G->nw = 1;
   G->occ = hv_calloc((size_t)G->nu * (size_t)G->nw, 1, "plate projection");
-  const double t2 = par->tol * par->tol;
   for (size_t k = 0; k < np; k++) {
-    const double u = pts[2 * k], w = pts[2 * k + 1];
-    int a0 = cell_lo(u - par->tol, G->u0, c), a1 = cell_hi(u + par->tol, G->u0, c);
-    int b0 = cell_lo(w - par->tol, G->w0, c), b1 = cell_hi(w + par->tol, G->w0, c);
+    const double u = pts[2 * k], w = pts[2 * k + 1], tol = sc[k] * par->tol, t2 = tol * tol;
+    int a0 = cell_lo(u - tol, G->u0, c), a1 = cell_hi(u + tol, G->u0, c);
+    int b0 = cell_lo(w - tol, G->w0, c), b1 = cell_hi(w + tol, G->w0, c);
     if (a0 < 0) a0 = 0;
     if (b0 < 0) b0 = 0;
     if (a1 > G->nu - 1) a1 = G->nu - 1;
@@ -368,11 +382,14 @@ static size_t find_seed(const struct pgrid *G, double R)
 }
 
 /* Largest circle in the hole (steps 5 of the file header). */
-static double largest_circle(const struct pgrid *G, const int box[4], const double *pts, size_t np,
-                             const struct meas_plate_params *par, double centre[2])
+static double largest_circle(const struct pgrid *G, const int box[4], const double *pts,
+                             const double *sc, size_t np, const struct meas_plate_params *par,
+                             double centre[2])
 {
   const double c = G->c;
-  const int m = (int)ceil(par->tol / c) + 3;
+  double scmax = 1.0;
+  for (size_t k = 0; k < np; k++) scmax = fmax(scmax, sc[k]);
+  const int m = (int)ceil(scmax * par->tol / c) + 3;
   const int ru0 = box[0] - m, rw0 = box[2] - m;
   const int rnu = box[1] - box[0] + 1 + 2 * m, rnw = box[3] - box[2] + 1 + 2 * m;
   const size_t rn = (size_t)rnu * (size_t)rnw;
@@ -389,18 +406,18 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
   dt2d(dh, rnu, rnw);
   dt2d(dr, rnu, rnw);
 
-  /* rim particles: within tol + 3c of a hole cell centre */
-  const double reach = par->tol + 3.0 * c;
+  /* rim particles: within their tol + 3c of a hole cell centre; rfp their footprints */
   double *rim = hv_malloc((2 * np + 2) * sizeof *rim, "rim points");
+  double *rfp = hv_malloc((np + 1) * sizeof *rfp, "rim footprints");
   size_t nrim = 0;
   for (size_t k = 0; k < np; k++) {
     const int a = (int)floor((pts[2 * k] - G->u0) / c) - ru0;
     const int b = (int)floor((pts[2 * k + 1] - G->w0) / c) - rw0;
     if (a < 0 || b < 0 || a >= rnu || b >= rnw) continue;
-    if (sqrt(dr[(size_t)b * (size_t)rnu + (size_t)a]) * c > reach) continue;
+    if (sqrt(dr[(size_t)b * (size_t)rnu + (size_t)a]) * c > sc[k] * par->tol + 3.0 * c) continue;
     rim[2 * nrim] = pts[2 * k];
     rim[2 * nrim + 1] = pts[2 * k + 1];
-    nrim++;
+    rfp[nrim++] = sc[k] * par->footprint;
   }
 
   /* candidates: the hole cells farthest from the hole's edge */
@@ -444,13 +461,13 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
   double r = -INFINITY;
   if (!nrim && nb) {  /* no rim particle: the grid's estimate */
     const int a = (int)(best[0].idx % (size_t)rnu), b = (int)(best[0].idx / (size_t)rnu);
-    r = best[0].r - 0.5 * c + par->tol;
+    r = best[0].r - 0.5 * c + par->tol - par->footprint;
     centre[0] = G->u0 + ((double)(ru0 + a) + 0.5) * c;
     centre[1] = G->w0 + ((double)(rw0 + b) + 0.5) * c;
   }
   for (int k = 0; nrim && k < nstart; k++) {
     double u = start[k][0], w = start[k][1];
-    const double rk = compass(G, rim, nrim, &u, &w);
+    const double rk = compass(G, rim, rfp, nrim, &u, &w);
     if (rk > r) {
       r = rk;
       centre[0] = u;
@@ -458,9 +475,10 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
     }
   }
   free(rim);
+  free(rfp);
   free(dh);
   free(dr);
-  return r - par->footprint;
+  return r;
 }
 
 int measure_plate(const struct particles *p, const struct meas_geom *g,
@@ -471,11 +489,11 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
   if (check_params(g, par, err)) return -1;
   unsigned char *sel = select_plate(p, g, par, &out->n_detached, err);
   if (!sel) return hv_error_prefix(err, "plate measurement: ");
-  double *pts;
-  const size_t np = project(p, g, sel, &pts, &out->n_plate);
+  double *pts, *sc;
+  const size_t np = project(p, g, sel, par->scale, &pts, &sc, &out->n_plate);
   free(sel);
   struct pgrid G;
-  mark(&G, pts, np, par);
+  mark(&G, pts, sc, np, par);
   out->cell = G.c;
   const size_t seed = find_seed(&G, par->seed_radius);
   if (seed != SIZE_MAX) {
@@ -486,13 +504,15 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
     out->area = (double)count * G.c * G.c;
     out->d_equiv = 2.0 * sqrt(out->area / HV_MEAS_PI) + 2.0 * (par->tol - par->footprint);
     double centre[2] = {0.0, 0.0};
-    const double r = largest_circle(&G, box, pts, np, par, centre);
+    const double r = largest_circle(&G, box, pts, sc, np, par, centre);
     out->d_circle = 2.0 * fmax(r, 0.0);
     out->circle_center[0] = centre[0] + g->yc;
     out->circle_center[1] = centre[1];
-    out->d_circle_impact = 2.0 * fmax(nearest(pts, np, 0.0, 0.0) - par->footprint, 0.0);
+    for (size_t k = 0; k < np; k++) sc[k] *= par->footprint;   /* now the footprints */
+    out->d_circle_impact = 2.0 * fmax(nearest(pts, sc, np, 0.0, 0.0), 0.0);
   }
   free(G.occ);
   free(pts);
+  free(sc);
   return 0;
 }

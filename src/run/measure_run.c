@@ -43,6 +43,42 @@ static int body_list(const struct sim *s, struct cfg *c, const char *path, int *
   return 0;
 }
 
+/* measure.plates: a list whose entries are a body's name or a list of bodies (one plate
+ * made of several bodies, e.g. a fine disc around the impact point inside a coarse plate). */
+static int plate_list(const struct sim *s, struct cfg *c, struct measure_run *mr,
+                      struct hv_error *err)
+{
+  const char *path = "measure.plates";
+  char key[128], where[256];
+  mr->nplate = 0;
+  if (!cfg_has(c, path)) return 0;
+  const int len = cfg_len(c, path);
+  if (len < 0 || len > MR_MAX)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s must be a list of at most %d plates (a "
+                        "body's name, or a list of the bodies that make one plate)",
+                        cfg_where(c, path, where, sizeof where), path, MR_MAX);
+  for (int k = 0; k < len; k++) {
+    snprintf(key, sizeof key, "%s[%d]", path, k);
+    if (cfg_len(c, key) >= 0) {
+      if (body_list(s, c, key, mr->plate[k], &mr->nplate_body[k], err)) return -1;
+      if (mr->nplate_body[k] == 0)
+        return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: an empty list (name the plate's "
+                            "body, or its bodies)", cfg_where(c, key, where, sizeof where), key);
+      for (int a = 0; a < mr->nplate_body[k]; a++)
+        for (int b = a + 1; b < mr->nplate_body[k]; b++)
+          if (mr->plate[k][a] == mr->plate[k][b])
+            return hv_error_set(err, HV_EXIT_INPUT, "%s: %s names body '%s' twice",
+                                cfg_where(c, key, where, sizeof where), key,
+                                s->body[mr->plate[k][a]].name);
+    } else {
+      if (body_by_name(s, c, key, &mr->plate[k][0], err)) return -1;
+      mr->nplate_body[k] = 1;
+    }
+  }
+  mr->nplate = len;
+  return 0;
+}
+
 int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struct hv_error *err)
 {
   memset(mr, 0, sizeof *mr);
@@ -55,7 +91,7 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
   if (cfg_get_quantity(c, "measure.axis_y", UNIT_LENGTH, &zero, -HUGE_VAL, HUGE_VAL,
                        &mr->axis_y, err) ||
       cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) ||
-      body_list(s, c, "measure.plates", mr->plate, &mr->nplate, err) ||
+      plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
   if (cfg_len(c, "measure.thick_target") >= 0) {
@@ -99,10 +135,11 @@ void measure_run_step(struct measure_run *mr, const struct sim *s)
 static double next_face(const struct measure_run *mr, const struct sim *s, int b)
 {
   double x = INFINITY, rear = s->body[b].hi[0];
-  for (int k = 0; k < mr->nplate; k++) {
-    double f = s->body[mr->plate[k]].lo[0];
-    if (f > rear && f < x) x = f;
-  }
+  for (int k = 0; k < mr->nplate; k++)
+    for (int j = 0; j < mr->nplate_body[k]; j++) {
+      const double f = s->body[mr->plate[k][j]].lo[0];
+      if (f > rear && f < x) x = f;
+    }
   if (mr->backwall >= 0 && s->body[mr->backwall].lo[0] > rear && s->body[mr->backwall].lo[0] < x)
     x = s->body[mr->backwall].lo[0];
   return x;
@@ -159,29 +196,57 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     intact = hv_malloc(s->p.n + 1, "intact mask");
     for (size_t i = 0; i < s->p.n; i++) intact[i] = s->p.damage[i] < 1.0;
   }
-  for (int k = 0; k < mr->nplate; k++) {
-    struct meas_geom g = geom(mr, s, mr->plate[k]);
+  unsigned char *group = NULL, *both = NULL;
+  double *scale = NULL;
+  int rc = 0;
+  for (int k = 0; k < mr->nplate && !rc; k++) {
+    const char *name = s->body[mr->plate[k][0]].name;
+    struct meas_geom g = geom(mr, s, mr->plate[k][0]);
     struct meas_plate_params pp;
     struct meas_plate hole;
-    meas_plate_defaults(&pp, &g);
-    if (measure_plate(&s->p, &g, &pp, &hole, err)) {
-      free(intact);
-      return -1;
-    }
-    meas_table_add_plate(&mr->table, t, s->body[mr->plate[k]].name, &hole);
-    if (intact) {
-      pp.mask = intact;
-      if (measure_plate(&s->p, &g, &pp, &hole, err)) {
-        free(intact);
-        return -1;
+    if (mr->nplate_body[k] > 1) {
+      /* one plate of several bodies: their union, its front face the foremost, its
+         thickness to the rearmost face, its spacing the finest (measure.h) */
+      double hi = s->body[mr->plate[k][0]].hi[0];
+      for (int j = 1; j < mr->nplate_body[k]; j++) {
+        const struct body_info *bi = &s->body[mr->plate[k][j]];
+        g.x0 = fmin(g.x0, bi->lo[0]);
+        hi = fmax(hi, bi->hi[0]);
+        g.spacing = fmin(g.spacing, bi->spacing);
       }
-      meas_table_add(&mr->table, t, "hole_diameter_intact", hole.d_circle, "m",
-                     s->body[mr->plate[k]].name);
-      meas_table_add(&mr->table, t, "hole_diameter_intact_equiv", hole.d_equiv, "m",
-                     s->body[mr->plate[k]].name);
+      g.thickness = hi - g.x0;
+      g.body = -1;
+      if (!group) {
+        group = hv_malloc(s->p.n + 1, "plate mask");
+        scale = hv_malloc((s->p.n + 1) * sizeof *scale, "plate spacings");
+        if (intact) both = hv_malloc(s->p.n + 1, "plate mask");
+      }
+      for (size_t i = 0; i < s->p.n; i++) {
+        group[i] = 0;
+        for (int j = 0; j < mr->nplate_body[k]; j++) group[i] |= s->p.body[i] == mr->plate[k][j];
+        scale[i] = s->body[s->p.body[i]].spacing / g.spacing;
+        if (both) both[i] = group[i] && intact[i];
+      }
+    }
+    meas_plate_defaults(&pp, &g);
+    if (mr->nplate_body[k] > 1) {
+      pp.mask = group;
+      pp.scale = scale;
+    }
+    if ((rc = measure_plate(&s->p, &g, &pp, &hole, err))) break;
+    meas_table_add_plate(&mr->table, t, name, &hole);
+    if (intact) {
+      pp.mask = mr->nplate_body[k] > 1 ? both : intact;
+      if ((rc = measure_plate(&s->p, &g, &pp, &hole, err))) break;
+      meas_table_add(&mr->table, t, "hole_diameter_intact", hole.d_circle, "m", name);
+      meas_table_add(&mr->table, t, "hole_diameter_intact_equiv", hole.d_equiv, "m", name);
     }
   }
   free(intact);
+  free(group);
+  free(both);
+  free(scale);
+  if (rc) return -1;
   for (int k = 0; k < mr->ndebris; k++) {
     struct meas_geom g = geom(mr, s, mr->debris[k]);
     struct meas_debris_params dp;
@@ -197,9 +262,9 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
                 (m->str.enabled || m->frac.kind != FRACTURE_NONE);   /* not a gas */
     }
     dp.mask = mask;
-    int rc = measure_debris(&s->p, &dp, &cloud, err);
+    const int drc = measure_debris(&s->p, &dp, &cloud, err);
     free(mask);
-    if (rc) return -1;
+    if (drc) return -1;
     char obj[96];
     snprintf(obj, sizeof obj, "cloud:%s", s->body[mr->debris[k]].name);
     meas_table_add_debris(&mr->table, t, obj, &cloud);

@@ -4,7 +4,9 @@
  *   measure:
  *     thick_target: target        # penetration depth L, cavity diameter D (or a list of
  *                                 # bodies: a target refined near its axis, [target, core])
- *     plates: [bumper]            # perforated?, hole diameters
+ *     plates: [bumper]            # perforated?, hole diameters (an entry may be a list of
+ *                                 # bodies: a plate refined near the impact point,
+ *                                 # [[bumper, bumper-core]])
  *     debris: [bumper]            # debris cloud behind each of these plates
  *     backwall: backwall          # crater depth, damaged radius, peak centre pressure
  *     gas: nitrogen               # shock front position
@@ -28,7 +30,8 @@ struct measure_run {
   double axis_y;         /* [m] */
   int target[MR_MAX], ntarget;  /* the thick target's bodies (its rows are named after
                                    the first) */
-  int plate[MR_MAX], nplate;
+  int plate[MR_MAX][MR_MAX];    /* plate k's bodies (its rows named after the first) */
+  int nplate_body[MR_MAX], nplate;
   int debris[MR_MAX], ndebris;
   int backwall;
   int gas;

@@ -475,6 +475,74 @@ static void test_cavity_two_bodies(void)
         "perforation: L = %.2f mm", 1e3 * L[1]);
 }
 
+/* A plate refined near the impact point, measured as one plate through a case file
+ * (measure.plates: [[ring, disc]]): a coarse ring (1 mm lattice, one layer) and a fine
+ * disc (0.25 mm, four layers, off the axis at y = 6 mm, radius 4 mm), with a 6 mm hole at
+ * the impact point cut from both, so that the hole's rim is half coarse, half fine. Each
+ * particle covers the plane at its own body's spacing: at the fine spacing everywhere
+ * the ring's 1 mm lattice would read as a sieve, and the hole would leak through it to
+ * the window's edge. */
+static void test_plate_two_bodies(void)
+{
+  static const char *const fmt =
+      "name: two-body-plate\n"
+      "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: ring\n"
+      "    material: steel-bumper\n"
+      "    shape: {type: box, min: [0, -20 mm, -20 mm], max: [1 mm, 20 mm, 20 mm],\n"
+      "            minus: [{type: cylinder, center: [0.5 mm, 6 mm, 0], axis: [1, 0, 0],\n"
+      "                     radius: 4 mm, length: 1 mm},\n"
+      "                    {type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0],\n"
+      "                     radius: 3 mm, length: 1 mm}]}\n"
+      "    spacing: 1 mm\n"
+      "  - name: disc\n"
+      "    material: steel-bumper\n"
+      "    shape: {type: cylinder, center: [0.5 mm, 6 mm, 0], axis: [1, 0, 0], radius: 4 mm,\n"
+      "            length: 1 mm, minus: [{type: cylinder, center: [0.5 mm, 0, 0],\n"
+      "            axis: [1, 0, 0], radius: 3 mm, length: 1 mm}]}\n"
+      "    spacing: 0.25 mm\n"
+      "time: {end: 0}\n"
+      "measure: {plates: %s}\n";
+  char text[2048], cmd[8192], out[4096], path[4400];
+  const char *tmp = test_tmpdir();
+  const char *plates[] = {"[[ring, disc]]", "[ring]", "[[]]", "[[ring, ring]]", "[[ring, discs]]"};
+  for (int k = 0; k < 5; k++) {
+    snprintf(text, sizeof text, fmt, plates[k]);
+    char name[64];
+    snprintf(name, sizeof name, "two_body_plate_%d.yaml", k);
+    const char *file = test_write_file(name, text);
+    snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s/two_body_plate_%d' --quiet", test_bin(), file,
+             tmp, k);
+    const int st = test_run(cmd, out, sizeof out);
+    if (k >= 2) {
+      CHECK(st == 2 && strstr(out, "measure.plates[0]"), "plates: %s is refused, exit 2 naming "
+            "the key (exit %d): %s", plates[k], st, out);
+      continue;
+    }
+    CHECK(st == 0, "plates: %s runs (exit %d): %s", plates[k], st, out);
+    snprintf(path, sizeof path, "%s/two_body_plate_%d/measurements.csv", tmp, k);
+    const double perf = csv_value(path, "perforated", "ring");
+    const double open = csv_value(path, "hole_open", "ring");
+    const double d = csv_value(path, "hole_diameter", "ring");
+    const double de = csv_value(path, "hole_diameter_equiv", "ring");
+    if (k == 0) {
+      const double dc = 1e-3;  /* the ring's spacing: half the rim is the ring's */
+      CHECK(perf == 1.0 && open == 0.0, "ring + disc: perforated (%g), the hole closed (%g)",
+            perf, open);
+      CHECK(fabs(d - 6e-3) <= dc, "ring + disc: hole %.3f mm, 6 mm within the ring's 1 mm",
+            1e3 * d);
+      CHECK(fabs(de - 6e-3) <= dc, "ring + disc: equivalent-area diameter %.3f mm, 6 mm within "
+            "1 mm", 1e3 * de);
+    } else {
+      /* the hole and the disc's place are one opening: 3 mm + 4 mm from the axis at y = 6 mm
+         (14 mm long); the largest circle is the disc's 8 mm */
+      CHECK(perf == 1.0 && fabs(d - 8e-3) <= 1e-3, "the ring alone: the disc's place is part "
+            "of its hole, largest circle %.2f mm (8 mm within its 1 mm spacing)", 1e3 * d);
+    }
+  }
+}
+
 int main(void)
 {
   test_holes();
@@ -483,5 +551,6 @@ int main(void)
   test_ellipse_and_open();
   test_cavity();
   test_cavity_two_bodies();
+  test_plate_two_bodies();
   return test_finish();
 }
