@@ -4,9 +4,12 @@
  *   cubic   points at anchor + (i + ½, j + ½, k + ½) Δ;
  *   hcp     hexagonal close packing with nearest-neighbour distance Δ (ABAB layers
  *           along z, volume Δ³/√2 per particle).
- * The anchor is the box corner, or the centre of a sphere or cylinder; in a half model
- * (domain.half_model) the z anchor is the plane z = 0 and only z > 0 is kept, so the
- * lattice is mirror-symmetric about the symmetry plane. Δ is given (`spacing`) or
+ * The anchor is the box corner, or the centre of a sphere or cylinder — but for a cubic
+ * lattice in a cylinder along x, y or z the anchor along its axis is an end face, as a
+ * box's corner is, so that a disc whose length is L spacings holds L layers (centred,
+ * an odd L put the end layers on the faces); in a half model (domain.half_model) the z
+ * anchor is the plane z = 0 and only z > 0 is kept, so the lattice is mirror-symmetric
+ * about the symmetry plane. Δ is given (`spacing`) or
  * follows from a particle count (`particles`, in the simulated part), both scaled by
  * the case's `resolution` (particle counts × resolution). Particle mass ρV/N with V the
  * exact volume of the shape (so a projectile has its true mass), or ρ × lattice volume
@@ -42,6 +45,16 @@ static double cell_volume(int lattice, double d)
   return lattice == LATTICE_HCP ? d * d * d / sqrt(2.0) : d * d * d;
 }
 
+/* The coordinate axis (0, 1, 2) a cylinder lies along, or -1 (another shape, an oblique
+ * axis). */
+static int cylinder_axis(const struct shape *sh)
+{
+  if (sh->kind != SHAPE_CYLINDER) return -1;
+  for (int d = 0; d < 3; d++)
+    if (fabs(sh->axis[d]) > 1.0 - 1e-12) return d;
+  return -1;
+}
+
 /* Visits the lattice points of a body inside its shape (and z > 0 in a half model):
  * counts them, and stores them at p->x[.][first + k] when p is not NULL. */
 static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p, size_t first)
@@ -54,6 +67,8 @@ static size_t lattice_points(const struct body_spec *bs, int half, struct partic
     step[2] = d * sqrt(2.0 / 3.0);
   }
   for (int k = 0; k < 3; k++) anchor[k] = sh->kind == SHAPE_BOX ? sh->min[k] : sh->center[k];
+  const int ax = cylinder_axis(sh);
+  if (ax >= 0 && bs->lattice == LATTICE_CUBIC) anchor[ax] = sh->center[ax] - 0.5 * sh->length;
   if (half) anchor[2] = 0.0;
   long lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
@@ -154,13 +169,19 @@ static int particles_fit(double n, int solid)
   return particles_need(n, solid) <= 0.8 * machine_bytes();
 }
 
-/* The thinnest side of a box filled on a cubic lattice (0 for other shapes and
- * lattices): a count-given box's spacing is set so that it holds a whole number of
- * layers, else a thin plate could get no particle or an uneven last layer. */
+/* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
+ * longer than its diameter), filled on a cubic lattice (0 for other shapes and
+ * lattices; a shape's `minus` does not change it): a count-given plate's spacing is set
+ * so that it holds a whole number of layers, else a thin plate could get no particle
+ * or an uneven last layer. */
 static double box_thickness(const struct sim *s, const struct body_spec *bs)
 {
   const struct shape *sh = &bs->shape;
-  if (sh->kind != SHAPE_BOX || sh->nminus || bs->lattice != LATTICE_CUBIC) return 0.0;
+  if (bs->lattice != LATTICE_CUBIC) return 0.0;
+  const int ax = cylinder_axis(sh);
+  if (ax >= 0 && sh->length <= 2.0 * sh->radius && !(ax == 2 && s->bnd.half_model))
+    return sh->length;
+  if (sh->kind != SHAPE_BOX) return 0.0;
   double t = HUGE_VAL;
   for (int d = 0; d < 3; d++) {
     double ext = sh->max[d] - sh->min[d];
@@ -209,6 +230,16 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
     hv_info("body '%s': spacing %.4g mm -> %.4g mm so that its %.4g mm thickness holds %.0f "
             "whole layer(s) and at least %.0f particles", name, 1e3 * d0, 1e3 * bs->spacing,
             1e3 * t, layers, n);
+}
+
+/* The shape (with everything it subtracts) is mirror-symmetric about z = 0. */
+static int symmetric_z(const struct shape *sh)
+{
+  int sym = sh->kind == SHAPE_BOX ? sh->min[2] == -sh->max[2]
+                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE ||
+                                                             sh->axis[2] == 0.0);
+  for (int k = 0; k < sh->nminus; k++) sym = sym && symmetric_z(&sh->minus[k]);
+  return sym;
 }
 
 /* Spacing from `spacing` or `particles`, scaled by the resolution factor. */
@@ -260,11 +291,7 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   bs->vol = shape_volume(&bs->shape);
   if (s->bnd.half_model && bs->vol > 0) {
     /* a half model keeps z > 0: exact when the shape is symmetric about z = 0 */
-    const struct shape *sh = &bs->shape;
-    int sym = sh->nminus == 0 && (sh->kind == SHAPE_BOX ? sh->min[2] == -sh->max[2]
-                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE ||
-                                                             sh->axis[2] == 0.0));
-    bs->vol = sym ? 0.5 * bs->vol : -1.0;
+    bs->vol = symmetric_z(&bs->shape) ? 0.5 * bs->vol : -1.0;
   }
   s->body[b].mat = bs->mat;
   if (read_spacing(s, c, path, name, bs, resolution, err) ||

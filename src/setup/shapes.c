@@ -4,7 +4,8 @@
  * axis), axis (any direction), radius, length}; any shape may subtract others:
  * `minus: [shape, ...]` (a hollow vessel is a cylinder minus a smaller one). The
  * exact volume of a shape with subtractions is known when each subtracted shape lies
- * inside it and they do not overlap each other (checked on bounding boxes); otherwise
+ * inside it (any shape inside a box, a box inside a box, a coaxial cylinder inside a
+ * cylinder) and they do not overlap each other (checked on bounding boxes); otherwise
  * shape_volume() returns -1 and the caller falls back to the lattice volume.
  */
 #include <float.h>
@@ -148,6 +149,21 @@ static int boxes_overlap(const struct shape *a, const struct shape *b)
   return 1;
 }
 
+/* Distance of x from a cylinder's axis line. */
+static double axis_offset(const struct shape *cyl, const double x[3])
+{
+  double r[3], t = 0.0, q2 = 0.0;
+  for (int d = 0; d < 3; d++) {
+    r[d] = x[d] - cyl->center[d];
+    t += r[d] * cyl->axis[d];
+  }
+  for (int d = 0; d < 3; d++) {
+    const double e = r[d] - t * cyl->axis[d];
+    q2 += e * e;
+  }
+  return sqrt(q2);
+}
+
 double shape_volume(const struct shape *sh)
 {
   double v = 0.0;
@@ -160,16 +176,16 @@ double shape_volume(const struct shape *sh)
   case SHAPE_KIND_COUNT: break;
   }
   for (int k = 0; k < sh->nminus; k++) {
-    /* exact only for a subtraction inside the primitive (a box is exactly inside a
-       box, a cylinder inside a coaxial cylinder; otherwise bounding boxes are only a
-       necessary condition, so be conservative) */
+    /* exact only for a subtraction inside the primitive (any shape whose bounding box
+       is inside a box is inside it; a cylinder inside a coaxial cylinder; otherwise
+       bounding boxes are only a necessary condition, so be conservative) */
     const struct shape *m = &sh->minus[k];
-    int inside = box_inside(m, sh) && sh->kind == m->kind &&
+    int inside = box_inside(m, sh) &&
                  (sh->kind == SHAPE_BOX ||
-                  (sh->kind == SHAPE_CYLINDER &&
+                  (sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
                    fabs(sh->axis[0] * m->axis[0] + sh->axis[1] * m->axis[1] +
                         sh->axis[2] * m->axis[2]) > 1 - 1e-12 &&
-                   m->radius <= sh->radius));
+                   axis_offset(sh, m->center) + m->radius <= sh->radius * (1 + 1e-12)));
     for (int j = 0; j < k; j++) inside = inside && !boxes_overlap(m, &sh->minus[j]);
     double vm = shape_volume(m);
     if (!inside || vm < 0) return -1.0;

@@ -24,6 +24,8 @@ struct setup_result {
   char msg[2048];
   size_t n;
   double mass, vcells, spacing;   /* spacing of the first body */
+  int layers_x;                   /* distinct x of the particles (first 64) */
+  double xmin;                    /* smallest x */
 };
 
 static struct setup_result setup_case(const char *yaml)
@@ -40,7 +42,15 @@ static struct setup_result setup_case(const char *yaml)
   } else {
     r.n = s.p.n;
     r.spacing = s.body[0].spacing;
-    for (size_t i = 0; i < s.p.n; i++) r.mass += s.p.m[i];
+    double xs[64];
+    r.xmin = HUGE_VAL;
+    for (size_t i = 0; i < s.p.n; i++) {
+      r.mass += s.p.m[i];
+      r.xmin = fmin(r.xmin, s.p.x[0][i]);
+      int seen = 0;
+      for (int k = 0; k < r.layers_x && !seen; k++) seen = fabs(xs[k] - s.p.x[0][i]) < 1e-9 * r.spacing;
+      if (!seen && r.layers_x < 64) xs[r.layers_x++] = s.p.x[0][i];
+    }
     r.vcells = 0;
   }
   sim_free(&s);
@@ -110,6 +120,44 @@ static void test_volumes(void)
                            "particles: 20000"));
   CHECK(r.rc == 0 && r.n == 57600, "1 mm plate, particles: 20000: %zu particles (want 57600: "
         "two whole layers)", r.n);
+  /* a disc (cylinder along x, 1 mm long): L spacings along its length give L layers,
+     the first Δ/2 behind its face, as in a box; centred on the cylinder's centre, an odd
+     L put the end layers on the faces (5 spacings: 4 layers, 1.25 times too heavy) */
+  const char *disc = "{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], radius: 3e-3, "
+                     "length: 1e-3}";
+  for (int L = 3; L <= 6; L++) {
+    snprintf(extra, sizeof extra, "spacing: %.17g", 1e-3 / L);
+    r = setup_case(body_case(disc, extra));
+    CHECK(r.rc == 0 && r.layers_x == L && fabs(r.xmin - 0.5e-3 / L) < 1e-9,
+          "disc 1 mm long, spacing 1/%d mm: %d layers (want %d), the first at %.4f mm (want "
+          "%.4f)", L, r.layers_x, L, 1e3 * r.xmin, 0.5 / L);
+  }
+  /* ... and given by a count, whole layers rounded up: 14 mm radius, 20 000 particles:
+     (V/N)^(1/3) = 0.313 mm is 3.2 layers -> 4 of 0.25 mm */
+  r = setup_case(body_case("{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], "
+                           "radius: 14e-3, length: 1e-3}", "particles: 20000"));
+  CHECK(r.rc == 0 && r.layers_x == 4 && r.n >= 20000 && fabs(r.spacing - 0.25e-3) < 1e-12,
+        "disc, particles: 20000: %d whole layers of %.4f mm, %zu particles (want 4 of 0.25 mm, "
+        ">= 20000)", r.layers_x, 1e3 * r.spacing, r.n);
+  /* a plate with a disc cut out (a plate refined near the impact point is this and the
+     disc): its exact volume, and whole layers from a count as for a plain plate */
+  check_volume("plate minus a disc", "{type: box, min: [0, -0.01, -0.01], max: [1e-3, 0.01, "
+               "0.01], minus: [{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], "
+               "radius: 0.005, length: 1e-3}]}", 1e-3 * (4e-4 - PI * 2.5e-5), 0.5e-3);
+  const char *ring = "{type: box, min: [0, -0.05, -0.05], max: [1e-3, 0.05, 0.05], minus: "
+                     "[{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], radius: 0.02, "
+                     "length: 1e-3}]}";
+  r = setup_case(body_case(ring, "particles: 20000"));
+  CHECK(r.rc == 0 && r.layers_x == 2 && r.n >= 20000, "plate minus a disc, particles: 20000: "
+        "%d whole layers, %zu particles (want 2, >= 20000)", r.layers_x, r.n);
+  /* a cylinder taken out of a parallel one but poking out of its side: the volume is not
+     known, so the mass is the lattice's, ρ N Δ³ */
+  r = setup_case(body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], radius: 1, "
+                           "length: 1, minus: [{type: cylinder, center: [0, 0.9, 0], "
+                           "axis: [1, 0, 0], radius: 0.2, length: 0.5}]}", "spacing: 0.05"));
+  CHECK(r.rc == 0 && fabs(r.mass - 2.0 * (double)r.n * 1.25e-4) < 1e-9 * r.mass,
+        "an off-axis cut poking out of a cylinder: mass from the lattice (%.6g, rho N dx^3 = "
+        "%.6g)", r.mass, 2.0 * (double)r.n * 1.25e-4);
   /* hcp: volume per particle dx^3/sqrt(2) */
   r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
   double vl = (double)r.n * 0.05 * 0.05 * 0.05 / sqrt(2.0);
@@ -133,6 +181,21 @@ static void test_half_model(void)
   CHECK(f.rc == 0 && h.rc == 0, "full and half sphere set up (%s%s)", f.msg, h.msg);
   CHECK(2 * h.n == f.n, "half model holds exactly half the particles (%zu of %zu)", h.n, f.n);
   CHECK_CLOSE(h.mass, 0.5 * f.mass, 1e-12 * f.mass, "half model holds half the mass");
+  /* a shape with a cut, symmetric about z = 0 (a plate minus a disc): half the exact mass */
+  static const char *const fmt =
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n%s"
+      "bodies:\n  - {name: b, material: gas, density: 1.0, pressure: 1.0, spacing: 0.1,\n"
+      "     shape: {type: box, min: [0, -2, -2], max: [1, 2, 2], minus: [{type: cylinder,\n"
+      "             center: [0.5, 0, 0], axis: [1, 0, 0], radius: 1, length: 1}]}}\n"
+      "time: {end: 1}\n";
+  char a[1024], b[1024];
+  snprintf(a, sizeof a, fmt, "");
+  snprintf(b, sizeof b, fmt, "domain: {min: [-2, -3, 0], max: [2, 3, 3], half_model: true}\n");
+  f = setup_case(a);
+  h = setup_case(b);
+  CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - (16.0 - PI)) < 1e-9 &&
+        fabs(h.mass - 0.5 * (16.0 - PI)) < 1e-9, "plate minus a disc, full and half: mass %.6f "
+        "and %.6f (exact %.6f and half) (%s%s)", f.mass, h.mass, 16.0 - PI, f.msg, h.msg);
 }
 
 static void expect_error(const char *what, const char *yaml, const char *needle)
