@@ -123,6 +123,35 @@ static struct meas_geom geom(const struct measure_run *mr, const struct sim *s, 
                             .half_model = s->bnd.half_model};
 }
 
+/* The geometry of n bodies taken as one (a target or plate refined near the impact
+ * axis): the front face the foremost of theirs, the thickness to the rearmost face, the
+ * spacing the finest; body -1 (the caller's mask selects them). One body: its own. */
+static struct meas_geom union_geom(const struct measure_run *mr, const struct sim *s,
+                                   const int *bodies, int n)
+{
+  struct meas_geom g = geom(mr, s, bodies[0]);
+  if (n < 2) return g;
+  double hi = s->body[bodies[0]].hi[0];
+  for (int k = 1; k < n; k++) {
+    const struct body_info *bi = &s->body[bodies[k]];
+    g.x0 = fmin(g.x0, bi->lo[0]);
+    hi = fmax(hi, bi->hi[0]);
+    g.spacing = fmin(g.spacing, bi->spacing);
+  }
+  g.thickness = hi - g.x0;
+  g.body = -1;
+  return g;
+}
+
+/* mask[i] = particle i belongs to one of the n bodies */
+static void bodies_mask(const struct sim *s, const int *bodies, int n, unsigned char *mask)
+{
+  for (size_t i = 0; i < s->p.n; i++) {
+    mask[i] = 0;
+    for (int k = 0; k < n; k++) mask[i] |= s->p.body[i] == bodies[k];
+  }
+}
+
 void measure_run_step(struct measure_run *mr, const struct sim *s)
 {
   if (mr->backwall < 0) return;
@@ -152,23 +181,11 @@ static double next_face(const struct measure_run *mr, const struct sim *s, int b
 static int measure_target(struct measure_run *mr, const struct sim *s, double t,
                           struct hv_error *err)
 {
-  struct meas_geom g = geom(mr, s, mr->target[0]);
+  struct meas_geom g = union_geom(mr, s, mr->target, mr->ntarget);
   unsigned char *mask = NULL;
   if (mr->ntarget > 1) {
-    double hi = s->body[mr->target[0]].hi[0];
-    for (int k = 1; k < mr->ntarget; k++) {
-      const struct body_info *bi = &s->body[mr->target[k]];
-      if (bi->lo[0] < g.x0) g.x0 = bi->lo[0];
-      if (bi->hi[0] > hi) hi = bi->hi[0];
-      if (bi->spacing < g.spacing) g.spacing = bi->spacing;
-    }
-    g.thickness = hi - g.x0;
-    g.body = -1;
-    mask = hv_malloc(s->p.n ? s->p.n : 1, "thick-target mask");
-    for (size_t i = 0; i < s->p.n; i++) {
-      mask[i] = 0;
-      for (int k = 0; k < mr->ntarget; k++) mask[i] |= s->p.body[i] == mr->target[k];
-    }
+    mask = hv_malloc(s->p.n + 1, "thick-target mask");
+    bodies_mask(s, mr->target, mr->ntarget, mask);
   }
   struct meas_cavity_params cp;
   struct meas_cavity cav;
@@ -201,29 +218,19 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
   int rc = 0;
   for (int k = 0; k < mr->nplate && !rc; k++) {
     const char *name = s->body[mr->plate[k][0]].name;
-    struct meas_geom g = geom(mr, s, mr->plate[k][0]);
+    /* a plate of several bodies is their union, each particle at its own body's spacing
+       relative to the finest (measure.h) */
+    struct meas_geom g = union_geom(mr, s, mr->plate[k], mr->nplate_body[k]);
     struct meas_plate_params pp;
     struct meas_plate hole;
     if (mr->nplate_body[k] > 1) {
-      /* one plate of several bodies: their union, its front face the foremost, its
-         thickness to the rearmost face, its spacing the finest (measure.h) */
-      double hi = s->body[mr->plate[k][0]].hi[0];
-      for (int j = 1; j < mr->nplate_body[k]; j++) {
-        const struct body_info *bi = &s->body[mr->plate[k][j]];
-        g.x0 = fmin(g.x0, bi->lo[0]);
-        hi = fmax(hi, bi->hi[0]);
-        g.spacing = fmin(g.spacing, bi->spacing);
-      }
-      g.thickness = hi - g.x0;
-      g.body = -1;
       if (!group) {
         group = hv_malloc(s->p.n + 1, "plate mask");
         scale = hv_malloc((s->p.n + 1) * sizeof *scale, "plate spacings");
         if (intact) both = hv_malloc(s->p.n + 1, "plate mask");
       }
+      bodies_mask(s, mr->plate[k], mr->nplate_body[k], group);
       for (size_t i = 0; i < s->p.n; i++) {
-        group[i] = 0;
-        for (int j = 0; j < mr->nplate_body[k]; j++) group[i] |= s->p.body[i] == mr->plate[k][j];
         scale[i] = s->body[s->p.body[i]].spacing / g.spacing;
         if (both) both[i] = group[i] && intact[i];
       }
