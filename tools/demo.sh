@@ -6,12 +6,12 @@ set -euo pipefail
 build=${1:-build}
 case=examples/paper/wp1.yaml
 out=out/demo-whipple
-res=${HVSPH_DEMO_RESOLUTION:-0.05}
+res=${HVSPH_DEMO_RESOLUTION:-0.2}
 echo "hvsph demo: $case at resolution $res (particle counts x $res), to t = 30 us"
 "$build/hvsph" run "$case" -o "$out" --threads "${HVSPH_THREADS:-2}" \
   --set resolution="$res" --set time.end="30 us" --set output.every="10 us" --set output.csv=true
 last=$(ls "$out"/particles_*.csv | sort | tail -n 1)
-"$build/hvsph" render "$last" -o "$out/radiograph.png" --mode radiograph --axis z
+"$build/hvsph" render "$last" -o "$out/radiograph.png" --mode radiograph --axis z --mu 1
 "$build/hvsph" render "$last" -o "$out/side_velocity.png" --mode particles --axis z --color velocity
 echo
 echo "Results in $out/:"
