@@ -426,18 +426,26 @@ static double csv_value(const char *path, const char *quantity, const char *obje
   return v;
 }
 
-/* Writes case text k of a family as STEM_k.yaml, runs it into TMP/STEM_k; returns the
- * exit status, the output in out and the run's measurements.csv path in csv. */
-static int run_variant(const char *text, const char *stem, int k, char *out, size_t nout,
-                       char *csv, size_t ncsv)
+/* Writes case text k of a family as STEM_k.yaml and runs it into TMP/STEM_k. refuse: it
+ * must end with exit 2 and a message naming key; else it must run (exit 0). Returns 1
+ * when it ran, with its measurements.csv path in csv. `what` names the variant. */
+static int run_variant(const char *text, const char *stem, int k, int refuse, const char *key,
+                       const char *what, char *csv, size_t ncsv)
 {
-  char name[96], cmd[8192];
+  char name[96], cmd[8192], out[4096];
   const char *tmp = test_tmpdir();
   snprintf(name, sizeof name, "%s_%d.yaml", stem, k);
   const char *file = test_write_file(name, text);
   snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s/%s_%d' --quiet", test_bin(), file, tmp, stem, k);
   snprintf(csv, ncsv, "%s/%s_%d/measurements.csv", tmp, stem, k);
-  return test_run(cmd, out, nout);
+  const int st = test_run(cmd, out, sizeof out);
+  if (refuse) {
+    CHECK(st == 2 && strstr(out, key), "%s is refused, exit 2 naming %s (exit %d): %s", what, key,
+          st, out);
+    return 0;
+  }
+  CHECK(st == 0, "%s runs (exit %d): %s", what, st, out);
+  return st == 0;
 }
 
 static void test_cavity_two_bodies(void)
@@ -459,18 +467,14 @@ static void test_cavity_two_bodies(void)
       "    spacing: 0.5 mm\n"
       "time: {end: 0}\n"
       "measure: {thick_target: %s}\n";
-  char text[2048], out[4096], path[4400];
+  char text[2048], what[128], path[4400];
   const char *targets[] = {"[block, core]", "block", "[]", "[block, cores]"};
   double L[2] = {NAN, NAN}, D[2] = {NAN, NAN}, perf[2] = {NAN, NAN};
   for (int k = 0; k < 4; k++) {
     snprintf(text, sizeof text, fmt, targets[k]);
-    const int st = run_variant(text, "two_body", k, out, sizeof out, path, sizeof path);
-    if (k >= 2) {
-      CHECK(st == 2 && strstr(out, "thick_target"), "thick_target: %s is refused, exit 2 naming "
-            "the key (exit %d): %s", targets[k], st, out);
+    snprintf(what, sizeof what, "thick_target: %s", targets[k]);
+    if (!run_variant(text, "two_body", k, k >= 2, "thick_target", what, path, sizeof path))
       continue;
-    }
-    CHECK(st == 0, "thick_target: %s runs (exit %d): %s", targets[k], st, out);
     L[k] = csv_value(path, "penetration_depth", "block");
     D[k] = csv_value(path, "cavity_diameter", "block");
     perf[k] = csv_value(path, "perforated", "block");
@@ -512,17 +516,14 @@ static void test_plate_two_bodies(void)
       "    spacing: 0.25 mm\n"
       "time: {end: 0}\n"
       "measure: {plates: %s}\n";
-  char text[2048], out[4096], path[4400];
+  char text[2048], what[128], path[4400];
   const char *plates[] = {"[[ring, disc]]", "[ring]", "[[]]", "[[ring, ring]]", "[[ring, discs]]"};
   for (int k = 0; k < 5; k++) {
     snprintf(text, sizeof text, fmt, plates[k]);
-    const int st = run_variant(text, "two_body_plate", k, out, sizeof out, path, sizeof path);
-    if (k >= 2) {
-      CHECK(st == 2 && strstr(out, "measure.plates[0]"), "plates: %s is refused, exit 2 naming "
-            "the key (exit %d): %s", plates[k], st, out);
+    snprintf(what, sizeof what, "plates: %s", plates[k]);
+    if (!run_variant(text, "two_body_plate", k, k >= 2, "measure.plates[0]", what, path,
+                     sizeof path))
       continue;
-    }
-    CHECK(st == 0, "plates: %s runs (exit %d): %s", plates[k], st, out);
     const double perf = csv_value(path, "perforated", "ring");
     const double open = csv_value(path, "hole_open", "ring");
     const double d = csv_value(path, "hole_diameter", "ring");
