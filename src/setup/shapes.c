@@ -108,6 +108,15 @@ void shape_free(struct shape *sh)
   sh->nminus = 0;
 }
 
+/* Position of x along a cylinder's axis from its centre (*t) and the squared distance
+ * from the axis line (returned; |r|² − t², as the inside test has always computed it). */
+static double axis_coords(const struct shape *cyl, const double x[3], double *t)
+{
+  const double r[3] = {x[0] - cyl->center[0], x[1] - cyl->center[1], x[2] - cyl->center[2]};
+  *t = r[0] * cyl->axis[0] + r[1] * cyl->axis[1] + r[2] * cyl->axis[2];
+  return r[0] * r[0] + r[1] * r[1] + r[2] * r[2] - *t * *t;
+}
+
 static int contains_primitive(const struct shape *sh, const double x[3])
 {
   double r[3] = {x[0] - sh->center[0], x[1] - sh->center[1], x[2] - sh->center[2]};
@@ -117,9 +126,9 @@ static int contains_primitive(const struct shape *sh, const double x[3])
            x[1] < sh->max[1] && x[2] >= sh->min[2] && x[2] < sh->max[2];
   case SHAPE_SPHERE: return r[0] * r[0] + r[1] * r[1] + r[2] * r[2] < sh->radius * sh->radius;
   case SHAPE_CYLINDER: {
-    double t = r[0] * sh->axis[0] + r[1] * sh->axis[1] + r[2] * sh->axis[2];
+    double t;
+    const double q2 = axis_coords(sh, x, &t);
     if (fabs(t) >= 0.5 * sh->length) return 0;
-    double q2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2] - t * t;
     return q2 < sh->radius * sh->radius;
   }
   case SHAPE_KIND_COUNT: break;
@@ -149,21 +158,6 @@ static int boxes_overlap(const struct shape *a, const struct shape *b)
   return 1;
 }
 
-/* Distance of x from a cylinder's axis line. */
-static double axis_offset(const struct shape *cyl, const double x[3])
-{
-  double r[3], t = 0.0, q2 = 0.0;
-  for (int d = 0; d < 3; d++) {
-    r[d] = x[d] - cyl->center[d];
-    t += r[d] * cyl->axis[d];
-  }
-  for (int d = 0; d < 3; d++) {
-    const double e = r[d] - t * cyl->axis[d];
-    q2 += e * e;
-  }
-  return sqrt(q2);
-}
-
 double shape_volume(const struct shape *sh)
 {
   double v = 0.0;
@@ -177,15 +171,19 @@ double shape_volume(const struct shape *sh)
   }
   for (int k = 0; k < sh->nminus; k++) {
     /* exact only for a subtraction inside the primitive (any shape whose bounding box
-       is inside a box is inside it; a cylinder inside a coaxial cylinder; otherwise
-       bounding boxes are only a necessary condition, so be conservative) */
+       is inside a box is inside it; a parallel cylinder that fits inside a cylinder;
+       otherwise bounding boxes are only a necessary condition, so be conservative) */
     const struct shape *m = &sh->minus[k];
-    int inside = box_inside(m, sh) &&
-                 (sh->kind == SHAPE_BOX ||
-                  (sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
-                   fabs(sh->axis[0] * m->axis[0] + sh->axis[1] * m->axis[1] +
-                        sh->axis[2] * m->axis[2]) > 1 - 1e-12 &&
-                   axis_offset(sh, m->center) + m->radius <= sh->radius * (1 + 1e-12)));
+    int inside = box_inside(m, sh) && sh->kind == SHAPE_BOX;
+    if (box_inside(m, sh) && sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
+        fabs(sh->axis[0] * m->axis[0] + sh->axis[1] * m->axis[1] + sh->axis[2] * m->axis[2]) >
+            1 - 1e-12) {   /* parallel: inside when its centre's offset and extent fit */
+      double tm;
+      const double off = sqrt(fmax(axis_coords(sh, m->center, &tm), 0.0));
+      const double tol = 1e-12 * (sh->radius + sh->length);
+      inside = off + m->radius <= sh->radius + tol &&
+               fabs(tm) + 0.5 * m->length <= 0.5 * sh->length + tol;
+    }
     for (int j = 0; j < k; j++) inside = inside && !boxes_overlap(m, &sh->minus[j]);
     double vm = shape_volume(m);
     if (!inside || vm < 0) return -1.0;

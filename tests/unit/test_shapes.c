@@ -150,14 +150,24 @@ static void test_volumes(void)
   r = setup_case(body_case(ring, "particles: 20000"));
   CHECK(r.rc == 0 && r.layers_x == 2 && r.n >= 20000, "plate minus a disc, particles: 20000: "
         "%d whole layers, %zu particles (want 2, >= 20000)", r.layers_x, r.n);
-  /* a cylinder taken out of a parallel one but poking out of its side: the volume is not
-     known, so the mass is the lattice's, ρ N Δ³ */
-  r = setup_case(body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], radius: 1, "
-                           "length: 1, minus: [{type: cylinder, center: [0, 0.9, 0], "
-                           "axis: [1, 0, 0], radius: 0.2, length: 0.5}]}", "spacing: 0.05"));
+  /* a cylinder taken out of a parallel one, its bounding box inside the other's but
+     poking out of its side (centre 0.85 from the axis, radius 0.3 > 0.15): the volume is
+     not known, so the mass is the lattice's, ρ N Δ³; moved to 0.5 from the axis it fits,
+     and the mass is exact */
+  static const char *const offcut =
+      "{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], radius: 1, length: 1, minus: "
+      "[{type: cylinder, center: [0, %g, %g], axis: [1, 0, 0], radius: 0.3, length: 0.5}]}";
+  char sh[512];
+  snprintf(sh, sizeof sh, offcut, 0.6, 0.6);
+  r = setup_case(body_case(sh, "spacing: 0.05"));
   CHECK(r.rc == 0 && fabs(r.mass - 2.0 * (double)r.n * 1.25e-4) < 1e-9 * r.mass,
         "an off-axis cut poking out of a cylinder: mass from the lattice (%.6g, rho N dx^3 = "
         "%.6g)", r.mass, 2.0 * (double)r.n * 1.25e-4);
+  snprintf(sh, sizeof sh, offcut, 0.5, 0.0);
+  r = setup_case(body_case(sh, "spacing: 0.05"));
+  const double vcut = PI * (1.0 - 0.09 * 0.5);
+  CHECK(r.rc == 0 && fabs(r.mass - 2.0 * vcut) < 1e-9 * r.mass, "an off-axis cut inside a "
+        "cylinder: exact mass %.6g (rho V = %.6g)", r.mass, 2.0 * vcut);
   /* hcp: volume per particle dx^3/sqrt(2) */
   r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
   double vl = (double)r.n * 0.05 * 0.05 * 0.05 / sqrt(2.0);
