@@ -174,8 +174,9 @@ double shape_volume(const struct shape *sh)
        is inside a box is inside it; a parallel cylinder that fits inside a cylinder;
        otherwise bounding boxes are only a necessary condition, so be conservative) */
     const struct shape *m = &sh->minus[k];
-    int inside = box_inside(m, sh) && sh->kind == SHAPE_BOX;
-    if (box_inside(m, sh) && sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
+    const int in_box = box_inside(m, sh);
+    int inside = in_box && sh->kind == SHAPE_BOX;
+    if (in_box && sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
         fabs(sh->axis[0] * m->axis[0] + sh->axis[1] * m->axis[1] + sh->axis[2] * m->axis[2]) >
             1 - 1e-12) {   /* parallel: inside when its centre's offset and extent fit */
       double tm;
