@@ -51,8 +51,8 @@ PLATE_LAYERS = 5
 #   237 and 72 times heavier; in 2.4 the fine debris reached rho/rho0 = 2.25 and 920 GPa
 #   on the backwall and held the time step at 1.6 ns. A planar steel slab at 6.2 km/s
 #   onto aluminium (docs/validation.md, "Light debris on a heavy backwall") stays at
-#   rho/rho0 <= 1.64 up to a mass ratio of 30, reaches 1.84 at 38 and 2.2-2.8 from 52 on
-#   where the lattices do not line up; the solver warns from 30. None: the paper's counts.
+#   rho/rho0 <= 1.61 up to a mass ratio of 28, reaches 1.84 at 37 and 2.2-2.8 from 52
+#   on; the solver warns from 30. None: the paper's counts.
 BACKWALL_MASS_RATIO = 30
 
 

@@ -94,8 +94,8 @@ def main():
         d = read(snaps[1])
         deb = d["body"] == 0
         shocked = deb & (d["vx"] < d["vx"][deb].max() - 50.0)
-        ratio = rw * dw ** 3 / (rd * ds ** 3)
-        print(f"| {mat} | {v} km/s | {ds} mm | {dw} mm | {ratio:.0f} | {dmax:.2f} | "
+        ratio = d["m"][d["body"] == 1][0] / d["m"][deb][0]
+        print(f"| {mat} | {v} km/s | {ds} mm | {dw} mm | {ratio:.2g} | {dmax:.2f} | "
               f"{np.median(d['rho'][shocked]) / rd:.2f} | {wmax:.2f} |")
 
 
