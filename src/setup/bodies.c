@@ -418,7 +418,7 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
       if (a == b || mb < MASS_RATIO_WARN * ma) continue;
       int w = snprintf(list + len, sizeof list - len, "%s'%s' (%.0f-fold, %.3g kg)",
                        nlight ? ", " : "", s->body[a].name, mb / ma, ma);
-      if (w > 0) len = fmin(sizeof list - 1, len + (size_t)w);
+      if (w > 0) len = len + (size_t)w < sizeof list ? len + (size_t)w : sizeof list - 1;
       nlight++;
       worst = fmax(worst, mb / ma);
     }
