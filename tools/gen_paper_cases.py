@@ -56,36 +56,25 @@ PLATE_LAYERS = 5
 BACKWALL_MASS_RATIO = 30
 
 
-def library_with_fracture():
-    """Names of the library's materials that have a fracture model."""
-    names, cur = set(), None
-    with open("data/materials.yaml") as f:
-        for line in f:
-            if line[:1].isalpha() and line.rstrip().endswith(":"):
-                cur = line.strip()[:-1]
-            elif cur and line.strip().startswith("fracture:") and "none" not in line:
-                names.add(cur)
-    return names
-
-
-FRACTURING = library_with_fracture()
-
-
-def library_rho0():
-    """The library's reference densities, kg/m3, by material name."""
-    rho, cur = {}, None
+def read_library():
+    """From data/materials.yaml: the names of the materials that have a fracture model,
+    and each material's reference density, kg/m3."""
+    fracturing, rho, cur = set(), {}, None
     scale = {"g/cm3": 1000.0, "kg/m3": 1.0}
     with open("data/materials.yaml") as f:
         for line in f:
+            t = line.strip()
             if line[:1].isalpha() and line.rstrip().endswith(":"):
-                cur = line.strip()[:-1]
-            elif cur and line.strip().startswith("rho0:"):
-                val, unit = line.split(":", 1)[1].split("#")[0].split()
+                cur = t[:-1]
+            elif cur and t.startswith("fracture:") and "none" not in line:
+                fracturing.add(cur)
+            elif cur and t.startswith("rho0:"):
+                val, unit = t.split(":", 1)[1].split("#")[0].split()
                 rho[cur] = float(val) * scale[unit]
-    return rho
+    return fracturing, rho
 
 
-RHO0 = library_rho0()
+FRACTURING, RHO0 = read_library()
 
 
 def model_block(body):

@@ -395,8 +395,7 @@ static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struc
 /* Bodies whose particle masses differ more than this many times get a warning: a planar
  * steel slab of 0.175-0.21 mm particles at 6.2 km/s onto aluminium stays at rho/rho0 <=
  * 1.61 (shocked state 1.30-1.41) up to a mass ratio of 28, reaches 1.84 at 37 and
- * 2.2-2.8 from 52 on (docs/validation.md, "Light
- * debris on a heavy backwall"). */
+ * 2.2-2.8 from 52 on (docs/validation.md, "Light debris on a heavy backwall"). */
 #define MASS_RATIO_WARN 30.0
 
 /* Where bodies of very different particle masses meet, the light particles' continuity
