@@ -10,6 +10,18 @@ double fracture_max_principal(double p, const double S[6])
   return lam[0];
 }
 
+int fracture_keeps_stress(const struct fracture_params *fp, double damage)
+{
+  return damage < 1.0 || fp->friction > 0.0;
+}
+
+double fracture_yield(const struct fracture_params *fp, double damage, double Y, double p)
+{
+  if (damage < 1.0) return Y;
+  const double Yd = fp->friction * (p > 0.0 ? p : 0.0);
+  return Yd < Y ? Yd : Y;
+}
+
 double fracture_plastic(const struct fracture_params *fp, double damage, double deps_p)
 {
   if (fp->kind != FRACTURE_CUMULATIVE || fp->eps_f <= 0 || damage >= 1.0) return damage;

@@ -62,7 +62,7 @@ static int update_eos(struct sim *s, struct hv_error *err)
     }
     const struct material *m = &s->mat[p->mat[i]];
     if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0) st.p = 0.0;   /* split: no tension */
-    if (m->str.enabled && (!p->solid || p->damage[i] < 1.0))
+    if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->damage[i])))
       st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
     p->p[i] = st.p;
     p->cs[i] = st.cs;
@@ -197,7 +197,8 @@ static int check_state(const struct sim *s, struct hv_error *err)
 }
 
 /* End of step for solids: S takes the end-of-step stress, fracture is tested on
- * σ = −pI + S; a particle that splits drops its deviatoric stress. */
+ * σ = −pI + S; a particle that splits drops its deviatoric stress (and, without
+ * fracture.friction, carries none from then on). */
 static long end_stress(struct sim *s, double dt)
 {
   struct particles *p = &s->p;
@@ -210,7 +211,10 @@ static long end_stress(struct sim *s, double dt)
     const double d0 = p->damage[i];
     p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
     if (p->damage[i] >= 1.0) {
-      for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
+      /* splitting releases the deviatoric stress; with friction it builds up again
+         under pressure (sph_solid.c), limited by min(Y, μp) */
+      if (d0 < 1.0 || !(m->frac.friction > 0.0))
+        for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
       splits += p->p[i] < 0.0;   /* split (now or in the first pass) and in tension */
     }
   }

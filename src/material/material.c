@@ -319,6 +319,9 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
   const double zero = 0.0;
   switch (f->kind) {
   case FRACTURE_NONE:
+    if (not_used_here(c, fp, "friction", "friction applies to split material: model tresca "
+                      "or cumulative", err))
+      return -1;
     break;
   case FRACTURE_TRESCA:
     if (not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
@@ -338,6 +341,14 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
     break;
   case FRACTURE_KIND_COUNT:
     break;
+  }
+  if (f->kind != FRACTURE_NONE) {
+    if (get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->friction, err)) return -1;
+    if (f->friction > 0.0 && !m->str.enabled)
+      return key_error(c, key_of(k, sizeof k, fp, "friction"), err,
+                       "friction limits the deviatoric stress of split material, but the "
+                       "material has no strength (give strength with shear modulus and "
+                       "yield > 0)");
   }
   return 0;
 }

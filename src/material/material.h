@@ -78,6 +78,10 @@ struct fracture_params {
      under tension beyond |sigma_c|, dD = dt/tau; split at D = 1 */
   double eps_f;        /* [-] plastic strain to failure (0: not used) */
   double tau;          /* [s] time under tension to failure (0: not used) */
+  /* split particles (D = 1): 0 (the paper's rule) — no deviatoric stress; > 0 — the
+     friction coefficient μ of the broken material, whose yield stress is then
+     min(Y, μ max(p, 0)) (a cohesionless Drucker–Prager/Coulomb limit) */
+  double friction;     /* [-] */
 };
 
 struct material {

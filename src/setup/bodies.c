@@ -17,6 +17,7 @@
  * Velocity: `velocity`, or `speed` with `impact_angle` α measured from the target
  * surface in the x–y plane, v = speed (sin α, −cos α, 0) (α = 90°: along +x); plus
  * `radial_velocity` r̂ about the shape's centre.
+ * `damage` (0 to 1) starts a body damaged; 1: split material (docs/models.md).
  * `energy_deposit` adds energy E within a radius R about a point, shared with the
  * weights m_i W(r_i, R/2) (the Sedov blast).
  */
@@ -37,6 +38,7 @@ struct body_spec {
   struct shape shape;
   int mat, lattice;
   double spacing, rho, e, vel[3], vrad;
+  double damage;       /* [-] initial damage, 0 (intact) to 1 (split) */
   double vol;          /* [m3] exact volume of the simulated part, or -1 */
 };
 
@@ -298,6 +300,18 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
       read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
       read_velocity(c, path, name, bs, err))
     return -1;
+  /* initial damage: 1 makes a body of broken (split) material, e.g. to test the
+     fracture.friction of split material or to start from a rubble target */
+  const double zero = 0.0;
+  snprintf(key, sizeof key, "%s.damage", path);
+  if (cfg_get_quantity(c, key, UNIT_NONE, &zero, 0.0, 1.0, &bs->damage, err)) return -1;
+  if (bs->damage > 0.0 && s->mat[bs->mat].frac.kind == FRACTURE_NONE) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': damage = %g needs a material "
+                        "with fracture (material '%s' has fracture: none)",
+                        cfg_where(c, key, where, sizeof where), key, name, bs->damage,
+                        s->mat[bs->mat].name);
+  }
   return 0;
 }
 
@@ -315,6 +329,7 @@ static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t f
     p->rho[q] = bs->rho;
     p->h[q] = h;
     p->e[q] = bs->e;
+    if (p->solid) p->damage[q] = bs->damage;
     double r[3], rn = 0.0;
     for (int c = 0; c < 3; c++) {
       r[c] = p->x[c][q] - bs->shape.center[c];

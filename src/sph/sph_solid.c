@@ -28,9 +28,11 @@
 #include "strength/strength.h"
 #include "strength/sym3.h"
 
+/* Whether particle i carries a deviatoric stress: a material with strength, intact or
+ * split with friction (fracture.friction). */
 static int has_strength(const struct material *m, double damage)
 {
-  return m->str.enabled && damage < 1.0;
+  return m->str.enabled && fracture_keeps_stress(&m->frac, damage);
 }
 
 /* Stress update of particle i from its velocity gradient L. */
@@ -40,7 +42,10 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   double S0[6], dS[6], Sm[6], S1[6];
   for (int k = 0; k < 6; k++) S0[k] = p->S[k][i];
   const double G = m->str.G;
-  const double Y = strength_yield(&m->str, p->eps_p[i], strength_equivalent_rate(L), p->e[i]);
+  const double Y = fracture_yield(&m->frac, p->damage[i],
+                                  strength_yield(&m->str, p->eps_p[i],
+                                                 strength_equivalent_rate(L), p->e[i]),
+                                  p->p[i]);
   strength_rate(G, S0, L, dS);
   for (int k = 0; k < 6; k++) {
     Sm[k] = S0[k] + 0.5 * dt * dS[k];
@@ -124,6 +129,9 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const struct material *mi = &mat[p->mat[i]];
         const int strong = has_strength(mi, p->damage[i]);
+        /* the reconstruction's gradient: intact strength particles only (split ones
+           with friction keep the standard viscosity, as without it) */
+        const int recon = strong && p->damage[i] < 1.0;
         const int32_t bi = body[i];
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
@@ -155,10 +163,14 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         p->drho[i] = rho[i] * sum;
         if (gradv) {   /* corrected; 0 without strength: no reconstruction for its pairs */
           double *Gi = gradv + 9 * (size_t)i;
-          for (int t = 0; t < 9; t++) Gi[t] = strong ? L[t] : 0.0;
-          if (strong) correct_gradient(Gi, A);
-          if (sp->grad_correction)   /* the stress uses the same corrected gradient */
-            for (int t = 0; t < 9; t++) L[t] = Gi[t];
+          for (int t = 0; t < 9; t++) Gi[t] = recon ? L[t] : 0.0;
+          if (recon) {
+            correct_gradient(Gi, A);
+            if (sp->grad_correction)   /* the stress uses the same corrected gradient */
+              for (int t = 0; t < 9; t++) L[t] = Gi[t];
+          } else if (strong && sp->grad_correction) {
+            correct_gradient(L, A);
+          }
         } else if (corr) {
           correct_gradient(L, A);
         }

@@ -142,7 +142,7 @@ static void test_paper_values(void)
 static void test_overrides(void)
 {
   static const char *yaml = "materials:\n"                                            /* 1 */
-                            "  target: {library: steel-target, strength: {yield: 0.5 GPa}}\n"
+                            "  target: {library: steel-target, strength: {yield: 0.5 GPa}, fracture: {friction: 0.4}}\n"
                             "  rod: {library: tungsten-alloy, strength: {poisson: 0.28}}\n"
                             "  plate:\n"                                                 /* 4 */
                             "    library: al-alloy\n"
@@ -163,8 +163,10 @@ static void test_overrides(void)
   }
   CHECK(m[0].str.Y0 == 0.5e9 && m[0].str.G == 95e9 && m[0].eosp.mg.c0 == 4900 &&
             m[0].frac.sigma_c == -0.39e9 && !strcmp(m[0].library, "steel-target") &&
-            strstr(m[0].source, "Table 2"),
-        "target: yield overridden to 0.5 GPa, the rest from steel-target");
+            strstr(m[0].source, "Table 2") && m[0].frac.friction == 0.4 &&
+            m[0].frac.kind == FRACTURE_TRESCA && m[1].frac.friction == 0.0,
+        "target: yield overridden to 0.5 GPa, friction 0.4 added, the rest from steel-target; "
+        "rod: no friction (the default)");
   const double K = 17780.0 * 4612.0 * 4612.0;
   CHECK(m[1].str.nu == 0.28 && fabs(m[1].str.G - 3 * K * 0.44 / 2.56) <= 1e-14 * m[1].str.G &&
             m[1].str.Y0 == 0.983e9,
@@ -241,6 +243,14 @@ static void test_errors(void)
                "materials.x.strength.T_melt: T_melt = 200 K must be above T_ref = 293.15 K");
   expect_error("materials:\n  x: 5\n", "x", "case.yaml:2: materials.x: material 'x' must be a "
                "mapping");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {model: none, friction: 0.5}}\n",
+               "x", "case.yaml:2: materials.x.fracture.friction: friction applies to split "
+               "material: model tresca or cumulative");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {friction: -0.1}}\n", "x",
+               "materials.x.fracture.friction");
+  expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0}, fracture: "
+               "{friction: 0.5}}\n", "x", "materials.x.fracture.friction: friction limits the "
+               "deviatoric stress of split material, but the material has no strength");
 }
 
 /* An error in a library value names the library file and line. */

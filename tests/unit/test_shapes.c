@@ -242,6 +242,19 @@ static void test_errors(void)
   expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
   expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
+  expect_error("damage without fracture",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1, damage: 1,\n"
+               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+               "time: {end: 1}\n",
+               "bodies[0].damage: body 'a': damage = 1 needs a material with fracture");
+  expect_error("damage above 1",
+               "bodies:\n"
+               "  - {name: a, material: al-alloy, spacing: 0.1, damage: 1.5,\n"
+               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+               "time: {end: 1}\n",
+               "bodies[0].damage: 1.5 is out of range");
 }
 
 int main(void)

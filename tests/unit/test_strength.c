@@ -90,6 +90,16 @@ static void test_fracture(void)
   CHECK_CLOSE(fracture_plastic(&cu, 0.0, 0.1), 0.2, 1e-15, "cumulative: dD = deps/eps_f");
   CHECK_CLOSE(fracture_tension(&cu, 0.2, -2e8, S0, 2e-7), 0.4, 1e-12, "cumulative: dD = dt/tau in tension");
   CHECK(fracture_tension(&cu, 0.9, -2e8, S0, 2e-7) == 1.0, "cumulative: split at D = 1");
+  /* split material: no deviatoric stress (the paper's rule), or min(Y, μ max(p, 0)) */
+  CHECK(fracture_keeps_stress(&tr, 0.5) && !fracture_keeps_stress(&tr, 1.0),
+        "without friction only intact particles keep a deviatoric stress");
+  CHECK(fracture_yield(&tr, 1.0, 0.383e9, 1e9) == 0.0, "split, no friction: Y = 0");
+  struct fracture_params fr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .friction = 0.3};
+  CHECK(fracture_keeps_stress(&fr, 1.0), "with friction split particles keep a deviatoric stress");
+  CHECK(fracture_yield(&fr, 0.99, 0.383e9, 1e9) == 0.383e9, "not yet split: the intact Y");
+  CHECK_CLOSE(fracture_yield(&fr, 1.0, 0.383e9, 1e9), 0.3e9, 1e-15, "split: Y = μp below Y0");
+  CHECK(fracture_yield(&fr, 1.0, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
+  CHECK(fracture_yield(&fr, 1.0, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
 }
 
 int main(void)
