@@ -162,6 +162,30 @@ double sc_front(const double *X, const double *v, int n, double level, int from_
   return (double)NAN;
 }
 
+double sc_plateau(const double *X, const double *f, int n, double front, double lo, double hi,
+                  int *count)
+{
+  double s = 0.0;
+  int c = 0;
+  for (int l = 0; l < n; l++) {
+    const double q = X[l] / front;   /* 0 at the contact, 1 at the front */
+    if (q > lo && q < hi) {
+      s += f[l];
+      c++;
+    }
+  }
+  if (count) *count = c;
+  return c ? s / c : (double)NAN;
+}
+
+double sc_mg_pressure(double rho0, double c0, double n, double Gamma, double rho, double E)
+{
+  const double eta = rho / rho0;
+  const double pc = rho0 * c0 * c0 / n * (pow(eta, n) - 1.0);
+  const double Ec = c0 * c0 / n * ((pow(eta, n - 1.0) - 1.0) / (n - 1.0) - 1.0 + rho0 / rho);
+  return pc + Gamma * rho * (E - Ec);
+}
+
 double sc_linfit(const double *x, const double *y, int n, double *a, double *rms)
 {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;

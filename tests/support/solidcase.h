@@ -56,6 +56,19 @@ void sc_layer_mean(const struct particles *p, const double *f, const int *layer_
  * Returns NAN when it never crosses. */
 double sc_front(const double *X, const double *v, int n, double level, int from_end);
 
+/* Mean of f over the layers whose position X lies between the fractions lo and hi of
+ * the way from the contact plane x = 0 to `front` (lo < X/front < hi): a shocked
+ * plateau away from the contact's wall heating and the front's width. *count (may be
+ * NULL) gets the number of layers; NAN when there are none. */
+double sc_plateau(const double *X, const double *f, int n, double front, double lo, double hi,
+                  int *count);
+
+/* Mie–Grüneisen with the Murnaghan cold curve, the paper's §2.1 (written out here,
+ * independently of src/eos, as the tests' reference):
+ *   p = ρ₀c₀²/n (ηⁿ − 1) + Γρ (E − E_c),  E_c = c₀²/n ((ηⁿ⁻¹ − 1)/(n − 1) − 1 + 1/η),
+ * η = ρ/ρ₀. [Pa] from SI inputs. */
+double sc_mg_pressure(double rho0, double c0, double n, double Gamma, double rho, double E);
+
 /* Least-squares line y = a + b x through n points; returns b, *a gets a (may be NULL),
  * *rms the rms residual (may be NULL). */
 double sc_linfit(const double *x, const double *y, int n, double *a, double *rms);

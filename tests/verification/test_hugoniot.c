@@ -52,11 +52,7 @@
 
 static double eos_p(double rho, double E)
 {
-  const double eta = rho / RHO0;
-  const double pc = RHO0 * C0 * C0 / N_MURN * (pow(eta, N_MURN) - 1.0);
-  const double Ec = C0 * C0 / N_MURN *
-                    ((pow(eta, N_MURN - 1.0) - 1.0) / (N_MURN - 1.0) - 1.0 + RHO0 / rho);
-  return pc + GAMMA_G * rho * (E - Ec);
+  return sc_mg_pressure(RHO0, C0, N_MURN, GAMMA_G, rho, E);
 }
 
 /* Hugoniot mismatch at ρ₁ for the particle speed up. */
@@ -140,18 +136,9 @@ int main(void)
         xf[b][nfit[b]++] = front;
       }
       if (k == nsnap - 1 && isfinite(front)) {
-        double sp = 0, sr = 0;
-        int c = 0;
-        for (int l = 0; l < nl[b]; l++) {
-          const double s = X[l] / front;   /* 0 at the contact, 1 at the front */
-          if (s > 0.3 && s < 0.8) {
-            sp += P[l];
-            sr += R[l];
-            c++;
-          }
-        }
-        plateau_p[b] = c ? sp / c : (double)NAN;
-        plateau_rho[b] = c ? sr / c : (double)NAN;
+        int c;
+        plateau_p[b] = sc_plateau(X, P, nl[b], front, 0.3, 0.8, &c);
+        plateau_rho[b] = sc_plateau(X, R, nl[b], front, 0.3, 0.8, NULL);
         printf("  plateau (%d layers): p = %.4f GPa, rho = %.2f kg/m3\n", c,
                plateau_p[b] * 1e-9, plateau_rho[b]);
       }

@@ -51,11 +51,7 @@
 
 static double eos_p(double rho, double E)
 {
-  const double eta = rho / RHO0;
-  const double pc = RHO0 * C0 * C0 / N_MURN * (pow(eta, N_MURN) - 1.0);
-  const double Ec = C0 * C0 / N_MURN *
-                    ((pow(eta, N_MURN - 1.0) - 1.0) / (N_MURN - 1.0) - 1.0 + RHO0 / rho);
-  return pc + GAMMA_G * rho * (E - Ec);
+  return sc_mg_pressure(RHO0, C0, N_MURN, GAMMA_G, rho, E);
 }
 
 static double rh_residual(double rho1, double k)
@@ -141,18 +137,9 @@ static void check_case(double mu, const char *outname, double *us_mean)
         xf[b][nfit[b]++] = front;
       }
       if (s == nsnap - 1 && isfinite(front)) {
-        double sp = 0, ss = 0;
-        int c = 0;
-        for (int l = 0; l < nl[b]; l++) {
-          const double f = X[l] / front;   /* 0 at the contact, 1 at the front */
-          if (f > 0.3 && f < 0.8) {
-            sp += P[l];
-            ss += SX[l];
-            c++;
-          }
-        }
-        plateau_p[b] = c ? sp / c : (double)NAN;
-        plateau_r[b] = c ? -ss / sp : (double)NAN;
+        int c;
+        plateau_p[b] = sc_plateau(X, P, nl[b], front, 0.3, 0.8, &c);
+        plateau_r[b] = -sc_plateau(X, SX, nl[b], front, 0.3, 0.8, NULL) / plateau_p[b];
         printf("  %s plate, t = %.2e s: front at %+.4e m; plateau (%d layers) p = %.4f GPa, "
                "-S_xx/p = %.4f\n", b ? "right" : "left ", t, front, c, plateau_p[b] * 1e-9,
                plateau_r[b]);
