@@ -126,7 +126,10 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         ay[i] = sy;
         az[i] = sz;
         de[i] += se;
-        vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
+        /* a particle with no neighbour carries no signal: only its own motion limits
+           the step (so it moves at most C_CFL h per step towards what it will meet) */
+        vsig[i] = nsel ? ci + 1.2 * (alpha * ci + beta * mumax)
+                       : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
       }
     }
     cand_free_all(&cd);

@@ -374,7 +374,9 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         p->a[1][i] = sy;
         p->a[2][i] = sz;
         p->de[i] += se;
-        p->vsig[i] = ci + 1.2 * (alpha * ci + beta * mumax);
+        /* no neighbour: no signal to carry (see sph.c) */
+        p->vsig[i] = nsel ? ci + 1.2 * (alpha * ci + beta * mumax)
+                          : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
       }
     }
     cand_free_all(&cd);
