@@ -355,7 +355,7 @@ domain:
   min: [{fmt(x0)} mm, {fmt(-yw)} mm, 0]
   max: [{fmt(x1)} mm, {fmt(yw)} mm, {fmt(zw)} mm]
   half_model: true
-  boundary: {{x_min: wall, x_max: wall, y: wall, z_max: wall}}
+  boundary: {{x_min: wall, x_max: absorbing, y: wall, z_max: wall}}
 bodies:
 """ + "\n".join(lines) + f"""
 {SPH}time:
@@ -378,39 +378,42 @@ def whipples():
             ["Steel-projectile sphere d = 5.56 mm (0.7 g) at 6.2 km/s, normal, on a steel-bumper",
              "1 mm, 200 mm gap (air neglected), al-alloy backwall 7 mm. Table 6: bumper hole",
              "10.5 mm (experiment), backwall craters ~4 mm deep, damage radius ~150 mm; Fig. 2",
-             "debris cloud at 35 us. Half model; rigid walls. Particles: 1000/20000/20000.",
+             "debris cloud at 35 us. Half model; rigid walls, absorbing behind. Particles: 1000/20000/20000.",
              "Deviations: the bumper is 120 x 120 mm (the paper does not give its size; with the",
              "whole 240 x 240 mm face 20 000 particles would not span its 1 mm thickness), and the",
-             "domain reaches x = 215 mm so that the backwall (x = 201..208 mm) lies inside."],
+             "domain reaches x = 238 mm, 30 mm behind the backwall (x = 201..208 mm), where an",
+             "absorbing face takes what flies off its rear."],
             "steel-projectile", 5.56, 6.2,
             [("bumper", "steel-bumper", 0, 1, 60, 2.5 * 5.56), ("backwall", "al-alloy", 201, 7, 120, None)],
-            ((-50, 215), 120, 120), (1000, 20000, 20000), 80, 5)
+            ((-50, 238), 120, 120), (1000, 20000, 20000), 80, 5)
     whipple("wp1", "Aluminium sphere on an aluminium Whipple shield, W.P.1",
             "section 2.5, Table 7",
             ["Al 2024-T3 (al-alloy) sphere d = 5 mm at 6.5 km/s on bumper h = 1.5 mm, gap 200 mm,",
              "backwall H = 1.5 mm. Table 7: bumper hole 11.5 mm (experiment), 11 mm (paper).",
-             "Half model; rigid walls. Particles 2000/10000/10000.",
-             "Deviations: the domain reaches x = 210 mm (the backwall lies at 201.5..203 mm);",
-             "the bumper is 100 x 100 mm (size not given in the paper)."],
+             "Half model; rigid walls, absorbing behind. Particles 2000/10000/10000.",
+             "Deviations: the domain reaches x = 233 mm, 30 mm behind the backwall (201.5..203",
+             "mm), where an absorbing face takes what flies off its rear; the bumper is",
+             "100 x 100 mm (size not given in the paper)."],
             "al-alloy", 5, 6.5,
             [("bumper", "al-alloy", 0, 1.5, 50, 2.5 * 5), ("backwall", "al-alloy", 201.5, 1.5, 100, None)],
-            ((-50, 210), 100, 100), (2000, 10000, 10000), 100, 5)
+            ((-50, 233), 100, 100), (2000, 10000, 10000), 100, 5)
     whipple("wp2", "Aluminium sphere on an aluminium Whipple shield, W.P.2",
             "section 2.5, Table 7",
             ["Al 2024-T3 (al-alloy) sphere d = 10 mm at 3.1 km/s on bumper h = 2 mm, gap 200 mm,",
              "backwall H = 10 mm. Table 7: bumper hole 17 mm (experiment), 16 mm (paper).",
-             "Half model; rigid walls. Particles 2000/10000/30000.",
-             "Deviations: the domain reaches x = 220 mm (backwall at 202..212 mm); bumper",
-             "100 x 100 mm (size not given in the paper)."],
+             "Half model; rigid walls, absorbing behind. Particles 2000/10000/30000.",
+             "Deviations: the domain reaches x = 242 mm, 30 mm behind the backwall (202..212",
+             "mm), where an absorbing face takes what flies off its rear; bumper 100 x 100 mm",
+             "(size not given in the paper)."],
             "al-alloy", 10, 3.1,
             [("bumper", "al-alloy", 0, 2, 50, 2.5 * 10), ("backwall", "al-alloy", 202, 10, 100, None)],
-            ((-50, 220), 100, 100), (2000, 10000, 30000), 150, 5)
+            ((-50, 242), 100, 100), (2000, 10000, 30000), 150, 5)
     whipple("wp3", "Aluminium sphere on a double-bumper shield, W.P.3",
             "section 2.5, Table 7",
             ["Al 2024-T3 (al-alloy) sphere d = 4 mm at 8 km/s on bumper 1 (h1 = 0.8 mm), gap",
              "60 mm, bumper 2 (h2 = 0.5 mm), gap 60 mm, backwall H = 3.2 mm. Table 7: bumper 1",
              "hole 7.8 mm, half spray angle 30 deg, cloud 6.76 km/s; bumper 2 hole ~70 mm,",
-             "14 deg, 0.975 km/s (experiment). Half model; rigid walls.",
+             "14 deg, 0.975 km/s (experiment). Half model; rigid walls, absorbing behind.",
              "Particles 2000/10000/10000/10000. The backwall keeps the paper's count although",
              "its particles are 1000 times heavier than bumper 1's disc's: the debris reaches it",
              "spread thin and slowed behind bumper 2 (rho/rho0 <= 1.18 there at 30 us in the",
