@@ -136,7 +136,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
            reconstruction always (its limiter needs gradients exact for linear fields) */
-        const int corr = strong && (sp->grad_correction || gradv);
+        const int corr = strong && (sp->grad_correction || (gradv && recon));
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
