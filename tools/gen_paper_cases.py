@@ -54,6 +54,11 @@ PLATE_LAYERS = 5
 #   rho/rho0 <= 1.61 up to a mass ratio of 28, reaches 1.84 at 37 and 2.2-2.8 from 52
 #   on; the solver warns from 30. None: the paper's counts.
 BACKWALL_MASS_RATIO = 30
+# - WP1_BACKWALL_DISC: (radius mm, layers) of a disc in W.P.1's 1.5 mm backwall around the
+#   axis, inside the ring of the paper's two layers (session 12: with two layers of
+#   0.75 mm the debris split it along its rows and opened gaps over +-35 mm from 40 us,
+#   where the experiment's backwall is not perforated); (None, None): the plain plate.
+WP1_BACKWALL_DISC = (40, 4)
 
 
 def read_library():
@@ -95,10 +100,11 @@ def model_block(body):
     return "\n".join(lines) + "\n"
 
 
-def plate_bodies(name, mat, x0, t, w, count, disc_r):
+def plate_bodies(name, mat, x0, t, w, count, disc_r, layers=None):
     """YAML of a thin plate x0 <= x <= x0 + t, |y|, |z| <= w, given by its particle count,
     and (PLATE_LAYERS, disc_r not None) its disc of radius disc_r around the impact axis
-    with at least PLATE_LAYERS layers; returns (yaml lines, the measure.plates entry)."""
+    with at least `layers` (default PLATE_LAYERS) layers; returns (yaml lines, the
+    measure.plates entry)."""
     box = (f"type: box, min: [{fmt(x0)} mm, {fmt(-w)} mm, {fmt(-w)} mm], "
            f"max: [{fmt(x0 + t)} mm, {fmt(w)} mm, {fmt(w)} mm]")
     if PLATE_LAYERS is None or disc_r is None:
@@ -111,7 +117,8 @@ def plate_bodies(name, mat, x0, t, w, count, disc_r):
     # the disc's count: 0.8 of its half volume over the wanted spacing cubed, so that the
     # count's spacing, rounded to whole layers (up), gives PLATE_LAYERS (and more at a
     # finer --scale)
-    dx = t / PLATE_LAYERS
+    layers = layers or PLATE_LAYERS
+    dx = t / layers
     n_disc = int(round(0.8 * 0.5 * math.pi * disc_r ** 2 * t / dx ** 3))
     # the ring's count: the plate's, less the disc's share, less 5 % for the lattice
     # points the disc's curved edge cuts off, so that it keeps the plain plate's layers
@@ -121,7 +128,7 @@ def plate_bodies(name, mat, x0, t, w, count, disc_r):
     shape: {{{box},
             minus: [{{{disc}}}]}}
     particles: {n_ring}
-  - name: {name}-core   # {PLATE_LAYERS} layers within {fmt(disc_r)} mm of the impact axis
+  - name: {name}-core   # {layers} layers within {fmt(disc_r)} mm of the impact axis
     material: {mat}
     shape: {{{disc}}}
     particles: {n_disc}""", f"[{name}, {name}-core]")
@@ -301,16 +308,22 @@ def plate_spacing(t, w, count):
     return t / max(1, math.ceil(t / d0 * (1 - 1e-9)))
 
 
+def plate_tuple(p):
+    """(name, material, x0, t, w, disc_r, layers) of a plates entry, whose 7th element
+    (the disc's layers; default PLATE_LAYERS) may be left out."""
+    return tuple(p) + (PLATE_LAYERS,) * (7 - len(p))
+
+
 def backwall_count(proj, d, plates, pcounts):
     """Raises the backwall's count (pcounts[-1], in place) so that its particles are at
     most BACKWALL_MASS_RATIO times heavier than the lightest debris particles (the
     projectile's, each plate's or its disc's); returns the header's note."""
     masses = [RHO0[proj] * math.pi / 12 * d ** 3 / pcounts[0]]   # half sphere, mm3 x kg/m3
-    for k, (pname, mat, x0, t, w, disc_r) in enumerate(plates[:-1]):
-        dx = t / PLATE_LAYERS if (PLATE_LAYERS is not None and disc_r is not None) \
+    for k, (pname, mat, x0, t, w, disc_r, lay) in enumerate(map(plate_tuple, plates[:-1])):
+        dx = t / lay if (PLATE_LAYERS is not None and disc_r is not None) \
             else plate_spacing(t, w, pcounts[k + 1])
         masses.append(RHO0[mat] * dx ** 3)
-    pname, mat, x0, t, w, _ = plates[-1]
+    pname, mat, x0, t, w, _, _ = plate_tuple(plates[-1])
     paper = RHO0[mat] * plate_spacing(t, w, pcounts[-1]) ** 3 / min(masses)
     dx_max = (BACKWALL_MASS_RATIO * min(masses) / RHO0[mat]) ** (1.0 / 3.0)
     layers = math.ceil(t / dx_max)
@@ -327,7 +340,9 @@ def backwall_count(proj, d, plates, pcounts):
 def whipple(name, title, section, notes, proj, d, v0, plates, domain, pcounts, t_end, every,
             refine_backwall=True):
     """plates: list of (name, material, x0 mm, thickness mm, half-width mm, disc radius mm
-    or None); the last is the backwall; refine_backwall: apply BACKWALL_MASS_RATIO"""
+    or None[, the disc's layers]); the last is the backwall (a disc of its own too, if
+    given one: measured as one body with its disc); refine_backwall: apply
+    BACKWALL_MASS_RATIO (to the plain backwall's count, or its ring's)"""
     lines = []
     lines.append(f"""  - name: projectile
     material: {proj}
@@ -338,17 +353,16 @@ def whipple(name, title, section, notes, proj, d, v0, plates, domain, pcounts, t
     if BACKWALL_MASS_RATIO is not None and refine_backwall:
         notes = notes + backwall_count(proj, d, plates, pcounts)
     meas_plates = []
-    for k, (pname, mat, x0, t, w, disc_r) in enumerate(plates):
-        yaml, meas = plate_bodies(pname, mat, x0, t, w, pcounts[k + 1], disc_r)
+    for k, (pname, mat, x0, t, w, disc_r, lay) in enumerate(map(plate_tuple, plates)):
+        yaml, meas = plate_bodies(pname, mat, x0, t, w, pcounts[k + 1], disc_r, lay)
         lines.append(yaml)
         meas_plates.append(meas)
     (x0, x1), yw, zw = domain
-    last = plates[-1][0]
     if PLATE_LAYERS is not None:
-        for (pname, mat, px0, t, w, disc_r) in plates:
+        for (pname, mat, px0, t, w, disc_r, lay) in map(plate_tuple, plates):
             if disc_r is not None:
                 notes = notes + ["Within %g mm of the impact point the %s has %d particle layers "
-                                 "(a disc of its own)." % (disc_r, pname, PLATE_LAYERS)]
+                                 "(a disc of its own)." % (disc_r, pname, lay)]
     body = f"""name: {name}
 resolution: 1.0
 domain:
@@ -365,7 +379,7 @@ output:
 measure:
   plates: [{", ".join(meas_plates[:-1])}]
   debris: [{", ".join(p[0] for p in plates[:-1])}]
-  backwall: {last}
+  backwall: {meas_plates[-1]}
   fragments: true
   every: {fmt(every / 5)} us   # the debris cloud in free flight between outputs
 """
@@ -395,7 +409,8 @@ def whipples():
              "mm), where an absorbing face takes what flies off its rear; the bumper is",
              "100 x 100 mm (size not given in the paper)."],
             "al-alloy", 5, 6.5,
-            [("bumper", "al-alloy", 0, 1.5, 50, 2.5 * 5), ("backwall", "al-alloy", 201.5, 1.5, 100, None)],
+            [("bumper", "al-alloy", 0, 1.5, 50, 2.5 * 5),
+             ("backwall", "al-alloy", 201.5, 1.5, 100, WP1_BACKWALL_DISC[0], WP1_BACKWALL_DISC[1])],
             ((-50, 233), 100, 100), (2000, 10000, 10000), 100, 5)
     whipple("wp2", "Aluminium sphere on an aluminium Whipple shield, W.P.2",
             "section 2.5, Table 7",

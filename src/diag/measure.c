@@ -249,6 +249,7 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->ring = 2.0 * s;
   par->area_fraction = 0.5;
   par->mask = NULL;
+  par->scale = NULL;
 }
 
 int measure_backwall(const struct particles *p, const struct meas_geom *g,
@@ -271,9 +272,10 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
     out->n_wall++;
     const double uw[2] = {p->x[1][i] - g->yc, p->x[2][i]};
+    const double ti = par->scale ? par->scale[i] * tol : tol;
     for (int d = 0; d < 2; d++) {
-      lo[d] = fmin(lo[d], uw[d] - tol);
-      hi[d] = fmax(hi[d], uw[d] + tol);
+      lo[d] = fmin(lo[d], uw[d] - ti);
+      hi[d] = fmax(hi[d], uw[d] + ti);
     }
     const double dmg = p->solid ? p->damage[i] : 0.0, ep = p->solid ? p->eps_p[i] : 0.0;
     if (p->solid && (dmg >= par->damage_min || ep >= par->eps_p_min)) {
@@ -300,10 +302,11 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
    * (u, −z) than the particle itself, so the mirror images add nothing. */
   for (size_t i = 0; i < p->n; i++) {
     if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
-    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i];
+    const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
+    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
     const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
-    int a0 = (int)ceil((u - tol - lo[0]) / c - 0.5), a1 = (int)floor((u + tol - lo[0]) / c - 0.5);
-    int b0 = (int)ceil((w - tol - lo[1]) / c - 0.5), b1 = (int)floor((w + tol - lo[1]) / c - 0.5);
+    int a0 = (int)ceil((u - ti - lo[0]) / c - 0.5), a1 = (int)floor((u + ti - lo[0]) / c - 0.5);
+    int b0 = (int)ceil((w - ti - lo[1]) / c - 0.5), b1 = (int)floor((w + ti - lo[1]) / c - 0.5);
     if (a0 < 0) a0 = 0;
     if (b0 < 0) b0 = 0;
     if (a1 > nu - 1) a1 = nu - 1;
@@ -313,7 +316,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       for (int a = a0; a <= a1; a++) {
         const double du = lo[0] + ((double)a + 0.5) * c - u;
         const size_t k = (size_t)b * (size_t)nu + (size_t)a;
-        if (du * du + dw * dw > tol * tol) continue;
+        if (du * du + dw * dw > ti * ti) continue;
         if (x < xf[k]) xf[k] = x;
         if (dmg) hit[k] = 1;
       }
@@ -333,7 +336,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       const size_t q = (size_t)(r / par->ring);
       int damaged = !isfinite(x) || hit[k];   /* a hole, or damaged material */
       if (isfinite(x)) {
-        const double d = x - fp - g->x0;
+        const double d = x - g->x0;   /* xf: the particles' front, x − footprint */
         if (d > dmax) {
           dmax = d;
           out->crater_pos[0] = u + g->yc;

@@ -217,7 +217,12 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  *    columns are; r_damage is the outer radius of the last ring of the unbroken run of
  *    damaged rings from the centre (0 when the first is not). Scattered damage far from
  *    the impact (plate edges at a wall, reflected waves) does not extend it.
- * m_damaged: mass of the damaged particles (full picture). */
+ * m_damaged: mass of the damaged particles (full picture).
+ * A backwall of several bodies (a fine disc around the axis inside a coarse plate) is
+ * measured with g->body < 0, a mask of its bodies, g->spacing the finest and `scale`
+ * [p->n] = Δ_i/Δ: particle i then covers the columns within scale_i tol and has the
+ * footprint scale_i footprint, so that the coarse part is as solid as it is alone
+ * (crater_min, ring and cell keep the finest spacing). */
 struct meas_backwall_params {
   double tol;           /* [m] (default Δ) */
   double footprint;     /* [m] (default Δ/2) */
@@ -229,6 +234,7 @@ struct meas_backwall_params {
   double ring;          /* [m] ring width for r_damage (default 2Δ) */
   double area_fraction; /* damaged share of a ring's columns, in (0, 1] (default 0.5) */
   const unsigned char *mask;  /* optional [p->n] */
+  const double *scale;  /* optional [p->n]: Δ_i/Δ per particle; NULL: 1 for all */
 };
 struct meas_backwall {
   double crater_depth;        /* [m] */

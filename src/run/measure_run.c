@@ -43,6 +43,30 @@ static int body_list(const struct sim *s, struct cfg *c, const char *path, int *
   return 0;
 }
 
+/* A key naming one body, or a list of the bodies that make one object (a target or
+ * backwall refined near the impact axis: [target, target-core]); absent: *n = 0. */
+static int body_or_list(const struct sim *s, struct cfg *c, const char *path, const char *whose,
+                        int *out, int *n, struct hv_error *err)
+{
+  char where[256];
+  *n = 0;
+  if (cfg_len(c, path) >= 0) {
+    if (body_list(s, c, path, out, n, err)) return -1;
+    if (*n == 0)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: an empty list (name %s body, or its "
+                          "bodies)", cfg_where(c, path, where, sizeof where), path, whose);
+    for (int a = 0; a < *n; a++)
+      for (int b = a + 1; b < *n; b++)
+        if (out[a] == out[b])
+          return hv_error_set(err, HV_EXIT_INPUT, "%s: %s names body '%s' twice",
+                              cfg_where(c, path, where, sizeof where), path, s->body[out[a]].name);
+  } else if (cfg_has(c, path)) {
+    if (body_by_name(s, c, path, &out[0], err)) return -1;
+    *n = 1;
+  }
+  return 0;
+}
+
 /* measure.plates: a list whose entries are a body's name or a list of bodies (one plate
  * made of several bodies, e.g. a fine disc around the impact point inside a coarse plate). */
 static int plate_list(const struct sim *s, struct cfg *c, struct measure_run *mr,
@@ -82,7 +106,7 @@ static int plate_list(const struct sim *s, struct cfg *c, struct measure_run *mr
 int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struct hv_error *err)
 {
   memset(mr, 0, sizeof *mr);
-  mr->backwall = mr->gas = -1;
+  mr->gas = -1;
   meas_table_init(&mr->table);
   if (!cfg_has(c, "measure")) return 0;
   mr->any = 1;
@@ -94,19 +118,8 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
-  if (cfg_len(c, "measure.thick_target") >= 0) {
-    if (body_list(s, c, "measure.thick_target", mr->target, &mr->ntarget, err)) return -1;
-    if (mr->ntarget == 0) {
-      char where[256];
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.thick_target: an empty list (name "
-                          "the target's body, or its bodies)",
-                          cfg_where(c, "measure.thick_target", where, sizeof where));
-    }
-  } else if (cfg_has(c, "measure.thick_target")) {
-    if (body_by_name(s, c, "measure.thick_target", &mr->target[0], err)) return -1;
-    mr->ntarget = 1;
-  }
-  if (cfg_has(c, "measure.backwall") && body_by_name(s, c, "measure.backwall", &mr->backwall, err))
+  if (body_or_list(s, c, "measure.thick_target", "the target's", mr->target, &mr->ntarget, err) ||
+      body_or_list(s, c, "measure.backwall", "the backwall's", mr->backwall, &mr->nbackwall, err))
     return -1;
   if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
   mr->peak_pressure = -HUGE_VAL;
@@ -152,11 +165,25 @@ static void bodies_mask(const struct sim *s, const int *bodies, int n, unsigned 
   }
 }
 
+/* The backwall's bodies as one (union_geom) and, for several, their mask (free it). */
+static struct meas_geom backwall_geom(const struct measure_run *mr, const struct sim *s,
+                                      unsigned char **mask)
+{
+  *mask = NULL;
+  if (mr->nbackwall > 1) {
+    *mask = hv_malloc(s->p.n + 1, "backwall mask");
+    bodies_mask(s, mr->backwall, mr->nbackwall, *mask);
+  }
+  return union_geom(mr, s, mr->backwall, mr->nbackwall);
+}
+
 void measure_run_step(struct measure_run *mr, const struct sim *s)
 {
-  if (mr->backwall < 0) return;
-  struct meas_geom g = geom(mr, s, mr->backwall);
-  double pc = measure_center_pressure(&s->p, &g, 2 * g.spacing, 2 * g.spacing, NULL, NULL);
+  if (mr->nbackwall == 0) return;
+  unsigned char *mask;
+  struct meas_geom g = backwall_geom(mr, s, &mask);
+  double pc = measure_center_pressure(&s->p, &g, 2 * g.spacing, 2 * g.spacing, mask, NULL);
+  free(mask);
   if (pc > mr->peak_pressure) mr->peak_pressure = pc;
 }
 
@@ -169,8 +196,10 @@ static double next_face(const struct measure_run *mr, const struct sim *s, int b
       const double f = s->body[mr->plate[k][j]].lo[0];
       if (f > rear && f < x) x = f;
     }
-  if (mr->backwall >= 0 && s->body[mr->backwall].lo[0] > rear && s->body[mr->backwall].lo[0] < x)
-    x = s->body[mr->backwall].lo[0];
+  for (int j = 0; j < mr->nbackwall; j++) {
+    const double f = s->body[mr->backwall[j]].lo[0];
+    if (f > rear && f < x) x = f;
+  }
   return x;
 }
 
@@ -276,25 +305,39 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     snprintf(obj, sizeof obj, "cloud:%s", s->body[mr->debris[k]].name);
     meas_table_add_debris(&mr->table, t, obj, &cloud);
   }
-  if (mr->backwall >= 0) {
-    struct meas_geom g = geom(mr, s, mr->backwall);
+  if (mr->nbackwall > 0) {
+    unsigned char *mask;
+    struct meas_geom g = backwall_geom(mr, s, &mask);
+    const char *name = s->body[mr->backwall[0]].name;
+    /* several bodies: each particle at its own body's spacing relative to the finest */
+    double *bscale = NULL;
+    if (mask) {
+      bscale = hv_malloc((s->p.n + 1) * sizeof *bscale, "backwall spacings");
+      for (size_t i = 0; i < s->p.n; i++) bscale[i] = s->body[s->p.body[i]].spacing / g.spacing;
+    }
     struct meas_backwall_params bp;
     struct meas_backwall bw;
     meas_backwall_defaults(&bp, &g);
-    if (measure_backwall(&s->p, &g, &bp, &bw, err)) return -1;
-    meas_table_add_backwall(&mr->table, t, s->body[mr->backwall].name, &bw);
+    bp.mask = mask;
+    bp.scale = bscale;
     struct meas_plate_params pp;
     struct meas_plate hole;
     meas_plate_defaults(&pp, &g);
+    pp.mask = mask;
+    pp.scale = bscale;
     /* perforation of the backwall: any of its material in the flight path blocks it,
        joined or not (a cracked bulge whose particles have drifted apart still stops
        the debris; a bumper's hole is measured on its joined piece) */
     pp.attached_only = 0;
-    if (measure_plate(&s->p, &g, &pp, &hole, err)) return -1;
-    meas_table_add(&mr->table, t, "perforated", hole.perforated, "", s->body[mr->backwall].name);
+    const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
+                    measure_plate(&s->p, &g, &pp, &hole, err);
+    free(mask);
+    free(bscale);
+    if (brc) return -1;
+    meas_table_add_backwall(&mr->table, t, name, &bw);
+    meas_table_add(&mr->table, t, "perforated", hole.perforated, "", name);
     meas_table_add(&mr->table, t, "peak_pressure_center",
-                   mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa",
-                   s->body[mr->backwall].name);
+                   mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
   }
   if (mr->gas >= 0) {
     const struct body_info *bi = &s->body[mr->gas];

@@ -8,7 +8,9 @@
  *                                 # bodies: a plate refined near the impact point,
  *                                 # [[bumper, bumper-core]])
  *     debris: [bumper]            # debris cloud behind each of these plates
- *     backwall: backwall          # crater depth, damaged radius, peak centre pressure
+ *     backwall: backwall          # crater depth, damaged radius, peak centre pressure (or
+ *                                 # a list: a backwall refined near the axis, [backwall,
+ *                                 # backwall-core])
  *     gas: nitrogen               # shock front position
  *     fragments: true             # friends-of-friends fragments
  *     every: 1 us                 # also between output times (default: only at them)
@@ -33,7 +35,7 @@ struct measure_run {
   int plate[MR_MAX][MR_MAX];    /* plate k's bodies (its rows named after the first) */
   int nplate_body[MR_MAX], nplate;
   int debris[MR_MAX], ndebris;
-  int backwall;
+  int backwall[MR_MAX], nbackwall;  /* the backwall's bodies (rows named after the first) */
   int gas;
   int fragments;
   double peak_pressure;  /* [Pa] running maximum at the backwall's centre */

@@ -16,7 +16,10 @@
  * axis, run through `hvsph run` to t = 0): a cavity 8 mm deep and 6 mm across cut into
  * the fine core gives L and D within the core's spacing, in rows named after the first
  * body; the outer block alone would read the core's 10 mm channel as a perforation; an
- * empty list and an unknown body are refused (exit 2).
+ * empty list and an unknown body are refused (exit 2). A plate of two bodies
+ * (`measure.plates: [[ring, disc]]`) and a backwall of two (`measure.backwall: [ring,
+ * disc]`: a crater 1 mm deep and 6 mm across in the fine disc gives its depth, radius
+ * and damaged radius within the disc's spacing, the coarse ring no crater) likewise.
  */
 #include <math.h>
 #include <stdint.h>
@@ -545,6 +548,61 @@ static void test_plate_two_bodies(void)
   }
 }
 
+/* A backwall refined near the axis, measured as one through a case file
+ * (measure.backwall: [ring, disc]): a coarse ring (1 mm lattice, two layers of a 2 mm
+ * wall) around a fine disc (0.25 mm, eight layers, radius 8 mm) with a crater 1 mm deep
+ * and 6 mm across cut into the disc's front. The crater's depth is 1 mm exactly (the
+ * fine layer at 1.125 mm, less its footprint), its radius and the damaged area's 3 mm
+ * within the ring width 2 x 0.25 mm. Each particle covers its columns at its own body's
+ * spacing: at the fine spacing everywhere the ring's first layer (0.5 mm behind the face)
+ * would read as a crater 0.375 mm deep out to the wall's edge. */
+static void test_backwall_two_bodies(void)
+{
+  static const char *const fmt =
+      "name: two-body-backwall\n"
+      "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: ring\n"
+      "    material: al-alloy\n"
+      "    shape: {type: box, min: [0, -20 mm, -20 mm], max: [2 mm, 20 mm, 20 mm],\n"
+      "            minus: [{type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0],\n"
+      "                     radius: 8 mm, length: 2 mm}]}\n"
+      "    spacing: 1 mm\n"
+      "  - name: disc\n"
+      "    material: al-alloy\n"
+      "    shape: {type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 8 mm,\n"
+      "            length: 2 mm, minus: [{type: cylinder, center: [0.5 mm, 0, 0],\n"
+      "            axis: [1, 0, 0], radius: 3 mm, length: 1 mm}]}\n"
+      "    spacing: 0.25 mm\n"
+      "time: {end: 0}\n"
+      "measure: {backwall: %s}\n";
+  char text[2048], what[128], path[4400];
+  const char *walls[] = {"[ring, disc]", "ring", "[]", "[ring, ring]", "[ring, discs]"};
+  for (int k = 0; k < 5; k++) {
+    snprintf(text, sizeof text, fmt, walls[k]);
+    snprintf(what, sizeof what, "backwall: %s", walls[k]);
+    if (!run_variant(text, "two_body_backwall", k, k >= 2, "measure.backwall", what, path,
+                     sizeof path))
+      continue;
+    const double depth = csv_value(path, "crater_depth", "ring");
+    const double rc = csv_value(path, "crater_radius", "ring");
+    const double rd = csv_value(path, "damage_radius", "ring");
+    const double perf = csv_value(path, "perforated", "ring");
+    if (k == 0) {
+      const double dc = 0.25e-3;  /* the disc's spacing */
+      CHECK(fabs(depth - 1e-3) <= 1e-9, "ring + disc: crater depth %.4f mm, 1 mm exactly",
+            1e3 * depth);
+      CHECK(fabs(rc - 3e-3) <= 2 * dc, "ring + disc: crater radius %.3f mm, 3 mm within 0.5 mm",
+            1e3 * rc);
+      CHECK(fabs(rd - 3e-3) <= 2 * dc, "ring + disc: damaged radius %.3f mm, 3 mm within 0.5 mm",
+            1e3 * rd);
+      CHECK(perf == 0.0, "ring + disc: not perforated (%g)", perf);
+    } else {
+      CHECK(perf == 1.0, "the ring alone: the disc's place is a hole through it (%g)", perf);
+    }
+  }
+}
+
 int main(void)
 {
   test_holes();
@@ -554,5 +612,6 @@ int main(void)
   test_cavity();
   test_cavity_two_bodies();
   test_plate_two_bodies();
+  test_backwall_two_bodies();
   return test_finish();
 }
