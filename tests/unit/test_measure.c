@@ -490,6 +490,35 @@ static void test_cavity_two_bodies(void)
         "perforation: L = %.2f mm", 1e3 * L[1]);
 }
 
+/* A case of a plate (or backwall) of two bodies: `ring`, a box 0 <= x <= t mm, |y|, |z| <=
+ * 20 mm on a 1 mm lattice, with the disc cut out; `disc`, the cylinder of radius r mm
+ * through the plate around (t/2, yd, 0) on a 0.25 mm lattice; `cut` (a shape) cut from
+ * both; run to t = 0 with measure: {`meas`}. */
+static void ring_disc_case(char *buf, size_t n, const char *mat, double t, double yd, double r,
+                           const char *cut, const char *meas)
+{
+  char disc[256];
+  snprintf(disc, sizeof disc, "{type: cylinder, center: [%g mm, %g mm, 0], axis: [1, 0, 0], "
+           "radius: %g mm, length: %g mm}", 0.5 * t, yd, r, t);
+  snprintf(buf, n,
+           "name: two-body-plate\n"
+           "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
+           "bodies:\n"
+           "  - name: ring\n"
+           "    material: %s\n"
+           "    shape: {type: box, min: [0, -20 mm, -20 mm], max: [%g mm, 20 mm, 20 mm],\n"
+           "            minus: [%s, %s]}\n"
+           "    spacing: 1 mm\n"
+           "  - name: disc\n"
+           "    material: %s\n"
+           "    shape: {type: cylinder, center: [%g mm, %g mm, 0], axis: [1, 0, 0],\n"
+           "            radius: %g mm, length: %g mm, minus: [%s]}\n"
+           "    spacing: 0.25 mm\n"
+           "time: {end: 0}\n"
+           "measure: {%s}\n",
+           mat, t, disc, cut, mat, 0.5 * t, yd, r, t, cut, meas);
+}
+
 /* A plate refined near the impact point, measured as one plate through a case file
  * (measure.plates: [[ring, disc]]): a coarse ring (1 mm lattice, one layer) and a fine
  * disc (0.25 mm, four layers, off the axis at y = 6 mm, radius 4 mm), with a 6 mm hole at
@@ -499,31 +528,13 @@ static void test_cavity_two_bodies(void)
  * the window's edge. */
 static void test_plate_two_bodies(void)
 {
-  static const char *const fmt =
-      "name: two-body-plate\n"
-      "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
-      "bodies:\n"
-      "  - name: ring\n"
-      "    material: steel-bumper\n"
-      "    shape: {type: box, min: [0, -20 mm, -20 mm], max: [1 mm, 20 mm, 20 mm],\n"
-      "            minus: [{type: cylinder, center: [0.5 mm, 6 mm, 0], axis: [1, 0, 0],\n"
-      "                     radius: 4 mm, length: 1 mm},\n"
-      "                    {type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0],\n"
-      "                     radius: 3 mm, length: 1 mm}]}\n"
-      "    spacing: 1 mm\n"
-      "  - name: disc\n"
-      "    material: steel-bumper\n"
-      "    shape: {type: cylinder, center: [0.5 mm, 6 mm, 0], axis: [1, 0, 0], radius: 4 mm,\n"
-      "            length: 1 mm, minus: [{type: cylinder, center: [0.5 mm, 0, 0],\n"
-      "            axis: [1, 0, 0], radius: 3 mm, length: 1 mm}]}\n"
-      "    spacing: 0.25 mm\n"
-      "time: {end: 0}\n"
-      "measure: {plates: %s}\n";
   char text[2048], what[128], path[4400];
   const char *plates[] = {"[[ring, disc]]", "[ring]", "[[]]", "[[ring, ring]]", "[[ring, discs]]"};
   for (int k = 0; k < 5; k++) {
-    snprintf(text, sizeof text, fmt, plates[k]);
     snprintf(what, sizeof what, "plates: %s", plates[k]);
+    ring_disc_case(text, sizeof text, "steel-bumper", 1.0, 6.0, 4.0,
+                   "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, "
+                   "length: 1 mm}", what);
     if (!run_variant(text, "two_body_plate", k, k >= 2, "measure.plates[0]", what, path,
                      sizeof path))
       continue;
@@ -558,29 +569,13 @@ static void test_plate_two_bodies(void)
  * would read as a crater 0.375 mm deep out to the wall's edge. */
 static void test_backwall_two_bodies(void)
 {
-  static const char *const fmt =
-      "name: two-body-backwall\n"
-      "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
-      "bodies:\n"
-      "  - name: ring\n"
-      "    material: al-alloy\n"
-      "    shape: {type: box, min: [0, -20 mm, -20 mm], max: [2 mm, 20 mm, 20 mm],\n"
-      "            minus: [{type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0],\n"
-      "                     radius: 8 mm, length: 2 mm}]}\n"
-      "    spacing: 1 mm\n"
-      "  - name: disc\n"
-      "    material: al-alloy\n"
-      "    shape: {type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 8 mm,\n"
-      "            length: 2 mm, minus: [{type: cylinder, center: [0.5 mm, 0, 0],\n"
-      "            axis: [1, 0, 0], radius: 3 mm, length: 1 mm}]}\n"
-      "    spacing: 0.25 mm\n"
-      "time: {end: 0}\n"
-      "measure: {backwall: %s}\n";
   char text[2048], what[128], path[4400];
   const char *walls[] = {"[ring, disc]", "ring", "[]", "[ring, ring]", "[ring, discs]"};
   for (int k = 0; k < 5; k++) {
-    snprintf(text, sizeof text, fmt, walls[k]);
     snprintf(what, sizeof what, "backwall: %s", walls[k]);
+    ring_disc_case(text, sizeof text, "al-alloy", 2.0, 0.0, 8.0,
+                   "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, "
+                   "length: 1 mm}", what);
     if (!run_variant(text, "two_body_backwall", k, k >= 2, "measure.backwall", what, path,
                      sizeof path))
       continue;
