@@ -490,17 +490,23 @@ static void test_cavity_two_bodies(void)
         "perforation: L = %.2f mm", 1e3 * L[1]);
 }
 
-/* A case of a plate (or backwall) of two bodies: `ring`, a box 0 <= x <= t mm, |y|, |z| <=
- * 20 mm on a 1 mm lattice, with the disc cut out; `disc`, the cylinder of radius r mm
- * through the plate around (t/2, yd, 0) on a 0.25 mm lattice; `cut` (a shape) cut from
- * both; run to t = 0 with measure: {`meas`}. */
-static void ring_disc_case(char *buf, size_t n, const char *mat, double t, double yd, double r,
-                           const char *cut, const char *meas)
+/* A plate (or backwall) of two bodies through a case file, variant k of a family: `ring`,
+ * a box 0 <= x <= t mm, |y|, |z| <= 20 mm on a 1 mm lattice, with the disc cut out;
+ * `disc`, the cylinder of radius r mm through the plate around (t/2, yd, 0) on a 0.25 mm
+ * lattice; a cylinder of radius 3 mm at the axis, 0 <= x <= 1 mm, cut from both (a hole
+ * through a 1 mm plate, a crater 1 mm deep in a thicker one); run to t = 0 with
+ * measure: {meas}. refuse/key as run_variant; returns 1 when it ran (csv: its
+ * measurements.csv). */
+static int ring_disc_variant(const char *stem, int k, int refuse, const char *key,
+                             const char *meas, const char *mat, double t, double yd, double r,
+                             char *csv, size_t ncsv)
 {
-  char disc[256];
+  static const char *const cut =
+      "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, length: 1 mm}";
+  char text[2048], disc[256];
   snprintf(disc, sizeof disc, "{type: cylinder, center: [%g mm, %g mm, 0], axis: [1, 0, 0], "
            "radius: %g mm, length: %g mm}", 0.5 * t, yd, r, t);
-  snprintf(buf, n,
+  snprintf(text, sizeof text,
            "name: two-body-plate\n"
            "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
            "bodies:\n"
@@ -517,6 +523,7 @@ static void ring_disc_case(char *buf, size_t n, const char *mat, double t, doubl
            "time: {end: 0}\n"
            "measure: {%s}\n",
            mat, t, disc, cut, mat, 0.5 * t, yd, r, t, cut, meas);
+  return run_variant(text, stem, k, refuse, key, meas, csv, ncsv);
 }
 
 /* A plate refined near the impact point, measured as one plate through a case file
@@ -528,15 +535,12 @@ static void ring_disc_case(char *buf, size_t n, const char *mat, double t, doubl
  * the window's edge. */
 static void test_plate_two_bodies(void)
 {
-  char text[2048], what[128], path[4400];
+  char what[128], path[4400];
   const char *plates[] = {"[[ring, disc]]", "[ring]", "[[]]", "[[ring, ring]]", "[[ring, discs]]"};
   for (int k = 0; k < 5; k++) {
     snprintf(what, sizeof what, "plates: %s", plates[k]);
-    ring_disc_case(text, sizeof text, "steel-bumper", 1.0, 6.0, 4.0,
-                   "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, "
-                   "length: 1 mm}", what);
-    if (!run_variant(text, "two_body_plate", k, k >= 2, "measure.plates[0]", what, path,
-                     sizeof path))
+    if (!ring_disc_variant("two_body_plate", k, k >= 2, "measure.plates[0]", what,
+                           "steel-bumper", 1.0, 6.0, 4.0, path, sizeof path))
       continue;
     const double perf = csv_value(path, "perforated", "ring");
     const double open = csv_value(path, "hole_open", "ring");
@@ -569,15 +573,12 @@ static void test_plate_two_bodies(void)
  * would read as a crater 0.375 mm deep out to the wall's edge. */
 static void test_backwall_two_bodies(void)
 {
-  char text[2048], what[128], path[4400];
+  char what[128], path[4400];
   const char *walls[] = {"[ring, disc]", "ring", "[]", "[ring, ring]", "[ring, discs]"};
   for (int k = 0; k < 5; k++) {
     snprintf(what, sizeof what, "backwall: %s", walls[k]);
-    ring_disc_case(text, sizeof text, "al-alloy", 2.0, 0.0, 8.0,
-                   "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, "
-                   "length: 1 mm}", what);
-    if (!run_variant(text, "two_body_backwall", k, k >= 2, "measure.backwall", what, path,
-                     sizeof path))
+    if (!ring_disc_variant("two_body_backwall", k, k >= 2, "measure.backwall", what,
+                           "al-alloy", 2.0, 0.0, 8.0, path, sizeof path))
       continue;
     const double depth = csv_value(path, "crater_depth", "ring");
     const double rc = csv_value(path, "crater_radius", "ring");
