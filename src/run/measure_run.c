@@ -335,7 +335,7 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     free(bscale);
     if (brc) return -1;
     meas_table_add_backwall(&mr->table, t, name, &bw);
-    meas_table_add(&mr->table, t, "perforated", hole.perforated, "", name);
+    meas_table_add_plate(&mr->table, t, name, &hole);   /* perforated, and the hole if any */
     meas_table_add(&mr->table, t, "peak_pressure_center",
                    mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
   }

@@ -584,6 +584,7 @@ static void test_backwall_two_bodies(void)
     const double rc = csv_value(path, "crater_radius", "ring");
     const double rd = csv_value(path, "damage_radius", "ring");
     const double perf = csv_value(path, "perforated", "ring");
+    const double hd = csv_value(path, "hole_diameter", "ring");
     if (k == 0) {
       const double dc = 0.25e-3;  /* the disc's spacing */
       CHECK(fabs(depth - 1e-3) <= 1e-9, "ring + disc: crater depth %.4f mm, 1 mm exactly",
@@ -593,8 +594,11 @@ static void test_backwall_two_bodies(void)
       CHECK(fabs(rd - 3e-3) <= 2 * dc, "ring + disc: damaged radius %.3f mm, 3 mm within 0.5 mm",
             1e3 * rd);
       CHECK(perf == 0.0, "ring + disc: not perforated (%g)", perf);
+      CHECK(hd == 0.0, "ring + disc: hole diameter 0 (%g)", hd);
     } else {
-      CHECK(perf == 1.0, "the ring alone: the disc's place is a hole through it (%g)", perf);
+      CHECK(perf == 1.0 && fabs(hd - 16e-3) <= 1e-3, "the ring alone: the disc's place is a "
+            "hole through it (%g), largest circle %.2f mm (16 mm within its 1 mm spacing)",
+            perf, 1e3 * hd);
     }
   }
 }
