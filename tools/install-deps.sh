@@ -2,10 +2,11 @@
 # Installs the Debian 12 packages hvsph needs to build, test and plot.
 # Safe to run repeatedly: it only calls apt-get when something is missing.
 #   tools/install-deps.sh          build + test dependencies
-#   tools/install-deps.sh --docs   also python3-numpy/matplotlib for the doc plots
+#   tools/install-deps.sh --docs   also python3-numpy/matplotlib/scipy for the doc plots
+#                                  and study tools (tools/*.py)
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3)
-if [ "${1:-}" = "--docs" ]; then pkgs+=(python3-numpy python3-matplotlib); fi
+if [ "${1:-}" = "--docs" ]; then pkgs+=(python3-numpy python3-matplotlib python3-scipy); fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
