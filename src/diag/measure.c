@@ -10,6 +10,8 @@
 
 #include "diag/measure.h"
 
+#include "diag/fof.h"
+
 #define CAVITY_MAX_COUNT 8
 #define MEAS_MAX_CELLS 4096     /* per side of the backwall's column grid */
 #define CAVITY_MAX_SLICES 100000000
@@ -250,6 +252,30 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->area_fraction = 0.5;
   par->mask = NULL;
   par->scale = NULL;
+  par->attached_only = 1;
+}
+
+/* The wall's largest friends-of-friends piece among the particles sel[i] != 0 (links
+ * FOF_B_FACTOR × Δ, scaled per particle): clears sel for every other particle. */
+static int keep_largest_piece(const struct particles *p, const struct meas_geom *g,
+                              const double *scale, unsigned char *sel, struct hv_error *err)
+{
+  double *b = NULL;
+  if (scale) {
+    b = hv_malloc((p->n + 1) * sizeof *b, "backwall linking lengths");
+    for (size_t i = 0; i < p->n; i++) b[i] = FOF_B_FACTOR * g->spacing * scale[i];
+  }
+  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .b_particle = b, .mask = sel,
+                          .nmat = 0, .half_model = g->half_model};
+  struct fof_result fr;
+  fof_result_init(&fr);
+  const int rc = fof_find(p, &fp, &fr, err);
+  free(b);
+  if (rc == 0)
+    for (size_t i = 0; i < p->n; i++)
+      if (sel[i] && fr.group[i] != 0) sel[i] = 0;   /* sorted by mass: 0 is the wall */
+  fof_result_free(&fr);
+  return rc;
 }
 
 int measure_backwall(const struct particles *p, const struct meas_geom *g,
@@ -286,6 +312,17 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   }
   if (g->half_model) out->m_damaged *= 2.0;
   if (!out->n_wall) return 0;
+  /* the columns see the wall's particles, or with attached_only its largest piece */
+  unsigned char *col = NULL;
+  if (par->attached_only) {
+    col = hv_calloc(p->n + 1, 1, "backwall selection");
+    for (size_t i = 0; i < p->n; i++)
+      col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
+    if (keep_largest_piece(p, g, par->scale, col, err)) {
+      free(col);
+      return -1;
+    }
+  }
   if (g->half_model) lo[1] = 0.0;  /* columns on the simulated side suffice: see below */
   double c = par->cell;
   const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
@@ -301,7 +338,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   /* In a half model a column with centre w >= 0 is never nearer a mirrored particle
    * (u, −z) than the particle itself, so the mirror images add nothing. */
   for (size_t i = 0; i < p->n; i++) {
-    if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
+    if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
     const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
     const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
     const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
@@ -354,6 +391,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     }
   free(xf);
   free(hit);
+  free(col);
   out->crater_depth = fmax(dmax, 0.0);
   out->r_damage = 0.0;
   for (size_t q = 0; q < nring; q++) {

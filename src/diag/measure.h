@@ -218,6 +218,11 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  *    damaged rings from the centre (0 when the first is not). Scattered damage far from
  *    the impact (plate edges at a wall, reflected waves) does not extend it.
  * m_damaged: mass of the damaged particles (full picture).
+ * attached_only (default): the columns (crater depth and position, r_crater, the
+ * damaged columns of r_damage) see only the wall's largest friends-of-friends piece
+ * (links FOF_B_FACTOR Δ): spall and fragments thrown off its rear are not wall, as
+ * they are not part of a recovered target; a column they alone fill is a hole. The
+ * particle counts (n_damaged, m_damaged, r_damage_particles) take every wall particle.
  * A backwall of several bodies (a fine disc around the axis inside a coarse plate) is
  * measured with g->body < 0, a mask of its bodies, g->spacing the finest and `scale`
  * [p->n] = Δ_i/Δ: particle i then covers the columns within scale_i tol and has the
@@ -235,6 +240,7 @@ struct meas_backwall_params {
   double area_fraction; /* damaged share of a ring's columns, in (0, 1] (default 0.5) */
   const unsigned char *mask;  /* optional [p->n] */
   const double *scale;  /* optional [p->n]: Δ_i/Δ per particle; NULL: 1 for all */
+  int attached_only;    /* 1 (default): the columns see only the wall's largest piece */
 };
 struct meas_backwall {
   double crater_depth;        /* [m] */

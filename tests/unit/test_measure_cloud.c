@@ -10,7 +10,8 @@
  * radius R about the entry point: the front is found at R within one spacing, axially,
  * radially and in distance.
  * Backwall: two flat-bottomed craters of known depth, damage inside a known radius: the
- * deepest crater and the damaged radius within one spacing; bulging adds to the depth.
+ * deepest crater and the damaged radius within one spacing; bulging adds to the depth;
+ * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken).
  * Pressure: layers of known pressure at the front face.
  */
 #include <math.h>
@@ -239,6 +240,23 @@ static void test_backwall(void)
   CHECK(rc == 0 && r.r_damage >= 4 * S - 1e-12 &&
             r.r_damage <= 5 * S + par.ring && r.crater_depth < 1e-12,
         "perforated wall: the hole is the damaged area (%.2fΔ for radius 5Δ)", r.r_damage / S);
+  /* spall behind the hole: a detached cluster of 3 x 3 x 2 particles 12Δ behind the face
+     on the axis is not wall (attached_only, the default): the hole stays a hole, no
+     crater; taking every particle, the cluster would read as a crater 11.5Δ deep */
+  for (int k = 0; k < 3; k++)
+    for (int j = -1; j < 2; j++)
+      for (int i = 0; i < 2; i++)
+        add_particle(&p, x0 + (12 + i) * S, (j + 0.5) * S, (k + 0.5) * S, 1e-6, 4);
+  rc = measure_backwall(&p, &g, &par, &r, &err);
+  CHECK(rc == 0 && r.crater_depth < 1e-12 && r.r_damage >= 4 * S - 1e-12 &&
+            r.r_damage <= 5 * S + par.ring,
+        "spall behind the hole is not wall: depth %.3gΔ, damaged area %.2fΔ",
+        r.crater_depth / S, r.r_damage / S);
+  par.attached_only = 0;
+  rc = measure_backwall(&p, &g, &par, &r, &err);
+  CHECK(rc == 0 && fabs(r.crater_depth - 11.5 * S) < 1e-9,
+        "... taking every particle, it reads as a crater %.3fΔ deep (11.5Δ)", r.crater_depth / S);
+  par.attached_only = 1;
   par.ring = 0;
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "ring 0: an error");
