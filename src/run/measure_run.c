@@ -327,8 +327,13 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     pp.scale = bscale;
     /* perforation of the backwall: any of its material in the flight path blocks it,
        joined or not (a cracked bulge whose particles have drifted apart still stops
-       the debris; a bumper's hole is measured on its joined piece) */
+       the debris; a bumper's hole is measured on its joined piece), however far behind
+       its rear face it has bulged (a slab ending 2t behind would read a bulge beyond
+       it as a hole): the slab reaches the rearmost backwall particle */
     pp.attached_only = 0;
+    for (size_t i = 0; i < s->p.n; i++)
+      if ((mask ? mask[i] : s->p.body[i] == g.body) && isfinite(s->p.x[0][i]))
+        pp.slab_rear = fmax(pp.slab_rear, s->p.x[0][i] - (g.x0 + g.thickness) + g.spacing);
     const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
                     measure_plate(&s->p, &g, &pp, &hole, err);
     free(mask);

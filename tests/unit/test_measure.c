@@ -603,6 +603,36 @@ static void test_backwall_two_bodies(void)
   }
 }
 
+/* A backwall that has moved back as a whole, 5 mm behind its 1 mm thickness (a free
+ * plate at 1 km/s for 5 us, intact): its material still blocks the line of sight, so
+ * it is not perforated (a slab ending 2t behind the original face would hold none of
+ * it and read one open hole); its crater depth is the 5 mm it has moved (measured from
+ * the original face, docs/measurements.md). */
+static void test_backwall_moved(void)
+{
+  static const char *const text =
+      "name: moved-backwall\n"
+      "domain: {min: [-5 mm, -10 mm, 0], max: [15 mm, 10 mm, 10 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: wall\n"
+      "    material: al-alloy\n"
+      "    shape: {type: box, min: [0, -10 mm, -10 mm], max: [1 mm, 10 mm, 10 mm]}\n"
+      "    spacing: 0.5 mm\n"
+      "    velocity: [1 km/s, 0, 0]\n"
+      "time: {end: 5 us}\n"
+      "output: {every: 5 us}\n"
+      "measure: {backwall: wall}\n";
+  char path[4400];
+  if (!run_variant(text, "moved_backwall", 0, 0, "measure.backwall", "a backwall moved 5 mm",
+                   path, sizeof path))
+    return;
+  const double perf = csv_value(path, "perforated", "wall");
+  const double depth = csv_value(path, "crater_depth", "wall");
+  CHECK(perf == 0.0, "a wall moved 5 mm back is not perforated (%g)", perf);
+  CHECK(fabs(depth - 5e-3) <= 0.25e-3, "... its depth from the original face %.3f mm (5 mm "
+        "within half its 0.5 mm spacing)", 1e3 * depth);
+}
+
 int main(void)
 {
   test_holes();
@@ -613,5 +643,6 @@ int main(void)
   test_cavity_two_bodies();
   test_plate_two_bodies();
   test_backwall_two_bodies();
+  test_backwall_moved();
   return test_finish();
 }
