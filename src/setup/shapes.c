@@ -144,10 +144,16 @@ int shape_contains(const struct shape *sh, const double x[3])
   return 1;
 }
 
+/* in's bounding box inside out's, to rounding (1e-9 of out's size: a disc through a
+ * plate's whole thickness, given by its centre and length, ends on the plate's faces
+ * only to the last bits) */
 static int box_inside(const struct shape *in, const struct shape *out)
 {
+  double size = 0.0;
+  for (int d = 0; d < 3; d++) size = fmax(size, out->max[d] - out->min[d]);
+  const double tol = 1e-9 * size;
   for (int d = 0; d < 3; d++)
-    if (in->min[d] < out->min[d] || in->max[d] > out->max[d]) return 0;
+    if (in->min[d] < out->min[d] - tol || in->max[d] > out->max[d] + tol) return 0;
   return 1;
 }
 

@@ -144,6 +144,12 @@ static void test_volumes(void)
   check_volume("plate minus a disc", "{type: box, min: [0, -0.01, -0.01], max: [1e-3, 0.01, "
                "0.01], minus: [{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], "
                "radius: 0.005, length: 1e-3}]}", 1e-3 * (4e-4 - PI * 2.5e-5), 0.5e-3);
+  /* the same where the disc's faces (centre ± length/2) meet the plate's only to rounding:
+     W.P.3's backwall, 121.3 .. 124.5 mm, and its disc centred at 122.9 mm, 3.2 mm long */
+  check_volume("plate minus a disc, faces equal to rounding", "{type: box, min: [0.1213, -0.05, "
+               "-0.05], max: [0.1245, 0.05, 0.05], minus: [{type: cylinder, center: [0.1229, 0, "
+               "0], axis: [1, 0, 0], radius: 0.02, length: 3.2e-3}]}",
+               3.2e-3 * (0.01 - PI * 4e-4), 1.6e-3);
   const char *ring = "{type: box, min: [0, -0.05, -0.05], max: [1e-3, 0.05, 0.05], minus: "
                      "[{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], radius: 0.02, "
                      "length: 1e-3}]}";
