@@ -255,14 +255,12 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->attached_only = 1;
 }
 
-/* The wall's largest friends-of-friends piece among the particles sel[i] != 0 (links
- * FOF_B_FACTOR × Δ, scaled per particle): clears sel for every other particle. */
-static int keep_largest_piece(const struct particles *p, const struct meas_geom *g,
+int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g,
                               const double *scale, unsigned char *sel, struct hv_error *err)
 {
   double *b = NULL;
   if (scale) {
-    b = hv_malloc((p->n + 1) * sizeof *b, "backwall linking lengths");
+    b = hv_malloc((p->n + 1) * sizeof *b, "linking lengths");
     for (size_t i = 0; i < p->n; i++) b[i] = FOF_B_FACTOR * g->spacing * scale[i];
   }
   struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .b_particle = b, .mask = sel,
@@ -273,7 +271,7 @@ static int keep_largest_piece(const struct particles *p, const struct meas_geom 
   free(b);
   if (rc == 0)
     for (size_t i = 0; i < p->n; i++)
-      if (sel[i] && fr.group[i] != 0) sel[i] = 0;   /* sorted by mass: 0 is the wall */
+      if (sel[i] && fr.group[i] != 0) sel[i] = 0;   /* sorted by mass: 0 is the largest */
   fof_result_free(&fr);
   return rc;
 }
@@ -318,7 +316,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     col = hv_calloc(p->n + 1, 1, "backwall selection");
     for (size_t i = 0; i < p->n; i++)
       col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
-    if (keep_largest_piece(p, g, par->scale, col, err)) {
+    if (meas_keep_largest_piece(p, g, par->scale, col, err)) {
       free(col);
       return -1;
     }

@@ -45,6 +45,13 @@ struct meas_geom {
   int half_model;    /* 1: only z >= 0 is simulated (symmetry plane z = 0) */
 };
 
+/* The largest friends-of-friends piece of a plate or wall among the particles with
+ * sel[i] != 0 (links FOF_B_FACTOR × g->spacing, × scale[i] per particle when scale is
+ * given; g->half_model joins mirror images): clears sel for every other particle.
+ * Used by the plate (attached_only) and the backwall's columns. */
+int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g,
+                            const double *scale, unsigned char *sel, struct hv_error *err);
+
 /* ---- Thick target: penetration depth L and cavity diameter D -------------------
  * Target particles (of g->body, not masked out, no faster than v_max) are binned in
  * axial slices of thickness `slice` from the original surface x0 downwards (+x).

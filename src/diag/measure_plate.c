@@ -22,7 +22,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "diag/fof.h"
 #include "diag/measure.h"
 
 #define PLATE_MAX_CELLS 4096  /* per side of the projection grid */
@@ -252,28 +251,13 @@ static unsigned char *select_plate(const struct particles *p, const struct meas_
   }
   *ndetached = 0;
   if (!par->attached_only || nsel == 0) return sel;
-  double *b = NULL;
-  if (par->scale) {
-    b = hv_malloc((p->n + 1) * sizeof *b, "plate linking lengths");
-    for (size_t i = 0; i < p->n; i++) b[i] = FOF_B_FACTOR * g->spacing * par->scale[i];
-  }
-  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .b_particle = b, .mask = sel,
-                          .nmat = 0, .half_model = g->half_model};
-  struct fof_result fr;
-  fof_result_init(&fr);
-  const int rc = fof_find(p, &fp, &fr, err);
-  free(b);
-  if (rc) {
-    fof_result_free(&fr);
+  if (meas_keep_largest_piece(p, g, par->scale, sel, err)) {
     free(sel);
     return NULL;
   }
-  for (size_t i = 0; i < p->n; i++)
-    if (sel[i] && fr.group[i] != 0) {   /* fragments are sorted by mass: 0 is the plate */
-      sel[i] = 0;
-      (*ndetached)++;
-    }
-  fof_result_free(&fr);
+  size_t after = 0;
+  for (size_t i = 0; i < p->n; i++) after += sel[i] != 0;
+  *ndetached = nsel - after;
   return sel;
 }
 
