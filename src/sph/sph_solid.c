@@ -2,7 +2,8 @@
  * fracture and contact between bodies.
  *
  * First pass, per particle i:
- *   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ                       (all neighbours)
+ *   dρᵢ/dt = ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇ᵢWᵢⱼ        (all neighbours; a condensed particle's
+ *                                              over condensed ones only, not gas)
  *   Lᵢ = Σⱼ (mⱼ/ρⱼ) (vⱼ − vᵢ) ⊗ ∇ᵢWᵢⱼ                       (same body only)
  *   Ṡᵢ from Lᵢ (Jaumann, strength.h); S* = return(Sⁿ + ½Δt Ṡ), S¹ = return(Sⁿ + Δt Ṡ)
  *   deviatoric heating S*:ε̇/ρ.
@@ -133,6 +134,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
            with friction keep the standard viscosity, as without it) */
         const int recon = strong && p->damage[i] < 1.0;
         const int32_t bi = body[i];
+        const int cond_i = mi->eos != EOS_IDEAL_GAS;
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
            reconstruction always (its limiter needs gradients exact for linear fields) */
@@ -148,6 +150,12 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              back to its reference density, but not stretch it beyond: contact carries
              no tension, in the density as in the forces */
           if (body[j] != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
+          /* a condensed particle's density follows condensed neighbours only: a gas
+             particle's volume mⱼ/ρⱼ is hundreds of times its own, and its velocity
+             would set the compression of a fragment flying through the gas (lone
+             aluminium at 4 km/s in nitrogen reached 2.4 ρ₀); the gas still pushes it
+             through the pressure force */
+          if (cond_i && mat[p->mat[j]].eos == EOS_IDEAL_GAS) continue;
           sum -= w * udx;
           if (strong && body[j] == bi) {
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
