@@ -228,7 +228,7 @@ int step_init(struct sim *s, struct hv_error *err)
   sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
   for (size_t i = 0; i < p->n; i++) p->de[i] = 0.0;
-  sph_forces(p, &s->grid, &s->sph, NULL);
+  sph_forces(p, &s->grid, &s->sph, NULL, s->mat);
   s->dt_prop = 0.0;
   s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
   if (s->tp.dt_init > 0) s->dt_limit = DT_INIT;
@@ -284,7 +284,7 @@ int step_advance(struct sim *s, struct hv_error *err)
   }
 
   /* 3–5. forces and energy rate at mid-step; velocity, coordinates, energy */
-  sph_forces(p, &s->grid, &s->sph, &s->cache);
+  sph_forces(p, &s->grid, &s->sph, &s->cache, s->mat);
   s->cache.valid = 0;
   s->cache.gradv_valid = 0;
 #pragma omp parallel for schedule(static)

@@ -73,10 +73,10 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 }
 
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
-                struct sph_cache *cache)
+                struct sph_cache *cache, const struct material *mat)
 {
   if (p->solid) {
-    sph_forces_solid(p, g, sp, cache);
+    sph_forces_solid(p, g, sp, cache, mat);
     return;
   }
   const size_t n = p->n, nall = p->n + p->n_ghost;

@@ -90,7 +90,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
  * vsig for the reals, from x, v, m, rho, p, cs, h (and S, R, body with solids);
  * uses the cache when it is valid for this grid (else searches). */
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
-                struct sph_cache *cache);
+                struct sph_cache *cache, const struct material *mat);
 /* The artificial stress R of every real strength particle from its p and S. */
 void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
                            const struct material *mat);
@@ -100,7 +100,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, struct sph_cache *cache,
                             const struct material *mat, double dt);
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache);
+                      const struct sph_params *sp, struct sph_cache *cache,
+                      const struct material *mat);
 /* Neighbour count of particle i (diagnostics, tests). */
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
 

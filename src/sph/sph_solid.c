@@ -227,7 +227,8 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 enum { TW_X = 0, TW_H = 3, TW_V = 4, TW_M = 7, TW_P = 8, TW_S = 9, TW_RHO = 15, TW_R = 16, TW = SPH_TW };
 
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache)
+                      const struct sph_params *sp, struct sph_cache *cache,
+                      const struct material *mat)
 {
   const size_t n = p->n;
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
@@ -319,6 +320,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           Ri_any |= Ri[k] != 0.0;
         }
         const int32_t bi = body[i];
+        const int gas_i = mat[p->mat[i]].eos == EOS_IDEAL_GAS;
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
@@ -339,7 +341,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
           }
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
-          double ax, ay, az, Pme, eas = 0.0;
+          double ax, ay, az, Pme, vw = 0.5, eas = 0.0;
           const int32_t bfj = bf[j];
           if ((bfj >> 1) == bi) {
             /* T = σᵢ/ρᵢ² + σⱼ/ρⱼ² (+ artificial stress), deviatoric part explicitly */
@@ -365,6 +367,22 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             ay = T[T_XY] * gx + (T[T_YY] - P) * gy + T[T_YZ] * gz;
             az = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
             Pme = Pi;
+          } else if (gas_i != (mat[p->mat[j]].eos == EOS_IDEAL_GAS)) {
+            /* gas against condensed material: the pressures weighed by volume,
+               (pᵢ + pⱼ)/(ρᵢρⱼ), compression only; the mass-weighted pᵢ/ρᵢ² + pⱼ/ρⱼ²
+               would weigh a metal neighbour's term by ρ_metal/ρ_gas (200 times) and
+               blow the gas off a plate at rest. The pair's whole work goes to the gas:
+               the condensed particle's density does not see the gas (pass 1), so
+               neither does its energy, and the drag's heat is the gas's bow shock */
+            const double rr = 1.0 / (rhoi * wj[TW_RHO]);
+            const double pic = pr[i] > 0 ? pr[i] : 0.0;
+            const double pjc = wj[TW_P] > 0 ? wj[TW_P] * wj[TW_RHO] * wj[TW_RHO] : 0.0;
+            const double P = (pic + pjc) * rr + visc;
+            ax = -P * gx;
+            ay = -P * gy;
+            az = -P * gz;
+            Pme = gas_i ? (pic + pjc) * rr : 0.0;
+            vw = gas_i ? 1.0 : 0.0;
           } else { /* contact: compression only */
             const double P = Pic + (wj[TW_P] > 0 ? wj[TW_P] : 0.0) + visc;
             ax = -P * gx;
@@ -376,7 +394,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           sx += mj * ax;
           sy += mj * ay;
           sz += mj * az;
-          se += mj * ((Pme + 0.5 * visc) * vdx * f + eas);
+          se += mj * ((Pme + vw * visc) * vdx * f + eas);
         }
         p->a[0][i] = sx;
         p->a[1][i] = sy;
