@@ -123,6 +123,17 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
     return -1;
   if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
   mr->peak_pressure = -HUGE_VAL;
+  if (cfg_get_quantity(c, "measure.pressure_radius", UNIT_LENGTH, &zero, 0.0, HUGE_VAL,
+                       &mr->p_radius, err) ||
+      cfg_get_quantity(c, "measure.pressure_depth", UNIT_LENGTH, &zero, 0.0, HUGE_VAL,
+                       &mr->p_depth, err))
+    return -1;
+  if ((mr->p_radius > 0 || mr->p_depth > 0) && mr->nbackwall == 0) {
+    char where[256];
+    const char *key = mr->p_radius > 0 ? "measure.pressure_radius" : "measure.pressure_depth";
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s is the backwall's centre pressure, but there is "
+                        "no measure.backwall", cfg_where(c, key, where, sizeof where), key);
+  }
   return cfg_get_quantity(c, "measure.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &mr->every, err);
 }
 
@@ -182,7 +193,9 @@ void measure_run_step(struct measure_run *mr, const struct sim *s)
   if (mr->nbackwall == 0) return;
   unsigned char *mask;
   struct meas_geom g = backwall_geom(mr, s, &mask);
-  double pc = measure_center_pressure(&s->p, &g, 2 * g.spacing, 2 * g.spacing, mask, NULL);
+  const double r0 = mr->p_radius > 0 ? mr->p_radius : 2 * g.spacing;
+  const double depth = mr->p_depth > 0 ? mr->p_depth : 2 * g.spacing;
+  double pc = measure_center_pressure(&s->p, &g, r0, depth, mask, NULL);
   free(mask);
   if (pc > mr->peak_pressure) mr->peak_pressure = pc;
 }

@@ -39,6 +39,9 @@ struct measure_run {
   int gas;
   int fragments;
   double peak_pressure;  /* [Pa] running maximum at the backwall's centre */
+  double p_radius, p_depth;  /* [m] the centre pressure's averaging disc and depth
+                                (measure.pressure_radius/_depth; 0: 2 x the finest
+                                backwall spacing) */
   double every;          /* [s] measurements also at these intervals between output times
                             (measure.every; 0: at output times only) */
   struct meas_table table;

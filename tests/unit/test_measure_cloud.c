@@ -12,7 +12,9 @@
  * Backwall: two flat-bottomed craters of known depth, damage inside a known radius: the
  * deepest crater and the damaged radius within one spacing; bulging adds to the depth;
  * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken).
- * Pressure: layers of known pressure at the front face.
+ * Pressure: layers of known pressure at the front face; through a case file, the
+ * averaging disc and depth of `measure.pressure_radius` / `pressure_depth` (default 2Δ
+ * each), and both refused without a backwall.
  */
 #include <math.h>
 #include <stdint.h>
@@ -20,8 +22,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
+#include "core/error.h"
 #include "diag/measure.h"
 #include "particles/particles.h"
+#include "run/measure_run.h"
+#include "run/run.h"
+#include "run/sim.h"
 #include "testlib.h"
 #include "testparticles.h"
 
@@ -290,8 +297,74 @@ static void test_backwall(void)
   particles_free(&p);
 }
 
+/* The backwall's peak centre pressure through a case file: a wall 2 mm thick of four
+ * layers of 0.5 mm, 1 GPa in its first layer within 1.6 mm of the axis, 0 elsewhere.
+ * measure_run_step averages over the configured disc and depth: by default (2Δ = 1 mm
+ * each: columns within 1 mm, the layers x_f to x_f + 2Δ inclusive, three) 1/3 GPa; pressure_depth 0.3 mm (the first
+ * layer) 1 GPa; pressure_radius 4 mm with it, the share of the first layer's particles
+ * within 1.6 mm among those within 4 mm, about (1.6/4)² = 0.16. Without a backwall the
+ * keys are refused (exit 2). */
+static double gauge_pressure(const char *keys, int *rc, char *msg, size_t nmsg)
+{
+  char text[1024];
+  snprintf(text, sizeof text,
+           "name: gauge\n"
+           "domain: {min: [-2 mm, -5 mm, 0], max: [4 mm, 5 mm, 5 mm], half_model: true}\n"
+           "bodies:\n"
+           "  - name: wall\n"
+           "    material: al-alloy\n"
+           "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [2 mm, 5 mm, 5 mm]}\n"
+           "    spacing: 0.5 mm\n"
+           "time: {end: 0}\n"
+           "measure: {%s}\n", keys);
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct sim s;
+  struct measure_run mr;
+  memset(&s, 0, sizeof s);
+  memset(&mr, 0, sizeof mr);
+  struct cfg *c = cfg_load_string(text, "gauge.yaml", &err);
+  *rc = !c || run_setup(&s, c, &err) || measure_run_read(&mr, &s, c, &err) ? err.code : 0;
+  snprintf(msg, nmsg, "%s", err.msg);
+  double pc = NAN;
+  if (!*rc) {
+    for (size_t i = 0; i < s.p.n; i++)
+      s.p.p[i] = s.p.x[0][i] < 0.5e-3 && hypot(s.p.x[1][i], s.p.x[2][i]) < 1.6e-3 ? 1e9 : 0.0;
+    measure_run_step(&mr, &s);
+    pc = mr.peak_pressure;
+    measure_run_free(&mr);
+    sim_free(&s);
+  }
+  if (c) cfg_free(c);
+  return pc;
+}
+
+static void test_gauge(void)
+{
+  int rc;
+  char msg[2048];
+  double pc = gauge_pressure("backwall: wall", &rc, msg, sizeof msg);
+  CHECK(rc == 0 && fabs(pc - 1e9 / 3) < 1e-6 * 1e9, "default 2Δ disc and depth: %.6g Pa, 1/3 "
+        "GPa (%s)", pc, rc ? msg : "ok");
+  pc = gauge_pressure("backwall: wall, pressure_depth: 0.3 mm", &rc, msg, sizeof msg);
+  CHECK(rc == 0 && fabs(pc - 1e9) < 1e-6 * 1e9, "pressure_depth 0.3 mm: the first layer, "
+        "%.6g Pa (1 GPa)", pc);
+  pc = gauge_pressure("backwall: wall, pressure_depth: 0.3 mm, pressure_radius: 4 mm", &rc,
+                      msg, sizeof msg);
+  CHECK(rc == 0 && fabs(pc / 1e9 - 0.16) < 0.25 * 0.16, "pressure_radius 4 mm: %.4g GPa, the "
+        "area share (1.6/4)^2 = 0.16 within 25 %%", pc / 1e9);
+  pc = gauge_pressure("pressure_radius: 4 mm", &rc, msg, sizeof msg);
+  CHECK(rc == HV_EXIT_INPUT && strstr(msg, "gauge.yaml") && strstr(msg, "pressure_radius") &&
+            strstr(msg, "no measure.backwall"),
+        "no backwall: refused, exit 2 (%d): %s", rc, msg);
+  pc = gauge_pressure("backwall: wall, pressure_depth: -1 mm", &rc, msg, sizeof msg);
+  CHECK(rc == HV_EXIT_INPUT && strstr(msg, "pressure_depth"), "a negative depth: refused (%d): "
+        "%s", rc, msg);
+}
+
 int main(void)
 {
+  test_gauge();
   test_debris();
   test_gas();
   test_backwall();
