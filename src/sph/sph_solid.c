@@ -368,20 +368,25 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
             az = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
             Pme = Pi;
           } else if (gas_i != (mat[p->mat[j]].eos == EOS_IDEAL_GAS)) {
-            /* gas against condensed material: the pressures weighed by volume,
-               (pᵢ + pⱼ)/(ρᵢρⱼ), compression only; the mass-weighted pᵢ/ρᵢ² + pⱼ/ρⱼ²
-               would weigh a metal neighbour's term by ρ_metal/ρ_gas (200 times) and
-               blow the gas off a plate at rest. The pair's whole work goes to the gas:
-               the condensed particle's density does not see the gas (pass 1), so
-               neither does its energy, and the drag's heat is the gas's bow shock */
+            /* gas against condensed material: the interface pressure is the gas's,
+               2 p̂_gas/(ρᵢρⱼ) (p̂ = max(p, 0)): a uniform gas against a wall at rest is in
+               balance (the wall particle's volume stands in for a gas particle's), and the
+               condensed side's stress does not enter — at an SPH free surface it is not the
+               traction there (a thin plate under in-plane compression has p and σ_xx of tens
+               of MPa at its face), and the soft gas sets the interface pressure: the
+               condensed side acts through its motion, which compresses the gas (its density
+               rate sums over every neighbour). The mass-weighted pᵢ/ρᵢ² + pⱼ/ρⱼ² blew the
+               gas off a plate at rest. The pair's whole work goes to the gas: the condensed
+               particle's density does not see the gas (pass 1), so neither does its
+               energy, and the drag's heat is the gas's bow shock */
             const double rr = 1.0 / (rhoi * wj[TW_RHO]);
-            const double pic = pr[i] > 0 ? pr[i] : 0.0;
-            const double pjc = wj[TW_P] > 0 ? wj[TW_P] * wj[TW_RHO] * wj[TW_RHO] : 0.0;
-            const double P = (pic + pjc) * rr + visc;
+            const double pg = gas_i ? pr[i] : wj[TW_P] * wj[TW_RHO] * wj[TW_RHO];
+            const double pgc = pg > 0.0 ? 2.0 * pg * rr : 0.0;
+            const double P = pgc + visc;
             ax = -P * gx;
             ay = -P * gy;
             az = -P * gz;
-            Pme = gas_i ? (pic + pjc) * rr : 0.0;
+            Pme = gas_i ? pgc : 0.0;
             vw = gas_i ? 1.0 : 0.0;
           } else { /* contact: compression only */
             const double P = Pic + (wj[TW_P] > 0 ? wj[TW_P] : 0.0) + visc;
