@@ -80,7 +80,8 @@ static const char *const REST =
     "time: {end: 5 us}\n";
 
 /* Sets REST up with the plate's density line, records the gas's initial pressure and
- * sound speed, runs to the end. Returns 0 (then free s and c), -1 when it did not set up. */
+ * sound speed, runs to the end. Returns 0 (then free s and c), -1 when it did not set up
+ * (sim_from_text has then failed its check). */
 static int run_rest(const char *density, const char *name, struct sim *s, struct cfg **c,
                     double *p1, double *cs1)
 {
