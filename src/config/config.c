@@ -578,10 +578,23 @@ void cfg_mark_used(struct cfg *c, const char *path)
 
 /* ---------------------------------------------------------------- --set */
 
+/* A key written with no value (`time:` and nothing below) takes --set's keys as an
+ * empty mapping or sequence would: YAML reads it as null, not as a value to keep. */
+static void null_to(struct cfg_node *p, enum cfg_kind kind)
+{
+  if (p->kind == CFG_SCALAR && p->plain && (!p->text || !p->text[0] || !strcmp(p->text, "~") ||
+                                            !strcmp(p->text, "null"))) {
+    free(p->text);
+    p->text = NULL;
+    p->kind = kind;
+  }
+}
+
 /* The child of p named by comp, created (kind `kind`) if missing; NULL if impossible. */
 static struct cfg_node *set_step(struct cfg_node *p, const struct path_comp *comp,
                                  enum cfg_kind kind, const char **why)
 {
+  null_to(p, comp->key ? CFG_MAP : CFG_SEQ);
   if (comp->key) {
     if (p->kind != CFG_MAP) {
       *why = "is not a mapping";
@@ -610,6 +623,7 @@ static int set_last(struct cfg_node *p, const struct path_comp *comp, struct cfg
                     const char **why)
 {
   int i;
+  null_to(p, comp->key ? CFG_MAP : CFG_SEQ);
   if (comp->key) {
     if (p->kind != CFG_MAP) {
       *why = "is not a mapping";

@@ -129,6 +129,19 @@ static void find_unused(const struct cfg *c, const struct cfg_node *n, const cha
       continue;
     }
     char where[512], hint[160] = "", line[1800];
+    if (ch->kind == CFG_SCALAR && path_asked(c, sub)) {
+      /* a known key whose value should be a mapping: `output:` left empty, or
+         `viscosity: 1` where alpha, beta... were asked for (not "unknown key") */
+      int null = !ch->text || (ch->plain && (!ch->text[0] || !strcmp(ch->text, "~") ||
+                                             !strcmp(ch->text, "null")));
+      snprintf(line, sizeof line, "%s: %s: %s%.200s%s",
+               cfg_where_line(c, ch->file, ch->line, where, sizeof where), sub,
+               null ? "the key has no value (its keys must be indented below it)"
+                    : "expected a mapping of keys below it, found '",
+               null ? "" : ch->text, null ? "" : "'");
+      unused_add(u, line);
+      continue;
+    }
     if (n->kind == CFG_MAP) suggest(c, n, path, n->keys[i], hint, sizeof hint);
     snprintf(line, sizeof line, "%s: unknown %s '%s'%s",
              cfg_where_line(c, ch->file, ch->line, where, sizeof where),

@@ -217,6 +217,21 @@ static void test_unknown_keys(void)
   hv_error_clear(&err);
   CHECK(cfg_check_unused(c, &err) == 0 && err.code == 0, "no unknown keys after cfg_mark_used");
   cfg_free(c);
+
+  /* a known key with a scalar, or nothing, where the program reads keys below it is
+     not an "unknown key 'output' (did you mean 'output'?)" */
+  c = cfg_load_string("sph:\n  viscosity: 1 kg\noutput:\ntime: {end: 1 us}\n", "case.yaml", &err);
+  CHECK(c != NULL, "loads");
+  if (!c) return;
+  cfg_get_quantity(c, "sph.viscosity.alpha", UNIT_NONE, &def, 0.0, HUGE_VAL, &v, &err);
+  cfg_get_quantity(c, "output.every", UNIT_TIME, &def, 0.0, HUGE_VAL, &v, &err);
+  cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
+  hv_error_clear(&err);
+  rc = cfg_check_unused(c, &err);
+  check_msg(rc, &err,
+            "case.yaml:2: sph.viscosity: expected a mapping of keys below it, found '1 kg'\n"
+            "case.yaml:3: output: the key has no value (its keys must be indented below it)");
+  cfg_free(c);
 }
 
 static void test_yaml_errors(void)
@@ -287,6 +302,14 @@ static void test_set(void)
         "index gap: %s", err.msg);
   rc = cfg_apply_set(c, "time.end.x=1", &err);
   check_msg(rc, &err, "--set time.end.x: 'time.end' is not a mapping");
+  cfg_free(c);
+  /* a key written with no value takes --set's keys as an empty mapping would */
+  c = cfg_load_string("time:\noutput: ~\n", "case.yaml", &err);
+  CHECK(c && cfg_apply_set(c, "time.end=2 us", &err) == 0 &&
+            cfg_apply_set(c, "output.every=1 us", &err) == 0 &&
+            cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0, HUGE_VAL, &v, &err) == 0 &&
+            v == 2e-6,
+        "--set into an empty 'time:' and 'output: ~' (%s)", err.msg);
   rc = cfg_apply_set(c, "a=[1, 2", &err);
   check_msg(rc, &err, "--set a: YAML syntax error: flow sequence without a closing bracket");
   hv_log_level = lvl;
