@@ -28,5 +28,5 @@ echo "  used_parameters.yaml  every parameter of the run, defaults included"
 echo
 echo "Final measurements (SI units):"
 awk -F, -v t="$(tail -n 1 "$out/measurements.csv" | cut -d, -f1)" \
-  '$1 == t && ($2 == "hole_diameter" || $2 ~ /^cloud_velocity_(mean|lead)$/ || $2 == "cloud_half_angle" || $2 == "fragments_count") {printf "  %-22s %-12s %.4g %s\n", $5, $2, $3, $4}' \
+  '$1 == t && ($2 == "hole_diameter" || $2 ~ /^cloud_velocity_(mean|lead)$/ || $2 ~ /^cloud_half_angle(_front)?$/ || $2 == "fragments_count") {printf "  %-22s %-12s %.4g %s\n", $5, $2, $3, $4}' \
   "$out/measurements.csv"

@@ -161,6 +161,7 @@ void meas_debris_defaults(struct meas_debris_params *par, const struct meas_geom
   par->x_limit = INFINITY;
   par->q_lead = 0.99;
   par->q_angle = 0.90;
+  par->front_fraction = 0.5;
   par->half_model = g->half_model;
   par->mask = NULL;
 }
@@ -196,14 +197,17 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
   memset(out, 0, sizeof *out);
   if (!(isfinite(par->x_rear) && isfinite(par->yc) && par->margin >= 0 &&
         isfinite(par->margin) && !isnan(par->x_limit) && par->q_lead > 0 && par->q_lead <= 1 &&
-        par->q_angle > 0 && par->q_angle <= 1))
+        par->q_angle > 0 && par->q_angle <= 1 && par->front_fraction >= 0 &&
+        par->front_fraction < 1))
     return hv_error_set(err, HV_EXIT_INPUT, "debris cloud measurement: x_rear, yc, margin "
-                        "(>= 0) must be finite and the quantiles in (0, 1]");
+                        "(>= 0) must be finite, the quantiles in (0, 1] and the front "
+                        "fraction in [0, 1)");
   const double xlo = par->x_rear + par->margin;
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++)
     if (taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit) n++;
   out->v_mean = out->v_lead = out->v_max = out->x_lead = out->half_angle = NAN;
+  out->half_angle_front = NAN;
   out->gap = par->x_limit - par->x_rear;
   if (!n) return 0;
   struct wval *vx = hv_malloc(n * sizeof *vx, "cloud"), *xs = hv_malloc(n * sizeof *xs, "cloud");
@@ -228,6 +232,18 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
   out->v_max = vmax;
   out->v_lead = wquantile(vx, n, par->q_lead);
   out->x_lead = wquantile(xs, n, par->q_lead);
+  /* the front, before th is sorted (it is still in particle order): vx, done with,
+     takes the front's angles */
+  const double dx_front = par->front_fraction * out->x_lead;
+  size_t nf = 0;
+  k = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (!(taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit))
+      continue;
+    if (p->x[0][i] - par->x_rear >= dx_front) vx[nf++] = th[k];
+    k++;
+  }
+  out->half_angle_front = nf ? wquantile(vx, nf, par->q_angle) : (double)NAN;
   out->half_angle = wquantile(th, n, par->q_angle);
   free(vx);
   free(xs);

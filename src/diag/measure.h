@@ -176,6 +176,10 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
  * half_angle: the q_angle (0.90) mass quantile of θ_i = atan2(ρ_i, x_i − x_rear), the
  *    angle from the axis seen from the point (x_rear, yc, 0) on the rear face: the cone
  *    about the axis that holds 90 % of the cloud's mass.
+ * half_angle_front: the same quantile over the cloud's front only, the particles with
+ *    x_i − x_rear >= front_fraction (0.5) x_lead: the main debris bubble seen from the
+ *    impact point, without the ejecta thrown off the hole's rim close to the plate
+ *    (which the 90 % cone takes in; docs/measurements.md).
  * An empty cloud gives count 0 and NaN for the velocities, x_lead and the angle. */
 struct meas_debris_params {
   int body;          /* body of the cloud's particles (< 0: any) */
@@ -185,6 +189,7 @@ struct meas_debris_params {
   double x_limit;    /* [m] cloud ends before x_limit (default INFINITY) */
   double q_lead;     /* leading-edge mass quantile (default 0.99) */
   double q_angle;    /* spray-cone mass quantile (default 0.90) */
+  double front_fraction; /* the front: x − x_rear >= front_fraction x_lead (default 0.5) */
   int half_model;
   const unsigned char *mask;  /* optional [p->n] */
 };
@@ -196,6 +201,7 @@ struct meas_debris {
   double v_max;       /* [m/s] */
   double x_lead;      /* [m] */
   double half_angle;  /* [rad] */
+  double half_angle_front; /* [rad] the same over the cloud's front */
   double gap;         /* [m] x_limit − x_rear: how far the leading edge can go (INFINITY:
                          no next plate) */
 };

@@ -138,6 +138,7 @@ void meas_table_add_debris(struct meas_table *t, double time, const char *object
   meas_table_add(t, time, "cloud_velocity_max", r->v_max, "m/s", object);
   meas_table_add(t, time, "cloud_lead_distance", r->x_lead, "m", object);
   meas_table_add(t, time, "cloud_half_angle", r->half_angle * RAD2DEG, "deg", object);
+  meas_table_add(t, time, "cloud_half_angle_front", r->half_angle_front * RAD2DEG, "deg", object);
   meas_table_add(t, time, "cloud_gap", r->gap, "m", object);
 }
 

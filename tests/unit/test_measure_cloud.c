@@ -6,6 +6,8 @@
  * from the axis and known velocities v_k = 1000 + 10 k m/s: mass mean 1495 m/s, the 99 %
  * quantile 1980 m/s, the 90 % cone 36°; particles in front of the margin or beyond the
  * next plate, and particles of other bodies, do not count.
+ * Front: a bubble and a ring of rim ejecta: the cone over the cloud's front leaves the
+ * ring out (27° against 63.4°).
  * Gas: a lattice at density ρ₀ (with 2 % noise) compressed to 2 ρ₀ inside a hemisphere of
  * radius R about the entry point: the front is found at R within one spacing, axially,
  * radially and in distance.
@@ -96,6 +98,47 @@ static void test_debris(void)
   hv_error_clear(&err);
   CHECK(measure_debris(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "quantile 1.5: an error (%s)", err.msg);
+  particles_free(&p);
+}
+
+/* A bubble and the ejecta of the hole's rim: ten particles of 7 mass units 20 mm behind
+ * the rear face at 3°, 6°, ..., 30° from the axis, and a ring of 30 units 2 mm behind it
+ * at 4 mm from the axis (63.4°). The cone of 90 % of the mass takes in the ring (63.4°);
+ * the front (beyond half the leading-edge distance, 20 mm) is the ten particles alone,
+ * whose 90 % cone is 27°. */
+static void test_debris_front(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double x0 = 0.0, th = 2 * S, xr = x0 + th;
+  for (int k = 1; k <= 10; k++) {
+    const double a = 3.0 * k * DEG, phi = HV_MEAS_PI * (k % 4) / 6.0;
+    add_particle(&p, xr + 0.02, 0.02 * tan(a) * cos(phi), 0.02 * tan(a) * sin(phi), 7.0, 1);
+  }
+  for (int k = 0; k < 6; k++) {
+    const double phi = HV_MEAS_PI * k / 5.0;
+    add_particle(&p, xr + 0.002, 0.004 * cos(phi), 0.004 * sin(phi), 5.0, 1);
+  }
+  struct meas_geom g = {.body = 0, .x0 = x0, .thickness = th, .yc = 0.0, .spacing = S,
+                        .half_model = 1};
+  struct meas_debris_params par;
+  meas_debris_defaults(&par, &g);
+  par.margin = 0.001;
+  struct meas_debris r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == 16, "front cloud: 16 particles");
+  CHECK_CLOSE(r.x_lead, 0.02, 1e-15, "leading edge 20 mm behind the face");
+  CHECK_CLOSE(r.half_angle / DEG, atan2(4.0, 2.0) / DEG, 1e-9,
+              "90 % cone over the whole cloud takes in the rim's ring (63.4°)");
+  CHECK_CLOSE(r.half_angle_front / DEG, 27.0, 1e-9, "90 % cone over the front (x >= x_lead/2): 27°");
+  par.front_fraction = 0.0;
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && fabs(r.half_angle_front - r.half_angle) < 1e-15,
+        "front fraction 0: the whole cloud");
+  par.front_fraction = 1.0;
+  hv_error_clear(&err);
+  CHECK(measure_debris(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "front fraction 1: an error (%s)", err.msg);
   particles_free(&p);
 }
 
@@ -366,6 +409,7 @@ int main(void)
 {
   test_gauge();
   test_debris();
+  test_debris_front();
   test_gas();
   test_backwall();
   return test_finish();

@@ -96,6 +96,7 @@ static void test_measurement_rows(void)
   struct meas_plate pl = {.perforated = 1, .d_circle = 0.0105, .d_equiv = 0.011, .area = 9e-5};
   struct meas_debris db = {.count = 10, .m = 1e-3, .v_mean = 3000, .v_lead = 6000,
                            .v_max = 6500, .x_lead = 0.05, .half_angle = HV_MEAS_PI / 6,
+                           .half_angle_front = HV_MEAS_PI / 12,
                            .gap = 0.2};
   struct meas_backwall bw = {.crater_depth = 0.004, .r_damage = 0.15};
   struct meas_gas_front gf = {.n_shocked = 5, .x_axial = 0.03, .r_radial = 0.02, .r_max = 0.031};
@@ -111,7 +112,7 @@ static void test_measurement_rows(void)
     meas_table_add_gas(&t, 1e-4, "nitrogen", &gf);
     meas_table_add_fragments(&t, 1e-4, "all", &fo);
   }
-  CHECK(t.n == 4 + 6 + 8 + 5 + 4 + 6, "one row per quantity and object: %zu", t.n);
+  CHECK(t.n == 4 + 6 + 9 + 5 + 4 + 6, "one row per quantity and object: %zu", t.n);
   CHECK(count_rows(&t, "penetration_depth", "target") == 1 &&
             count_rows(&t, "hole_diameter", "bumper") == 1 &&
             count_rows(&t, "cloud_half_angle", "cloud1") == 1 &&
@@ -123,6 +124,8 @@ static void test_measurement_rows(void)
     const struct meas_row *r = &t.rows[k];
     if (strcmp(r->quantity, "cloud_half_angle") == 0)
       CHECK(fabs(r->value - 30.0) < 1e-12 && strcmp(r->unit, "deg") == 0, "angle in degrees");
+    if (strcmp(r->quantity, "cloud_half_angle_front") == 0)
+      CHECK(fabs(r->value - 15.0) < 1e-12 && strcmp(r->unit, "deg") == 0, "front's angle in degrees");
     if (strcmp(r->quantity, "fragment_mass_largest") == 0)
       CHECK(r->value == 0.5, "largest fragment 0.5 kg");
     if (strcmp(r->quantity, "fragment_mass_second") == 0)
