@@ -212,6 +212,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
   if (!n) return 0;
   struct wval *vx = hv_malloc(n * sizeof *vx, "cloud"), *xs = hv_malloc(n * sizeof *xs, "cloud");
   struct wval *th = hv_malloc(n * sizeof *th, "cloud");
+  double *dx = hv_malloc(n * sizeof *dx, "cloud"); /* x − x_rear, in particle order */
   double m = 0.0, mv = 0.0, vmax = -INFINITY;
   size_t k = 0;
   for (size_t i = 0; i < p->n; i++) {
@@ -224,6 +225,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
     vx[k] = (struct wval){v, mi};
     xs[k] = (struct wval){dxr, mi};
     th[k] = (struct wval){atan2(radial(p, i, par->yc), dxr), mi};
+    dx[k] = dxr;
     k++;
   }
   out->count = n;
@@ -232,22 +234,17 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
   out->v_max = vmax;
   out->v_lead = wquantile(vx, n, par->q_lead);
   out->x_lead = wquantile(xs, n, par->q_lead);
-  /* the front, before th is sorted (it is still in particle order): vx, done with,
-     takes the front's angles */
-  const double dx_front = par->front_fraction * out->x_lead;
+  /* the front, before th is sorted (it is still in particle order, as dx): vx, done
+     with, takes the front's angles */
   size_t nf = 0;
-  k = 0;
-  for (size_t i = 0; i < p->n; i++) {
-    if (!(taken(p, i, par->body, par->mask) && p->x[0][i] > xlo && p->x[0][i] < par->x_limit))
-      continue;
-    if (p->x[0][i] - par->x_rear >= dx_front) vx[nf++] = th[k];
-    k++;
-  }
+  for (k = 0; k < n; k++)
+    if (dx[k] >= par->front_fraction * out->x_lead) vx[nf++] = th[k];
   out->half_angle_front = nf ? wquantile(vx, nf, par->q_angle) : (double)NAN;
   out->half_angle = wquantile(th, n, par->q_angle);
   free(vx);
   free(xs);
   free(th);
+  free(dx);
   return 0;
 }
 
