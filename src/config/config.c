@@ -582,8 +582,7 @@ void cfg_mark_used(struct cfg *c, const char *path)
  * empty mapping or sequence would: YAML reads it as null, not as a value to keep. */
 static void null_to(struct cfg_node *p, enum cfg_kind kind)
 {
-  if (p->kind == CFG_SCALAR && p->plain && (!p->text || !p->text[0] || !strcmp(p->text, "~") ||
-                                            !strcmp(p->text, "null"))) {
+  if (cfg_scalar_is_null(p)) {
     free(p->text);
     p->text = NULL;
     p->kind = kind;

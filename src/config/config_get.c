@@ -128,6 +128,13 @@ static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node *
                       cfg_where_line(c, deepest->file, deepest->line, where, sizeof where), path);
 }
 
+int cfg_scalar_is_null(const struct cfg_node *n)
+{
+  return n->kind == CFG_SCALAR &&
+         (!n->text || (n->plain && (!n->text[0] || !strcmp(n->text, "~") ||
+                                    !strcmp(n->text, "null"))));
+}
+
 /* The text of a scalar node that has a value. */
 static const char *scalar_text(struct cfg *c, const struct cfg_node *n, const char *path,
                                struct hv_error *err)
@@ -136,7 +143,7 @@ static const char *scalar_text(struct cfg *c, const struct cfg_node *n, const ch
     value_error(c, n, path, err, "expected a single value, found %s", cfg_kind_name(n->kind));
     return NULL;
   }
-  if (n->plain && (!n->text[0] || !strcmp(n->text, "~") || !strcmp(n->text, "null"))) {
+  if (cfg_scalar_is_null(n)) {
     value_error(c, n, path, err, "the key has no value");
     return NULL;
   }

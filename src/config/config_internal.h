@@ -79,6 +79,8 @@ struct cfg_node *cfg_lookup(struct cfg *c, const char *path, struct cfg_node **d
 /* "file:line" of a node: `file` is the node's own (grafts) or NULL for the document's;
  * "--set" for CFG_LINE_SET, just the file for line 0. Returns buf. */
 const char *cfg_where_line(const struct cfg *c, const char *file, int line, char *buf, size_t len);
+/* A scalar written without a value: empty, `~` or `null`, unquoted (YAML's null). */
+int cfg_scalar_is_null(const struct cfg_node *n);
 
 /* config_get.c: a YAML double-quoted string (escapes ", \ and control characters);
  * malloc'ed. */

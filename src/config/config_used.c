@@ -132,8 +132,7 @@ static void find_unused(const struct cfg *c, const struct cfg_node *n, const cha
     if (ch->kind == CFG_SCALAR && path_asked(c, sub)) {
       /* a known key whose value should be a mapping: `output:` left empty, or
          `viscosity: 1` where alpha, beta... were asked for (not "unknown key") */
-      int null = !ch->text || (ch->plain && (!ch->text[0] || !strcmp(ch->text, "~") ||
-                                             !strcmp(ch->text, "null")));
+      const int null = cfg_scalar_is_null(ch);
       snprintf(line, sizeof line, "%s: %s: %s%.200s%s",
                cfg_where_line(c, ch->file, ch->line, where, sizeof where), sub,
                null ? "the key has no value (its keys must be indented below it)"
