@@ -31,7 +31,7 @@ static void usage(FILE *f)
           "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"
           "  hvsph materials [NAME]\n"
           "      the material library: every entry, or one entry's parameters with units\n"
-          "  hvsph render SNAPSHOT.csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
+          "  hvsph render SNAPSHOT.vtu|csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
           "      simulated flash radiograph or particle picture (hvsph render --help)\n"
           "  hvsph measure RUNDIR [--case FILE]\n"
           "      take a run's measurements again from its particle snapshots\n"

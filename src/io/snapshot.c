@@ -214,3 +214,12 @@ int io_list_snapshots(const char *dir, const char *ext, int **nums)
   if (n) qsort(*nums, (size_t)n, sizeof **nums, int_cmp);
   return n;
 }
+
+const char *io_list_readable_snapshots(const char *dir, int **nums, int *n)
+{
+  *n = io_list_snapshots(dir, "csv", nums);
+  if (*n != 0) return "csv";
+  free(*nums);
+  *n = io_list_snapshots(dir, "vtu", nums);
+  return "vtu";
+}

@@ -45,6 +45,22 @@ int io_write_particles_csv(const char *path, struct particles *p,
 int io_read_particles_csv(const char *path, struct particles *p, double *time,
                           struct hv_error *err);
 
+/* Reads a file written by io_write_vtu the same way: arrays matched by name against
+ * the fields (positions from Points), unknown arrays ignored, missing fields zero;
+ * *time [s] from FieldData TIME (NaN when absent). Reads only hvsph's own form
+ * (UInt64 headers, appended raw data in this machine's byte order); anything else,
+ * a block whose byte count does not match NumberOfPoints, or a file cut short is an
+ * error naming the file and the array (HV_EXIT_INPUT), and p->n is restored. */
+int io_read_particles_vtu(const char *path, struct particles *p, double *time,
+                          struct hv_error *err);
+
+/* io_read_particles_vtu for a path ending in .vtu, io_read_particles_csv otherwise. */
+int io_read_particles(const char *path, struct particles *p, double *time, struct hv_error *err);
+
+/* The material names of a snapshot of either kind (its "materials 0=... 1=..." comment)
+ * into names[index] (max entries); returns 1 + the largest index found, 0 if none. */
+int io_read_material_names(const char *path, char names[][64], int max);
+
 /* ParaView collection: rewrites the whole .pvd listing every (times[k] [s],
  * files[k]) so far. File names are written as given; ParaView resolves them
  * relative to the .pvd's folder. */
@@ -65,5 +81,10 @@ int io_write_table_csv(const char *path, const char *const *cols, int ncols, con
  * returns the count, or -1 when dir cannot be read. */
 int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err);
 int io_list_snapshots(const char *dir, const char *ext, int **nums);
+/* The snapshots a run folder can be re-read from: its particles_NNNNN.csv files when
+ * it has any (the same values as its VTU files, and the form tools read), otherwise
+ * its particles_NNNNN.vtu; *n as io_list_snapshots returns; returns the extension
+ * ("csv" or "vtu"). */
+const char *io_list_readable_snapshots(const char *dir, int **nums, int *n);
 
 #endif

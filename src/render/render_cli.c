@@ -1,7 +1,7 @@
-/* render_cli.c — `hvsph render SNAPSHOT.csv -o FILE.png [options]`.
+/* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`.
  *
- * Reads a particle CSV snapshot (io_read_particles_csv; the time from its first comment
- * line, the material names from its "# materials" line), renders it (render_png) and
+ * Reads a particle snapshot, CSV or VTU (io_read_particles; the time from its comment
+ * line or FieldData, the material names from its "materials" comment), renders it (render_png) and
  * writes the PNG whole or not at all. Lengths and colour ranges may carry units
  * ("-50mm", "6.2km/s"); bare numbers are SI. Exit status: 0 written, 1 bad command line,
  * 2 bad or missing input (or an output folder that cannot take the file), 3 write failure.
@@ -21,7 +21,7 @@
 static void render_usage(FILE *f)
 {
   fprintf(f,
-          "usage: hvsph render SNAPSHOT.csv -o FILE.png [options]\n"
+          "usage: hvsph render SNAPSHOT.vtu|SNAPSHOT.csv -o FILE.png [options]\n"
           "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
           "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
           "                                and y up (along z), x and z (along y), y and z (along x)\n"
@@ -81,27 +81,6 @@ static int pick(const char *s, const char *const *names, int n)
 }
 
 /* Material names from the snapshot's "# materials 0=a 1=b" line; returns their count. */
-static int read_material_names(const char *path, char names[][64], int max)
-{
-  FILE *f = fopen(path, "r");
-  if (!f) return 0;
-  char line[8192];
-  int n = 0;
-  while (fgets(line, sizeof line, f) && line[0] == '#') {
-    if (strncmp(line, "# materials", 11) != 0) continue;
-    for (char *t = strtok(line + 11, " \t\r\n"); t; t = strtok(NULL, " \t\r\n")) {
-      char *eq = strchr(t, '=');
-      char *end;
-      long k = eq ? strtol(t, &end, 10) : -1;
-      if (!eq || end != eq || k < 0 || k >= max) continue;
-      snprintf(names[k], 64, "%s", eq + 1);
-      if (k + 1 > n) n = (int)k + 1;
-    }
-  }
-  fclose(f);
-  return n;
-}
-
 static int fail_usage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 static int fail_usage(const char *fmt, ...)
 {
@@ -192,24 +171,17 @@ int render_main(int argc, char **argv)
   if (o.mode == RENDER_PARTICLES && o.axis == 2 && o.mirror == 1)
     fprintf(stderr, "hvsph render: note: particles seen along z are not mirrored (the view "
                     "shows the cut at z = 0)\n");
-  size_t len = strlen(in);
-  if (len > 4 && !strcmp(in + len - 4, ".vtu")) {
-    fprintf(stderr, "hvsph render: '%s': VTU snapshots are not read yet; render the CSV "
-                    "snapshot (output.csv: true in the case file)\n", in);
-    return HV_EXIT_INPUT;
-  }
-
   struct hv_error err;
   hv_error_clear(&err);
   struct particles p;
   particles_init(&p);
   double t = NAN;
-  int rc = io_read_particles_csv(in, &p, &t, &err);
+  int rc = io_read_particles(in, &p, &t, &err);
   if (!rc && p.n == 0) rc = hv_error_set(&err, HV_EXIT_INPUT, "'%s' holds no particles", in);
   if (!rc) {
     char names[RENDER_MAX_MATERIALS][64] = {{0}};
     const char *ptr[RENDER_MAX_MATERIALS];
-    int nm = read_material_names(in, names, RENDER_MAX_MATERIALS);
+    int nm = io_read_material_names(in, names, RENDER_MAX_MATERIALS);
     for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
     struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
     rc = render_png(out, &p, &o, &info, &err);

@@ -5,7 +5,7 @@
  * change (docs/measurements.md), or a run was made without them, this command
  * re-reads the run's own used_parameters.yaml (every value it ran with), rebuilds the
  * bodies' geometry from it (original faces, thicknesses, spacings), loads every
- * particles_NNNNN.csv of the folder in turn and writes measurements.csv and the
+ * particles_NNNNN.csv (or, when it has none, particles_NNNNN.vtu) of the folder in turn and writes measurements.csv and the
  * fragments_NNNNN.csv files anew (each to a temporary name, then renamed).
  *
  * The backwall's peak pressure at the centre is a running maximum over every time
@@ -30,7 +30,7 @@ static void usage(FILE *f)
 {
   fprintf(f, "usage: hvsph measure RUNDIR [--case FILE] [--quiet]\n"
              "  takes the measurements of a run again from its particle snapshots\n"
-             "  (RUNDIR/particles_NNNNN.csv, written with output.csv: true) and rewrites\n"
+             "  (RUNDIR/particles_NNNNN.csv, or its .vtu files when it has no CSV) and rewrites\n"
              "  RUNDIR/measurements.csv and fragments_NNNNN.csv; the case is\n"
              "  RUNDIR/used_parameters.yaml unless --case names another (docs/measurements.md)\n");
 }
@@ -86,14 +86,14 @@ int remeasure_main(int argc, char **argv)
                  "measure (docs/case-files.md)", casefile);
     goto fail;
   }
-  const int ns = io_list_snapshots(dir, "csv", &snaps);
+  int ns;
+  const char *ext = io_list_readable_snapshots(dir, &snaps, &ns);
   if (ns < 0) {
     hv_error_set(&err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
     goto fail;
   }
   if (ns == 0) {
-    hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv snapshots (run the case with "
-                 "output.csv: true)", dir);
+    hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv or .vtu snapshots", dir);
     goto fail;
   }
   char mpath[4400];
@@ -111,10 +111,10 @@ int remeasure_main(int argc, char **argv)
   int measured = 0;
   for (int j = 0; j < ns; j++) {
     const int k = snaps[j];
-    snprintf(spath, sizeof spath, "%s/particles_%05d.csv", dir, k);
+    snprintf(spath, sizeof spath, "%s/particles_%05d.%s", dir, k, ext);
     s.p.n = 0;
     double t = NAN;
-    if ((nt < 0 || k < nt) && io_read_particles_csv(spath, &s.p, &t, &err)) goto fail;
+    if ((nt < 0 || k < nt) && io_read_particles(spath, &s.p, &t, &err)) goto fail;
     if (nt >= 0 && (k >= nt || !(fabs(t - times[k]) <= 1e-9 * fmax(fabs(t), 1e-30)))) {
       hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
               "folder): skipped", spath);

@@ -121,13 +121,13 @@ static long particles_of(const char *outdir)
   return v;
 }
 
-/* The last particles_NNNNN.csv of a run folder, or "" */
+/* The last snapshot of a run folder (CSV, or VTU when it wrote none), or "" */
 static void last_snapshot(const char *dir, char *out, size_t len)
 {
-  int *nums = NULL;
-  const int n = io_list_snapshots(dir, "csv", &nums);
+  int *nums = NULL, n;
+  const char *ext = io_list_readable_snapshots(dir, &nums, &n);
   out[0] = 0;
-  if (n > 0) snprintf(out, len, "%s/particles_%05d.csv", dir, nums[n - 1]);
+  if (n > 0) snprintf(out, len, "%s/particles_%05d.%s", dir, nums[n - 1], ext);
   free(nums);
 }
 
@@ -140,7 +140,7 @@ static int render_final(const char *dir, const char *png, struct hv_error *err)
   struct particles p;
   particles_init(&p);
   double t = NAN;
-  int rc = io_read_particles_csv(snap, &p, &t, err);
+  int rc = io_read_particles(snap, &p, &t, err);
   if (!rc) {
     struct render_options o;
     render_options_default(&o);

@@ -1,7 +1,8 @@
 /* test_io.c — snapshot and table writers, the CSV reader, atomic files, mkdir -p.
  *
  * Round trips are checked bit for bit (memcmp), the VTU is parsed minimally here
- * (header, appended block sizes, first point), and failures (abort, unwritable
+ * (header, appended block sizes, first point) and read back by io_read_particles_vtu
+ * (bit for bit; files cut short or altered are refused), and failures (abort, unwritable
  * target, missing folder, a full disk through /dev/full) must leave an earlier
  * file of the same name intact and no temporary file behind.
  */
@@ -222,6 +223,106 @@ static void test_vtu(struct particles *p)
   free(text);
 }
 
+/* Writes a copy of src with its first occurrence of `from` replaced by `to` (same
+ * length, so offsets stay) or, with cut > 0, only its first cut bytes. */
+static const char *vtu_variant(const char *src, const char *name, const char *from,
+                               const char *to, size_t cut)
+{
+  size_t len = 0;
+  char *text = test_slurp(src, &len);
+  const char *out = path_in(name);
+  FILE *f = fopen(out, "wb");
+  if (!text || !f) {
+    free(text);
+    if (f) fclose(f);
+    return out;
+  }
+  char *at = from ? strstr(text, from) : NULL;
+  if (at) memcpy(at, to, strlen(to));
+  fwrite(text, 1, cut ? cut : len, f);
+  fclose(f);
+  free(text);
+  return out;
+}
+
+static void test_vtu_read(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct snapshot_meta m = meta();
+  const char *path = path_in("particles_000002.vtu");
+  CHECK(io_write_vtu(path, p, &m, &err) == 0, "VTU written: %s", err.msg);
+  struct particles q;
+  particles_init(&q);
+  double t = 0.0;
+  CHECK(io_read_particles_vtu(path, &q, &t, &err) == 0, "VTU read: %s", err.msg);
+  CHECK(q.n == NP, "read %zu particles of %d", q.n, NP);
+  CHECK(memcmp(&t, &m.time, sizeof t) == 0, "time read back exactly (%.17g)", t);
+  const char *bad = "";
+  CHECK(q.n == NP && same_out_fields(p, &q, &bad), "every output value bitwise equal (%s)", bad);
+  CHECK(q.n == NP && q.drho[3] == 0.0 && q.a[1][3] == 0.0, "non-output fields stay zero");
+  CHECK(q.n == NP && signbit(q.e[5]) && q.p[7] > 0.0, "-0 and subnormal survive");
+  CHECK(io_read_particles(path, &q, NULL, &err) == 0 && q.n == 2 * NP &&
+            q.x[1][NP + 3] == p->x[1][3] && q.id[NP + 99] == p->id[99],
+        "io_read_particles takes .vtu and appends: %s", err.msg);
+  char names[8][64] = {{0}};
+  int nm = io_read_material_names(path, names, 8);
+  CHECK(nm == 3 && !strcmp(names[0], "al-2024") && !strcmp(names[1], "steel_4340") &&
+            !strcmp(names[2], "W-_alloy"), "material names from the VTU comment (%d: %s %s %s)",
+        nm, names[0], names[1], names[2]);
+  particles_free(&q);
+
+  /* a solid store: S (6 components) and damage come back, and enable the solid arrays */
+  struct particles ps;
+  particles_init(&ps);
+  particles_enable_solid(&ps);
+  size_t i0 = particles_add(&ps, 3);
+  for (size_t k = 0; k < 3; k++) {
+    ps.id[i0 + k] = (int64_t)k;
+    ps.x[0][i0 + k] = (double)k;
+    ps.damage[i0 + k] = 0.25 * (double)k;
+    for (int c = 0; c < 6; c++) ps.S[c][i0 + k] = 1e6 * (double)(c + 1) + (double)k;
+  }
+  const char *spath = path_in("solid.vtu");
+  particles_init(&q);
+  int ok = io_write_vtu(spath, &ps, NULL, &err) == 0 &&
+           io_read_particles_vtu(spath, &q, &t, &err) == 0;
+  CHECK(ok && q.solid && q.n == 3 && q.S[4][2] == 5e6 + 2 && q.damage[1] == 0.25 &&
+            q.x[0][2] == 2.0 && t == 0.0,
+        "solid fields read back into a solid store: %s", err.msg);
+  particles_free(&q);
+  particles_free(&ps);
+
+  /* bad files: one message naming the file (and the array), nothing appended */
+  size_t len = 0;
+  char *text = test_slurp(path, &len);
+  free(text);
+  particles_init(&q);
+  const char *cut = vtu_variant(path, "cut.vtu", NULL, NULL, len - 200);
+  CHECK(io_read_particles_vtu(cut, &q, NULL, &err) != 0 && strstr(err.msg, "cut.vtu") &&
+            strstr(err.msg, "cut short") && err.code == HV_EXIT_INPUT && q.n == 0,
+        "file cut short: %s", err.msg);
+  const char *nox = vtu_variant(path, "nox.vtu", "Name=\"x\"", "Name=\"q\"", 0);
+  CHECK(io_read_particles_vtu(nox, &q, NULL, &err) != 0 && strstr(err.msg, "'x'") && q.n == 0,
+        "no positions: %s", err.msg);
+  const char *wrong = vtu_variant(path, "type.vtu", "type=\"Int64\" Name=\"id\"",
+                                  "type=\"Int32\" Name=\"id\"", 0);
+  CHECK(io_read_particles_vtu(wrong, &q, NULL, &err) != 0 && strstr(err.msg, "'id'") &&
+            strstr(err.msg, "Int32") && q.n == 0, "wrong type: %s", err.msg);
+  const char *np = vtu_variant(path, "np.vtu", "NumberOfPoints=\"100\"",
+                               "NumberOfPoints=\"101\"", 0);
+  CHECK(io_read_particles_vtu(np, &q, NULL, &err) != 0 && strstr(err.msg, "101 points") &&
+            q.n == 0, "point count not matching the blocks: %s", err.msg);
+  const char *be = vtu_variant(path, "be.vtu", "byte_order=\"LittleEndian\"",
+                               "byte_order=\"BigEndianxxx\"", 0);
+  CHECK(io_read_particles_vtu(be, &q, NULL, &err) != 0 && strstr(err.msg, "byte order"),
+        "other byte order: %s", err.msg);
+  const char *csv = test_write_file("io_notvtu.vtu", "id,x,y,z\n1,0,0,0\n");
+  CHECK(io_read_particles_vtu(csv, &q, NULL, &err) != 0 && strstr(err.msg, "io_notvtu.vtu") &&
+            q.n == 0, "not a VTU file: %s", err.msg);
+  particles_free(&q);
+}
+
 static void test_pvd(void)
 {
   struct hv_error err;
@@ -415,6 +516,7 @@ int main(void)
   test_csv(&p);
   test_csv_errors();
   test_vtu(&p);
+  test_vtu_read(&p);
   test_pvd();
   test_table();
   test_atomic(&p);

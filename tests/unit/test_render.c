@@ -367,6 +367,9 @@ static void test_command(void)
   CHECK(img && w == 800 && h == 500, "a failed render leaves the previous file whole");
   free(img);
 
+  /* a CSV snapshot named .vtu: read as VTU and refused */
+  snprintf(args, sizeof args, "cp '%s' '%s/notvtu.vtu'", scene, dir);
+  CHECK(system(args) == 0, "copy %s", args);
   static const struct {
     const char *args;
     int status;
@@ -387,7 +390,7 @@ static void test_command(void)
       {"SCENE -o DIR/x.png --frobnicate", 1, "unknown option"},
       {"SCENE -o DIR/x.png --mode particles --color velocity --range 5,1", 1, "--range"},
       {"SCENE -o DIR/no/such/folder/x.png", 2, "cannot create"},
-      {"DIR/snap.vtu -o DIR/x.png", 2, "VTU"},
+      {"DIR/notvtu.vtu -o DIR/x.png", 2, "not a VTU snapshot written by hvsph"},
       {"DIR/radiograph_y.png -o DIR/x.png", 2, "radiograph_y.png"},
   };
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {

@@ -7,7 +7,8 @@
  * diameters; the radiograph PNG and validation.md exist; `hvsph measure` on the run's
  * folder rewrites measurements.csv with the same rows (the snapshots are written
  * round-trip exact), skipping a stale snapshot of an earlier run left in the folder,
- * and refuses a folder without snapshots or a case (exit 2). Last, on a hand-written
+ * and the same rows from a folder holding only the VTU snapshots (which render reads
+ * too), and refuses a folder without snapshots or a case (exit 2). Last, on a hand-written
  * W.P.2 measurements table, that validate compares a debris cloud in free flight (the
  * output of most cloud mass before its leading edge reaches the next plate). */
 #include <stdio.h>
@@ -61,6 +62,23 @@ int main(void)
         "hvsph measure reproduces the run's measurements.csv (exit %d): %s", st, out);
   CHECK(strstr(out, "particles_00007.csv") && strstr(out, "skipped"),
         "... skipping the stale particles_00007.csv: %s", out);
+  /* ... and from a folder that has only the VTU snapshots (a run's default output) */
+  snprintf(cmd, sizeof cmd, "rm -rf %s/vtuonly && mkdir %s/vtuonly && cd %s/validation/bumper-1 "
+           "&& cp used_parameters.yaml summary.csv particles_0000[0-2].vtu %s/vtuonly/ && "
+           "%s measure %s/vtuonly --quiet", tmp, tmp, tmp, tmp, test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  snprintf(path, sizeof path, "%s/vtuonly/measurements.csv", tmp);
+  char *fromvtu = test_slurp(path, NULL);
+  const char *v1 = fromvtu ? strchr(fromvtu, '\n') : NULL;
+  CHECK(st == 0 && b1 && v1 && !strcmp(b1, v1),
+        "hvsph measure on the VTU snapshots alone gives the same measurements.csv (exit %d): %s",
+        st, out);
+  free(fromvtu);
+  snprintf(path, sizeof path, "%s/validation/bumper-1/measurements.csv", tmp);
+  snprintf(cmd, sizeof cmd, "%s render %s/vtuonly/particles_00002.vtu -o %s/rv.png --mode "
+           "particles --axis y && test -s %s/rv.png", test_bin(), tmp, tmp, tmp);
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 0, "render reads a VTU snapshot (exit %d): %s", st, out);
   free(before);
   free(after);
   snprintf(cmd, sizeof cmd, "rm -rf %s/empty && mkdir %s/empty && %s measure %s/empty --quiet",

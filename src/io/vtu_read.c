@@ -1,0 +1,319 @@
+/* vtu_read.c — reading back the particle snapshots io_write_vtu writes (vtu.c has the
+ * layout), so that `hvsph render`, `hvsph measure` and `hvsph validate` work on a run
+ * that wrote only its default VTU files.
+ *
+ * Only hvsph's own form is read: UnstructuredGrid, header_type="UInt64", appended
+ * raw data in the byte order of this machine. The XML header (everything before the
+ * appended block's '_') is parsed for the DataArray elements of PointData and Points
+ * and for FieldData TIME; each array's block is then read at its offset, its byte
+ * count checked against NumberOfPoints × components × type size and against the
+ * file's size before anything is stored.
+ */
+#define _FILE_OFFSET_BITS 64
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "io/snapshot.h"
+
+#define VTU_HEADER_MAX (16u << 20) /* the XML before the data: a few kB in practice */
+#define VTU_MAX_ARRAYS 64
+#define VTU_CHUNK 4096             /* tuples per de-interleaving buffer */
+
+struct vtu_array {
+  char name[64], type[16];
+  int ncomp;
+  long long offset;   /* from the byte after '_' */
+};
+
+/* The value of attribute `attr` inside the element text [s, end): copied into out
+ * (len bytes); 0 found, -1 absent. */
+static int attr(const char *s, const char *end, const char *attr, char *out, size_t len)
+{
+  char key[64];
+  snprintf(key, sizeof key, " %s=\"", attr);
+  const size_t kl = strlen(key);
+  for (const char *q = s; q + kl < end; q++) {
+    if (memcmp(q, key, kl) != 0) continue;
+    const char *v = q + kl, *close = memchr(v, '"', (size_t)(end - v));
+    if (!close) return -1;
+    size_t n = (size_t)(close - v);
+    if (n >= len) n = len - 1;
+    memcpy(out, v, n);
+    out[n] = '\0';
+    return 0;
+  }
+  return -1;
+}
+
+static size_t vtk_size(const char *type)
+{
+  if (!strcmp(type, "Float64") || !strcmp(type, "Int64") || !strcmp(type, "UInt64")) return 8;
+  if (!strcmp(type, "Int32") || !strcmp(type, "Float32") || !strcmp(type, "UInt32")) return 4;
+  if (!strcmp(type, "UInt8") || !strcmp(type, "Int8")) return 1;
+  return 0;
+}
+
+static const char *vtk_name(enum pf_type t)
+{
+  return t == PF_INT32 ? "Int32" : t == PF_INT64 ? "Int64" : "Float64";
+}
+
+struct vtu_header {
+  size_t n;              /* NumberOfPoints */
+  double time;           /* FieldData TIME, NaN when absent */
+  long long data_start;  /* file position of the byte after '_' */
+  int narr;
+  struct vtu_array arr[VTU_MAX_ARRAYS];   /* PointData and Points */
+};
+
+static int bad(struct hv_error *err, const char *path, const char *what)
+{
+  return hv_error_set(err, HV_EXIT_INPUT, "'%s': %s (not a VTU snapshot written by hvsph?)",
+                      path, what);
+}
+
+/* Parses the XML text h[0, len) up to the appended block's '_'. */
+static int parse_header(const char *path, const char *h, size_t len, struct vtu_header *vh,
+                        struct hv_error *err)
+{
+  const char *end = h + len;
+  const char *file = strstr(h, "<VTKFile");
+  if (!file) return bad(err, path, "no <VTKFile> element");
+  const char *fe = strchr(file, '>');
+  char v[64];
+  if (attr(file, fe, "type", v, sizeof v) || strcmp(v, "UnstructuredGrid"))
+    return bad(err, path, "not an UnstructuredGrid");
+  if (attr(file, fe, "header_type", v, sizeof v) || strcmp(v, "UInt64"))
+    return bad(err, path, "block headers are not UInt64");
+  const unsigned short one = 1;
+  unsigned char little;
+  memcpy(&little, &one, 1);
+  if (attr(file, fe, "byte_order", v, sizeof v) ||
+      strcmp(v, little ? "LittleEndian" : "BigEndian"))
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': written in the other byte order (%s); "
+                        "this machine reads only its own", path, v);
+  const char *piece = strstr(fe, "<Piece");
+  if (!piece) return bad(err, path, "no <Piece> element");
+  const char *pe = strchr(piece, '>');
+  char *stop;
+  if (!pe || attr(piece, pe, "NumberOfPoints", v, sizeof v)) return bad(err, path, "no NumberOfPoints");
+  errno = 0;
+  long long np = strtoll(v, &stop, 10);
+  if (stop == v || *stop || np < 0 || errno) return bad(err, path, "NumberOfPoints is not a count");
+  vh->n = (size_t)np;
+  vh->time = NAN;
+  /* FieldData TIME (ascii), before the Piece */
+  const char *t = strstr(fe, "Name=\"TIME\"");
+  if (t && t < piece) {
+    const char *gt = strchr(t, '>');
+    if (gt) {
+      double tv = strtod(gt + 1, &stop);
+      if (stop != gt + 1) vh->time = tv;
+    }
+  }
+  const char *app = strstr(pe, "<AppendedData");
+  if (!app) return bad(err, path, "no <AppendedData> element");
+  const char *ae = strchr(app, '>');
+  if (!ae || attr(app, ae, "encoding", v, sizeof v) || strcmp(v, "raw"))
+    return bad(err, path, "appended data not raw");
+  const char *us = memchr(ae, '_', (size_t)(end - ae));
+  if (!us) return bad(err, path, "no '_' before the appended data");
+  vh->data_start = (long long)(us + 1 - h);
+  /* the arrays of PointData and Points (Cells are not needed) */
+  const char *cells = strstr(pe, "<Cells>");
+  const char *last = cells && cells < app ? cells : app;
+  vh->narr = 0;
+  for (const char *d = strstr(pe, "<DataArray"); d && d < last; d = strstr(d + 1, "<DataArray")) {
+    const char *de = strchr(d, '>');
+    if (!de) return bad(err, path, "unterminated <DataArray>");
+    if (vh->narr == VTU_MAX_ARRAYS) return bad(err, path, "too many arrays");
+    struct vtu_array *a = &vh->arr[vh->narr];
+    char fmt[16] = "", nc[16] = "1", off[32];
+    if (attr(d, de, "Name", a->name, sizeof a->name) || attr(d, de, "type", a->type, sizeof a->type))
+      return bad(err, path, "a DataArray without Name or type");
+    attr(d, de, "NumberOfComponents", nc, sizeof nc);
+    if (attr(d, de, "format", fmt, sizeof fmt) || strcmp(fmt, "appended") ||
+        attr(d, de, "offset", off, sizeof off))
+      return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is not in the appended block",
+                          path, a->name);
+    a->ncomp = atoi(nc);
+    a->offset = strtoll(off, &stop, 10);
+    if (stop == off || *stop || a->offset < 0 || a->ncomp < 1 || a->ncomp > 6)
+      return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': bad offset or component count",
+                          path, a->name);
+    vh->narr++;
+  }
+  return 0;
+}
+
+/* Reads one array's block into field f at slots [first, first + n). */
+static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
+                      const struct vtu_array *a, const struct pfield *f, size_t first,
+                      long long fsize, struct hv_error *err)
+{
+  const size_t s = pf_type_size(f->type), nc = (size_t)f->ncomp, n = vh->n;
+  const uint64_t want = (uint64_t)n * nc * s;
+  const long long pos = vh->data_start + a->offset;
+  uint64_t nb = 0;
+  if (pos + 8 > fsize || fseeko(fp, (off_t)pos, SEEK_SET) || fread(&nb, 8, 1, fp) != 1)
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
+                        "of the file (cut short?)", path, a->name);
+  if (nb != want)
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' holds %llu bytes, %zu points "
+                        "need %llu", path, a->name, (unsigned long long)nb, n,
+                        (unsigned long long)want);
+  if ((uint64_t)(pos + 8) + nb > (uint64_t)fsize)
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': the file ends inside its "
+                        "block (cut short?)", path, a->name);
+  if (nc == 1) {
+    if (n && fread((char *)f->comp[0] + first * s, s, n, fp) != n) goto short_read;
+    return 0;
+  }
+  unsigned char *buf = malloc(VTU_CHUNK * nc * s);
+  if (!buf) return hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+  for (size_t i0 = 0; i0 < n; i0 += VTU_CHUNK) {
+    const size_t m = n - i0 < VTU_CHUNK ? n - i0 : VTU_CHUNK;
+    if (fread(buf, s * nc, m, fp) != m) {
+      free(buf);
+      goto short_read;
+    }
+    for (size_t i = 0; i < m; i++)
+      for (size_t c = 0; c < nc; c++)
+        memcpy((char *)f->comp[c] + (first + i0 + i) * s, buf + (i * nc + c) * s, s);
+  }
+  free(buf);
+  return 0;
+short_read:
+  return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s' (array '%s'): %s", path, a->name,
+                      ferror(fp) ? strerror(errno ? errno : EIO) : "the file ends early");
+}
+
+int io_read_particles_vtu(const char *path, struct particles *p, double *time,
+                          struct hv_error *err)
+{
+  if (time) *time = NAN;
+  FILE *fp = fopen(path, "rb");
+  if (!fp) return hv_error_set(err, HV_EXIT_INPUT, "cannot open '%s': %s", path, strerror(errno));
+  struct stat st;
+  if (fstat(fileno(fp), &st)) {
+    int e = errno;
+    fclose(fp);
+    return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
+  }
+  const long long fsize = (long long)st.st_size;
+  /* the header: read until the appended block's '_' is in the buffer */
+  size_t cap = 65536, len = 0;
+  char *h = NULL;
+  struct vtu_header *vh = calloc(1, sizeof *vh);
+  int rc = vh ? 0 : hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+  while (!rc) {
+    char *nh = realloc(h, cap + 1);
+    if (!nh) {
+      rc = hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+      break;
+    }
+    h = nh;
+    len += fread(h + len, 1, cap - len, fp);
+    h[len] = '\0';
+    const char *app = strstr(h, "<AppendedData");
+    if (app && strchr(app, '_')) break;   /* headers hold no NUL: strstr sees it all */
+    if (len < cap || cap >= VTU_HEADER_MAX) {
+      rc = bad(err, path, len < cap ? "no appended data block" : "header too long");
+      break;
+    }
+    cap *= 4;
+  }
+  if (!rc) rc = parse_header(path, h, len, vh, err);
+  free(h);
+  /* a whole file ends with the closing tag (the writer's last bytes) */
+  char tail[32] = "";
+  if (!rc && (fsize < 24 || fseeko(fp, (off_t)(fsize - 24), SEEK_SET) ||
+              fread(tail, 1, 24, fp) != 24 || !strstr(tail, "</VTKFile>")))
+    rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no closing </VTKFile> at its end (the file "
+                      "was cut short?)", path);
+  const struct vtu_array *ax = NULL;
+  int solid = 0;
+  struct pfield fv[HV_MAX_FIELDS];
+  const int nf = particles_fields_all(NULL, fv);
+  int match[VTU_MAX_ARRAYS];
+  for (int k = 0; !rc && k < vh->narr; k++) {
+    const struct vtu_array *a = &vh->arr[k];
+    match[k] = -1;
+    if (vtk_size(a->type) == 0)
+      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' has type '%s', which hvsph "
+                        "does not write", path, a->name, a->type);
+    for (int j = 0; !rc && j < nf; j++) {
+      if (strcmp(a->name, fv[j].name) != 0) continue;
+      if (strcmp(a->type, vtk_name(fv[j].type)) || a->ncomp != fv[j].ncomp)
+        rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is %s × %d, hvsph's field is "
+                          "%s × %d", path, a->name, a->type, a->ncomp, vtk_name(fv[j].type),
+                          fv[j].ncomp);
+      match[k] = j;
+      if (!strcmp(a->name, "x")) ax = a;
+      if (fv[j].flags & PF_SOLID) solid = 1;
+    }
+  }
+  if (!rc && !ax) rc = bad(err, path, "no point positions (array 'x')");
+  if (!rc && vh->n > ((size_t)1 << 31))
+    rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': %zu points, more than hvsph reads", path, vh->n);
+  const size_t n0 = p->n;
+  if (!rc) {
+    if (solid) particles_enable_solid(p);
+    const size_t first = particles_add(p, vh->n);
+    struct pfield f[HV_MAX_FIELDS];
+    particles_fields_all(p, f);   /* after particles_add: the arrays may have moved */
+    for (int k = 0; !rc && k < vh->narr; k++)
+      if (match[k] >= 0)
+        rc = read_block(fp, path, vh, &vh->arr[k], &f[match[k]], first, fsize, err);
+    if (rc) {
+      p->n = n0;   /* drop what was read */
+      p->n_ghost = 0;
+    } else if (time) {
+      *time = vh->time;
+    }
+  }
+  free(vh);
+  fclose(fp);
+  return rc;
+}
+
+int io_read_particles(const char *path, struct particles *p, double *time, struct hv_error *err)
+{
+  const size_t len = strlen(path);
+  if (len > 4 && !strcmp(path + len - 4, ".vtu")) return io_read_particles_vtu(path, p, time, err);
+  return io_read_particles_csv(path, p, time, err);
+}
+
+int io_read_material_names(const char *path, char names[][64], int max)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return 0;
+  char line[8192];
+  int n = 0;
+  /* CSV: the "# materials ..." comment; VTU: "<!-- materials ... -->" in its first lines */
+  while (fgets(line, sizeof line, f)) {
+    char *m = NULL;
+    if (!strncmp(line, "# materials", 11)) m = line + 11;
+    else if (!strncmp(line, "<!-- materials", 14)) m = line + 14;
+    else if (line[0] != '#' && strncmp(line, "<?xml", 5) && strncmp(line, "<!--", 4)) break;
+    if (!m) continue;
+    char *close = strstr(m, "-->");
+    if (close) *close = '\0';
+    char *save = NULL;
+    for (char *t = strtok_r(m, " \t\r\n", &save); t; t = strtok_r(NULL, " \t\r\n", &save)) {
+      char *eq = strchr(t, '=');
+      char *end;
+      long k = eq ? strtol(t, &end, 10) : -1;
+      if (!eq || end != eq || k < 0 || k >= max) continue;
+      snprintf(names[k], 64, "%s", eq + 1);
+      if (k + 1 > n) n = (int)k + 1;
+    }
+  }
+  fclose(f);
+  return n;
+}
