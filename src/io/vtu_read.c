@@ -82,9 +82,12 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
                         struct hv_error *err)
 {
   const char *end = h + len;
-  const char *file = strstr(h, "<VTKFile");
+  /* the root element starts a line (the comments before it are one line each, their
+     text cleaned of control characters, so a case named "<VTKFile" cannot match) */
+  const char *file = strstr(h, "\n<VTKFile ");
   if (!file) return bad(err, path, "no <VTKFile> element");
   const char *fe = strchr(file, '>');
+  if (!fe) return bad(err, path, "unterminated <VTKFile> element");
   char v[64];
   if (attr(file, fe, "type", v, sizeof v) || strcmp(v, "UnstructuredGrid"))
     return bad(err, path, "not an UnstructuredGrid");
@@ -105,6 +108,8 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   errno = 0;
   long long np = strtoll(v, &stop, 10);
   if (stop == v || *stop || np < 0 || errno) return bad(err, path, "NumberOfPoints is not a count");
+  if (np > (1LL << 31))
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': %lld points, more than hvsph reads", path, np);
   vh->n = (size_t)np;
   vh->time = NAN;
   /* FieldData TIME (ascii), before the Piece */
@@ -118,6 +123,8 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   }
   const char *app = strstr(pe, "<AppendedData");
   if (!app) return bad(err, path, "no <AppendedData> element");
+  const char *piece2 = strstr(pe, "<Piece");
+  if (piece2 && piece2 < app) return bad(err, path, "more than one <Piece>");
   const char *ae = strchr(app, '>');
   if (!ae || attr(app, ae, "encoding", v, sizeof v) || strcmp(v, "raw"))
     return bad(err, path, "appended data not raw");
@@ -141,9 +148,15 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
         attr(d, de, "offset", off, sizeof off))
       return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is not in the appended block",
                           path, a->name);
-    a->ncomp = atoi(nc);
+    for (int k = 0; k < vh->narr; k++)
+      if (!strcmp(vh->arr[k].name, a->name))
+        return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' appears twice", path, a->name);
+    char *stop2;
+    errno = 0;
+    const long ncl = strtol(nc, &stop2, 10);
+    a->ncomp = stop2 != nc && !*stop2 && ncl >= 1 && ncl <= 6 ? (int)ncl : 0;
     a->offset = strtoll(off, &stop, 10);
-    if (stop == off || *stop || a->offset < 0 || a->ncomp < 1 || a->ncomp > 6)
+    if (stop == off || *stop || errno || a->offset < 0 || a->ncomp == 0)
       return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': bad offset or component count",
                           path, a->name);
     vh->narr++;
@@ -151,25 +164,32 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   return 0;
 }
 
-/* Reads one array's block into field f at slots [first, first + n). */
+/* Checks one array's block (its byte count against n × components × size, and its
+ * extent against the file's size) and, with f, reads it into field f at slots
+ * [first, first + n). */
 static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
                       const struct vtu_array *a, const struct pfield *f, size_t first,
                       long long fsize, struct hv_error *err)
 {
   const size_t s = pf_type_size(f->type), nc = (size_t)f->ncomp, n = vh->n;
   const uint64_t want = (uint64_t)n * nc * s;
-  const long long pos = vh->data_start + a->offset;
   uint64_t nb = 0;
-  if (pos + 8 > fsize || fseeko(fp, (off_t)pos, SEEK_SET) || fread(&nb, 8, 1, fp) != 1)
+  if (a->offset > fsize - vh->data_start - 8) /* data_start < fsize: cannot overflow */
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
+                        "of the file (cut short?)", path, a->name);
+  const long long pos = vh->data_start + a->offset;
+  errno = 0;
+  if (fseeko(fp, (off_t)pos, SEEK_SET) || fread(&nb, 8, 1, fp) != 1)
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
                         "of the file (cut short?)", path, a->name);
   if (nb != want)
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' holds %llu bytes, %zu points "
                         "need %llu", path, a->name, (unsigned long long)nb, n,
                         (unsigned long long)want);
-  if ((uint64_t)(pos + 8) + nb > (uint64_t)fsize)
+  if (nb > (uint64_t)(fsize - pos - 8))
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': the file ends inside its "
                         "block (cut short?)", path, a->name);
+  if (!f->comp[0]) return 0;   /* the check only */
   if (nc == 1) {
     if (n && fread((char *)f->comp[0] + first * s, s, n, fp) != n) goto short_read;
     return 0;
@@ -218,10 +238,21 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
       break;
     }
     h = nh;
+    errno = 0;
     len += fread(h + len, 1, cap - len, fp);
     h[len] = '\0';
+    if (ferror(fp)) {
+      rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path,
+                        strerror(errno ? errno : EIO));
+      break;
+    }
     const char *app = strstr(h, "<AppendedData");
-    if (app && strchr(app, '_')) break;   /* headers hold no NUL: strstr sees it all */
+    char *us = app ? strchr(app, '_') : NULL;
+    if (us) {   /* the header ends here: parse nothing of the binary data after it */
+      len = (size_t)(us + 1 - h);
+      h[len] = '\0';
+      break;
+    }
     if (len < cap || cap >= VTU_HEADER_MAX) {
       rc = bad(err, path, len < cap ? "no appended data block" : "header too long");
       break;
@@ -236,7 +267,7 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
               fread(tail, 1, 24, fp) != 24 || !strstr(tail, "</VTKFile>")))
     rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no closing </VTKFile> at its end (the file "
                       "was cut short?)", path);
-  const struct vtu_array *ax = NULL;
+  const struct vtu_array *ax = NULL, *aid = NULL;
   int solid = 0;
   struct pfield fv[HV_MAX_FIELDS];
   const int nf = particles_fields_all(NULL, fv);
@@ -255,12 +286,16 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
                           fv[j].ncomp);
       match[k] = j;
       if (!strcmp(a->name, "x")) ax = a;
+      if (!strcmp(a->name, "id")) aid = a;
       if (fv[j].flags & PF_SOLID) solid = 1;
     }
   }
   if (!rc && !ax) rc = bad(err, path, "no point positions (array 'x')");
-  if (!rc && vh->n > ((size_t)1 << 31))
-    rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': %zu points, more than hvsph reads", path, vh->n);
+  if (!rc && !aid) rc = bad(err, path, "no particle identifiers (array 'id')");
+  /* every block checked before anything is allocated: a file claiming more points
+     than it holds is refused here, not by running out of memory */
+  for (int k = 0; !rc && k < vh->narr; k++)
+    if (match[k] >= 0) rc = read_block(fp, path, vh, &vh->arr[k], &fv[match[k]], 0, fsize, err);
   const size_t n0 = p->n;
   if (!rc) {
     if (solid) particles_enable_solid(p);

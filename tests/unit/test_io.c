@@ -313,6 +313,17 @@ static void test_vtu_read(struct particles *p)
                                "NumberOfPoints=\"101\"", 0);
   CHECK(io_read_particles_vtu(np, &q, NULL, &err) != 0 && strstr(err.msg, "101 points") &&
             q.n == 0, "point count not matching the blocks: %s", err.msg);
+  const char *huge = vtu_variant(path, "huge.vtu", "NumberOfPoints=\"100\" NumberOfCells=\"100\"",
+                                 "NumberOfPoints=\"2000000000\" NumberOfC=\"\"", 0);
+  CHECK(io_read_particles_vtu(huge, &q, NULL, &err) != 0 && strstr(err.msg, "2000000000 points") &&
+            q.n == 0 && q.cap < 1000, "2e9 points claimed: refused before allocating (capacity "
+        "%zu): %s", q.cap, err.msg);
+  const char *twice = vtu_variant(path, "twice.vtu", "Name=\"m\"", "Name=\"h\"", 0);
+  CHECK(io_read_particles_vtu(twice, &q, NULL, &err) != 0 && strstr(err.msg, "'h' appears twice") &&
+            q.n == 0, "an array twice: %s", err.msg);
+  const char *noid = vtu_variant(path, "noid.vtu", "Name=\"id\"", "Name=\"iq\"", 0);
+  CHECK(io_read_particles_vtu(noid, &q, NULL, &err) != 0 && strstr(err.msg, "'id'") && q.n == 0,
+        "no ids: %s", err.msg);
   const char *be = vtu_variant(path, "be.vtu", "byte_order=\"LittleEndian\"",
                                "byte_order=\"BigEndianxxx\"", 0);
   CHECK(io_read_particles_vtu(be, &q, NULL, &err) != 0 && strstr(err.msg, "byte order"),
