@@ -1,8 +1,8 @@
 /* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`.
  *
  * Reads a particle snapshot, CSV or VTU (io_read_particles; the time from its comment
- * line or FieldData, the material names from its "materials" comment), renders it (render_png) and
- * writes the PNG whole or not at all. Lengths and colour ranges may carry units
+ * line or FieldData, the material names from its "materials" comment), renders it
+ * (render_png) and writes the PNG whole or not at all. Lengths and colour ranges may carry units
  * ("-50mm", "6.2km/s"); bare numbers are SI. Exit status: 0 written, 1 bad command line,
  * 2 bad or missing input (or an output folder that cannot take the file), 3 write failure.
  */
@@ -80,7 +80,6 @@ static int pick(const char *s, const char *const *names, int n)
   return -1;
 }
 
-/* Material names from the snapshot's "# materials 0=a 1=b" line; returns their count. */
 static int fail_usage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 static int fail_usage(const char *fmt, ...)
 {

@@ -5,8 +5,8 @@
  * change (docs/measurements.md), or a run was made without them, this command
  * re-reads the run's own used_parameters.yaml (every value it ran with), rebuilds the
  * bodies' geometry from it (original faces, thicknesses, spacings), loads every
- * particles_NNNNN.csv (or, when it has none, particles_NNNNN.vtu) of the folder in turn and writes measurements.csv and the
- * fragments_NNNNN.csv files anew (each to a temporary name, then renamed).
+ * particles_NNNNN.csv (or, when it has none, particles_NNNNN.vtu) of the folder in
+ * turn and writes measurements.csv and the fragments_NNNNN.csv files anew (each to a temporary name, then renamed).
  *
  * The backwall's peak pressure at the centre is a running maximum over every time
  * step, which snapshots cannot give; the value of the run's earlier measurements.csv

@@ -249,19 +249,18 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
       double a = (r->sim - r->exp) / r->exp;
       snprintf(eu, sizeof eu, "%+.1f %%", 100 * a);
       if (!isnan(r->paper)) {
-        double b = (r->paper - r->exp) / r->exp;
+        const double b = (r->paper - r->exp) / r->exp;
         snprintf(ep, sizeof ep, "%+.1f %%", 100 * b);
-      }
-      if (!isnan(r->paper) && r->in_mean) {
-        double b = (r->paper - r->exp) / r->exp;
-        sum_us += fabs(a);
-        sum_paper += fabs(b);
-        n_both++;
+        if (r->in_mean) {
+          sum_us += fabs(a);
+          sum_paper += fabs(b);
+          n_both++;
+        }
       }
     }
     afile_printf(&af, err, "| %s | %s (%s)%s%s | %s | %s%s | %s%s | %s | %s | %s |\n", r->cas,
-                 r->quantity, r->object, r->note[0] ? " ¹" : "", r->in_mean ? "" : " ²", s, r->approx ? "~" : "", e,
-                 r->approx ? "~" : "", pp, u, eu, ep);
+                 r->quantity, r->object, r->note[0] ? " ¹" : "", r->in_mean ? "" : " ²", s,
+                 r->approx ? "~" : "", e, r->approx ? "~" : "", pp, u, eu, ep);
   }
   if (n_both)
     afile_printf(&af, err, "\nMean |relative error| against the experiments, over the %d "
