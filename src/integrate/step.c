@@ -61,7 +61,9 @@ static int update_eos(struct sim *s, struct hv_error *err)
       continue;
     }
     const struct material *m = &s->mat[p->mat[i]];
-    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0) st.p = 0.0;   /* split: no tension */
+    /* split: no tension (fracture.split: no-tension removes it from σ instead) */
+    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0 && m->frac.split != SPLIT_NO_TENSION)
+      st.p = 0.0;
     if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->damage[i])))
       st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
     p->p[i] = st.p;
@@ -210,7 +212,14 @@ static long end_stress(struct sim *s, double dt)
     const struct material *m = &s->mat[p->mat[i]];
     const double d0 = p->damage[i];
     p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
-    if (p->damage[i] >= 1.0) {
+    if (fracture_no_tension(&m->frac, p->damage[i])) {
+      /* split without tension: the deviator of σ with its principal tensions removed
+         (the pressure stays the EOS's; each step's forces remove its tension again) */
+      if (fracture_project(p->p[i], S)) {
+        fracture_deviator(S);
+        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
+      }
+    } else if (p->damage[i] >= 1.0) {
       /* splitting releases the deviatoric stress; with friction it builds up again
          under pressure (sph_solid.c), limited by min(Y, μp) */
       if (d0 < 1.0 || !(m->frac.friction > 0.0))

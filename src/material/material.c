@@ -29,6 +29,7 @@ const char *const eos_kind_names[] = {"ideal-gas", "mie-gruneisen", "tillotson",
 
 static const char *const yield_names[] = {"constant", "linear", "johnson-cook", NULL};
 static const char *const fracture_names[] = {"none", "tresca", "cumulative", NULL};
+static const char *const split_names[] = {"fluid", "no-tension", NULL};
 
 /* "path.key" into buf. */
 static const char *key_of(char *buf, size_t len, const char *path, const char *key)
@@ -320,7 +321,9 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
   switch (f->kind) {
   case FRACTURE_NONE:
     if (not_used_here(c, fp, "friction", "friction applies to split material: model tresca "
-                      "or cumulative", err))
+                      "or cumulative", err) ||
+        not_used_here(c, fp, "split", "split applies to split material: model tresca or "
+                      "cumulative", err))
       return -1;
     break;
   case FRACTURE_TRESCA:
@@ -349,6 +352,17 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
                        "friction limits the deviatoric stress of split material, but the "
                        "material has no strength (give strength with shear modulus and "
                        "yield > 0)");
+    int split;
+    if (cfg_get_choice(c, key_of(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
+      return -1;
+    f->split = (enum split_kind)split;
+    if (f->split == SPLIT_NO_TENSION && !m->str.enabled)
+      return key_error(c, k, err, "split: no-tension keeps the deviatoric stress of split "
+                       "material, but the material has no strength (give strength with "
+                       "shear modulus and yield > 0)");
+    if (f->split == SPLIT_NO_TENSION && f->friction > 0.0)
+      return key_error(c, k, err, "split: no-tension keeps the yield stress of split material; "
+                       "friction (which limits it to min(Y, mu p)) applies to split: fluid only");
   }
   return 0;
 }

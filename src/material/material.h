@@ -70,6 +70,11 @@ struct strength_params {
 };
 
 enum fracture_kind { FRACTURE_NONE = 0, FRACTURE_TRESCA, FRACTURE_CUMULATIVE, FRACTURE_KIND_COUNT };
+/* What a split particle (D = 1) carries: FLUID, no deviatoric stress and no tension
+   (the paper's rule as hvsph reads it); NO_TENSION, its stress as if intact with the
+   principal tensions removed: cracks open under tension and close under compression,
+   where the material keeps its yield stress. */
+enum split_kind { SPLIT_FLUID = 0, SPLIT_NO_TENSION, SPLIT_KIND_COUNT };
 
 struct fracture_params {
   enum fracture_kind kind;
@@ -82,6 +87,7 @@ struct fracture_params {
      friction coefficient μ of the broken material, whose yield stress is then
      min(Y, μ max(p, 0)) (a cohesionless Drucker–Prager/Coulomb limit) */
   double friction;     /* [-] */
+  enum split_kind split;
 };
 
 struct material {

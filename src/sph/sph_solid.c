@@ -22,6 +22,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "eos/eos.h"
 #include "fracture/fracture.h"
 #include "sph/cand.h"
 #include "sph/recon.h"
@@ -56,11 +57,25 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   const double deps = strength_return(G, Y, S1);
   p->eps_p[i] += deps;
   p->damage[i] = fracture_plastic(&m->frac, p->damage[i], deps);
+  /* split without tension: the forces see the deviator S' of σ' (σ = −p I + Sm with its
+     principal tensions removed, p the mid-step pressure: the EOS at the mid-step
+     density and energy, as step.c finds it after this pass — the same operations, the
+     same bits), so the heating takes S':ε̇ (and the pressure force's pdV work p').
+     Sm itself is kept. (If the EOS fails here, update_eos reports it.) */
+  double Se[6];
+  const double *Sh = Sm;
+  if (fracture_no_tension(&m->frac, p->damage[i])) {
+    struct eos_state st;
+    if (!eos_evaluate(m, p->rho[i] + 0.5 * dt * p->drho[i], p->e[i], &st)) {
+      fracture_effective(st.p, Sm, Se);
+      Sh = Se;
+    }
+  }
   /* S*:ε̇ with ε̇ the symmetric part of L */
   const double exx = L[0], eyy = L[4], ezz = L[8];
   const double exy = 0.5 * (L[1] + L[3]), eyz = 0.5 * (L[5] + L[7]), exz = 0.5 * (L[2] + L[6]);
-  const double power = Sm[T_XX] * exx + Sm[T_YY] * eyy + Sm[T_ZZ] * ezz +
-                       2.0 * (Sm[T_XY] * exy + Sm[T_YZ] * eyz + Sm[T_XZ] * exz);
+  const double power = Sh[T_XX] * exx + Sh[T_YY] * eyy + Sh[T_ZZ] * ezz +
+                       2.0 * (Sh[T_XY] * exy + Sh[T_YZ] * eyz + Sh[T_XZ] * exz);
   p->de[i] = power / p->rho[i];
   for (int k = 0; k < 6; k++) {
     p->S[k][i] = Sm[k];
@@ -208,7 +223,9 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
     sig[0] -= p->p[i];
     sig[1] -= p->p[i];
     sig[2] -= p->p[i];
-    if (eps > 0 && has_strength(&mat[p->mat[i]], p->damage[i]) && sym3_max_bound(sig) > 0.0) {
+    const struct material *mi = &mat[p->mat[i]];
+    if (eps > 0 && has_strength(mi, p->damage[i]) && !fracture_no_tension(&mi->frac, p->damage[i]) &&
+        sym3_max_bound(sig) > 0.0) {
       double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);
       const double r2 = p->rho[i] * p->rho[i];
@@ -286,8 +303,12 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
     w[TW_V + 1] = vy[j];
     w[TW_V + 2] = vz[j];
     w[TW_M] = m[j];
-    w[TW_P] = pr[j] * rj2;
-    for (int t = 0; t < 6; t++) w[TW_S + t] = p->S[t][j] * rj2;
+    double Sj[6], pj = pr[j];
+    for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
+    if (p->damage[j] >= 1.0 && fracture_no_tension(&mat[p->mat[j]].frac, p->damage[j]))
+      pj = fracture_effective(pr[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
+    w[TW_P] = pj * rj2;
+    for (int t = 0; t < 6; t++) w[TW_S + t] = Sj[t] * rj2;
     w[TW_RHO] = rho[j];
     int rany = 0;
     for (int t = 0; t < 6; t++) {
@@ -310,12 +331,14 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
         const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const double ri2 = 1.0 / (rho[i] * rho[i]), ci = cs[i], rhoi = rho[i];
-        const double Pi = pr[i] * ri2, Pic = (pr[i] > 0 ? pr[i] : 0.0) * ri2;
+        const double ci = cs[i], rhoi = rho[i];
+        /* p/ρ² and S/ρ² from i's own record (σ' for a split particle without tension) */
+        const double *wi = tw + TW * (size_t)i;
+        const double Pi = wi[TW_P], Pic = Pi > 0 ? Pi : 0.0;
         double Si[6], Ri[6];
         int Ri_any = 0;
         for (int k = 0; k < 6; k++) {
-          Si[k] = p->S[k][i] * ri2;
+          Si[k] = wi[TW_S + k];
           Ri[k] = p->R[k][i];
           Ri_any |= Ri[k] != 0.0;
         }

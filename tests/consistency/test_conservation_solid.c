@@ -15,17 +15,24 @@
  *     the drift |E − E0|/E0 is reported every tenth step and must stay below
  *     ENERGY_DRIFT_MAX = 1e-2. Measured (2026-11-22, session 5): 9.2e-4 (max over the
  *     100 steps; the gas test's is 7e-5), 9.1e-4 with the reconstructed viscosity,
- *     9.2e-4 with sph.artificial_stress.epsilon = 0 and 9.9e-4 without fracture — so
+ *     9.2e-4 with sph.artificial_stress.epsilon = 0, 9.9e-4 without fracture and 9.3e-4
+ *     with al-alloy's fracture.split: no-tension (session 18) — so
  *     it is the predictor–corrector, which is not exactly energy conserving, not the
  *     artificial stress (before its pair factor was made resolution-independent in
  *     session 4 the drift was 2.8e-3, most of it the artificial stress's work). The bound catches a
  *     missing term: the plastic work here is of order Y ε_p V ~ 0.5 J of E0 = 3.1 J, so
  *     leaving out the heating S:ε̇/ρ would show as a drift of ~15%;
  *   - the test means something: plastic strain, splits and contact pairs occur, and
- *     the kinetic energy changes.
- * Run twice: with the standard viscosity and with sph.viscosity.reconstruct (the pair's
+ *     the kinetic energy changes (below 99 % of the initial; above 0.1 %, so some motion
+ *     is left: 1.0–1.7 % is).
+ * Run three times: with the standard viscosity; with sph.viscosity.reconstruct (the pair's
  * velocity difference reconstructed to its midpoint; symmetric in i and j, so the
- * momentum must still be conserved to round-off).
+ * momentum must still be conserved to round-off); and with al-alloy's split particles
+ * without tension (fracture.split: no-tension: the forces and the heating use σ with
+ * its principal tensions removed; a heating on a different stress than the forces'
+ * would show in the energy — the first version, which carried the EOS pressure with a
+ * compensating trace in S, drifted by 3 % in a rod run where the split fluid drifted
+ * by 4e-4).
  *
  * Velocities: up to ±VMAX per component, drawn from a fixed generator; 200 m/s in
  * aluminium gives stresses ρ c_L v ~ 3.7 GPa, far beyond the yield (0.383 GPa) and the
@@ -53,12 +60,14 @@
 #define VMAX 200.0              /* [m/s] largest random velocity component */
 
 /* 12 x 12 x 6 + 10 x 10 x 5 lattice points in a 3 mm box */
-static const char *case_text =
+static const char *case_head =
     "name: conservation_solid\n"
     "domain: {min: [0, 0, 0], max: [3 mm, 3 mm, 3 mm],\n"
     "         boundary: {x: periodic, y: periodic, z: periodic}}\n"
     "materials:\n"
-    "  al: {library: al-alloy}\n"
+    "  al: {library: al-alloy";   /* + "" or ", fracture: {split: no-tension}" */
+static const char *case_tail =
+    "}\n"
     "  cu: {library: copper}\n"
     "bodies:\n"
     "  - {name: al, material: al, spacing: 0.25 mm,\n"
@@ -98,13 +107,14 @@ static double momentum_scale(const struct particles *p)
   return s;
 }
 
-static void run_case(const char *viscosity_more)
+static void run_case(const char *al_more, const char *viscosity_more)
 {
   struct hv_error err;
   hv_error_clear(&err);
   char text[2048];
-  snprintf(text, sizeof text, "%s%s}}\n", case_text, viscosity_more);
-  printf("== sph.viscosity: {alpha: 1.0, beta: 2.0%s}\n", viscosity_more);
+  snprintf(text, sizeof text, "%s%s%s%s}}\n", case_head, al_more, case_tail, viscosity_more);
+  printf("== al-alloy: {library: al-alloy%s}, sph.viscosity: {alpha: 1.0, beta: 2.0%s}\n",
+         al_more, viscosity_more);
   rng_state = 0x9E3779B97F4A7C15ull;
   struct cfg *c;
   struct sim s;
@@ -180,7 +190,7 @@ static void run_case(const char *viscosity_more)
          plastic, epsmax, splits);
   CHECK(plastic > n0 / 10, "plastic flow is active: %zu of %zu particles yielded", plastic, n0);
   CHECK(splits > 0, "fracture is active: %zu particles split", splits);
-  CHECK(t.e_kin < 0.99 * t0.e_kin && t.e_kin > 0.01 * t0.e_kin,
+  CHECK(t.e_kin < 0.99 * t0.e_kin && t.e_kin > 0.001 * t0.e_kin,
         "the random motion is being converted: E_kin / E_kin0 = %.4f", t.e_kin / t0.e_kin);
   free(m0);
   free(m1);
@@ -191,7 +201,8 @@ static void run_case(const char *viscosity_more)
 int main(void)
 {
   omp_set_num_threads(sc_threads()); /* `make check` runs two tests at a time on 2 cores */
-  run_case("");
-  run_case(", reconstruct: true");
+  run_case("", "");
+  run_case("", ", reconstruct: true");
+  run_case(", fracture: {split: no-tension}", "");
   return test_finish();
 }

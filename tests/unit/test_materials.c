@@ -251,6 +251,17 @@ static void test_errors(void)
   expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0}, fracture: "
                "{friction: 0.5}}\n", "x", "materials.x.fracture.friction: friction limits the "
                "deviatoric stress of split material, but the material has no strength");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {split: brittle}}\n", "x",
+               "case.yaml:2: materials.x.fracture.split");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {model: none, split: "
+               "no-tension}}\n", "x", "case.yaml:2: materials.x.fracture.split: split applies "
+               "to split material");
+  expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0}, fracture: "
+               "{split: no-tension}}\n", "x", "materials.x.fracture.split: split: no-tension "
+               "keeps the deviatoric stress of split material, but the material has no strength");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {split: no-tension, friction: "
+               "0.5}}\n", "x", "materials.x.fracture.split: split: no-tension keeps the yield "
+               "stress of split material; friction");
 }
 
 /* An error in a library value names the library file and line. */

@@ -76,6 +76,51 @@ static void test_return(void)
   CHECK(strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) + 1) == 0.0, "JC: no strength above melt");
 }
 
+/* split: no-tension — σ = Q diag(2, −1, −3)·10⁸ Qᵀ (Pa, Q a rotation about (1, 2, 2)/3
+ * by 0.7 rad) with p = 0.5·10⁸ Pa carried apart from T: the projection must give
+ * Q diag(0, −1, −3)·10⁸ Qᵀ, keep compression untouched, and free hydrostatic tension
+ * entirely. */
+static void test_no_tension(void)
+{
+  struct fracture_params nt = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_NO_TENSION};
+  CHECK(fracture_keeps_stress(&nt, 1.0) && fracture_no_tension(&nt, 1.0) &&
+        !fracture_no_tension(&nt, 0.99), "no-tension: split particles keep a stress");
+  CHECK(fracture_yield(&nt, 1.0, 0.383e9, -1e8) == 0.383e9, "no-tension: split keeps Y");
+  const double ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3}, c = cos(0.7), s = sin(0.7);
+  double Q[9];   /* Rodrigues: Q = c I + s [a]x + (1 − c) a aᵀ */
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) Q[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * ax[a] * ax[b];
+  Q[1] -= s * ax[2]; Q[2] += s * ax[1]; Q[3] += s * ax[2];
+  Q[5] -= s * ax[0]; Q[6] -= s * ax[1]; Q[7] += s * ax[0];
+  const double lam[3] = {2e8, -1e8, -3e8}, lam_p[3] = {0.0, -1e8, -3e8}, p = 0.5e8;
+  double sig[6], want[6], T[6];
+  sym3_from_eigen(Q, lam, sig);
+  sym3_from_eigen(Q, lam_p, want);
+  for (int k = 0; k < 6; k++) T[k] = sig[k] + (k < 3 ? p : 0.0);   /* σ = −pI + T */
+  CHECK(fracture_project(p, T) == 1, "no-tension: a principal tension is removed");
+  double err = 0.0;
+  for (int k = 0; k < 6; k++) err = fmax(err, fabs(T[k] - (k < 3 ? p : 0.0) - want[k]));
+  CHECK(err < 1e-6 * 3e8, "no-tension: σ' = Q diag(0, -1, -3) Qᵀ (largest error %g Pa)", err);
+  double lam2[3];
+  sym3_eigen(want, lam2, NULL);
+  CHECK(fabs(lam2[0]) < 1e-6 * 3e8, "no-tension: σ' has no tension (σ1 = %g Pa)", lam2[0]);
+  double C[6], C0[6];   /* all principal stresses compressive: unchanged, to the bit */
+  const double lc[3] = {-0.5e8, -1e8, -3e8};
+  sym3_from_eigen(Q, lc, C);
+  for (int k = 0; k < 6; k++) C0[k] = C[k];
+  CHECK(fracture_project(1e8, C) == 0, "no-tension: compression is not touched");
+  int same = 1;
+  for (int k = 0; k < 6; k++) same &= C[k] == C0[k];
+  CHECK(same, "no-tension: compressive stress unchanged");
+  double H[6] = {0, 0, 0, 0, 0, 0};   /* hydrostatic tension p = −1e8: σ' = 0 */
+  CHECK(fracture_project(-1e8, H) == 1 && fabs(H[0] + 1e8) < 1e-6 * 1e8 &&
+        fabs(H[1] + 1e8) < 1e-6 * 1e8 && fabs(H[2] + 1e8) < 1e-6 * 1e8 && fabs(H[3]) < 1.0,
+        "no-tension: hydrostatic tension released entirely (T = pI, σ' = 0)");
+  double D[6] = {3, -1, 4, 2, 5, -7};
+  fracture_deviator(D);
+  CHECK(fabs(D[0] + D[1] + D[2]) < 1e-12 && D[0] == 1.0 && D[3] == 2.0, "deviator: traceless");
+}
+
 static void test_fracture(void)
 {
   const double S0[6] = {0};
@@ -100,6 +145,7 @@ static void test_fracture(void)
   CHECK_CLOSE(fracture_yield(&fr, 1.0, 0.383e9, 1e9), 0.3e9, 1e-15, "split: Y = μp below Y0");
   CHECK(fracture_yield(&fr, 1.0, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
   CHECK(fracture_yield(&fr, 1.0, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
+  test_no_tension();
 }
 
 int main(void)
