@@ -21,7 +21,8 @@
 #     end with exit status 2 and a message naming the file, and leave every file of
 #     the folder as it was;
 #  5. `hvsph validate --resume` continues a validation run stopped by SIGINT, and its
-#     validation.csv and measurements.csv equal those of a straight run.
+#     validation.csv and measurements.csv equal those of a straight run;
+#  6. 1. again with split material without tension (fracture.split: no-tension).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -178,6 +179,24 @@ cmp -s "$T/val_ref/validation.csv" "$T/val/validation.csv" &&
 check $? "its validation.csv and measurements.csv are identical to the straight run's"
 grep -q '^| bumper-1 | [0-9]* | [0-9]* (2 segments) | ok |' "$T/val/validation.md"
 check $? "validation.md gives its runtime summed over its 2 segments: $(grep '^| bumper-1 | [0-9]* |' "$T/val/validation.md")"
+
+# 6. split material without tension (fracture.split: no-tension): its state is (rho, e,
+#    S) with S projected at each step's end and p from the EOS, so a continued run must
+#    again equal a straight one
+NT=(--set materials.steel-bumper.library=steel-bumper
+    --set materials.steel-bumper.fracture.split=no-tension
+    --set materials.steel-projectile.library=steel-projectile
+    --set materials.steel-projectile.fracture.split=no-tension)
+"$BIN" run "$CASE" -o "$T/nt_ref" "${SETS[@]}" "${NT[@]}" --threads 2 --quiet 2> /dev/null &&
+  "$BIN" run "$CASE" -o "$T/nt" "${SETS[@]}" "${NT[@]}" --set time.max_steps=300 --threads 2 \
+    --quiet 2> /dev/null &&
+  "$BIN" restart "$T/nt" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
+check $? "split: no-tension: straight run, stopped run and its continuation"
+nsplit=$(awk -F, 'NR > 2 && $17 == 1' "$T/nt_ref/particles_00004.csv" | wc -l)
+[ "$nsplit" -gt 100 ]
+check $? "split: no-tension: $nsplit particles split by 12 us"
+same_files "$T/nt_ref" "$T/nt"
+check $? "split: no-tension: continued run, every file identical to the straight run's"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
