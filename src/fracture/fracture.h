@@ -30,11 +30,12 @@ double fracture_plastic(const struct fracture_params *fp, double damage, double 
 /* Damage after a step dt [s] in the stress state p [Pa], S [Pa]. */
 double fracture_tension(const struct fracture_params *fp, double damage, double p,
                         const double S[6], double dt);
-/* Whether a particle of damage D keeps a deviatoric stress: intact (D < 1), or split
- * with friction > 0. (The material must have strength as well.) */
+/* Whether a particle of damage D keeps a deviatoric stress: intact (D < 1), split with
+ * friction > 0, or split without tension. (The material must have strength as well.) */
 int fracture_keeps_stress(const struct fracture_params *fp, double damage);
 /* Yield stress [Pa] of a particle of damage D whose intact yield stress is Y and
- * pressure p: Y while D < 1; once split, min(Y, μ max(p, 0)) (0 without friction). */
+ * pressure p: Y while D < 1 or split without tension; once split (fluid),
+ * min(Y, μ max(p, 0)) (0 without friction). */
 double fracture_yield(const struct fracture_params *fp, double damage, double Y, double p);
 /* Whether particle of damage D is split with fracture.split: no-tension. */
 int fracture_no_tension(const struct fracture_params *fp, double damage);

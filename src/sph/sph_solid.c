@@ -7,7 +7,8 @@
  *   Lᵢ = Σⱼ (mⱼ/ρⱼ) (vⱼ − vᵢ) ⊗ ∇ᵢWᵢⱼ                       (same body only)
  *   Ṡᵢ from Lᵢ (Jaumann, strength.h); S* = return(Sⁿ + ½Δt Ṡ), S¹ = return(Sⁿ + Δt Ṡ)
  *   deviatoric heating S*:ε̇/ρ.
- * Second pass, with σ = −pI + S:
+ * Second pass, with σ = −pI + S (its principal tensions removed for split particles
+ * without tension, fracture.h):
  *   dvᵢ/dt = Σⱼ mⱼ (σᵢ/ρᵢ² + σⱼ/ρⱼ² − Πᵢⱼ I + (Rᵢ + Rⱼ) fᵢⱼⁿ)·∇ᵢWᵢⱼ
  *   deᵢ/dt += Σⱼ mⱼ (pᵢ/ρᵢ² + Πᵢⱼ/2) vᵢⱼ·∇ᵢWᵢⱼ
  * with fᵢⱼ = W(rᵢⱼ)/W(Δp) and Δp = hᵢⱼ/η the particle spacing (Gray, Monaghan & Swift
