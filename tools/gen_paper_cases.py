@@ -134,7 +134,8 @@ def plate_bodies(name, mat, x0, t, w, count, disc_r, layers=None):
   - name: {name}-core   # {layers} layers within {fmt(disc_r)} mm of the impact axis
     material: {mat}
     shape: {{{disc}}}
-    particles: {n_disc}""", f"[{name}, {name}-core]")
+    particles: {n_disc}
+    part_of: {name}      # one plate: stress and tension across the seam""", f"[{name}, {name}-core]")
 
 
 def write(name, title, section, notes, body):

@@ -46,6 +46,9 @@ struct sim {
   int nmat;
   struct body_info body[64];
   int nbody;
+  /* the piece of each body (bodies[i].part_of, resolved to the root body): bodies of one
+     piece interact as one body (sph.piece points here) */
+  int32_t piece[64];
   struct sph_params sph;
   struct time_params tp;
   struct output_params out;

@@ -478,6 +478,60 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
   }
 }
 
+/* bodies[i].part_of: NAME joins body i to body NAME: one solid, whose particles interact
+ * across the seam as within a body (a plate refined by a disc of finer lattice around
+ * the impact point; a target block with a finer core). Chains are followed to their
+ * root; s->piece[b] is the root, and sph.piece points at the table once any body is
+ * joined (NULL otherwise: every body its own piece, the code path of old). */
+static int read_pieces(struct sim *s, struct cfg *c, int nb, struct hv_error *err)
+{
+  char key[64], where[256];
+  int part_of[64], any = 0;
+  for (int b = 0; b < nb; b++) {
+    s->piece[b] = b;
+    part_of[b] = b;
+    snprintf(key, sizeof key, "bodies[%d].part_of", b);
+    const char *name;
+    if (!cfg_has(c, key)) continue;
+    if (cfg_get_string(c, key, NULL, &name, err)) return -1;
+    int t = -1;
+    for (int k = 0; k < nb; k++)
+      if (!strcmp(s->body[k].name, name)) t = k;
+    if (t < 0 || t == b) {
+      char names[1024] = "";
+      for (int k = 0; k < nb; k++)
+        if (k != b)
+          snprintf(names + strlen(names), sizeof names - strlen(names), "%s'%s'",
+                   names[0] ? ", " : "", s->body[k].name);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of '%s' %s (the other "
+                          "bodies: %s)", cfg_where(c, key, where, sizeof where), key,
+                          s->body[b].name, name, t == b ? "is the body itself" : "names no body",
+                          names[0] ? names : "none");
+    }
+    if (s->mat[s->body[b].mat].eos == EOS_IDEAL_GAS || s->mat[s->body[t].mat].eos == EOS_IDEAL_GAS)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of joins solid bodies; "
+                          "'%s' or '%s' is a gas", cfg_where(c, key, where, sizeof where), key,
+                          s->body[b].name, s->body[b].name, s->body[t].name);
+    part_of[b] = t;
+    any = 1;
+  }
+  for (int b = 0; b < nb; b++) {
+    int r = b, hops = 0;
+    while (part_of[r] != r && hops <= nb) {
+      r = part_of[r];
+      hops++;
+    }
+    if (hops > nb) {
+      snprintf(key, sizeof key, "bodies[%d].part_of", b);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of goes round in a "
+                          "circle", cfg_where(c, key, where, sizeof where), key, s->body[b].name);
+    }
+    s->piece[b] = r;
+  }
+  s->sph.piece = any ? s->piece : NULL;
+  return 0;
+}
+
 int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
 {
   char where[256], key[64];
@@ -493,6 +547,7 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   struct body_spec *bs = hv_calloc((size_t)nb, sizeof *bs, "bodies");
   int rc = 0;
   for (int b = 0; b < nb && !rc; b++) rc = read_body(s, c, b, &bs[b], resolution, err);
+  if (!rc) rc = read_pieces(s, c, nb, err);
   /* solid fields are needed once any material has strength or fracture */
   for (int m = 0; m < s->nmat && !rc; m++)
     if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)

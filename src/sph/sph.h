@@ -38,6 +38,10 @@ struct sph_params {
   int reconstruct;     /* solids: the viscosity of a pair of one body, both with
                           strength, sees the velocity difference reconstructed linearly
                           to the pair's midpoint (slope-limited); see sph_forces_solid */
+  const int32_t *piece; /* solids: piece[b] is the body that body b is part of
+                          (bodies[i].part_of); pairs of one piece interact as within
+                          one body (stress, tension, velocity gradient), pairs of
+                          different pieces as contact. NULL: every body its own piece */
   int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */

@@ -118,7 +118,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
   const size_t n = p->n;
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho;
-  const int32_t *body = p->body;
+  const int32_t *body = p->body, *piece = sp->piece;
   const enum kernel_kind kk = sp->kernel;
   double *gradv = NULL;   /* sph.viscosity.reconstruct: L of every real */
   if (sp->reconstruct && cache) {
@@ -149,7 +149,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         /* the reconstruction's gradient: intact strength particles only (split ones
            with friction keep the standard viscosity, as without it) */
         const int recon = strong && p->damage[i] < 1.0;
-        const int32_t bi = body[i];
+        const int32_t bi = piece ? piece[body[i]] : body[i];
         const int cond_i = mi->eos != EOS_IDEAL_GAS;
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
@@ -165,7 +165,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           /* a pair of different bodies separating may unload a compressed particle
              back to its reference density, but not stretch it beyond: contact carries
              no tension, in the density as in the forces */
-          if (body[j] != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
+          const int32_t bj = piece ? piece[body[j]] : body[j];
+          if (bj != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
           /* a condensed particle's density follows condensed neighbours only: a gas
              particle's volume mⱼ/ρⱼ is hundreds of times its own, and its velocity
              would set the compression of a fragment flying through the gas (lone
@@ -173,7 +174,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              through the pressure force */
           if (cond_i && mat[p->mat[j]].eos == EOS_IDEAL_GAS) continue;
           sum -= w * udx;
-          if (strong && body[j] == bi) {
+          if (strong && bj == bi) {
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
             L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
             L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
@@ -252,7 +253,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   const double *m = p->m, *rho = p->rho, *pr = p->p, *cs = p->cs;
   const double *px = p->x[0], *py = p->x[1], *pz = p->x[2], *ph = p->h;
-  const int32_t *body = p->body;
+  const int32_t *body = p->body, *piece = sp->piece;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
   const int use_as = sp->as_eps > 0;
@@ -317,7 +318,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
       rany |= p->R[t][j] != 0.0;
     }
     w[TW_R + 6] = w[TW_R + 7] = 0.0;
-    bf[j] = 2 * body[j] + rany;
+    bf[j] = 2 * (piece ? piece[body[j]] : body[j]) + rany;
   }
 
 #pragma omp parallel
@@ -343,7 +344,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           Ri[k] = p->R[k][i];
           Ri_any |= Ri[k] != 0.0;
         }
-        const int32_t bi = body[i];
+        const int32_t bi = piece ? piece[body[i]] : body[i];
         const int gas_i = mat[p->mat[i]].eos == EOS_IDEAL_GAS;
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {

@@ -222,6 +222,26 @@ static void expect_error(const char *what, const char *yaml, const char *needle)
 
 static void test_errors(void)
 {
+  /* part_of: a name that is no body, the body itself, a circle, a gas */
+  static const char *const pf =
+      "materials: {st: {library: steel-bumper}, gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "bodies:\n"
+      "  - {name: a, material: %s, density: 1, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}%s}\n"
+      "  - {name: b, material: st, spacing: 0.1, shape: {type: box, min: [2, 0, 0], max: [3, 1, 1]}%s}\n"
+      "time: {end: 1}\n";
+  char y[1024];
+  snprintf(y, sizeof y, pf, "st", ", part_of: c", "");
+  expect_error("part_of an unknown body", y, "shape.yaml:3: bodies[0].part_of: body 'a': part_of "
+               "'c' names no body (the other bodies: 'b')");
+  snprintf(y, sizeof y, pf, "st", ", part_of: a", "");
+  expect_error("part_of itself", y, "part_of 'a' is the body itself");
+  snprintf(y, sizeof y, pf, "st", ", part_of: b", ", part_of: a");
+  expect_error("part_of in a circle", y, "part_of goes round in a circle");
+  snprintf(y, sizeof y, pf, "gas", "", ", part_of: a");
+  expect_error("part_of a gas", y, "part_of joins solid bodies; 'b' or 'a' is a gas");
+  snprintf(y, sizeof y, pf, "st", "", ", part_of: a");
+  struct setup_result ok = setup_case(y);
+  CHECK(ok.rc == 0, "part_of between two solid bodies sets up (%s)", ok.msg);
   expect_error("overlap",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
                "bodies:\n"
