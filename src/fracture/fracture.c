@@ -41,12 +41,6 @@ int fracture_project(double p, double T[6])
   return 1;
 }
 
-void fracture_deviator(double T[6])
-{
-  const double m = (T[0] + T[1] + T[2]) / 3.0;
-  for (int k = 0; k < 3; k++) T[k] -= m;
-}
-
 double fracture_effective(double p, const double S[6], double Se[6])
 {
   for (int k = 0; k < 6; k++) Se[k] = S[k];

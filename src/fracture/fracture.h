@@ -42,8 +42,6 @@ int fracture_no_tension(const struct fracture_params *fp, double damage);
 /* σ = −pI + T with its positive principal stresses set to 0, returned as T (no longer
  * traceless: σ' = −pI + T'); 1 if anything was removed, 0 if σ had no tension. */
 int fracture_project(double p, double T[6]);
-/* T ← T − (tr T/3) I. */
-void fracture_deviator(double T[6]);
 /* The pressure and deviator of σ' (σ = −pI + S with its tensions removed): returns p',
  * Se gets S' (σ' = −p'I + S'); p and S themselves if σ has no tension. */
 double fracture_effective(double p, const double S[6], double Se[6]);

@@ -215,10 +215,9 @@ static long end_stress(struct sim *s, double dt)
     if (fracture_no_tension(&m->frac, p->damage[i])) {
       /* split without tension: the deviator of σ with its principal tensions removed
          (the pressure stays the EOS's; each step's forces remove its tension again) */
-      if (fracture_project(p->p[i], S)) {
-        fracture_deviator(S);
-        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
-      }
+      double Se[6];
+      fracture_effective(p->p[i], S, Se);
+      for (int k = 0; k < 6; k++) p->S[k][i] = Se[k];
     } else if (p->damage[i] >= 1.0) {
       /* splitting releases the deviatoric stress; with friction it builds up again
          under pressure (sph_solid.c), limited by min(Y, μp) */

@@ -31,6 +31,12 @@
 #include "strength/strength.h"
 #include "strength/sym3.h"
 
+/* The piece of body b (bodies[i].part_of; every body its own without a table). */
+static inline int32_t piece_of(const int32_t *piece, int32_t b)
+{
+  return piece ? piece[b] : b;
+}
+
 /* Whether particle i carries a deviatoric stress: a material with strength, intact or
  * split with friction (fracture.friction). */
 static int has_strength(const struct material *m, double damage)
@@ -149,7 +155,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         /* the reconstruction's gradient: intact strength particles only (split ones
            with friction keep the standard viscosity, as without it) */
         const int recon = strong && p->damage[i] < 1.0;
-        const int32_t bi = piece ? piece[body[i]] : body[i];
+        const int32_t bi = piece_of(piece, body[i]);
         const int cond_i = mi->eos != EOS_IDEAL_GAS;
         double sum = 0.0, L[9] = {0}, A[9] = {0};
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
@@ -165,7 +171,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           /* a pair of different bodies separating may unload a compressed particle
              back to its reference density, but not stretch it beyond: contact carries
              no tension, in the density as in the forces */
-          const int32_t bj = piece ? piece[body[j]] : body[j];
+          const int32_t bj = piece_of(piece, body[j]);
           if (bj != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
           /* a condensed particle's density follows condensed neighbours only: a gas
              particle's volume mⱼ/ρⱼ is hundreds of times its own, and its velocity
@@ -318,7 +324,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
       rany |= p->R[t][j] != 0.0;
     }
     w[TW_R + 6] = w[TW_R + 7] = 0.0;
-    bf[j] = 2 * (piece ? piece[body[j]] : body[j]) + rany;
+    bf[j] = 2 * (piece_of(piece, body[j])) + rany;
   }
 
 #pragma omp parallel
@@ -344,7 +350,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           Ri[k] = p->R[k][i];
           Ri_any |= Ri[k] != 0.0;
         }
-        const int32_t bi = piece ? piece[body[i]] : body[i];
+        const int32_t bi = piece_of(piece, body[i]);
         const int gas_i = mat[p->mat[i]].eos == EOS_IDEAL_GAS;
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         for (size_t k = 0; k < nsel; k++) {

@@ -116,9 +116,17 @@ static void test_no_tension(void)
   CHECK(fracture_project(-1e8, H) == 1 && fabs(H[0] + 1e8) < 1e-6 * 1e8 &&
         fabs(H[1] + 1e8) < 1e-6 * 1e8 && fabs(H[2] + 1e8) < 1e-6 * 1e8 && fabs(H[3]) < 1.0,
         "no-tension: hydrostatic tension released entirely (T = pI, σ' = 0)");
-  double D[6] = {3, -1, 4, 2, 5, -7};
-  fracture_deviator(D);
-  CHECK(fabs(D[0] + D[1] + D[2]) < 1e-12 && D[0] == 1.0 && D[3] == 2.0, "deviator: traceless");
+  /* the same σ split into p' and a traceless S' (σ' = −p'I + S'): p' = −tr σ'/3 = 4/3·10⁸ */
+  double S0d[6], Se[6];
+  for (int k = 0; k < 6; k++) S0d[k] = sig[k] + (k < 3 ? p : 0.0);
+  const double pe = fracture_effective(p, S0d, Se);
+  double err2 = fabs(Se[0] + Se[1] + Se[2]);
+  for (int k = 0; k < 6; k++) err2 = fmax(err2, fabs(Se[k] - (k < 3 ? pe : 0.0) - want[k]));
+  CHECK(fabs(pe - 4e8 / 3) < 1e-6 * 3e8 && err2 < 1e-6 * 3e8, "no-tension: p' = %.6g Pa "
+        "(4/3e8), S' traceless and -p'I + S' = σ' (largest error %g Pa)", pe, err2);
+  double Cc[6];   /* no tension: p and S returned as they are */
+  CHECK(fracture_effective(1e8, C0, Cc) == 1e8 && !memcmp(Cc, C0, sizeof Cc),
+        "no-tension: p and S unchanged without tension");
 }
 
 static void test_fracture(void)
