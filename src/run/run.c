@@ -417,8 +417,12 @@ int run_main(const struct run_options *ro)
                     "stopped (max_steps)" : "done", &err))
     goto fail;
   if (interrupted) {
-    hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s%s",
-            s.t, s.step, o.dir, s.out.checkpoint ? " (continue with hvsph restart)" : "");
+    if (s.step == 0)   /* before the first step: the initial outputs only, no checkpoint */
+      hv_info("interrupted before the first step; %s holds the initial state's outputs, "
+              "no checkpoint (run the case again)", o.dir);
+    else
+      hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s%s",
+              s.t, s.step, o.dir, s.out.checkpoint ? " (continue with hvsph restart)" : "");
     status = HV_EXIT_INTERRUPTED;
   } else if (!ro->quiet) {
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
