@@ -36,6 +36,8 @@ static void on_sigint(int sig)
   signal(sig, SIG_DFL);   /* a second Ctrl-C (or SIGTERM) stops at once */
 }
 
+int run_interrupted(void) { return interrupted != 0; }
+
 static double wall_time(void) { return omp_get_wtime(); }
 
 /* totals over the particles; absorbed_*: what absorbing faces removed so far, so that
@@ -332,6 +334,7 @@ int run_main(const struct run_options *ro)
   memset(&o, 0, sizeof o);
   memset(&s, 0, sizeof s);
   int status = HV_EXIT_OK;
+  interrupted = 0;
   if (ro->threads > 0) omp_set_num_threads(ro->threads);
   const char *restart = ro->restart_dir;
   char path[4200], ckpt[4200];
@@ -403,7 +406,6 @@ int run_main(const struct run_options *ro)
               "time.end=LATER)", s.tp.end);
     goto done;
   }
-  interrupted = 0;
   signal(SIGINT, on_sigint);
   signal(SIGTERM, on_sigint);
   segment_begin(&seg, o.dir, restart != NULL, &s);

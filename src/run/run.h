@@ -18,6 +18,9 @@ struct run_options {
 
 /* Returns an exit status (enum hv_exit); prints its own messages. */
 int run_main(const struct run_options *o);
+/* Whether the last run_main was stopped by SIGINT or SIGTERM, whatever its exit status
+ * (a failure to write the state after the signal returns that failure's status). */
+int run_interrupted(void);
 
 /* Reads a case file (with overrides) into a ready simulation; used by run and bench. */
 struct sim;

@@ -360,10 +360,14 @@ int validate_main(int argc, char **argv)
     vc->status = -1;
     char dir[4200], mpath[4300], png[4300];
     snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
-    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, vc)) failed++;
+    /* a case stopped by the user with its state written has not failed */
+    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, vc) &&
+        vc->status != HV_EXIT_INTERRUPTED)
+      failed++;
     /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
-       too: the tables are written for the cases so far */
-    interrupted = vc->status == HV_EXIT_INTERRUPTED;
+       too, also when writing that state failed: the tables are written for the cases
+       so far */
+    interrupted = !norun && (vc->status == HV_EXIT_INTERRUPTED || run_interrupted());
     if (norun) vc->status = 0;
     vc->particles = particles_of(dir);
     {   /* the run's wall time over all its segments (runs and restarts), when recorded */
@@ -430,7 +434,7 @@ int validate_main(int argc, char **argv)
   cfg_free(ref);
   if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &err)) goto fail;
   fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
-                  "validation.csv\n", ncase, failed - interrupted,
+                  "validation.csv\n", ncase, failed,
           interrupted ? ", interrupted (the later cases were not run)" : "", outdir);
   return interrupted ? HV_EXIT_INTERRUPTED : failed ? HV_EXIT_RUN : 0;
 fail_ref:
