@@ -50,6 +50,9 @@ void meas_cavity_defaults(struct meas_cavity_params *par, const struct meas_geom
   par->r_open = g->spacing;
   par->v_max = INFINITY;
   par->min_count = 1;
+  par->wall_slab = 4.0 * g->spacing;
+  par->wall_dr = 0.25 * g->spacing;
+  par->wall_fill = 0.5;
   par->mask = NULL;
 }
 
@@ -71,6 +74,83 @@ static int cavity_taken(const struct particles *p, size_t i, const struct meas_g
   return 1;
 }
 
+#define CAVITY_MAX_WALL_BINS 50000000
+
+/* Adds w × (the share of [lo, hi] that falls in bin j, bins of width d from 0) to
+ * acc[j] for j < n. */
+static void spread(double *acc, size_t n, double d, double lo, double hi, double w)
+{
+  if (!(hi > lo)) return;
+  const double per = w / (hi - lo);
+  const double jlo = floor(lo / d), jhi = floor(hi / d);
+  for (double jd = fmax(0.0, jlo); jd <= jhi && jd < (double)n; jd += 1.0) {
+    const double a = fmax(lo, jd * d), b = fmin(hi, (jd + 1.0) * d);
+    if (b > a) acc[(size_t)jd] += per * (b - a);
+  }
+}
+
+/* The wall by filled volume over the slabs wholly within x0 .. x0 + out->L (measure.h):
+ * sets out->D_wall, D_wall_mean and nwall. Each particle fills a cube of its own volume
+ * m/ρ: its volume is spread evenly over its edge w = (m/ρ)^(1/3) in depth and in radius
+ * (clipped at the axis), so that a lattice fills the annuli evenly whatever its spacing
+ * and orientation, and a sharp wall of centres at r_c reads as material from r_c − w/2. */
+static int cavity_wall(const struct particles *p, const struct meas_geom *g,
+                       const struct meas_cavity_params *par, struct meas_cavity *out,
+                       struct hv_error *err)
+{
+  const double ds = par->wall_slab, dr = par->wall_dr;
+  const double nsd = floor(out->L / ds);
+  if (!(nsd >= 1.0)) return 0;
+  double rmax = 0.0;
+  for (size_t i = 0; i < p->n; i++)
+    if (cavity_taken(p, i, g, par) && p->x[0][i] < g->x0 + nsd * ds + g->spacing)
+      rmax = fmax(rmax, radial(p, i, g->yc));
+  const double nbd = floor((rmax + g->spacing) / dr) + 2.0;
+  if (!(nsd * nbd <= CAVITY_MAX_WALL_BINS))
+    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: %g × %g wall bins; use wider "
+                        "wall_slab or wall_dr", nsd, nbd);
+  const size_t ns = (size_t)nsd, nb = (size_t)nbd;
+  double *vol = hv_calloc(ns * nb, sizeof *vol, "cavity wall bins");
+  for (size_t i = 0; i < p->n; i++) {
+    if (!cavity_taken(p, i, g, par) || !(p->rho[i] > 0) || !(p->m[i] > 0)) continue;
+    const double v = p->m[i] / p->rho[i], w = cbrt(v), x = p->x[0][i] - g->x0;
+    if (!isfinite(w)) continue;
+    const double x0 = x - 0.5 * w, x1 = x + 0.5 * w, r = radial(p, i, g->yc);
+    for (double kd = fmax(0.0, floor(x0 / ds)); kd <= floor(x1 / ds) && kd < nsd; kd += 1.0) {
+      const double in = fmin(x1, (kd + 1.0) * ds) - fmax(x0, kd * ds);
+      if (in > 0)
+        spread(vol + (size_t)kd * nb, nb, dr, fmax(0.0, r - 0.5 * w), r + 0.5 * w, v * in / w);
+    }
+  }
+  const double share = g->half_model ? 0.5 : 1.0;
+  double sum = 0.0;
+  for (size_t k = 0; k < ns; k++) {
+    double *f = vol + k * nb;
+    for (size_t b = 0; b < nb; b++) {
+      const double r0 = (double)b * dr, r1 = r0 + dr;
+      f[b] /= share * HV_MEAS_PI * (r1 * r1 - r0 * r0) * ds;
+    }
+    double rw = (double)nb * dr;  /* no crossing: the wall is beyond the material */
+    for (size_t b = 0; b < nb; b++) {
+      if (f[b] < par->wall_fill || (b + 1 < nb && f[b + 1] < par->wall_fill)) continue;
+      if (b == 0) {
+        rw = 0.0;
+      } else {  /* between the centres of annuli b − 1 (below the fill) and b */
+        const double f0 = f[b - 1], f1 = f[b];
+        const double t = f1 > f0 ? (par->wall_fill - f0) / (f1 - f0) : 1.0;
+        rw = ((double)b - 0.5 + fmin(1.0, fmax(0.0, t))) * dr;
+      }
+      break;
+    }
+    out->D_wall = fmax(out->D_wall, 2.0 * rw);
+    sum += 2.0 * rw;
+  }
+  free(vol);
+  out->nwall = ns;
+  out->D_wall_mean = sum / (double)ns;
+  return 0;
+}
+
 int measure_cavity(const struct particles *p, const struct meas_geom *g,
                    const struct meas_cavity_params *par, struct meas_cavity *out,
                    struct hv_error *err)
@@ -79,10 +159,12 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   if (geom_ok(g, "cavity measurement", err)) return -1;
   if (!(par->slice > 0 && isfinite(par->slice) && par->footprint >= 0 &&
         isfinite(par->footprint) && par->r_open >= 0 && isfinite(par->r_open) &&
-        par->v_max > 0 && par->min_count >= 1 && par->min_count <= CAVITY_MAX_COUNT))
+        par->v_max > 0 && par->min_count >= 1 && par->min_count <= CAVITY_MAX_COUNT &&
+        par->wall_slab > 0 && isfinite(par->wall_slab) && par->wall_dr > 0 &&
+        isfinite(par->wall_dr) && par->wall_fill > 0 && par->wall_fill < 1))
     return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: slice (> 0), footprint, r_open "
-                        "(>= 0), v_max (> 0) and min_count (1..%d) out of range",
-                        CAVITY_MAX_COUNT);
+                        "(>= 0), v_max (> 0), min_count (1..%d), wall_slab and wall_dr (> 0) "
+                        "and wall_fill (0..1) out of range", CAVITY_MAX_COUNT);
   const int K = par->min_count;
   const double dx = par->slice, fp = par->footprint;
   out->slice = dx;
@@ -146,7 +228,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
     cnt++;
   }
   out->D_mean = cnt ? sum / (double)cnt : 0.0;
-  return 0;
+  return cavity_wall(p, g, par, out, err);
 }
 
 /* ---- debris cloud ---------------------------------------------------------------- */

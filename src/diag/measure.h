@@ -69,7 +69,17 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  *    with target material (matching the experimenters' post-test cross-sections,
  *    which show the widest section); D_mean averages 2 r_k over the same slices.
  * No cavity (slice 0 closed): L = D = 0. Resolution: L within about one slice plus the
- * lattice's half spacing, D within about Δ. */
+ * lattice's half spacing, D within about Δ.
+ * The wall by filled volume (D_wall, D_wall_mean), robust to single particles inside the
+ * cavity and independent of the lattice: the target is cut in slabs `wall_slab` thick
+ * from x0 and each slab in annuli `wall_dr` wide about the axis; each target particle
+ * fills a cube of its volume m/ρ, spread evenly over its edge (m/ρ)^(1/3) in depth and in
+ * radius, and an annulus's filled fraction is the volume it receives over its own (half
+ * of it in a half model). The slab's wall radius is where the fraction first crosses `wall_fill`,
+ * interpolated between annulus centres, in the first annulus that reaches it with the
+ * next one (a single filled annulus of stray particles is passed over). D_wall = 2 max
+ * and D_wall_mean = the mean of the wall radius over the slabs that lie wholly within
+ * x0 .. x0 + L; 0 when none does. Resolution: about wall_dr where the wall is sharp. */
 struct meas_cavity_params {
   double slice;      /* [m] slice thickness (default Δ/2) */
   double footprint;  /* [m] (default Δ/2) */
@@ -78,6 +88,9 @@ struct meas_cavity_params {
                         cavity wall (default INFINITY: all taken) */
   int min_count;     /* 1..8: the radius is set by the min_count-th nearest particle, so
                         min_count − 1 stray particles inside the cavity are ignored (default 1) */
+  double wall_slab;  /* [m] slab thickness of the filled-volume wall (default 4Δ) */
+  double wall_dr;    /* [m] annulus width of the filled-volume wall (default Δ/4) */
+  double wall_fill;  /* filled fraction that marks the wall, in (0, 1) (default 0.5) */
   const unsigned char *mask;  /* optional [p->n] */
 };
 struct meas_cavity {
@@ -85,6 +98,9 @@ struct meas_cavity {
   double D;           /* [m] largest cavity diameter */
   double D_mean;      /* [m] mean cavity diameter over the open slices */
   double depth_at_D;  /* [m] depth (slice centre) of the widest slice */
+  double D_wall;      /* [m] largest wall diameter by filled volume (slabs within L) */
+  double D_wall_mean; /* [m] mean wall diameter by filled volume over the same slabs */
+  size_t nwall;       /* slabs wholly within L (those D_wall and D_wall_mean cover) */
   int perforated;     /* the cavity runs through all the target material */
   size_t nslice;      /* slices examined (x0 to the deepest target particle) */
   size_t nopen;       /* open slices from the surface (K) */

@@ -114,6 +114,8 @@ void meas_table_add_cavity(struct meas_table *t, double time, const char *object
   meas_table_add(t, time, "penetration_depth", r->L, "m", object);
   meas_table_add(t, time, "cavity_diameter", r->D, "m", object);
   meas_table_add(t, time, "cavity_diameter_mean", r->D_mean, "m", object);
+  meas_table_add(t, time, "cavity_diameter_wall", r->D_wall, "m", object);
+  meas_table_add(t, time, "cavity_diameter_wall_mean", r->D_wall_mean, "m", object);
   meas_table_add(t, time, "perforated", r->perforated, "", object);
 }
 

@@ -11,7 +11,9 @@
  * across the window is an open hole.
  * Blocks: a cylindrical cavity of known depth and diameter gives L and D within Δ; a
  * wider entrance crater sets D (the largest) but not D_mean; a stray particle in the
- * cavity stops it unless min_count or v_max leave it out.
+ * cavity stops it unless min_count or v_max leave it out. The wall by filled volume
+ * (D_wall) reads a punched cylinder within Δ/2 on cubic and hcp lattices and does not
+ * move for strays that narrow D_mean.
  * A target of two bodies (`measure.thick_target: [block, core]`, a block refined near its
  * axis, run through `hvsph run` to t = 0): a cavity 8 mm deep and 6 mm across cut into
  * the fine core gives L and D within the core's spacing, in rows named after the first
@@ -350,6 +352,13 @@ static void test_cavity(void)
   CHECK_CLOSE(r.D, 2 * (rmin_wall - 0.5 * S), 1e-12, "D = 2 (ρ_min − Δ/2)");
   CHECK(!r.perforated && r.nopen > 0 && r.nslice >= 99, "not perforated; %zu slices, %zu open",
         r.nslice, r.nopen);
+  /* the wall by filled volume: five slabs of 4Δ lie within L = 23.4Δ; the removed
+     centres take π Rc² of the cross-section, so the wall reads 2 Rc within Δ/2 */
+  const double Dw = r.D_wall, Dwm = r.D_wall_mean;
+  CHECK(r.nwall == 5, "five wall slabs within L (%zu)", r.nwall);
+  CHECK(fabs(Dw - 2 * Rc) <= 0.5 * S && fabs(Dwm - 2 * Rc) <= 0.5 * S,
+        "wall by filled volume: D_wall = %.3fΔ, D_wall_mean = %.3fΔ, 2 Rc = %.2fΔ within Δ/2",
+        Dw / S, Dwm / S, 2 * Rc / S);
   meas_cavity_free(&r);
 
   /* a stray target particle inside the cavity at depth 10.2Δ */
@@ -414,6 +423,84 @@ static void test_cavity(void)
   particles_free(&p);
 }
 
+/* A block with a cavity of radius R (in Δ) and depth 23.4Δ on a cubic or hcp lattice,
+ * with nstray single particles inside it at radius 3Δ: returns the measurement. */
+static struct meas_cavity wall_case(double R, int hcp, int nstray)
+{
+  struct particles p;
+  particles_init(&p);
+  const double lo[3] = {0, -15 * S, 0}, hi[3] = {50 * S, 15 * S, 15 * S};
+  const struct cut c = {.R = R * S, .xcut = 23.4 * S};
+  add_lattice(&p, lo, hi, hcp, &c, 2, 23.4 * S);
+  if (hcp)  /* an hcp site holds Δ³/√2 */
+    for (size_t i = 0; i < p.n; i++) p.m[i] /= sqrt(2.0);
+  for (int k = 0; k < nstray; k++) {  /* at depths 1.2, 3.2, 5.2 … Δ, angle 0.3 + 0.13k */
+    const double a = 0.3 + 0.13 * k, q[3] = {(1.2 + 2.0 * k) * S, 3 * S * cos(a), 3 * S * sin(a)};
+    add_particle(&p, q, 2);
+  }
+  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
+                        .half_model = 1};
+  struct meas_cavity_params par;
+  meas_cavity_defaults(&par, &g);
+  struct meas_cavity r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0, "wall case runs: %s", err.msg);
+  particles_free(&p);
+  return r;
+}
+
+/* The wall by filled volume (D_wall, D_wall_mean): a cut cavity reads its radius within
+ * Δ/2 on cubic and hcp lattices (the removed centres take π R² of the cross-section);
+ * eleven stray particles inside the channel (one every 2Δ of depth) narrow D_mean by
+ * more than Δ/2 and D_wall by less than Δ/10; bad parameters are refused. */
+static void test_cavity_wall(void)
+{
+  const double radii[2] = {4.6, 9.3};
+  for (int hcp = 0; hcp < 2; hcp++)
+    for (int k = 0; k < 2; k++) {
+      struct meas_cavity r = wall_case(radii[k], hcp, 0);
+      CHECK(r.nwall == 5, "%s, R = %.1fΔ: five wall slabs of 4Δ within L = %.2fΔ (%zu)",
+            hcp ? "hcp" : "cubic", radii[k], r.L / S, r.nwall);
+      CHECK(fabs(r.D_wall - 2 * radii[k] * S) <= 0.5 * S &&
+                fabs(r.D_wall_mean - 2 * radii[k] * S) <= 0.5 * S,
+            "%s, R = %.1fΔ: D_wall = %.3fΔ, D_wall_mean = %.3fΔ, 2R within Δ/2 (nearest "
+            "particle: D = %.3fΔ)", hcp ? "hcp" : "cubic", radii[k], r.D_wall / S,
+            r.D_wall_mean / S, r.D / S);
+      meas_cavity_free(&r);
+    }
+  struct meas_cavity a = wall_case(4.6, 0, 0), b = wall_case(4.6, 0, 11);
+  CHECK(fabs(b.L - a.L) <= 1e-12, "the strays leave L as it is (%.3fΔ)", b.L / S);
+  CHECK(a.D_mean - b.D_mean > 0.5 * S, "eleven strays narrow D_mean by more than Δ/2: %.3fΔ → %.3fΔ",
+        a.D_mean / S, b.D_mean / S);
+  CHECK(fabs(a.D_wall_mean - b.D_wall_mean) < 0.1 * S && fabs(a.D_wall - b.D_wall) < 0.1 * S,
+        "… and the wall by filled volume by less than Δ/10: D_wall_mean %.3fΔ → %.3fΔ, "
+        "D_wall %.3fΔ → %.3fΔ", a.D_wall_mean / S, b.D_wall_mean / S, a.D_wall / S, b.D_wall / S);
+  meas_cavity_free(&a);
+  meas_cavity_free(&b);
+
+  struct particles p;
+  particles_init(&p);
+  block(&p, &(struct cut){.R = 4.6 * S, .xcut = 23.4 * S});
+  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
+                        .half_model = 1};
+  struct meas_cavity_params par;
+  struct hv_error err;
+  const double bad[3][3] = {{0, 0.25, 0.5}, {4, -1, 0.5}, {4, 0.25, 1.0}};
+  for (int k = 0; k < 3; k++) {
+    meas_cavity_defaults(&par, &g);
+    par.wall_slab = bad[k][0] * S;
+    par.wall_dr = bad[k][1] * S;
+    par.wall_fill = bad[k][2];
+    hv_error_clear(&err);
+    CHECK(measure_cavity(&p, &g, &par, &a, &err) == -1 && err.code == HV_EXIT_INPUT &&
+              strstr(err.msg, "wall"),
+          "wall_slab %gΔ, wall_dr %gΔ, wall_fill %g: refused (%s)", bad[k][0], bad[k][1],
+          bad[k][2], err.msg);
+  }
+  particles_free(&p);
+}
+
 /* the last value of (quantity, object) in a measurements.csv; NAN if none */
 static double csv_value(const char *path, const char *quantity, const char *object)
 {
@@ -472,7 +559,7 @@ static void test_cavity_two_bodies(void)
       "measure: {thick_target: %s}\n";
   char text[2048], what[128], path[4400];
   const char *targets[] = {"[block, core]", "block", "[]", "[block, cores]"};
-  double L[2] = {NAN, NAN}, D[2] = {NAN, NAN}, perf[2] = {NAN, NAN};
+  double L[2] = {NAN, NAN}, D[2] = {NAN, NAN}, Dw[2] = {NAN, NAN}, perf[2] = {NAN, NAN};
   for (int k = 0; k < 4; k++) {
     snprintf(text, sizeof text, fmt, targets[k]);
     snprintf(what, sizeof what, "thick_target: %s", targets[k]);
@@ -480,12 +567,15 @@ static void test_cavity_two_bodies(void)
       continue;
     L[k] = csv_value(path, "penetration_depth", "block");
     D[k] = csv_value(path, "cavity_diameter", "block");
+    Dw[k] = csv_value(path, "cavity_diameter_wall", "block");
     perf[k] = csv_value(path, "perforated", "block");
   }
   const double dc = 0.5e-3;  /* the core's spacing */
   CHECK(fabs(L[0] - 8e-3) <= dc, "two bodies: L = %.3f mm, 8 mm within the core's 0.5 mm",
         1e3 * L[0]);
   CHECK(fabs(D[0] - 6e-3) <= dc, "two bodies: D = %.3f mm, 6 mm within 0.5 mm", 1e3 * D[0]);
+  CHECK(fabs(Dw[0] - 6e-3) <= 0.5 * dc, "two bodies: D_wall = %.3f mm, 6 mm within 0.25 mm",
+        1e3 * Dw[0]);
   CHECK(L[1] > 19e-3 && perf[1] == 1.0, "the outer block alone sees the core's channel as a "
         "perforation: L = %.2f mm", 1e3 * L[1]);
 }
@@ -640,6 +730,7 @@ int main(void)
   test_detached();
   test_ellipse_and_open();
   test_cavity();
+  test_cavity_wall();
   test_cavity_two_bodies();
   test_plate_two_bodies();
   test_backwall_two_bodies();
