@@ -446,12 +446,144 @@ static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struc
  * 2.2-2.8 from 52 on (docs/validation.md, "Light debris on a heavy backwall"). */
 #define MASS_RATIO_WARN 30.0
 
+#define MEET_MAX_CELLS 4000000.0
+
+/* Cell index of coordinate u on a grid of cells `cell` wide from u0. */
+static long meet_cell(double u, double u0, double cell) { return (long)floor((u - u0) / cell); }
+
+/* 1 when bodies a and b can meet (their particles first_of[·] .. + count): a particle of
+ * one lies within `reach` (twice the larger spacing) of a particle of the other at the
+ * start (bodies that touch: a seam, a plate on a plate), or the footprint of a, swept
+ * along the relative velocity of the two (their mean velocities), comes within reach of
+ * a particle of b ahead of it (a projectile aimed at a body; columns of reach/2, so
+ * within 1.5 reach at most). A grid that would be too large answers 1 (the warning is
+ * kept rather than missed). */
+static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
+{
+  const struct particles *p = &s->p;
+  const struct body_info *A = &s->body[a], *B = &s->body[b];
+  const double reach = 2.0 * fmax(A->spacing, B->spacing);
+  const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
+  /* 1: touching at the start, within the overlap of the boxes grown by reach */
+  double lo[3], hi[3], ncell = 1.0;
+  int overlap = 1;
+  for (int d = 0; d < 3; d++) {
+    lo[d] = fmax(A->lo[d], B->lo[d]) - reach;
+    hi[d] = fmin(A->hi[d], B->hi[d]) + reach;
+    if (!(hi[d] >= lo[d])) overlap = 0;
+    ncell *= overlap ? floor((hi[d] - lo[d]) / reach) + 1.0 : 0.0;
+  }
+  if (overlap) {
+    if (ncell > MEET_MAX_CELLS) return 1;
+    const long n0 = (long)floor((hi[0] - lo[0]) / reach) + 1;
+    const long n1 = (long)floor((hi[1] - lo[1]) / reach) + 1;
+    const long n2 = (long)floor((hi[2] - lo[2]) / reach) + 1;
+    const size_t nc = (size_t)(n0 * n1 * n2);
+    /* a's particles in the region, sorted by cell (counting sort) */
+    size_t *start = hv_calloc(nc + 1, sizeof *start, "body contact grid");
+    long *cell = hv_malloc(na * sizeof *cell, "body contact cells");
+    for (size_t q = 0; q < na; q++) {
+      const size_t r = fa + q;
+      const long i = meet_cell(p->x[0][r], lo[0], reach), j = meet_cell(p->x[1][r], lo[1], reach),
+                 k = meet_cell(p->x[2][r], lo[2], reach);
+      cell[q] = i >= 0 && i < n0 && j >= 0 && j < n1 && k >= 0 && k < n2 ? (i * n1 + j) * n2 + k : -1;
+      if (cell[q] >= 0) start[cell[q] + 1]++;
+    }
+    for (size_t t = 0; t < nc; t++) start[t + 1] += start[t];
+    size_t *fill = hv_malloc((nc + 1) * sizeof *fill, "body contact fill");
+    memcpy(fill, start, (nc + 1) * sizeof *fill);
+    size_t *list = hv_malloc((start[nc] + 1) * sizeof *list, "body contact list");
+    for (size_t q = 0; q < na; q++)
+      if (cell[q] >= 0) list[fill[cell[q]]++] = fa + q;
+    free(fill);
+    free(cell);
+    int meet = 0;
+    for (size_t q = fb; q < fb + nb && !meet; q++) {
+      const long i = meet_cell(p->x[0][q], lo[0], reach), j = meet_cell(p->x[1][q], lo[1], reach),
+                 k = meet_cell(p->x[2][q], lo[2], reach);
+      for (long ii = i - 1; ii <= i + 1 && !meet; ii++)
+        for (long jj = j - 1; jj <= j + 1 && !meet; jj++)
+          for (long kk = k - 1; kk <= k + 1 && !meet; kk++) {
+            if (ii < 0 || ii >= n0 || jj < 0 || jj >= n1 || kk < 0 || kk >= n2) continue;
+            const size_t t = (size_t)((ii * n1 + jj) * n2 + kk);
+            for (size_t l = start[t]; l < start[t + 1] && !meet; l++) {
+              const size_t r = list[l];
+              const double dx = p->x[0][r] - p->x[0][q], dy = p->x[1][r] - p->x[1][q],
+                           dz = p->x[2][r] - p->x[2][q];
+              meet = dx * dx + dy * dy + dz * dz <= reach * reach;
+            }
+          }
+    }
+    free(list);
+    free(start);
+    if (meet) return 1;
+  }
+  /* 2: a's footprint swept along u = v̄_a − v̄_b */
+  double u[3] = {0, 0, 0};
+  for (size_t q = fa; q < fa + na; q++)
+    for (int d = 0; d < 3; d++) u[d] += p->v[d][q] / (double)na;
+  for (size_t q = fb; q < fb + nb; q++)
+    for (int d = 0; d < 3; d++) u[d] -= p->v[d][q] / (double)nb;
+  const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  if (!(un > 0)) return 0;
+  for (int d = 0; d < 3; d++) u[d] /= un;
+  /* e1, e2: an orthonormal basis of the plane across u */
+  const int m = fabs(u[0]) < 0.6 ? 0 : 1;
+  double e1[3] = {0, 0, 0}, e2[3];
+  e1[m] = 1.0;
+  const double ud = u[m];
+  for (int d = 0; d < 3; d++) e1[d] -= ud * u[d];
+  const double n1n = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  for (int d = 0; d < 3; d++) e1[d] /= n1n;
+  e2[0] = u[1] * e1[2] - u[2] * e1[1];
+  e2[1] = u[2] * e1[0] - u[0] * e1[2];
+  e2[2] = u[0] * e1[1] - u[1] * e1[0];
+  double plo[2] = {HUGE_VAL, HUGE_VAL}, phi[2] = {-HUGE_VAL, -HUGE_VAL};
+  for (size_t q = fa; q < fa + na; q++) {
+    const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
+    const double c1 = x[0] * e1[0] + x[1] * e1[1] + x[2] * e1[2];
+    const double c2 = x[0] * e2[0] + x[1] * e2[1] + x[2] * e2[2];
+    plo[0] = fmin(plo[0], c1); phi[0] = fmax(phi[0], c1);
+    plo[1] = fmin(plo[1], c2); phi[1] = fmax(phi[1], c2);
+  }
+  /* columns half the reach wide; a particle of b within reach of a's footprint is at
+     most two columns from one of a's (caught), one farther than 1.5 reach is not */
+  const double col = 0.5 * reach;
+  const long m1 = (long)floor((phi[0] - plo[0]) / col) + 1;
+  const long m2 = (long)floor((phi[1] - plo[1]) / col) + 1;
+  if ((double)m1 * (double)m2 > MEET_MAX_CELLS) return 1;
+  double *rear = hv_malloc((size_t)(m1 * m2) * sizeof *rear, "body sweep grid");
+  for (long t = 0; t < m1 * m2; t++) rear[t] = HUGE_VAL;   /* a's rearmost point per column */
+  for (size_t q = fa; q < fa + na; q++) {
+    const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
+    const long i = meet_cell(x[0] * e1[0] + x[1] * e1[1] + x[2] * e1[2], plo[0], col);
+    const long j = meet_cell(x[0] * e2[0] + x[1] * e2[1] + x[2] * e2[2], plo[1], col);
+    const double s0 = x[0] * u[0] + x[1] * u[1] + x[2] * u[2];
+    if (s0 < rear[i * m2 + j]) rear[i * m2 + j] = s0;
+  }
+  int meet = 0;
+  for (size_t q = fb; q < fb + nb && !meet; q++) {
+    const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
+    const long i = meet_cell(x[0] * e1[0] + x[1] * e1[1] + x[2] * e1[2], plo[0], col);
+    const long j = meet_cell(x[0] * e2[0] + x[1] * e2[1] + x[2] * e2[2], plo[1], col);
+    const double s0 = x[0] * u[0] + x[1] * u[1] + x[2] * u[2];
+    for (long di = -2; di <= 2 && !meet; di++)
+      for (long dj = -2; dj <= 2 && !meet; dj++) {
+        const long ii = i + di, jj = j + dj;
+        meet = ii >= 0 && ii < m1 && jj >= 0 && jj < m2 && s0 >= rear[ii * m2 + jj] - reach;
+      }
+  }
+  free(rear);
+  return meet;
+}
+
 /* Where bodies of very different particle masses meet, the light particles' continuity
  * density is dominated by their few heavy neighbours: they are over-compressed and set
  * a tiny time step (the §3 vessel at the paper's counts: a 0.25 mm projectile lattice
  * against a 1.3 mm wall, masses 140 times apart, 32 projectile particles at 3.6 times
  * aluminium's density and Δt 6.5e-10 s). Said once per heavy body, naming every body
- * that much lighter, with the remedy. */
+ * that much lighter that it can meet (bodies_can_meet: a rod aimed at a block's finer
+ * core does not meet the coarse block around it), with the remedy. */
 static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb)
 {
   for (int b = 0; b < nb; b++) {
@@ -462,7 +594,7 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
     double worst = 0.0;
     for (int a = 0; a < nb; a++) {
       const double ma = s->p.m[first_of[a]];
-      if (a == b || mb < MASS_RATIO_WARN * ma) continue;
+      if (a == b || mb < MASS_RATIO_WARN * ma || !bodies_can_meet(s, first_of, a, b)) continue;
       int w = snprintf(list + len, sizeof list - len, "%s'%s' (%.0f-fold, %.3g kg)",
                        nlight ? ", " : "", s->body[a].name, mb / ma, ma);
       if (w > 0) len = len + (size_t)w < sizeof list ? len + (size_t)w : sizeof list - 1;

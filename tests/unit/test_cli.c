@@ -473,6 +473,84 @@ static void test_late_input_error(void)
   free(prev);
 }
 
+/* The mass-ratio warning names only bodies that can meet (bodies_can_meet, src/setup):
+ * a light tungsten rod (0.2 mm lattice, 1/55 of the steel block's particle mass) aimed
+ * at a block of 1 mm is named; aimed at a 0.5 mm core joined to that block through its
+ * whole depth, the block 5 mm from the axis, it is not (the core is 7 times heavier than
+ * the rod, the block 55 times but out of the rod's path); nor when it flies past the
+ * block's face (along y, 4 mm in front of it: more than 1.5 times the 2 mm reach), nor
+ * aimed 5 mm beside it; a light disc (0.25 mm) set in a heavy
+ * ring (1 mm) at rest, a seam, is named. */
+static void test_mass_ratio_warning(void)
+{
+  static const char *const fmt =
+      "name: meet\n"
+      "domain: {min: [-8 mm, -18 mm, 0], max: [11 mm, 18 mm, 12 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: rod\n"
+      "    material: tungsten-alloy\n"
+      "    shape: {type: cylinder, center: [-5 mm, %s, 0], axis: [1, 0, 0], radius: 0.5 mm, length: 3 mm}\n"
+      "    spacing: 0.2 mm\n"
+      "    velocity: [%s]\n"
+      "  - name: block\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -10 mm, -10 mm], max: [10 mm, 10 mm, 10 mm]%s}\n"
+      "    spacing: 1 mm\n"
+      "%s"
+      "time: {end: 0}\n";
+  static const char *const core =
+      "  - name: core\n"
+      "    material: steel-target\n"
+      "    part_of: block\n"
+      "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [10 mm, 5 mm, 5 mm]}\n"
+      "    spacing: 0.5 mm\n";
+  static const char *const hole =
+      ",\n            minus: [{type: box, min: [0, -5 mm, -5 mm], max: [10 mm, 5 mm, 5 mm]}]";
+  struct {
+    const char *what, *y, *v, *minus, *extra;
+    int warn;
+  } v[] = {
+      {"a rod aimed at the coarse block", "0", "2 km/s, 0, 0", "", "", 1},
+      {"a rod aimed at a fine core through the coarse block", "0", "2 km/s, 0, 0", hole, core, 0},
+      {"a rod flying past the block's face", "0", "0, 2 km/s, 0", "", "", 0},
+      {"a rod aimed beside the block (at y = 15 mm, 5 mm outside it)", "15 mm", "2 km/s, 0, 0", "", "", 0},
+  };
+  char yaml[4096], name[64], args[4400], out[16384];
+  for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) {
+    snprintf(yaml, sizeof yaml, fmt, v[k].y, v[k].v, v[k].minus, v[k].extra);
+    snprintf(name, sizeof name, "meet_%zu.yaml", k);
+    const char *file = test_write_file(name, yaml);
+    snprintf(args, sizeof args, "run '%s' -o '%s/meet_%zu'", file, test_tmpdir(), k);
+    const int st = hvsph(args, out, sizeof out);
+    const int warned = strstr(out, "much heavier than 'rod'") != NULL;
+    CHECK(st == 0 && warned == v[k].warn, "%s: exit %d, the rod %s named in a mass-ratio warning "
+          "(expected %s): %s", v[k].what, st, warned ? "is" : "is not", v[k].warn ? "named" : "not",
+          out);
+  }
+  /* a 0.25 mm disc set in a 1 mm ring at rest: they touch at the seam */
+  static const char *const seam =
+      "name: seam\n"
+      "domain: {min: [-2 mm, -12 mm, 0], max: [4 mm, 12 mm, 12 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: ring\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -10 mm, -10 mm], max: [2 mm, 10 mm, 10 mm],\n"
+      "            minus: [{type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 4 mm, length: 2 mm}]}\n"
+      "    spacing: 1 mm\n"
+      "  - name: disc\n"
+      "    material: steel-target\n"
+      "    part_of: ring\n"
+      "    shape: {type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 4 mm, length: 2 mm}\n"
+      "    spacing: 0.25 mm\n"
+      "time: {end: 0}\n";
+  const char *file = test_write_file("meet_seam.yaml", seam);
+  snprintf(args, sizeof args, "run '%s' -o '%s/meet_seam'", file, test_tmpdir());
+  const int st = hvsph(args, out, sizeof out);
+  CHECK(st == 0 && strstr(out, "'ring'") && strstr(out, "much heavier than 'disc'"),
+        "a light disc in a heavy ring at rest (a seam): the ring's warning names the disc "
+        "(exit %d): %s", st, out);
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -484,6 +562,7 @@ int main(void)
   test_bad_input();
   test_outdir();
   test_late_input_error();
+  test_mass_ratio_warning();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "field rho: -", NULL});
