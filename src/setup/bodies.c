@@ -455,8 +455,8 @@ static long meet_cell(double u, double u0, double cell) { return (long)floor((u 
  * one lies within `reach` (twice the larger spacing) of a particle of the other at the
  * start (bodies that touch: a seam, a plate on a plate), or the footprint of a, swept
  * along the relative velocity of the two (their mean velocities), comes within reach of
- * a particle of b ahead of it (a projectile aimed at a body; columns of reach/2, so
- * within 1.5 reach at most). A grid that would be too large answers 1 (the warning is
+ * a particle of b ahead of it (a projectile aimed at a body; columns of reach/2, so b's
+ * particles up to 1.5 reach from the footprint across the flight may count too). A grid that would be too large answers 1 (the warning is
  * kept rather than missed). */
 static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
 {

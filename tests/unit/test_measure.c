@@ -322,7 +322,22 @@ static void test_ellipse_and_open(void)
   particles_free(&p);
 }
 
-/* A block 50Δ deep at x0 = 0, |y| <= 15Δ, 0 <= z <= 15Δ, with a cavity. */
+/* A block 50Δ deep at x0 = 0, |y| <= 15Δ, 0 <= z <= 15Δ (a half model), with a cavity. */
+static const struct meas_geom BLOCK_G = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0,
+                                         .spacing = S, .half_model = 1};
+
+/* The cavity of the block's particles with the default parameters. */
+static struct meas_cavity measure_block(const struct particles *p)
+{
+  struct meas_cavity_params par;
+  meas_cavity_defaults(&par, &BLOCK_G);
+  struct meas_cavity r;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(measure_cavity(p, &BLOCK_G, &par, &r, &err) == 0, "cavity measurement runs: %s", err.msg);
+  return r;
+}
+
 static void block(struct particles *p, const struct cut *c)
 {
   const double lo[3] = {0, -15 * S, 0}, hi[3] = {50 * S, 15 * S, 15 * S};
@@ -336,14 +351,12 @@ static void test_cavity(void)
   const double Rc = 4.6 * S, Lc = 23.4 * S;
   const struct cut c = {.R = Rc, .xcut = Lc};
   block(&p, &c);
-  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
-                        .half_model = 1};
+  struct meas_geom g = BLOCK_G;
   struct meas_cavity_params par;
   meas_cavity_defaults(&par, &g);
-  struct meas_cavity r;
+  struct meas_cavity r = measure_block(&p);
   struct hv_error err;
   hv_error_clear(&err);
-  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0, "cavity measurement runs: %s", err.msg);
   CHECK(fabs(r.L - Lc) <= S, "cavity depth %.2fΔ: L = %.3fΔ within Δ", Lc / S, r.L / S);
   CHECK(fabs(r.D - 2 * Rc) <= S, "cavity diameter %.2fΔ: D = %.3fΔ within Δ", 2 * Rc / S, r.D / S);
   CHECK(fabs(r.D_mean - 2 * Rc) <= S, "D_mean = %.3fΔ within Δ", r.D_mean / S);
@@ -438,14 +451,7 @@ static struct meas_cavity wall_case(double R, int hcp, int nstray)
     const double a = 0.3 + 0.13 * k, q[3] = {(1.2 + 2.0 * k) * S, 3 * S * cos(a), 3 * S * sin(a)};
     add_particle(&p, q, 2);
   }
-  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
-                        .half_model = 1};
-  struct meas_cavity_params par;
-  meas_cavity_defaults(&par, &g);
-  struct meas_cavity r;
-  struct hv_error err;
-  hv_error_clear(&err);
-  CHECK(measure_cavity(&p, &g, &par, &r, &err) == 0, "wall case runs: %s", err.msg);
+  struct meas_cavity r = measure_block(&p);
   particles_free(&p);
   return r;
 }
@@ -482,8 +488,7 @@ static void test_cavity_wall(void)
   struct particles p;
   particles_init(&p);
   block(&p, &(struct cut){.R = 4.6 * S, .xcut = 23.4 * S});
-  struct meas_geom g = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S,
-                        .half_model = 1};
+  struct meas_geom g = BLOCK_G;
   struct meas_cavity_params par;
   struct hv_error err;
   const double bad[3][3] = {{0, 0.25, 0.5}, {4, -1, 0.5}, {4, 0.25, 1.0}};
