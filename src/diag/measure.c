@@ -75,6 +75,7 @@ static int cavity_taken(const struct particles *p, size_t i, const struct meas_g
 }
 
 #define CAVITY_MAX_WALL_BINS 50000000
+#define CAVITY_WALL_ANNULI 4000.0
 
 /* Adds w × (the share of [lo, hi] that falls in bin j, bins of width d from 0) to
  * acc[j] for j < n. */
@@ -105,7 +106,9 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
   for (size_t i = 0; i < p->n; i++)
     if (cavity_taken(p, i, g, par) && p->x[0][i] < g->x0 + nsd * ds + g->spacing)
       rmax = fmax(rmax, radial(p, i, g->yc));
-  const double nbd = floor((rmax + g->spacing) / dr) + 2.0;
+  /* annuli out to the farthest target particle, at most CAVITY_WALL_ANNULI of them: a
+     fragment flung far out is not wall, and the wall lies within the first few hundred */
+  const double nbd = fmin(floor((rmax + g->spacing) / dr) + 2.0, CAVITY_WALL_ANNULI);
   if (!(nsd * nbd <= CAVITY_MAX_WALL_BINS))
     return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: %g × %g wall bins; use wider "
                         "wall_slab or wall_dr", nsd, nbd);
