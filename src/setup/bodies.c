@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "eos/eos.h"
+#include "neighbours/grid.h"
 #include "setup/setup.h"
 
 enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
@@ -446,76 +447,76 @@ static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struc
  * 2.2-2.8 from 52 on (docs/validation.md, "Light debris on a heavy backwall"). */
 #define MASS_RATIO_WARN 30.0
 
-#define MEET_MAX_CELLS 4000000.0
+#define MEET_MAX_COLUMNS 4000000.0
 
 /* Cell index of coordinate u on a grid of cells `cell` wide from u0. */
 static long meet_cell(double u, double u0, double cell) { return (long)floor((u - u0) / cell); }
 
 /* 1 when bodies a and b can meet (their particles first_of[·] .. + count): a particle of
  * one lies within `reach` (twice the larger spacing) of a particle of the other at the
- * start (bodies that touch: a seam, a plate on a plate), or the footprint of a, swept
- * along the relative velocity of the two (their mean velocities), comes within reach of
- * a particle of b ahead of it (a projectile aimed at a body; columns of reach/2, so b's
- * particles up to 1.5 reach from the footprint across the flight may count too). A grid that would be too large answers 1 (the warning is
- * kept rather than missed). */
+ * start (bodies that touch: a seam, a plate on a plate; found on the neighbour search's
+ * cell grid), or the footprint of a, swept along the relative velocity of the two (their
+ * mean velocities), comes within reach of a particle of b ahead of it (a projectile aimed
+ * at a body; columns of reach/2, so b's particles up to 1.5 reach from the footprint
+ * across the flight may count too). A region too wide for either grid answers 1 (the
+ * warning is kept rather than missed). */
 static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
 {
   const struct particles *p = &s->p;
   const struct body_info *A = &s->body[a], *B = &s->body[b];
   const double reach = 2.0 * fmax(A->spacing, B->spacing);
   const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
-  /* 1: touching at the start, within the overlap of the boxes grown by reach */
-  double lo[3], hi[3], ncell = 1.0;
+  /* 1: touching at the start: the particles of both within the overlap of their boxes
+     grown by reach, on the solver's cell grid with h = reach/2 (a pair links when
+     r < h_i + h_j = reach) */
+  double lo[3], hi[3];
   int overlap = 1;
   for (int d = 0; d < 3; d++) {
     lo[d] = fmax(A->lo[d], B->lo[d]) - reach;
     hi[d] = fmin(A->hi[d], B->hi[d]) + reach;
-    if (!(hi[d] >= lo[d])) overlap = 0;
-    ncell *= overlap ? floor((hi[d] - lo[d]) / reach) + 1.0 : 0.0;
+    overlap &= hi[d] >= lo[d];
   }
   if (overlap) {
-    if (ncell > MEET_MAX_CELLS) return 1;
-    const long n0 = (long)floor((hi[0] - lo[0]) / reach) + 1;
-    const long n1 = (long)floor((hi[1] - lo[1]) / reach) + 1;
-    const long n2 = (long)floor((hi[2] - lo[2]) / reach) + 1;
-    const size_t nc = (size_t)(n0 * n1 * n2);
-    /* a's particles in the region, sorted by cell (counting sort) */
-    size_t *start = hv_calloc(nc + 1, sizeof *start, "body contact grid");
-    long *cell = hv_malloc(na * sizeof *cell, "body contact cells");
-    for (size_t q = 0; q < na; q++) {
-      const size_t r = fa + q;
-      const long i = meet_cell(p->x[0][r], lo[0], reach), j = meet_cell(p->x[1][r], lo[1], reach),
-                 k = meet_cell(p->x[2][r], lo[2], reach);
-      cell[q] = i >= 0 && i < n0 && j >= 0 && j < n1 && k >= 0 && k < n2 ? (i * n1 + j) * n2 + k : -1;
-      if (cell[q] >= 0) start[cell[q] + 1]++;
+    size_t n = 0;
+    uint32_t *id = hv_malloc((na + nb + 1) * sizeof *id, "body contact selection");
+    for (size_t q = 0; q < na + nb; q++) {
+      const size_t r = q < na ? fa + q : fb + (q - na);
+      int in = 1;
+      for (int d = 0; d < 3; d++) in &= p->x[d][r] >= lo[d] && p->x[d][r] <= hi[d];
+      if (in) id[n++] = (uint32_t)r;
     }
-    for (size_t t = 0; t < nc; t++) start[t + 1] += start[t];
-    size_t *fill = hv_malloc((nc + 1) * sizeof *fill, "body contact fill");
-    memcpy(fill, start, (nc + 1) * sizeof *fill);
-    size_t *list = hv_malloc((start[nc] + 1) * sizeof *list, "body contact list");
-    for (size_t q = 0; q < na; q++)
-      if (cell[q] >= 0) list[fill[cell[q]]++] = fa + q;
-    free(fill);
-    free(cell);
+    double *xs[3], *hs = hv_malloc((n + 1) * sizeof *hs, "body contact h");
+    for (int d = 0; d < 3; d++) xs[d] = hv_malloc((n + 1) * sizeof *xs[d], "body contact x");
+    for (size_t k = 0; k < n; k++) {
+      for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][id[k]];
+      hs[k] = 0.5 * reach;
+    }
+    struct nbr_grid g;
+    nbr_grid_init(&g);
+    char msg[256];
     int meet = 0;
-    for (size_t q = fb; q < fb + nb && !meet; q++) {
-      const long i = meet_cell(p->x[0][q], lo[0], reach), j = meet_cell(p->x[1][q], lo[1], reach),
-                 k = meet_cell(p->x[2][q], lo[2], reach);
-      for (long ii = i - 1; ii <= i + 1 && !meet; ii++)
-        for (long jj = j - 1; jj <= j + 1 && !meet; jj++)
-          for (long kk = k - 1; kk <= k + 1 && !meet; kk++) {
-            if (ii < 0 || ii >= n0 || jj < 0 || jj >= n1 || kk < 0 || kk >= n2) continue;
-            const size_t t = (size_t)((ii * n1 + jj) * n2 + kk);
-            for (size_t l = start[t]; l < start[t + 1] && !meet; l++) {
-              const size_t r = list[l];
-              const double dx = p->x[0][r] - p->x[0][q], dy = p->x[1][r] - p->x[1][q],
-                           dz = p->x[2][r] - p->x[2][q];
-              meet = dx * dx + dy * dy + dz * dz <= reach * reach;
-            }
+    if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
+                                nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
+      meet = 1;   /* too wide a region for the grid: keep the warning */
+    for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
+      for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
+        const uint32_t i = g.order[ii];
+        const int ia = p->body[id[i]] == a;
+        for (uint32_t kk = g.nbr_start[cc]; kk < g.nbr_start[cc + 1] && !meet; kk++) {
+          const int32_t nc = g.nbr_list[kk];
+          for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
+            const uint32_t j = g.order[jj];
+            if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
+            const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
+                         dz = xs[2][i] - xs[2][j];
+            meet = dx * dx + dy * dy + dz * dz < reach * reach;
           }
-    }
-    free(list);
-    free(start);
+        }
+      }
+    nbr_grid_free(&g);
+    for (int d = 0; d < 3; d++) free(xs[d]);
+    free(hs);
+    free(id);
     if (meet) return 1;
   }
   /* 2: a's footprint swept along u = v̄_a − v̄_b */
@@ -551,7 +552,7 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
   const double col = 0.5 * reach;
   const long m1 = (long)floor((phi[0] - plo[0]) / col) + 1;
   const long m2 = (long)floor((phi[1] - plo[1]) / col) + 1;
-  if ((double)m1 * (double)m2 > MEET_MAX_CELLS) return 1;
+  if ((double)m1 * (double)m2 > MEET_MAX_COLUMNS) return 1;
   double *rear = hv_malloc((size_t)(m1 * m2) * sizeof *rear, "body sweep grid");
   for (long t = 0; t < m1 * m2; t++) rear[t] = HUGE_VAL;   /* a's rearmost point per column */
   for (size_t q = fa; q < fa + na; q++) {
