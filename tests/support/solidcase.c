@@ -207,3 +207,33 @@ double sc_linfit(const double *x, const double *y, int n, double *a, double *rms
   }
   return b;
 }
+
+const char *sc_run_open(const char *example, const char *outname, const char *extra,
+                        const char *label, int min_snap, int *nsnap)
+{
+  double secs;
+  const int rc = sc_run(example, outname, extra, &secs);
+  CHECK(rc == 0, "%s runs (exit status %d, %.1f s)", label, rc, secs);
+  if (rc) return NULL;
+  const char *dir = sc_outdir(outname);
+  *nsnap = sc_count_snapshots(dir);
+  CHECK(*nsnap >= min_snap, "%s: %d snapshots", label, *nsnap);
+  return *nsnap >= min_snap ? dir : NULL;
+}
+
+int sc_two_bodies(const char *dir, struct particles *p0, int *layer[2], int nl[2])
+{
+  if (sc_read(dir, 0, p0, NULL)) {
+    CHECK(0, "snapshot 0 of %s readable", dir);
+    return -1;
+  }
+  const size_t nid = p0->n;
+  unsigned char *sel = malloc(nid);
+  for (int b = 0; b < 2; b++) {
+    for (size_t i = 0; i < nid; i++) sel[i] = p0->body[i] == b;
+    layer[b] = malloc(nid * sizeof(int));
+    nl[b] = sc_layers(p0, sel, 0, 0.2 * p0->h[0], layer[b], nid);
+  }
+  free(sel);
+  return 0;
+}

@@ -23,6 +23,17 @@
  * printed. */
 int sc_run(const char *example, const char *outname, const char *extra, double *seconds);
 
+/* sc_run, then opens its output: CHECKs that the case ran (label names it in the
+ * message) and wrote at least min_snap snapshots. Returns the output folder (sc_outdir)
+ * and *nsnap, or NULL after a failed CHECK. */
+const char *sc_run_open(const char *example, const char *outname, const char *extra,
+                        const char *label, int min_snap, int *nsnap);
+
+/* A quasi-1D case of two bodies (0 and 1): reads snapshot 0 of dir into p0 and numbers
+ * each body's lattice layers along x (sc_layers, tolerance 0.2 h): layer[b] (malloc'd,
+ * indexed by particle id) and nl[b]. Returns 0, or -1 after a failed CHECK. */
+int sc_two_bodies(const char *dir, struct particles *p0, int *layer[2], int nl[2]);
+
 /* $HVSPH_TMP/<outname> (static buffer, rotates 4). */
 const char *sc_outdir(const char *outname);
 

@@ -86,26 +86,12 @@ int main(void)
   CHECK(fabs(u / U_CASE - 1) < 1e-6, "the case file is set in the interface's frame (u = %.4f "
         "m/s, the case's %.4f)", u, U_CASE);
 
-  double secs;
-  int rc = sc_run("impedance", "impedance", NULL, &secs);
-  CHECK(rc == 0, "impedance.yaml runs (exit status %d, %.1f s)", rc, secs);
-  if (rc) return test_finish();
-  const char *dir = sc_outdir("impedance");
-  const int nsnap = sc_count_snapshots(dir);
-  CHECK(nsnap >= 6, "%d snapshots", nsnap);
-  if (nsnap < 6) return test_finish();
-
+  int nsnap;
+  const char *dir = sc_run_open("impedance", "impedance", NULL, "impedance.yaml", 6, &nsnap);
   struct particles p0;
-  double t0;
-  if (sc_read(dir, 0, &p0, &t0)) return CHECK(0, "snapshot 0 readable"), test_finish();
-  const size_t nid = p0.n;
-  unsigned char *sel = malloc(nid);
   int *layer[2], nl[2];
-  for (int b = 0; b < 2; b++) {
-    for (size_t i = 0; i < p0.n; i++) sel[i] = p0.body[i] == b;
-    layer[b] = malloc(nid * sizeof(int));
-    nl[b] = sc_layers(&p0, sel, 0, 0.2 * p0.h[0], layer[b], nid);
-  }
+  if (!dir || sc_two_bodies(dir, &p0, layer, nl)) return test_finish();
+  const size_t nid = p0.n;
   printf("particles: %zu; layers: tungsten %d, steel %d\n", nid, nl[0], nl[1]);
 
   const int nmax = nl[0] > nl[1] ? nl[0] : nl[1];
@@ -168,7 +154,6 @@ int main(void)
           pref[b] * 1e-9);
   }
   for (int b = 0; b < 2; b++) free(layer[b]);
-  free(sel);
   free(X);
   free(V);
   free(P);
