@@ -171,9 +171,14 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   const int K = par->min_count;
   const double dx = par->slice, fp = par->footprint;
   out->slice = dx;
+  /* material more than 2Δ behind the block's original rear face (spall, a plug or
+     fragments thrown through it) is not the cavity's: the slices end there, so a
+     fragment flung far along the axis neither asks for ~10⁸ slices nor moves L */
+  const double xcap = g->thickness > 0 ? g->x0 + g->thickness + 2.0 * g->spacing : (double)INFINITY;
   double xmax = -INFINITY;
   for (size_t i = 0; i < p->n; i++)
-    if (cavity_taken(p, i, g, par) && p->x[0][i] > xmax) xmax = p->x[0][i];
+    if (cavity_taken(p, i, g, par) && p->x[0][i] > xmax && p->x[0][i] <= xcap)
+      xmax = p->x[0][i];
   if (!isfinite(xmax)) return 0;  /* no target material below the surface */
   const double ns = floor((xmax - g->x0) / dx) + 1.0;
   if (!(ns <= CAVITY_MAX_SLICES))
@@ -183,7 +188,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   double *best = hv_malloc(nslice * (size_t)K * sizeof *best, "cavity slices");
   for (size_t k = 0; k < nslice * (size_t)K; k++) best[k] = INFINITY;
   for (size_t i = 0; i < p->n; i++) {
-    if (!cavity_taken(p, i, g, par)) continue;
+    if (!cavity_taken(p, i, g, par) || p->x[0][i] > xcap) continue;
     size_t k = (size_t)((p->x[0][i] - g->x0) / dx);
     if (k >= nslice) k = nslice - 1;
     double r = radial(p, i, g->yc), *b = best + k * (size_t)K;
@@ -211,7 +216,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   } else {
     double xb = INFINITY;
     for (size_t i = 0; i < p->n; i++) {
-      if (!cavity_taken(p, i, g, par)) continue;
+      if (!cavity_taken(p, i, g, par) || p->x[0][i] > xcap) continue;
       size_t k = (size_t)((p->x[0][i] - g->x0) / dx);
       if (k >= nslice) k = nslice - 1;
       if (k == kc && radial(p, i, g->yc) - fp <= par->r_open && p->x[0][i] < xb) xb = p->x[0][i];

@@ -64,7 +64,9 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  *    x_b the smallest x of the target particles of slice K that close it
  *    (ρ − footprint <= r_open); if no slice closes (no target material left on the
  *    axis below the cavity) the block is perforated and L = the depth of the deepest
- *    target particle plus the footprint (the rear of the material).
+ *    target particle plus the footprint (the rear of the material). Target material
+ *    more than 2Δ behind the original rear face x0 + thickness (spall, a plug or
+ *    fragments thrown through) is left out of the slices (thickness 0: nothing is).
  * D: the largest cavity diameter over the depth, D = 2 max_k r_k over the open slices
  *    with target material (matching the experimenters' post-test cross-sections,
  *    which show the widest section); D_mean averages 2 r_k over the same slices.
@@ -102,7 +104,7 @@ struct meas_cavity {
   double D_wall_mean; /* [m] mean wall diameter by filled volume over the same slabs */
   size_t nwall;       /* slabs wholly within L (those D_wall and D_wall_mean cover) */
   int perforated;     /* the cavity runs through all the target material */
-  size_t nslice;      /* slices examined (x0 to the deepest target particle) */
+  size_t nslice;      /* slices examined (x0 to the deepest target particle within 2Δ of the rear face) */
   size_t nopen;       /* open slices from the surface (K) */
   double slice;       /* [m] slice thickness used */
   double *r_profile;  /* [nslice] cavity radius r_k of slice k, depth (k + ½) slice [m];

@@ -493,9 +493,24 @@ static void test_cavity_wall(void)
   CHECK(fabs(a.D_wall - b.D_wall) < 1e-12 && fabs(a.D_wall_mean - b.D_wall_mean) < 1e-12,
         "a particle 10 km from the axis: D_wall %.3fΔ → %.3fΔ (annuli capped)", a.D_wall / S,
         b.D_wall / S);
-  meas_cavity_free(&a);
   meas_cavity_free(&b);
   particles_free(&q);
+  /* target fragments flung 100 km and 2.1Δ behind the block's rear face (50Δ), on the
+     axis: left out of the slices, so L, D and the slices stay as they are (before, the
+     100 km one asked for 4·10⁸ slices and the measurement failed) */
+  const double far[2] = {1e5, 52.1 * S};
+  for (int k = 0; k < 2; k++) {
+    particles_init(&q);
+    block(&q, &(struct cut){.R = 4.6 * S, .xcut = 23.4 * S});
+    add_particle(&q, (const double[3]){far[k], 0.0, 0.0}, 2);
+    b = measure_block(&q);
+    CHECK(b.L == a.L && b.D == a.D && b.nslice == a.nslice,
+          "a fragment on the axis at x = %g m: L %.3fΔ → %.3fΔ, D %.3fΔ → %.3fΔ, %zu → %zu "
+          "slices", far[k], a.L / S, b.L / S, a.D / S, b.D / S, a.nslice, b.nslice);
+    meas_cavity_free(&b);
+    particles_free(&q);
+  }
+  meas_cavity_free(&a);
 
   struct particles p;
   particles_init(&p);
