@@ -186,6 +186,22 @@ double sc_mg_pressure(double rho0, double c0, double n, double Gamma, double rho
   return pc + Gamma * rho * (E - Ec);
 }
 
+void sc_mg_hugoniot(double rho0, double c0, double n, double Gamma, double up, double *rho1,
+                    double *Us, double *p1)
+{
+  double a = rho0 * (1.0 + 1e-9), b = 4.0 * rho0;   /* residual < 0 at a, > 0 at b */
+  for (int k = 0; k < 200; k++) {
+    const double r = 0.5 * (a + b);
+    const double p = rho0 * up * up * r / (r - rho0);   /* the jump conditions' p₁(ρ₁) */
+    const double E = 0.5 * p * (1.0 / rho0 - 1.0 / r);
+    if (sc_mg_pressure(rho0, c0, n, Gamma, r, E) - p > 0) b = r;
+    else a = r;
+  }
+  *rho1 = 0.5 * (a + b);
+  *Us = up * *rho1 / (*rho1 - rho0);
+  *p1 = rho0 * *Us * up;
+}
+
 double sc_linfit(const double *x, const double *y, int n, double *a, double *rms)
 {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;

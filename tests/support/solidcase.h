@@ -80,6 +80,13 @@ double sc_plateau(const double *X, const double *f, int n, double front, double 
  * η = ρ/ρ₀. [Pa] from SI inputs. */
 double sc_mg_pressure(double rho0, double c0, double n, double Gamma, double rho, double E);
 
+/* The shocked state of that material at rest ahead (p₀ = 0, E₀ = 0) for the particle
+ * speed jump up: the jump conditions ρ₀Us = ρ₁(Us − up), p₁ = ρ₀Us·up,
+ * E₁ = ½p₁(1/ρ₀ − 1/ρ₁), closed by p₁ = sc_mg_pressure(ρ₁, E₁) and solved for ρ₁ in
+ * (ρ₀, 4ρ₀) by bisection to round-off. Gives ρ₁ [kg/m³], Us [m/s], p₁ [Pa]. */
+void sc_mg_hugoniot(double rho0, double c0, double n, double Gamma, double up, double *rho1,
+                    double *Us, double *p1);
+
 /* Least-squares line y = a + b x through n points; returns b, *a gets a (may be NULL),
  * *rms the rms residual (may be NULL). */
 double sc_linfit(const double *x, const double *y, int n, double *a, double *rms);

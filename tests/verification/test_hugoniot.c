@@ -9,7 +9,7 @@
  * (in the frame of the unshocked plate)
  *   ρ₀ Us = ρ₁ (Us − up),   p₁ = ρ₀ Us up,   E₁ = ½ (p₀ + p₁)(1/ρ₀ − 1/ρ₁),
  * closed by p₁ = p_EOS(ρ₁, E₁) with the paper's §2.1 EOS (written out again here,
- * independently of src/eos), solved for ρ₁ by bisection:
+ * independently of src/eos: sc_mg_hugoniot), solved for ρ₁ by bisection:
  *   p₁(ρ₁) = ρ₀ up² ρ₁/(ρ₁ − ρ₀) must equal p_c(ρ₁) + Γρ₁(E₁ − E_c(ρ₁)).
  * For al-alloy: ρ₁ = 3258.7 kg/m³, Us = 6.807 km/s, p₁ = 18.92 GPa.
  *
@@ -63,23 +63,10 @@ static double rh_residual(double rho1, double up)
   return eos_p(rho1, E1) - p1;
 }
 
-static void rankine_hugoniot(double up, double *rho1, double *Us, double *p1)
-{
-  double a = RHO0 * (1.0 + 1e-6), b = 3.0 * RHO0;   /* residual < 0 at a, > 0 at b */
-  for (int k = 0; k < 200; k++) {
-    double m = 0.5 * (a + b);
-    if (rh_residual(m, up) > 0) b = m;
-    else a = m;
-  }
-  *rho1 = 0.5 * (a + b);
-  *Us = up * *rho1 / (*rho1 - RHO0);
-  *p1 = RHO0 * *Us * up;
-}
-
 int main(void)
 {
   double rho1, Us, p1;
-  rankine_hugoniot(UP, &rho1, &Us, &p1);
+  sc_mg_hugoniot(RHO0, C0, N_MURN, GAMMA_G, UP, &rho1, &Us, &p1);
   printf("Rankine-Hugoniot (al-alloy, up = %.0f m/s): rho1 = %.2f kg/m3, Us = %.2f m/s, "
          "p1 = %.4f GPa, E1 = %.0f J/kg (residual %.2e Pa)\n", UP, rho1, Us, p1 * 1e-9,
          0.5 * UP * UP, rh_residual(rho1, UP));

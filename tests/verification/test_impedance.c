@@ -53,17 +53,7 @@ static const double MS[4] = {7810.0, 4900.0, 4.5, 1.8};      /* steel (target) *
 /* Shocked state of material m at particle speed jump up: ρ₁, Us, p. */
 static void hugoniot(const double m[4], double up, double *rho1, double *Us, double *p1)
 {
-  double a = m[0] * (1.0 + 1e-9), b = 4.0 * m[0];   /* residual < 0 at a, > 0 at b */
-  for (int k = 0; k < 200; k++) {
-    const double r = 0.5 * (a + b);
-    const double p = m[0] * up * up * r / (r - m[0]);
-    const double E = 0.5 * p * (1.0 / m[0] - 1.0 / r);
-    if (sc_mg_pressure(m[0], m[1], m[2], m[3], r, E) - p > 0) b = r;
-    else a = r;
-  }
-  *rho1 = 0.5 * (a + b);
-  *Us = up * *rho1 / (*rho1 - m[0]);
-  *p1 = m[0] * *Us * up;
+  sc_mg_hugoniot(m[0], m[1], m[2], m[3], up, rho1, Us, p1);
 }
 
 int main(void)
