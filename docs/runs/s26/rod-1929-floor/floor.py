@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Floor speeds of the rod-1929 variants at resolution 0.3 (session 26): the mean speed
+of the penetration depth L (measurements.csv, every 5 us) over 10-30 us, 20-30 us and,
+where the run goes on, 30-60 us, against the one-dimensional balance for the variant's
+strengths (Tate with Y_p = 0.983 GPa and R_t = 1.59 GPa; R_t = 0 for a target without
+strength; Bernoulli, u = v / (1 + sqrt(rho_t / rho_p)), for neither).
+
+Usage: floor.py   (in this folder)
+docs/validation.md ("The crater floor at 1.29 km/s").
+"""
+import csv
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RUNS = [  # folder, what, theory (km/s)
+    ('case', "the case (Table 2's materials; block 2.5 mm, rod 1.24 mm)", 0.736),
+    ('tfluid', 'target without strength or fracture', 0.842),
+    ('fluid', 'rod and target without strength or fracture', 0.776),
+    ('fluid-c10', '... with a 1.0 mm core joined to the block', 0.776),
+    ('fluid-c07', '... with a 0.7 mm core', 0.776),
+    ('fluid-c10-long', '... 1.0 mm core, run to 60 us', 0.776),
+    ('fluid-c10-a02', '... 1.0 mm core, alpha = 0.2, beta = 0.4', 0.776),
+    ('fluid-c10-a0', '... 1.0 mm core, no artificial viscosity', 0.776),
+    ('fluid-c10-r064', '... 1.0 mm core, rod 0.64 mm', 0.776),
+]
+
+
+def depths(folder):
+    out = {}
+    with open(os.path.join(HERE, folder, 'measurements.csv')) as f:
+        for row in csv.reader(r for r in f if not r.startswith('#')):
+            if len(row) > 2 and row[1] == 'penetration_depth':
+                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
+    return out
+
+
+print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/s) | theory |"
+      " u 10-30 / theory")
+for folder, what, th in RUNS:
+    L = depths(folder)
+    u1 = (L[30] - L[10]) / 20
+    u2 = (L[30] - L[20]) / 10
+    u3 = f"{(L[60] - L[30]) / 30:.3f}" if 60 in L else "-"
+    print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} | {u3} |"
+          f" {th:.3f} | {u1 / th - 1:+.1%}")
