@@ -22,14 +22,22 @@ RUNS = [  # folder, what, theory (km/s)
     ('fluid-c10-a02', '... 1.0 mm core, alpha = 0.2, beta = 0.4', 0.776),
     ('fluid-c10-a0', '... 1.0 mm core, no artificial viscosity', 0.776),
     ('fluid-c10-r064', '... 1.0 mm core, rod 0.64 mm', 0.776),
+    ('fluid-c10-xv0', '... 1.0 mm core, no viscosity between rod and target (HV_XVISC=0) *', 0.776),
+    ('fluid-c10-xrecon', '... 1.0 mm core, reconstruction between rod and target too (HV_XRECON=1) *',
+     0.776),
+    ('case-c10', "Table 2's materials, 1.0 mm core", 0.736),
+    ('case-c10-a02', "Table 2's materials, 1.0 mm core, alpha = 0.2, beta = 0.4", 0.736),
 ]
+# * experimental switches in src/sph/sph_solid.c's force pass, not committed (session 26):
+#   HV_XVISC scaled the viscosity of pairs of different bodies, HV_XRECON applied the
+#   reconstruction to them; run from r29-fluid-c10.yaml with that build.
 
 
-def depths(folder):
+def depths(folder, q='penetration_depth'):
     out = {}
     with open(os.path.join(HERE, folder, 'measurements.csv')) as f:
         for row in csv.reader(r for r in f if not r.startswith('#')):
-            if len(row) > 2 and row[1] == 'penetration_depth':
+            if len(row) > 2 and row[1] == q:
                 out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
     return out
 
@@ -38,8 +46,11 @@ print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/
       " u 10-30 / theory")
 for folder, what, th in RUNS:
     L = depths(folder)
+    W = depths(folder, 'cavity_diameter_wall')
+    M = depths(folder, 'cavity_diameter_wall_mean')
     u1 = (L[30] - L[10]) / 20
     u2 = (L[30] - L[20]) / 10
     u3 = f"{(L[60] - L[30]) / 30:.3f}" if 60 in L else "-"
     print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} | {u3} |"
-          f" {th:.3f} | {u1 / th - 1:+.1%}")
+          f" {th:.3f} | {u1 / th - 1:+.1%}" + (f" | D_wall 30 us {W[30]:.2f} mm, D_wall_mean {M[30]:.2f} mm"
+                                           if folder.startswith('case-') else ""))
