@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Floor speeds of the rod-1929 variants at resolution 0.3 (session 26): the mean speed
+"""Floor speeds of the rod-1929 variants at resolution 0.3 (session 26), and of two rod-5841
+ones: the mean speed
 of the penetration depth L (measurements.csv, every 5 us) over 10-30 us, 20-30 us and,
 where the run goes on, 30-60 us, against the one-dimensional balance for the variant's
 strengths (Tate with Y_p = 0.983 GPa and R_t = 1.59 GPa; R_t = 0 for a target without
@@ -27,6 +28,9 @@ RUNS = [  # folder, what, theory (km/s)
      0.776),
     ('case-c10', "Table 2's materials, 1.0 mm core", 0.736),
     ('case-c10-a02', "Table 2's materials, 1.0 mm core, alpha = 0.2, beta = 0.4", 0.736),
+    ('r41-case-c10', "rod-5841 (2.37 km/s), Table 2's materials, 1.0 mm core", 1.404),
+    ('r41-case-c10-a02', "rod-5841, Table 2's materials, 1.0 mm core, alpha = 0.2, beta = 0.4",
+     1.404),
 ]
 # * experimental switches in src/sph/sph_solid.c's force pass, not committed (session 26):
 #   HV_XVISC scaled the viscosity of pairs of different bodies, HV_XRECON applied the
@@ -43,7 +47,7 @@ def depths(folder, q='penetration_depth'):
 
 
 print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/s) | theory |"
-      " u 10-30 / theory")
+      " u 10-30 / theory | steps to 30 us (60 for the long run)")
 for folder, what, th in RUNS:
     L = depths(folder)
     W = depths(folder, 'cavity_diameter_wall')
@@ -51,6 +55,8 @@ for folder, what, th in RUNS:
     u1 = (L[30] - L[10]) / 20
     u2 = (L[30] - L[20]) / 10
     u3 = f"{(L[60] - L[30]) / 30:.3f}" if 60 in L else "-"
+    steps = open(os.path.join(HERE, folder, 'run_segments.csv')).read().strip().split('\n')[-1]
+    steps = steps.split(',')[6]
     print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} | {u3} |"
-          f" {th:.3f} | {u1 / th - 1:+.1%}" + (f" | D_wall 30 us {W[30]:.2f} mm, D_wall_mean {M[30]:.2f} mm"
-                                           if folder.startswith('case-') else ""))
+          f" {th:.3f} | {u1 / th - 1:+.1%} | {steps} steps" + (f" | D_wall 30 us {W[30]:.2f} mm, D_wall_mean {M[30]:.2f} mm"
+                                           if 'case-' in folder else ""))
