@@ -247,6 +247,7 @@ void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
     p->p[g] = p->p[s];
     p->cs[g] = p->cs[s];
     p->e[g] = p->e[s];
+    if (p->av) p->alpha[g] = p->alpha[s];
     if (p->solid) {
       for (int c = 0; c < 6; c++) {
         p->S[c][g] = p->S[c][s];

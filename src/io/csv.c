@@ -143,6 +143,7 @@ struct csv_reader {
   char **tok;  /* ncols token pointers, reused for every row */
   int nknown;  /* entries in cols[] */
   int solid;   /* the file has solid fields (PF_SOLID) */
+  int av;      /* the file has the viscosity switch's fields (PF_AV) */
   const struct pfield *fields;  /* particles_fields_all() view the cols refer to */
   struct csv_col cols[CSV_MAX_COLS];
 };
@@ -182,6 +183,7 @@ static int csv_header(struct csv_reader *r, char *line, struct hv_error *err)
     if (r->map[c] >= 0 && r->map[c] < 4) have[r->map[c]] = 1;
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_SOLID))
       r->solid = 1;  /* a solid field in the file: the store needs its solid arrays */
+    if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_AV)) r->av = 1;
   }
   for (int k = 0; k < 4; k++)
     if (!have[k])
@@ -263,6 +265,7 @@ static int csv_lines(struct csv_reader *r, FILE *f, struct particles *p, double 
     if (len == 0) continue;
     rc = r->map ? csv_row(r, p, line, err) : csv_header(r, line, err);
     if (!rc && r->solid) particles_enable_solid(p);
+    if (!rc && r->av) particles_enable_av(p);
     errno = 0;
   }
   if (rc == 0 && ferror(f))

@@ -51,7 +51,7 @@ int particles_fields_all(struct particles *p, struct pfield *out) { return all_f
 
 static int field_allocated(const struct particles *p, const struct pfield *f)
 {
-  return !(f->flags & PF_SOLID) || p->solid;
+  return (!(f->flags & PF_SOLID) || p->solid) && (!(f->flags & PF_AV) || p->av);
 }
 
 int particles_fields(struct particles *p, struct pfield *out)
@@ -69,7 +69,7 @@ size_t particles_bytes_per_particle(const struct particles *p)
   int nf = all_fields(NULL, f);
   size_t b = 0;
   for (int i = 0; i < nf; i++)
-    if (!(f[i].flags & PF_SOLID) || (p && p->solid))
+    if ((!(f[i].flags & PF_SOLID) || (p && p->solid)) && (!(f[i].flags & PF_AV) || (p && p->av)))
       b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }
@@ -138,6 +138,13 @@ void particles_enable_solid(struct particles *p)
   if (p->solid) return;
   p->solid = 1;
   if (p->cap) reserve_to(p, p->cap);   /* allocates the solid fields only */
+}
+
+void particles_enable_av(struct particles *p)
+{
+  if (p->av) return;
+  p->av = 1;
+  if (p->cap) reserve_to(p, p->cap);   /* allocates the switch's fields only */
 }
 
 size_t particles_add(struct particles *p, size_t count)

@@ -11,8 +11,9 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
   static const char *const densities[] = {"continuity", "summation", NULL};
   static const char *const forms[] = {"volume", "mass", NULL};
-  int k, dens, form, no = 0;
-  double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0;
+  static const char *const switches[] = {"none", "cullen-dehnen", NULL};
+  int k, dens, form, sw, no = 0;
+  double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, decay = 0.05;
   double as_eps = 0.3, as_n = 4.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_choice(c, "sph.density", "continuity", densities, &dens, err) ||
@@ -27,12 +28,27 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
                        &sp->as_eps, err) ||
       cfg_get_quantity(c, "sph.artificial_stress.n", UNIT_NONE, &as_n, 1.0, 10.0, &sp->as_n, err) ||
       cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err) ||
-      cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err))
+      cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err) ||
+      cfg_get_choice(c, "sph.viscosity.switch", "none", switches, &sw, err) ||
+      cfg_get_quantity(c, "sph.viscosity.alpha_min", UNIT_NONE, &zero, 0.0, 10.0, &sp->av_min,
+                       err) ||
+      cfg_get_quantity(c, "sph.viscosity.decay", UNIT_NONE, &decay, 1e-3, 1.0, &sp->av_decay,
+                       err))
     return -1;
+  sp->av_switch = sw;
   sp->kernel = (enum kernel_kind)k;
   sp->summation = dens;
   sp->continuity_mass = form;
   char where[256];
+  if (sp->av_switch && !(sp->alpha > 0.0))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.switch: cullen-dehnen varies "
+                        "each particle's alpha up to sph.viscosity.alpha, which is 0 here",
+                        cfg_where(c, "sph.viscosity.switch", where, sizeof where));
+  if (sp->av_switch && sp->av_min > sp->alpha)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.alpha_min (%g) exceeds "
+                        "sph.viscosity.alpha (%g), the switch's largest alpha",
+                        cfg_where(c, "sph.viscosity.alpha_min", where, sizeof where),
+                        sp->av_min, sp->alpha);
   if (sp->h_max > 0 && sp->h_min > sp->h_max)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.h_min (%g m) exceeds sph.h_max (%g m)",
                         cfg_where(c, "sph.h_min", where, sizeof where), sp->h_min, sp->h_max);

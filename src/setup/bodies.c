@@ -685,6 +685,8 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   for (int m = 0; m < s->nmat && !rc; m++)
     if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)
       particles_enable_solid(&s->p);
+  /* each particle's viscosity coefficient and last velocity divergence (the switch) */
+  if (!rc && s->sph.av_switch) particles_enable_av(&s->p);
   if (!rc && s->sph.summation && s->p.solid) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
                       "strength or fracture (a free surface of a solid would lose density); "

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "core/error.h"
+#include "sph/avswitch.h"
 #include "sph/cand.h"
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
@@ -34,6 +35,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
   }
   const double *m = p->m;
   double *rhow = p->rho;   /* summation: written for i only; neighbours read vol */
+  const int sw = p->av;   /* the viscosity switch (avswitch.h) */
 
 #pragma omp parallel
   {
@@ -47,7 +49,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
         const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        double sum = 0.0, rsum = 0.0;
+        double sum = 0.0, rsum = 0.0, Lsw[9] = {0}, Asw[9] = {0};
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
@@ -56,7 +58,13 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           sum += (massform ? m[j] : vol[j]) * vdx * f;
           if (summation) rsum += m[j] * kernel_w(kk, r, hij);
+          if (sw)   /* with Vⱼ = mⱼ/ρⱼ (vol: before a summation writes ρ) */
+            avsw_add(Lsw, Asw, (massform ? m[j] / rho[j] : vol[j]) * f, dx, dy, dz,
+                     vx[j] - vxi, vy[j] - vyi, vz[j] - vzi);
         }
+        if (sw)
+          p->alpha[i] = avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt,
+                                    &p->divv[i]);
         if (summation) {
           const double rs = rsum + m[i] * kernel_w(kk, 0.0, hi);
           drho[i] = rs * sum;
@@ -89,6 +97,8 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
   double *ax = p->a[0], *ay = p->a[1], *az = p->a[2], *de = p->de, *vsig = p->vsig;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps;
+  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
+  const double bfac = av ? beta / alpha : 0.0;
 
 #pragma omp parallel
   {
@@ -104,6 +114,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double Pi = pr2[i], ci = cs[i], rhoi = rho[i];
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
+        double amax = av ? av[i] : alpha;   /* the largest pair α (time step) */
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
@@ -113,7 +124,13 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
           double visc = 0.0;
           if (vdx < 0.0) {
             const double mu = hij * vdx / (r2 + eps * hij * hij);
-            visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + rho[j]));
+            if (av) {
+              const double aij = 0.5 * (av[i] + av[j]);
+              if (aij > amax) amax = aij;
+              visc = aij * (-0.5 * (ci + cs[j]) * mu + bfac * mu * mu) / (0.5 * (rhoi + rho[j]));
+            } else {
+              visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + rho[j]));
+            }
             if (-mu > mumax) mumax = -mu;
           }
           const double fac = m[j] * (Pi + pr2[j] + visc) * f;
@@ -126,10 +143,14 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         ay[i] = sy;
         az[i] = sz;
         de[i] += se;
+        /* with the switch the α c part takes the largest pair α, and the β μ part stays
+           whole: it follows the approach speed, which the step must resolve whatever α
+           (Noh's first step, every α still 0, crossed particles with it scaled too) */
         /* a particle with no neighbour carries no signal: only its own motion limits
            the step (so it moves at most C_CFL h per step towards what it will meet) */
-        vsig[i] = nsel ? ci + 1.2 * (alpha * ci + beta * mumax)
-                       : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
+        vsig[i] = !nsel ? sqrt(vxi * vxi + vyi * vyi + vzi * vzi)
+                  : av  ? ci + 1.2 * (amax * ci + beta * mumax)
+                        : ci + 1.2 * (alpha * ci + beta * mumax);
       }
     }
     cand_free_all(&cd);

@@ -25,7 +25,12 @@ struct sph_params {
   double eta;          /* [-] h = eta (m/ρ)^(1/3) */
   double h_min, h_max; /* [m] bounds on h (0 in the case file: automatic, 1/10 and
                           10 times the initial extremes) */
-  double alpha, beta;  /* [-] artificial viscosity */
+  double alpha, beta;  /* [-] artificial viscosity (with the switch: α_max and β/α) */
+  int av_switch;       /* sph.viscosity.switch: 1 for cullen-dehnen (avswitch.h): each
+                          particle carries its own αᵢ ∈ [av_min, alpha], a pair uses
+                          ½(αᵢ + αⱼ) and β ½(αᵢ + αⱼ)/α */
+  double av_min;       /* [-] the switch's floor */
+  double av_decay;     /* [-] ℓ: αᵢ decays over τ = 2hᵢ/(2ℓ cᵢ) */
   double eps;          /* [-] ε in μᵢⱼ */
   /* artificial stress (Monaghan 2000; Gray, Monaghan & Swift 2001) for solids:
      Rᵢ from the tensile principal stresses, pair term (Rᵢ + Rⱼ) (W(r)/W(Δp))ⁿ */

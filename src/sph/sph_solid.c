@@ -25,6 +25,7 @@
 
 #include "eos/eos.h"
 #include "fracture/fracture.h"
+#include "sph/avswitch.h"
 #include "sph/cand.h"
 #include "sph/recon.h"
 #include "sph/sph.h"
@@ -90,32 +91,6 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   }
 }
 
-/* L ← L · A⁻¹ with A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ, which is I for a full, regular
- * neighbourhood: the corrected gradient is exact for linear velocity fields.
- * Left unchanged where A is nearly singular (a particle with few neighbours). */
-static void correct_gradient(double L[9], const double A[9])
-{
-  const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-                     A[2] * (A[3] * A[7] - A[4] * A[6]);
-  if (!(fabs(det) > 1e-3)) return;
-  double B[9]; /* B = A⁻¹ */
-  B[0] = (A[4] * A[8] - A[5] * A[7]) / det;
-  B[1] = (A[2] * A[7] - A[1] * A[8]) / det;
-  B[2] = (A[1] * A[5] - A[2] * A[4]) / det;
-  B[3] = (A[5] * A[6] - A[3] * A[8]) / det;
-  B[4] = (A[0] * A[8] - A[2] * A[6]) / det;
-  B[5] = (A[2] * A[3] - A[0] * A[5]) / det;
-  B[6] = (A[3] * A[7] - A[4] * A[6]) / det;
-  B[7] = (A[1] * A[6] - A[0] * A[7]) / det;
-  B[8] = (A[0] * A[4] - A[1] * A[3]) / det;
-  /* L = Σ Vⱼ (vⱼ − vᵢ) ⊗ ∇W estimates ∇v · A, so ∇v = L · A⁻¹ */
-  double M[9];
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++)
-      M[3 * a + b] = L[3 * a] * B[b] + L[3 * a + 1] * B[3 + b] + L[3 * a + 2] * B[6 + b];
-  for (int k = 0; k < 9; k++) L[k] = M[k];
-}
-
 void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, struct sph_cache *cache,
                             const struct material *mat, double dt)
@@ -161,6 +136,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         /* the correction matrix: for the stress with sph.gradient_correction, and for the
            reconstruction always (its limiter needs gradients exact for linear fields) */
         const int corr = strong && (sp->grad_correction || (gradv && recon));
+        const int sw = p->av;   /* the viscosity switch's gradient, every neighbour */
+        double Lsw[9] = {0}, Asw[9] = {0};
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
@@ -180,6 +157,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              through the pressure force */
           if (cond_i && mat[p->mat[j]].eos == EOS_IDEAL_GAS) continue;
           sum -= w * udx;
+          if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
           if (strong && bj == bi) {
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
             L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
@@ -192,18 +170,21 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
           }
         }
         p->drho[i] = rho[i] * sum;
+        if (sw)
+          p->alpha[i] = avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt,
+                                    &p->divv[i]);
         if (gradv) {   /* corrected; 0 without strength: no reconstruction for its pairs */
           double *Gi = gradv + 9 * (size_t)i;
           for (int t = 0; t < 9; t++) Gi[t] = recon ? L[t] : 0.0;
           if (recon) {
-            correct_gradient(Gi, A);
+            sph_correct_gradient(Gi, A);
             if (sp->grad_correction)   /* the stress uses the same corrected gradient */
               for (int t = 0; t < 9; t++) L[t] = Gi[t];
           } else if (strong && sp->grad_correction) {
-            correct_gradient(L, A);
+            sph_correct_gradient(L, A);
           }
         } else if (corr) {
-          correct_gradient(L, A);
+          sph_correct_gradient(L, A);
         }
         if (strong) {
           update_stress(p, i, mi, L, dt);
@@ -262,6 +243,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const int32_t *body = p->body, *piece = sp->piece;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
+  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
+  const double bfac = av ? beta / alpha : 0.0;
   const int use_as = sp->as_eps > 0;
   const double *gradv = sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL;
   /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
@@ -353,6 +336,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         const int32_t bi = piece_of(piece, body[i]);
         const int gas_i = mat[p->mat[i]].eos == EOS_IDEAL_GAS;
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
+        double amax = av ? av[i] : alpha;   /* the largest pair α (time step) */
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double *wj = tw + TW * (size_t)j;
@@ -369,7 +353,13 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
               mu = hij *
                    sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
                    (r2 + eps * hij * hij);
-            visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
+            if (av) {
+              const double aij = 0.5 * (av[i] + av[j]);
+              if (aij > amax) amax = aij;
+              visc = aij * (-0.5 * (ci + cs[j]) * mu + bfac * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
+            } else {
+              visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
+            }
           }
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
           double ax, ay, az, Pme, vw = 0.5, eas = 0.0;
@@ -436,9 +426,13 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         p->a[1][i] = sy;
         p->a[2][i] = sz;
         p->de[i] += se;
+        /* with the switch the α c part takes the largest pair α, and the β μ part stays
+           whole: it follows the approach speed, which the step must resolve whatever α
+           (Noh's first step, every α still 0, crossed particles with it scaled too) */
         /* no neighbour: no signal to carry (see sph.c) */
-        p->vsig[i] = nsel ? ci + 1.2 * (alpha * ci + beta * mumax)
-                          : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
+        p->vsig[i] = !nsel ? sqrt(vxi * vxi + vyi * vyi + vzi * vzi)
+                     : av  ? ci + 1.2 * (amax * ci + beta * mumax)
+                           : ci + 1.2 * (alpha * ci + beta * mumax);
       }
     }
     cand_free_all(&cd);

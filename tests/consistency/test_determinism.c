@@ -9,6 +9,9 @@
  * "# written:" date line. The test also checks that the case really moves (so that
  * equal files mean something): particles travel and change velocity between the
  * first and the last snapshot, and the run takes many steps.
+ * Arguments are passed on to `hvsph run` (ctest consistency.test_determinism_switch runs
+ * it with --set sph.viscosity.switch=cullen-dehnen: each particle's α, written to the
+ * snapshots and the checkpoint, must not depend on the threads either).
  */
 #include <dirent.h>
 #include <math.h>
@@ -96,12 +99,14 @@ static long compare(const char *d1, const char *d2, const char *name, int thread
   return result;
 }
 
-static int run_case(const char *casefile, const char *dir, int threads)
+static int run_case(const char *casefile, const char *dir, int threads, int argc, char **argv)
 {
   char cmd[9000], out[8192];
-  if ((size_t)snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --threads %d --quiet",
-                       dir, test_bin(), casefile, dir, threads) >= sizeof cmd)
-    return -1;
+  size_t len = (size_t)snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --threads %d --quiet",
+                                dir, test_bin(), casefile, dir, threads);
+  for (int a = 1; a < argc && len < sizeof cmd; a++)
+    len += (size_t)snprintf(cmd + len, sizeof cmd - len, " '%s'", argv[a]);
+  if (len >= sizeof cmd) return -1;
   int rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 0, "run with --threads %d exits 0 (got %d)%s%s", threads, rc, rc ? ": " : "",
         rc ? out : "");
@@ -166,7 +171,7 @@ static void check_motion(const char *dir)
   particles_free(&b);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
   char casefile[4200], dir[4][4200];
   join(casefile, sizeof casefile, test_source_dir(), "examples/verification/tiny.yaml");
@@ -176,7 +181,7 @@ int main(void)
     char sub[32];
     snprintf(sub, sizeof sub, "threads%d", threads[k]);
     join(dir[k], sizeof dir[k], test_tmpdir(), sub);
-    if (run_case(casefile, dir[k], threads[k])) return test_finish();
+    if (run_case(casefile, dir[k], threads[k], argc, argv)) return test_finish();
   }
 
   char **names = NULL;

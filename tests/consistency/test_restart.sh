@@ -22,7 +22,9 @@
 #     the folder as it was;
 #  5. `hvsph validate --resume` continues a validation run stopped by SIGINT, and its
 #     validation.csv and measurements.csv equal those of a straight run;
-#  6. 1. again with split material without tension (fracture.split: no-tension).
+#  6. 1. again with split material without tension (fracture.split: no-tension);
+#  7. 1. again with the viscosity switch (sph.viscosity.switch: cullen-dehnen), whose
+#     per-particle alpha and last velocity divergence are state.
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -197,6 +199,18 @@ nsplit=$(awk -F, 'NR > 2 && $17 == 1' "$T/nt_ref/particles_00004.csv" | wc -l)
 check $? "split: no-tension: $nsplit particles split by 12 us"
 same_files "$T/nt_ref" "$T/nt"
 check $? "split: no-tension: continued run, every file identical to the straight run's"
+
+# 7. the viscosity switch: alpha and the last divergence are carried in the checkpoint
+SW=(--set sph.viscosity.switch=cullen-dehnen)
+"$BIN" run "$CASE" -o "$T/sw_ref" "${SETS[@]}" "${SW[@]}" --threads 2 --quiet 2> /dev/null &&
+  "$BIN" run "$CASE" -o "$T/sw" "${SETS[@]}" "${SW[@]}" --set time.max_steps=300 --threads 2 \
+    --quiet 2> /dev/null &&
+  "$BIN" restart "$T/sw" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
+check $? "switch: straight run, stopped run and its continuation"
+head -3 "$T/sw_ref/particles_00004.csv" | grep -q ',alpha'
+check $? "switch: the snapshots carry each particle's alpha"
+same_files "$T/sw_ref" "$T/sw"
+check $? "switch: continued run, every file identical to the straight run's"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -49,6 +49,47 @@
 #define PSTAR_RTOL 0.025
 #define USTAR_RTOL 0.025
 
+/* With sph.viscosity.switch: cullen-dehnen (ctest verification.test_sod_switch runs this
+ * test with --set sph.viscosity.switch=cullen-dehnen; the thresholds above hold as they
+ * are: measured L1 = 0.00549 / 0.01048 / 0.00648, p* +1.59 %, u* −0.44 %), the
+ * particles' α at t = 0.2 by region. Measured: undisturbed left state (x < −0.3) max 0;
+ * rarefaction mean 0.018; left star (0.03 < x < 0.15, gas from the initial jump, which
+ * the switch met as a shock at t = 0 and has been decaying since) mean 0.164; at the
+ * shock (0.33 < x < 0.37) mean 0.661. Thresholds: the undisturbed state has no source
+ * (SW_REST_MAX); an expansion is no source either (SW_RAREF_MAX); the shock raises α
+ * (SW_SHOCK_MIN) and it decays behind it (SW_STAR_MAX: without the decay the left star
+ * would keep the value of the start's jump). */
+#define SW_REST_MAX 1e-3
+#define SW_RAREF_MAX 0.05
+#define SW_SHOCK_MIN 0.5
+#define SW_STAR_MAX 0.35
+
+static void sod_switch(const struct particles *p)
+{
+  static const double lo[4] = {-0.5, -0.25, 0.03, 0.33}, hi[4] = {-0.3, -0.01, 0.15, 0.37};
+  double sum[4] = {0}, mx[4] = {0};
+  long cnt[4] = {0};
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < 4; k++)
+      if (p->x[0][i] > lo[k] && p->x[0][i] < hi[k]) {
+        sum[k] += p->alpha[i];
+        cnt[k]++;
+        if (p->alpha[i] > mx[k]) mx[k] = p->alpha[i];
+      }
+  double mean[4];
+  for (int k = 0; k < 4; k++) mean[k] = cnt[k] ? sum[k] / (double)cnt[k] : -1.0;
+  printf("  switch: alpha mean / max: rest %.4f / %.4f, rarefaction %.4f / %.4f, left star "
+         "%.4f / %.4f, shock %.4f / %.4f\n", mean[0], mx[0], mean[1], mx[1], mean[2], mx[2],
+         mean[3], mx[3]);
+  CHECK(cnt[0] && mx[0] <= SW_REST_MAX, "switch: undisturbed gas keeps alpha <= %g (max %.4f)",
+        SW_REST_MAX, mx[0]);
+  CHECK(mean[1] <= SW_RAREF_MAX, "switch: rarefaction mean alpha %.4f <= %g", mean[1],
+        SW_RAREF_MAX);
+  CHECK(mean[3] >= SW_SHOCK_MIN, "switch: shock mean alpha %.4f >= %g", mean[3], SW_SHOCK_MIN);
+  CHECK(mean[2] <= SW_STAR_MAX, "switch: left star mean alpha %.4f <= %g (decayed)", mean[2],
+        SW_STAR_MAX);
+}
+
 int main(int argc, char **argv)
 {
   const struct gas_state L = {1.0, 0.0, 1.0}, R = {0.125, 0.0, 0.1};
@@ -139,6 +180,7 @@ int main(int argc, char **argv)
         100 * PSTAR_RTOL, ps);
   CHECK(fabs(um / us - 1.0) <= USTAR_RTOL, "star velocity %.5f within %.1f %% of u* = %.5f", um,
         100 * USTAR_RTOL, us);
+  if (p.av) sod_switch(&p);
   particles_free(&p);
   return test_finish();
 }
