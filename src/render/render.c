@@ -25,6 +25,10 @@ static void color_unit(enum render_color c, double lo, double hi, double *unit, 
     *unit = big >= 100.0 ? 1e3 : 1.0;
     *label = big >= 100.0 ? "ρ [g/cm³]" : "ρ [kg/m³]";
     return;
+  case RENDER_COLOR_ALPHA:
+    *unit = 1.0;
+    *label = "viscosity alpha";
+    return;
   case RENDER_COLOR_DAMAGE:
   case RENDER_COLOR_MATERIAL: break;
   }
@@ -34,7 +38,7 @@ static void color_unit(enum render_color c, double lo, double hi, double *unit, 
 
 static const char *color_name(enum render_color c)
 {
-  static const char *n[] = {"material", "damage", "velocity", "pressure", "density"};
+  static const char *n[] = {"material", "damage", "velocity", "pressure", "density", "alpha"};
   return n[c];
 }
 
@@ -71,6 +75,9 @@ int render_png(const char *path, const struct particles *p, const struct render_
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DAMAGE && !p->damage)
     return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no damage column (no material "
                         "with strength or fracture): colour by another quantity");
+  if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_ALPHA && !p->alpha)
+    return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no alpha column (a run without "
+                        "sph.viscosity.switch): colour by another quantity");
   if (o->mode == RENDER_RADIOGRAPH && !(o->mu > 0.0 && isfinite(o->mu)))
     return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg]");
   if (o->have_range && !(o->range[0] < o->range[1]))

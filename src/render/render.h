@@ -35,7 +35,8 @@ enum render_color {
   RENDER_COLOR_DAMAGE,        /* 0..1 */
   RENDER_COLOR_VELOCITY,      /* |v| [m/s], labelled in km/s */
   RENDER_COLOR_PRESSURE,      /* p [Pa], labelled in GPa */
-  RENDER_COLOR_DENSITY        /* rho [kg/m3], labelled in g/cm3 */
+  RENDER_COLOR_DENSITY,       /* rho [kg/m3], labelled in g/cm3 */
+  RENDER_COLOR_ALPHA          /* the viscosity switch's α (sph.viscosity.switch), 0..its max */
 };
 
 #define RENDER_MU_DEFAULT 0.05   /* [m2/kg] film mass attenuation coefficient (grey; iron near 90 keV) */

@@ -25,7 +25,8 @@ static void render_usage(FILE *f)
           "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
           "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
           "                                and y up (along z), x and z (along y), y and z (along x)\n"
-          "  --color material|damage|velocity|pressure|density   particles mode (default material)\n"
+          "  --color material|damage|velocity|pressure|density|alpha   particles mode (default\n"
+          "                                material; alpha: the viscosity switch's coefficient)\n"
           "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
           "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
           "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
@@ -96,7 +97,7 @@ int render_main(int argc, char **argv)
 {
   static const char *modes[] = {"radiograph", "particles"};
   static const char *axes[] = {"x", "y", "z"};
-  static const char *colors[] = {"material", "damage", "velocity", "pressure", "density"};
+  static const char *colors[] = {"material", "damage", "velocity", "pressure", "density", "alpha"};
   struct render_options o;
   render_options_default(&o);
   const char *in = NULL, *out = NULL, *range = NULL;
@@ -129,8 +130,8 @@ int render_main(int argc, char **argv)
       if ((k = pick(val, axes, 3)) < 0) return fail_usage("--axis must be x, y or z, not '%s'", val);
       o.axis = k;
     } else if (!strcmp(opt, "--color") || !strcmp(opt, "--colour")) {
-      if ((k = pick(val, colors, 5)) < 0)
-        return fail_usage("--color must be material, damage, velocity, pressure or density, not '%s'", val);
+      if ((k = pick(val, colors, 6)) < 0)
+        return fail_usage("--color must be material, damage, velocity, pressure, density or alpha, not '%s'", val);
       o.color = (enum render_color)k;
     } else if (!strcmp(opt, "--size")) {
       if (parse_size(val, &o.width, &o.height)) return fail_usage("--size needs WxH or W in pixels, not '%s'", val);

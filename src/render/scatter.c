@@ -36,6 +36,7 @@ static double particle_value(const struct particles *p, size_t i, enum render_co
     return sqrt(p->v[0][i] * p->v[0][i] + p->v[1][i] * p->v[1][i] + p->v[2][i] * p->v[2][i]);
   case RENDER_COLOR_PRESSURE: return p->p[i];
   case RENDER_COLOR_DENSITY: return p->rho[i];
+  case RENDER_COLOR_ALPHA: return p->alpha ? p->alpha[i] : 0.0;
   case RENDER_COLOR_MATERIAL: break;
   }
   return (double)p->mat[i];

@@ -362,6 +362,9 @@ static void test_command(void)
   snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color damage", gas, dir);
   st = run(args, out, sizeof out);
   CHECK(st == 2 && strstr(out, "damage"), "damage colour without a damage column: exit %d (2): %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color alpha", gas, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "alpha"), "alpha colour without an alpha column: exit %d (2): %s", st, out);
   snprintf(args, sizeof args, "%s/particles_mat.png", dir);
   img = read_png(args, &w, &h);
   CHECK(img && w == 800 && h == 500, "a failed render leaves the previous file whole");
