@@ -315,6 +315,12 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   p->n_ghost = 0;
   if (n > p->n) particles_add(p, n - p->n);
   p->n = n;
+  if (p->av && !ckpt_find(&c, "p.alpha")) {
+    hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without sph.viscosity.switch, "
+                 "whose per-particle alpha it does not hold: a run cannot take the switch up "
+                 "when continued (start it again, or continue it without the switch)", path);
+    goto out;
+  }
   struct pfield f[HV_MAX_FIELDS];
   const int nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {

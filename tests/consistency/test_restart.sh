@@ -24,7 +24,8 @@
 #     validation.csv and measurements.csv equal those of a straight run;
 #  6. 1. again with split material without tension (fracture.split: no-tension);
 #  7. 1. again with the viscosity switch (sph.viscosity.switch: cullen-dehnen), whose
-#     per-particle alpha and last velocity divergence are state.
+#     per-particle alpha and last velocity divergence are state; a run made without it
+#     refuses to take it up when continued (exit 2, its files untouched).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -211,6 +212,12 @@ head -3 "$T/sw_ref/particles_00004.csv" | grep -q ',alpha'
 check $? "switch: the snapshots carry each particle's alpha"
 same_files "$T/sw_ref" "$T/sw"
 check $? "switch: continued run, every file identical to the straight run's"
+# a run made without the switch cannot take it up when continued: exit 2, nothing changed
+cp -r "$T/nt_ref" "$T/nt_sw"
+"$BIN" restart "$T/nt_sw" "${SW[@]}" --set time.end=15us --quiet > "$T/nt_sw.log" 2>&1
+st=$?
+[ $st -eq 2 ] && grep -q "without sph.viscosity.switch" "$T/nt_sw.log" && same_files "$T/nt_ref" "$T/nt_sw"
+check $? "switch: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
