@@ -31,6 +31,7 @@
 #define HV_AVSWITCH_H
 
 #include <math.h>
+#include <stddef.h>
 
 #include "sph/sph.h"
 
@@ -71,6 +72,21 @@ static inline void avsw_add(double L[9], double A[9], double w, double dx, doubl
   A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
   A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
   A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
+}
+
+/* The viscosity Πᵢⱼ of an approaching pair (sph.h) with approach μ, mean sound speed
+ * from cᵢ, cⱼ and mean density from ρᵢ, ρⱼ: with the switch (av: αᵢ of every slot) the
+ * pair's ½(αᵢ + αⱼ), β scaled by bfac = β/α, and *amax raised to it; without, α and β. */
+static inline double sph_pair_visc(const double *av, size_t i, size_t j, double alpha,
+                                   double beta, double bfac, double ci, double cj, double mu,
+                                   double rhoi, double rhoj, double *amax)
+{
+  if (av) {
+    const double aij = 0.5 * (av[i] + av[j]);
+    if (aij > *amax) *amax = aij;
+    return aij * (-0.5 * (ci + cj) * mu + bfac * mu * mu) / (0.5 * (rhoi + rhoj));
+  }
+  return (-alpha * 0.5 * (ci + cj) * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
 }
 
 /* The limiter ξ of a velocity gradient G (row-major, G[3a+b] = ∂v_a/∂x_b). */

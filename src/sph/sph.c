@@ -124,13 +124,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
           double visc = 0.0;
           if (vdx < 0.0) {
             const double mu = hij * vdx / (r2 + eps * hij * hij);
-            if (av) {
-              const double aij = 0.5 * (av[i] + av[j]);
-              if (aij > amax) amax = aij;
-              visc = aij * (-0.5 * (ci + cs[j]) * mu + bfac * mu * mu) / (0.5 * (rhoi + rho[j]));
-            } else {
-              visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + rho[j]));
-            }
+            visc = sph_pair_visc(av, i, j, alpha, beta, bfac, ci, cs[j], mu, rhoi, rho[j], &amax);
             if (-mu > mumax) mumax = -mu;
           }
           const double fac = m[j] * (Pi + pr2[j] + visc) * f;

@@ -353,13 +353,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
               mu = hij *
                    sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
                    (r2 + eps * hij * hij);
-            if (av) {
-              const double aij = 0.5 * (av[i] + av[j]);
-              if (aij > amax) amax = aij;
-              visc = aij * (-0.5 * (ci + cs[j]) * mu + bfac * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
-            } else {
-              visc = (-alpha * 0.5 * (ci + cs[j]) * mu + beta * mu * mu) / (0.5 * (rhoi + wj[TW_RHO]));
-            }
+            visc = sph_pair_visc(av, i, j, alpha, beta, bfac, ci, cs[j], mu, rhoi, wj[TW_RHO], &amax);
           }
           const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
           double ax, ay, az, Pme, vw = 0.5, eas = 0.0;
