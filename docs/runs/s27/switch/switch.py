@@ -3,7 +3,9 @@
 with a joined 1.0 mm core (session 27), beside session 26's runs of the same cases with
 alpha = 1 and alpha = 0.2 (docs/runs/s26/rod-1929-floor): crater-floor speed over 10-30 us
 and 20-30 us against Tate (Table 2's Y_p = 0.983 GPa, R_t = 1.59 GPa), the channel
-(cavity_diameter_wall_mean, cavity_diameter_wall) at 30 us and the steps taken.
+(cavity_diameter_wall_mean, cavity_diameter_wall) at 30 us and the steps taken; then
+session 26's §2.4 bumper without the backwall at 12 us with the switch (ws-cd) beside its
+alpha = 1 and alpha = 0.2 runs: the hole.
 
 Usage: switch.py   (in this folder)
 docs/validation.md ("The viscosity switch").
@@ -46,3 +48,15 @@ for folder, what, th in RUNS:
     seg = open(os.path.join(folder, 'run_segments.csv')).read().strip().split('\n')[-1]
     print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} |"
           f" {u1 / th - 1:+.1%} | {M[30]:.2f} / {W[30]:.2f} | {seg.split(',')[6]}")
+
+# §2.4's bumper without the backwall to 12 us (session 26's set-up)
+WS26 = os.path.join(HERE, '..', '..', 's26', 'ws-bumper-viscosity')
+print("\n§2.4 bumper at 12 us | hole_diameter / _equiv / _intact (mm) | steps")
+for folder, what in [(os.path.join(WS26, 'a1'), 'alpha = 1 (s26)'),
+                     (os.path.join(WS26, 'a02'), 'alpha = 0.2, beta = 0.4 (s26)'),
+                     (os.path.join(HERE, 'ws-cd'), 'switch')]:
+    d = {q: series(folder, q)[12] for q in ('hole_diameter', 'hole_diameter_equiv',
+                                          'hole_diameter_intact')}
+    seg = open(os.path.join(folder, 'run_segments.csv')).read().strip().split('\n')[-1]
+    print(f"{what} | {d['hole_diameter']:.2f} / {d['hole_diameter_equiv']:.2f} /"
+          f" {d['hole_diameter_intact']:.2f} | {seg.split(',')[6]}")
