@@ -19,8 +19,8 @@ Session 26, docs/validation.md (the rods).
 import math
 
 RHO_P, RHO_T, YP = 17780.0, 7810.0, 0.983e9
-# hvsph's depths at the paper's counts (docs/validation.md, at a glance; rod-1929 not yet)
-HVSPH = {'1929': None, '5835': 0.1997, '5839': 0.2113, '5841': 0.1480, '5842': 0.1679,
+# hvsph's depths at the paper's counts (docs/validation.md, at a glance; rod-1929 added in session 27)
+HVSPH = {'1929': 0.1226, '5835': 0.1997, '5839': 0.2113, '5841': 0.1480, '5842': 0.1679,
          '5844': 0.1684}
 RODS = {  # test: v (m/s), l (m), experiment L (m), KERNEL L (m)
     '1929': (1290.0, 0.15575, 0.080, 0.080),
