@@ -46,17 +46,22 @@ def depths(folder, q='penetration_depth'):
     return out
 
 
-print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/s) | theory |"
-      " u 10-30 / theory | steps to 30 us (60 for the long run)")
-for folder, what, th in RUNS:
-    L = depths(folder)
-    W = depths(folder, 'cavity_diameter_wall')
-    M = depths(folder, 'cavity_diameter_wall_mean')
-    u1 = (L[30] - L[10]) / 20
-    u2 = (L[30] - L[20]) / 10
-    u3 = f"{(L[60] - L[30]) / 30:.3f}" if 60 in L else "-"
-    steps = open(os.path.join(HERE, folder, 'run_segments.csv')).read().strip().split('\n')[-1]
-    steps = steps.split(',')[6]
-    print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} | {u3} |"
-          f" {th:.3f} | {u1 / th - 1:+.1%} | {steps} steps" + (f" | D_wall 30 us {W[30]:.2f} mm, D_wall_mean {M[30]:.2f} mm"
-                                           if 'case-' in folder else ""))
+def main():
+    print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/s) | theory |"
+          " u 10-30 / theory | steps to 30 us (60 for the long run)")
+    for folder, what, th in RUNS:
+        L = depths(folder)
+        W = depths(folder, 'cavity_diameter_wall')
+        M = depths(folder, 'cavity_diameter_wall_mean')
+        u1 = (L[30] - L[10]) / 20
+        u2 = (L[30] - L[20]) / 10
+        u3 = f"{(L[60] - L[30]) / 30:.3f}" if 60 in L else "-"
+        steps = open(os.path.join(HERE, folder, 'run_segments.csv')).read().strip().split('\n')[-1]
+        steps = steps.split(',')[6]
+        print(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} | {u3} |"
+              f" {th:.3f} | {u1 / th - 1:+.1%} | {steps} steps" + (f" | D_wall 30 us {W[30]:.2f} mm, D_wall_mean {M[30]:.2f} mm"
+                                               if 'case-' in folder else ""))
+
+
+if __name__ == '__main__':
+    main()

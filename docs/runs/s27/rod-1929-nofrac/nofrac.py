@@ -9,10 +9,12 @@ and 30 us.
 Usage: nofrac.py   (in this folder)
 docs/validation.md ("The target's fracture at low speed").
 """
-import csv
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor'))
+from floor import depths  # noqa: E402  (the measurements.csv loader)
 S26 = os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor')
 RUNS = [(os.path.join(S26, 'case-c10'), 'rod-1929, the case (s26)'),
         (os.path.join(HERE, 'r29-case-c10-nofrac'), 'rod-1929, target without fracture'),
@@ -21,12 +23,8 @@ RUNS = [(os.path.join(S26, 'case-c10'), 'rod-1929, the case (s26)'),
 
 
 def series(folder, q):
-    out = {}
-    with open(os.path.join(folder, 'measurements.csv')) as f:
-        for row in csv.reader(r for r in f if not r.startswith('#')):
-            if len(row) > 2 and row[1] == q:
-                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
-    return out
+    """{time in us: value in mm} of measurement q (session 26's loader, floor.py)."""
+    return depths(folder, q)
 
 
 print("run | L at 30 us (mm) | u 10-30 | u 20-30 (km/s) | D_wall_mean 20 / 30 us |"

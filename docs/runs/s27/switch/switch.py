@@ -10,10 +10,12 @@ alpha = 1 and alpha = 0.2 runs: the hole.
 Usage: switch.py   (in this folder)
 docs/validation.md ("The viscosity switch").
 """
-import csv
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor'))
+from floor import depths  # noqa: E402  (the measurements.csv loader)
 S26 = os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor')
 RUNS = [  # folder, what, Tate floor speed (km/s)
     (os.path.join(S26, 'case-c10'), 'rod-1929, alpha = 1 (s26)', 0.736),
@@ -26,12 +28,8 @@ RUNS = [  # folder, what, Tate floor speed (km/s)
 
 
 def series(folder, q):
-    out = {}
-    with open(os.path.join(folder, 'measurements.csv')) as f:
-        for row in csv.reader(r for r in f if not r.startswith('#')):
-            if len(row) > 2 and row[1] == q:
-                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
-    return out
+    """{time in us: value in mm} of measurement q (session 26's loader, floor.py)."""
+    return depths(folder, q)
 
 
 print("run | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 (km/s) | u 10-30 / Tate |"
