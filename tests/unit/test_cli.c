@@ -401,6 +401,19 @@ static void test_bad_input(void)
                                       "{reconstruct: true}}"), NULL,
             (const char *const[]){"reconstruct_gas.yaml:4: sph.viscosity.reconstruct: ",
                                   "acts on pairs of particles with strength", NULL});
+  /* the viscosity switch: a maximum alpha of 0, a floor above it, an unknown switch */
+  bad_input("switch_alpha0", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                                    "{switch: cullen-dehnen, alpha: 0}}"), NULL,
+            (const char *const[]){"switch_alpha0.yaml:4: sph.viscosity.switch: ",
+                                  "which is 0 here", NULL});
+  bad_input("switch_floor", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                                   "{switch: cullen-dehnen, alpha_min: 1.5}}"), NULL,
+            (const char *const[]){"switch_floor.yaml:4: sph.viscosity.alpha_min (1.5) ",
+                                  "exceeds sph.viscosity.alpha (1)", NULL});
+  bad_input("switch_name", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                                  "{switch: balsara}}"), NULL,
+            (const char *const[]){"switch_name.yaml:4: sph.viscosity.switch: ",
+                                  "'balsara' is not one of", NULL});
   bad_input("mass_form_solid",
             variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"), NULL,
             (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
