@@ -69,7 +69,7 @@ size_t particles_bytes_per_particle(const struct particles *p)
   int nf = all_fields(NULL, f);
   size_t b = 0;
   for (int i = 0; i < nf; i++)
-    if ((!(f[i].flags & PF_SOLID) || (p && p->solid)) && (!(f[i].flags & PF_AV) || (p && p->av)))
+    if (p ? field_allocated(p, &f[i]) : !(f[i].flags & (PF_SOLID | PF_AV)))
       b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }

@@ -142,9 +142,8 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
         /* a particle with no neighbour carries no signal: only its own motion limits
            the step (so it moves at most C_CFL h per step towards what it will meet) */
-        vsig[i] = !nsel ? sqrt(vxi * vxi + vyi * vyi + vzi * vzi)
-                  : av  ? ci + 1.2 * (amax * ci + beta * mumax)
-                        : ci + 1.2 * (alpha * ci + beta * mumax);
+        vsig[i] = nsel ? ci + 1.2 * (amax * ci + beta * mumax)   /* amax = α without it */
+                       : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
       }
     }
     cand_free_all(&cd);

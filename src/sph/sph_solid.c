@@ -424,9 +424,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
            whole: it follows the approach speed, which the step must resolve whatever α
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
         /* no neighbour: no signal to carry (see sph.c) */
-        p->vsig[i] = !nsel ? sqrt(vxi * vxi + vyi * vyi + vzi * vzi)
-                     : av  ? ci + 1.2 * (amax * ci + beta * mumax)
-                           : ci + 1.2 * (alpha * ci + beta * mumax);
+        p->vsig[i] = nsel ? ci + 1.2 * (amax * ci + beta * mumax)   /* amax = α without it */
+                          : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
       }
     }
     cand_free_all(&cd);
