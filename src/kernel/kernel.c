@@ -3,5 +3,10 @@
 
 const char *kernel_name(enum kernel_kind k)
 {
-  return k == KERNEL_WENDLAND_C2 ? "wendland-c2" : "cubic-spline";
+  switch (k) {
+  case KERNEL_WENDLAND_C2: return "wendland-c2";
+  case KERNEL_QUADRATIC: return "quadratic";
+  case KERNEL_CUBIC_SPLINE: break;
+  }
+  return "cubic-spline";
 }

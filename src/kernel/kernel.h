@@ -5,6 +5,12 @@
  *                          { 1/4 (2 − q)³            1 ≤ q < 2,   σ = 1/π
  * Wendland C2 (Wendland 1995; Dehnen & Aly 2012), written with support 2h:
  *   W = σ/h³ (1 − q/2)⁴ (2q + 1),  0 ≤ q < 2,   σ = 21/(16π)
+ * Quadratic (Johnson, Stryk & Beissel 1996, CMAME 139:347; a reading of the paper's
+ * "second order B-spline" as the degree-2 kernel of impact SPH):
+ *   W = σ/h³ (3/16 q² − 3/4 q + 3/4),  0 ≤ q ≤ 2,   σ = 5/(4π)
+ *   its slope dW/dq = σ/h³ (3/8 q − 3/4) grows in magnitude towards q = 0, so close
+ *   pairs repel more strongly (no inflection point, unlike M4); (1/r) dW/dr diverges
+ *   as 1/r there, the gradient (x (1/r) dW/dr) stays finite.
  * q = r/h. Pair interactions use the symmetric h_ij = (h_i + h_j)/2, so a pair
  * interacts when r < h_i + h_j.
  */
@@ -13,7 +19,7 @@
 
 #include <math.h>
 
-enum kernel_kind { KERNEL_CUBIC_SPLINE = 0, KERNEL_WENDLAND_C2 = 1 };
+enum kernel_kind { KERNEL_CUBIC_SPLINE = 0, KERNEL_WENDLAND_C2 = 1, KERNEL_QUADRATIC = 2 };
 
 #define HV_KERNEL_PI 3.14159265358979323846
 
@@ -26,6 +32,8 @@ static inline double kernel_w(enum kernel_kind k, double r, double h)
     double t = 1.0 - 0.5 * q;
     return 21.0 / (16.0 * HV_KERNEL_PI) / h3 * t * t * t * t * (2.0 * q + 1.0);
   }
+  if (k == KERNEL_QUADRATIC)
+    return 5.0 / (4.0 * HV_KERNEL_PI) / h3 * (0.1875 * q * q - 0.75 * q + 0.75);
   if (q < 1.0) return (1.0 - 1.5 * q * q + 0.75 * q * q * q) / (HV_KERNEL_PI * h3);
   double t = 2.0 - q;
   return 0.25 * t * t * t / (HV_KERNEL_PI * h3);
@@ -39,12 +47,14 @@ static inline double kernel_w_h3(enum kernel_kind k, double q)
     double t = 1.0 - 0.5 * q;
     return 21.0 / (16.0 * HV_KERNEL_PI) * t * t * t * t * (2.0 * q + 1.0);
   }
+  if (k == KERNEL_QUADRATIC) return 5.0 / (4.0 * HV_KERNEL_PI) * (0.1875 * q * q - 0.75 * q + 0.75);
   if (q < 1.0) return (1.0 - 1.5 * q * q + 0.75 * q * q * q) * (1.0 / HV_KERNEL_PI);
   double t = 2.0 - q;
   return 0.25 / HV_KERNEL_PI * t * t * t;
 }
 
-/* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0.
+/* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0
+ * (the quadratic kernel's is 0 there: see above).
  * One division, two in the outer shell 1 ≤ q < 2 (h/r); computing 1/h and 1/r
  * from one 1/(r h) was measured slower (docs/performance.md). */
 static inline double kernel_f(enum kernel_kind k, double r, double h)
@@ -55,6 +65,12 @@ static inline double kernel_f(enum kernel_kind k, double r, double h)
     /* dW/dq = σ/h³ · (−5 q)(1 − q/2)³ ; (1/r) dW/dr = dW/dq / (q h²) */
     const double t = 1.0 - 0.5 * q;
     return (-5.0 * 21.0 / (16.0 * HV_KERNEL_PI)) * ih5 * t * t * t;
+  }
+  if (k == KERNEL_QUADRATIC) {
+    /* dW/dq = σ/h³ (3/8 q − 3/4); divided by q h²: σ/h⁵ (3/8 − 3/(4q)). A pair at
+     * one point (q = 0) has no direction: no force (its x is 0 as well). */
+    if (q < 1e-12) return 0.0;
+    return 5.0 / (4.0 * HV_KERNEL_PI) * ih5 * (0.375 - 0.75 * h / r);
   }
   if (q < 1.0) return (-3.0 + 2.25 * q) * (1.0 / HV_KERNEL_PI) * ih5;
   /* −¾ (2 − q)²/q: with 1/q = h/r, r > h here */

@@ -8,7 +8,7 @@
 
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {
-  static const char *const kernels[] = {"cubic-spline", "wendland-c2", NULL};
+  static const char *const kernels[] = {"cubic-spline", "wendland-c2", "quadratic", NULL};
   static const char *const densities[] = {"continuity", "summation", NULL};
   static const char *const forms[] = {"volume", "mass", NULL};
   static const char *const switches[] = {"none", "cullen-dehnen", NULL};
