@@ -4,6 +4,7 @@
 #include "config/config.h"
 #include "eos/eos.h"
 #include "material/material.h"
+#include "strength/strength.h"
 #include "testlib.h"
 
 #include <errno.h>
@@ -64,6 +65,40 @@ static const struct paper_mg paper[] = {
     {"al-alloy", 2780.0, 5612.0, 3.54, 1.176, 0.0, 0.362, 0.383e9, -0.59e9},
     {"al-projectile", 2701.0, 5240.0, 3.54, 0.97, 0.0, 0.33, 0.075e9, -0.1e9},
 };
+
+/* ---------------------------------------------------------------- beyond the paper */
+
+/* steel-target-jc: Table 2's steel (EOS, G) with Johnson & Cook's (1983) 4340 strength:
+ * the same EOS and shear modulus as steel-target, the published A, B, N, C, M, T_melt,
+ * and the yield the model gives from them: A + B at eps_p = 1 (1.302 GPa), A + B 0.5^0.26
+ * at eps_p = 0.5, nothing at the melting temperature. */
+static void test_jc_library(struct cfg *lib)
+{
+  struct hv_error err = {0};
+  struct material m[2];
+  int rc = material_read(lib, "steel-target-jc", "jc", &m[0], &err);
+  if (rc == 0 && material_read(lib, "steel-target", "t2", &m[1], &err)) {
+    material_free(&m[0]);
+    rc = 1;
+  }
+  CHECK(rc == 0, "steel-target-jc read (%s)", rc ? err.msg : "ok");
+  if (rc) return;
+  const struct strength_params *s = &m[0].str;
+  CHECK(m[0].eos == m[1].eos && m[0].eosp.mg.rho0 == m[1].eosp.mg.rho0 &&
+            m[0].eosp.mg.c0 == m[1].eosp.mg.c0 && m[0].eosp.mg.n == m[1].eosp.mg.n &&
+            m[0].eosp.mg.Gamma == m[1].eosp.mg.Gamma && s->G == m[1].str.G,
+        "steel-target-jc: Table 2's EOS and shear modulus");
+  CHECK(s->yield == YIELD_JOHNSON_COOK && s->jc_A == 0.792e9 && s->jc_B == 0.510e9 &&
+            s->jc_N == 0.26 && s->jc_C == 0.014 && s->jc_M == 1.03 && s->T_melt == 1793.0 &&
+            s->cv == 477.0 && s->jc_rate0 == 1.0 && m[0].frac.sigma_c == -0.792e9,
+        "steel-target-jc: Johnson & Cook's 4340 constants");
+  const double y1 = strength_yield(s, 1.0, 1.0, 0.0), yh = strength_yield(s, 0.5, 1.0, 0.0);
+  const double ym = strength_yield(s, 1.0, 1.0, 477.0 * (1793.0 - 293.15));
+  CHECK(fabs(y1 - 1.302e9) < 1e3 && fabs(yh - (0.792e9 + 0.510e9 * pow(0.5, 0.26))) < 1e3 &&
+            ym == 0.0,
+        "steel-target-jc: Y(eps_p 1) = %.6g, Y(0.5) = %.6g Pa, Y at melting = %g", y1, yh, ym);
+  for (int k = 0; k < 2; k++) material_free(&m[k]);
+}
 
 static void test_paper_values(void)
 {
@@ -131,6 +166,7 @@ static void test_paper_values(void)
         "rubber-ring: n = 1, Gamma = 0, G = 0.22");
   eos_evaluate(&m, 1.1, 0.0, &st);
   CHECK(fabs(st.p - 0.1) <= 1e-15, "rubber-ring: p = c0^2 (rho - rho0) = %.17g at rho = 1.1", st.p);
+  test_jc_library(lib);
   /* every entry reads and no key is left unread */
   CHECK(cfg_check_unused(lib, &err) == 0, "no unknown key in the library (%s)",
         err.code ? err.msg : "ok");

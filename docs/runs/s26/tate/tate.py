@@ -72,11 +72,12 @@ def solve_rt(v, l, target):
     return 0.5 * (lo + hi)
 
 
-print("test | v km/s | u0 (R_t 1.59) km/s | L Tate (R_t 1.59) mm | L exp mm | L KERNEL mm |"
-      " R_t for L exp GPa | L hvsph mm | R_t for L hvsph GPa")
-for k, (v, l, lexp, lk) in RODS.items():
-    rt = 1.59e9
-    need = solve_rt(v, l, lexp)
-    print(f"{k} | {v/1e3:.2f} | {head_speed(v, rt)/1e3:.3f} | {depth(v, l, rt)*1e3:.1f} |"
-          f" {lexp*1e3:.1f} | {lk*1e3:.1f} | " + (f"{need/1e9:.2f}" if need > 0.11e9 else "-")
-          + (f" | {HVSPH[k]*1e3:.1f} | {solve_rt(v, l, HVSPH[k])/1e9:.2f}" if HVSPH[k] else " | - | -"))
+if __name__ == "__main__":
+    print("test | v km/s | u0 (R_t 1.59) km/s | L Tate (R_t 1.59) mm | L exp mm | L KERNEL mm |"
+          " R_t for L exp GPa | L hvsph mm | R_t for L hvsph GPa")
+    for k, (v, l, lexp, lk) in RODS.items():
+        rt = 1.59e9
+        need = solve_rt(v, l, lexp)
+        print(f"{k} | {v/1e3:.2f} | {head_speed(v, rt)/1e3:.3f} | {depth(v, l, rt)*1e3:.1f} |"
+              f" {lexp*1e3:.1f} | {lk*1e3:.1f} | " + (f"{need/1e9:.2f}" if need > 0.11e9 else "-")
+              + (f" | {HVSPH[k]*1e3:.1f} | {solve_rt(v, l, HVSPH[k])/1e9:.2f}" if HVSPH[k] else " | - | -"))
