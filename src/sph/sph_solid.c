@@ -156,12 +156,13 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              aluminium at 4 km/s in nitrogen reached 2.4 ρ₀); the gas still pushes it
              through the pressure force */
           if (cond_i && mat[p->mat[j]].eos == EOS_IDEAL_GAS) continue;
-          /* a neighbour of another body counts with at most its reference volume
-             mⱼ/ρ₀ⱼ: sprayed debris far below ρ₀ (a hundredth of it in §2.4's cloud)
-             would otherwise weigh a lone particle's compression by 37-73 times its
-             mass's volume and drive it to 4 ρ₀ (docs/models.md, "Contact") */
+          /* a neighbour of another body counts with at most twice its reference
+             volume, 2mⱼ/ρ₀ⱼ: sprayed debris far below ρ₀ (a hundredth of it in §2.4's
+             cloud) would otherwise weigh a lone particle's compression by 37-73 times
+             its mass's volume and drive it to 4 ρ₀; above ρ₀/2 nothing changes
+             (docs/models.md, "Contact between bodies") */
           const double rho0j = mat[p->mat[j]].rho0;
-          const double wd = bj != bi && rho[j] < rho0j ? m[j] / rho0j * f : w;
+          const double wd = bj != bi && rho[j] < 0.5 * rho0j ? 2.0 * m[j] / rho0j * f : w;
           sum -= wd * udx;
           if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
           if (strong && bj == bi) {

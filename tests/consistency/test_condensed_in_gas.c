@@ -180,10 +180,10 @@ static void test_plate_in_plane(void)
  * §2.4's cloud a projectile particle is 11 times a bumper particle, and its spray sits at
  * 1-3 % of ρ₀). The bit's line passes 0.3 mm from
  * a row of spray particles. Its density rate weighs a neighbour of another body by at
- * most that neighbour's reference volume mⱼ/ρ₀ⱼ: passing a spray particle it swings by a
+ * most twice that neighbour's reference volume, 2mⱼ/ρ₀ⱼ: passing a spray particle it swings by a
  * few per cent and returns, and its density must stay below SPRAY_RHO_MAX ρ₀ at every
  * step. With the spray's own volume mⱼ/ρⱼ (50 times larger; before session 29) it was
- * compressed to 2.53 ρ₀ (with the cap: 1.019 ρ₀), the mechanism that held §2.4's step at 0.5 ns (a bumper
+ * compressed to 2.53 ρ₀ (with the cap: 1.038 ρ₀), the mechanism that held §2.4's step at 0.5 ns (a bumper
  * particle at 4.05 ρ₀ among spray at 37-73 times its reference volume). */
 #define SPRAY_RHO_MAX 1.2
 static const char *const SPRAY =
