@@ -161,8 +161,11 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              cloud) would otherwise weigh a lone particle's compression by 37-73 times
              its mass's volume and drive it to 4 ρ₀; above ρ₀/2 nothing changes
              (docs/models.md, "Contact between bodies") */
-          const double rho0j = mat[p->mat[j]].rho0;
-          const double wd = bj != bi && rho[j] < 0.5 * rho0j ? 2.0 * m[j] / rho0j * f : w;
+          double wd = w;
+          if (bj != bi) {
+            const double rho0j = mat[p->mat[j]].rho0;
+            if (rho[j] < 0.5 * rho0j) wd = 2.0 * m[j] / rho0j * f;
+          }
           sum -= wd * udx;
           if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
           if (strong && bj == bi) {
