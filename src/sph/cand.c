@@ -175,6 +175,22 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
   return k;
 }
 
+int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i)
+{
+  const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
+  for (uint32_t k = g->nbr_start[c]; k < g->nbr_start[c + 1]; k++) {
+    const int32_t nb = g->nbr_list[k];
+    for (uint32_t jj = g->cell_start[nb]; jj < g->cell_start[nb + 1]; jj++) {
+      const uint32_t j = g->order[jj];
+      /* cand_select's test, operation for operation */
+      const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
+      const double s = hi + p->h[j];
+      if (dx * dx + dy * dy + dz * dz - s * s < 0.0 && j != i) return 1;
+    }
+  }
+  return 0;
+}
+
 void sph_cache_free(struct sph_cache *c)
 {
   free(c->mask);
@@ -183,13 +199,16 @@ void sph_cache_free(struct sph_cache *c)
   free(c->gradv);
   free(c->tw);
   free(c->bf);
+  free(c->quiet);
+  free(c->rest);
   memset(c, 0, sizeof *c);
 }
 
 size_t sph_cache_bytes(const struct sph_cache *c)
 {
   return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words) +
-         c->gcap * 9 * sizeof *c->gradv + c->tcap * (SPH_TW * sizeof *c->tw + sizeof *c->bf);
+         c->gcap * 9 * sizeof *c->gradv + c->tcap * (SPH_TW * sizeof *c->tw + sizeof *c->bf) +
+         c->rcap * 2;
 }
 
 /* Sizes the rows: a cell's row has one bit per candidate of that cell. */

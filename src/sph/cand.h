@@ -33,6 +33,9 @@ void cand_free_all(struct cand *cd);
 void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c, const struct particles *p);
 /* Selects into cd->sel the candidates within reach of particle i; returns the count. */
 size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi, double hi);
+/* Whether cand_select would select anything for the real at slot i of cell c: the same
+ * distance test on the same candidates, read from the grid, stopping at the first. */
+int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i);
 /* The neighbours of the real particle at position ii of cell c, into cd->sel: the
  * cell's candidates are gathered on first use (*gathered), then read from `load`
  * when it holds this grid's neighbours, else selected (and kept in `store` if given).

@@ -50,6 +50,11 @@ struct sph_params {
   int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */
+  int skip_resting;    /* solids: a cell whose neighbour cells hold only particles at
+                          rest and free of stress (v = 0, p = 0, S = 0, R = 0, exactly)
+                          is not computed: its rates are exactly zero, so the results
+                          are the same bits (sph_solid.c); not with the switch, whose
+                          αᵢ decays at rest */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
@@ -78,6 +83,11 @@ struct sph_cache {
   double *tw;            /* SPH_TW doubles per slot */
   int32_t *bf;
   size_t tcap;           /* slots allocated */
+  /* sph.skip_resting: per cell, whether it holds only particles at rest (quiet) and
+     whether the first pass skipped it (rest: every neighbour cell quiet) */
+  uint8_t *quiet, *rest;
+  size_t rcap;           /* cells allocated */
+  long rested;           /* reals the last second pass skipped */
 };
 
 void sph_cache_free(struct sph_cache *c);

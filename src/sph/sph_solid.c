@@ -91,6 +91,43 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   }
 }
 
+/* sph.skip_resting. A particle whose neighbours (itself included) all have v = 0,
+ * p = 0, S = 0 and R = 0, exactly, has exactly zero rates: no velocity difference for
+ * the density rate, the velocity gradient and the viscosity, no stress for the forces;
+ * its stress stays (S = 0, L = 0: nothing to update or return). A cell is skipped when
+ * every cell of its candidate list (which covers every particle's search) holds only
+ * such particles, "quiet". The first pass tests v and S at the step's start (the pass
+ * changes S only from L); the second pass tests the mid-step v, p, S and R, and skips
+ * only cells the first pass skipped. What a skipped particle's pass would have written
+ * is written: 0 for ρ̇, the heating and a, S for S₁, and its signal speed, which
+ * depends only on whether it has a neighbour (cand_any). The switch is excluded: its
+ * αᵢ decays at rest. rest[c]: bit 0 the first pass skipped c, bit 1 the second. */
+static void rest_alloc(struct sph_cache *cache, size_t ncells)
+{
+  if (ncells > cache->rcap) {
+    cache->rcap = ncells + ncells / 4 + 64;
+    free(cache->quiet);
+    free(cache->rest);
+    cache->quiet = hv_malloc(cache->rcap, "rest flags");
+    cache->rest = hv_malloc(cache->rcap, "rest flags");
+  }
+}
+
+/* Sets bit `bit` of rest[c] where every neighbour cell of c is quiet (and, for bit 1,
+ * bit 0 is set). */
+static void rest_mark(const struct nbr_grid *g, struct sph_cache *cache, int bit)
+{
+  const uint8_t *quiet = cache->quiet;
+  uint8_t *rest = cache->rest;
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < g->ncells; c++) {
+    int r = bit == 0 || (rest[c] & 1);
+    for (uint32_t k = g->nbr_start[c]; r && k < g->nbr_start[c + 1]; k++)
+      r = quiet[g->nbr_list[k]];
+    rest[c] = (uint8_t)(bit == 0 ? r : (rest[c] & 1) | (r << 1));
+  }
+}
+
 void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, struct sph_cache *cache,
                             const struct material *mat, double dt)
@@ -112,6 +149,21 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
     gradv = cache->gradv;
     cache->gradv_valid = 0;
   }
+  const int skip = sp->skip_resting && cache && !p->av;
+  if (skip) {
+    rest_alloc(cache, g->ncells);
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int q = 1;
+      for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t j = g->order[ii];
+        q = vx[j] == 0.0 && vy[j] == 0.0 && vz[j] == 0.0;
+        for (int k = 0; q && k < 6; k++) q = p->S[k][j] == 0.0;
+      }
+      cache->quiet[c] = (uint8_t)q;
+    }
+    rest_mark(g, cache, 0);
+  }
 
 #pragma omp parallel
   {
@@ -119,6 +171,18 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       int gathered = 0;
+      if (skip && cache->rest[c]) {   /* at rest: what the pass would write */
+        for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+          const uint32_t i = g->order[ii];
+          if (i >= n) continue;
+          p->drho[i] = 0.0;
+          p->de[i] = 0.0;
+          for (int k = 0; k < 6; k++) p->S1[k][i] = p->S[k][i];
+          if (gradv)
+            for (int t = 0; t < 9; t++) gradv[9 * (size_t)i + t] = 0.0;
+        }
+        continue;
+      }
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
@@ -319,17 +383,49 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
     w[TW_R + 6] = w[TW_R + 7] = 0.0;
     bf[j] = 2 * (piece_of(piece, body[j])) + rany;
   }
+  /* sph.skip_resting (see rest_alloc): the mid-step state of the cells the first pass
+     skipped */
+  const int skip = sp->skip_resting && cache && cache->valid && !av;
+  long rested = 0;
+  if (skip) {
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int q = 1;
+      for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t j = g->order[ii];
+        const double *w = tw + TW * (size_t)j;
+        q = w[TW_V] == 0.0 && w[TW_V + 1] == 0.0 && w[TW_V + 2] == 0.0 && w[TW_P] == 0.0 &&
+            pr[j] == 0.0 && !(bf[j] & 1);
+        for (int t = 0; q && t < 6; t++) q = w[TW_S + t] == 0.0;
+      }
+      cache->quiet[c] = (uint8_t)q;
+    }
+    rest_mark(g, cache, 1);
+  }
 
-#pragma omp parallel
+#pragma omp parallel reduction(+ : rested)
   {
     struct cand cd = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       int gathered = 0;
+      if (skip && (cache->rest[c] & 2)) {   /* at rest: a = 0, de unchanged, the signal */
+        for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+          const uint32_t i = g->order[ii];
+          if (i >= n) continue;
+          const double ci = cs[i], mumax = 0.0;
+          p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
+          p->vsig[i] = cand_any(g, c, p, i) ? ci + 1.2 * (alpha * ci + beta * mumax) : 0.0;
+          rested++;
+        }
+        continue;
+      }
+      /* a cell the first pass skipped has no stored neighbours: search */
+      const struct sph_cache *load = skip && (cache->rest[c] & 1) ? NULL : cache;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
+        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, load, NULL);
         const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double ci = cs[i], rhoi = rho[i];
@@ -440,6 +536,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
     }
     cand_free_all(&cd);
   }
+  if (cache) cache->rested = rested;
   if (!cache) {
     free(tw0);
     free(bf0);
