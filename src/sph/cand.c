@@ -49,6 +49,13 @@ static void cand_reserve(struct cand *cd, size_t n)
   }
 }
 
+/* r² − (hᵢ + hⱼ)² of a pair (< 0: within reach): the portable selection's test and
+ * cand_any's, the same operations as the AVX-512 lanes. */
+static inline double cand_gap(double dx, double dy, double dz, double s)
+{
+  return dx * dx + dy * dy + dz * dz - s * s;
+}
+
 static size_t cand_count(const struct nbr_grid *g, size_t c)
 {
   const int32_t *nb = g->nbr_list + g->nbr_start[c];
@@ -164,7 +171,7 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
 #else
     for (size_t q = q0; q < q1; q++) {
       const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];
-      d[q] = dx * dx + dy * dy + dz * dz - s * s;
+      d[q] = cand_gap(dx, dy, dz, s);
     }
     for (size_t q = q0; q < q1; q++) {
       sel[k] = (uint32_t)q;
@@ -182,10 +189,8 @@ int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint
     const int32_t nb = g->nbr_list[k];
     for (uint32_t jj = g->cell_start[nb]; jj < g->cell_start[nb + 1]; jj++) {
       const uint32_t j = g->order[jj];
-      /* cand_select's test, operation for operation */
       const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
-      const double s = hi + p->h[j];
-      if (dx * dx + dy * dy + dz * dz - s * s < 0.0 && j != i) return 1;
+      if (cand_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
     }
   }
   return 0;

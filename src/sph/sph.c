@@ -140,10 +140,8 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         /* with the switch the α c part takes the largest pair α, and the β μ part stays
            whole: it follows the approach speed, which the step must resolve whatever α
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
-        /* a particle with no neighbour carries no signal: only its own motion limits
-           the step (so it moves at most C_CFL h per step towards what it will meet) */
-        vsig[i] = nsel ? ci + 1.2 * (amax * ci + beta * mumax)   /* amax = α without it */
-                       : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
+        vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax,   /* amax = α without it */
+                                   sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
       }
     }
     cand_free_all(&cd);

@@ -90,6 +90,17 @@ struct sph_cache {
   long rested;           /* reals the last second pass skipped */
 };
 
+/* The signal speed of a real after the force pass: cᵢ + 1.2 (α cᵢ + β μ_max), with α
+ * the largest pair α (the switch) and μ_max the largest approach term; a particle with
+ * no neighbour carries no signal, and only its own speed limits the step (so it moves at
+ * most C_CFL h per step towards what it will meet). One place for both loops and for
+ * the particles sph.skip_resting leaves out. */
+static inline double sph_signal_speed(int has_neighbour, double ci, double amax, double beta,
+                                      double mumax, double speed)
+{
+  return has_neighbour ? ci + 1.2 * (amax * ci + beta * mumax) : speed;
+}
+
 void sph_cache_free(struct sph_cache *c);
 /* Bytes held. */
 size_t sph_cache_bytes(const struct sph_cache *c);

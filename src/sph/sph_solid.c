@@ -413,9 +413,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
           const uint32_t i = g->order[ii];
           if (i >= n) continue;
-          const double ci = cs[i], mumax = 0.0;
           p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
-          p->vsig[i] = cand_any(g, c, p, i) ? ci + 1.2 * (alpha * ci + beta * mumax) : 0.0;
+          p->vsig[i] = sph_signal_speed(cand_any(g, c, p, i), cs[i], alpha, beta, 0.0, 0.0);
           rested++;
         }
         continue;
@@ -529,9 +528,8 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
         /* with the switch the α c part takes the largest pair α, and the β μ part stays
            whole: it follows the approach speed, which the step must resolve whatever α
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
-        /* no neighbour: no signal to carry (see sph.c) */
-        p->vsig[i] = nsel ? ci + 1.2 * (amax * ci + beta * mumax)   /* amax = α without it */
-                          : sqrt(vxi * vxi + vyi * vyi + vzi * vzi);
+        p->vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax,   /* amax = α without it */
+                                      sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
       }
     }
     cand_free_all(&cd);

@@ -9,9 +9,10 @@
  * everything but the projectile is at rest and unstressed: the skip leaves out most of
  * the particles, and the shock in the bumper and then the debris on the backwall wake
  * them cell by cell. One particle at rest has no neighbour at all (its signal speed is
- * 0, not its sound speed, where it is computed). After every step, every field of every particle (x, v, ρ, e, p, c,
- * S, S₁, ε_p, damage, h, a, ρ̇, ė, v_sig), the particle count and the next step must
- * be equal (==, so +0 and −0 count as equal: a skipped particle keeps its S where the
+ * 0, not its sound speed, where it is computed). After every step, every allocated field
+ * of every particle (particles_fields: x, v, ρ, e, p, c, S, S₁, R, ε_p, damage, h, a, ρ̇,
+ * ė, v_sig, ids and order ...), the particle count and the next step must be equal
+ * (doubles by ==, so +0 and −0 count as equal: a skipped particle keeps its S where the
  * update would write S + ½Δt·0). The test also checks that the skip happened and
  * changed: at least SKIP_FIRST_MIN of the particles skipped at the first step, and
  * fewer at the last than at the first (particles woke up), so that equal results mean
@@ -60,63 +61,47 @@ static int setup(struct sim *s, struct cfg **c, int skip, int sw)
   return sim_from_text(text, "skip-resting.yaml", s, c);
 }
 
-/* Number of slots where a field differs (NaN never expected: check_state stops a run). */
-static size_t differ(const double *a, const double *b, size_t n)
+/* Number of slots where component k of field f differs between the two stores: doubles
+ * by == (NaN never expected: check_state stops a run), integers by value. */
+static size_t differ(const struct pfield *fa, const struct pfield *fb, int k, size_t n)
 {
   size_t d = 0;
-  for (size_t i = 0; i < n; i++) d += !(a[i] == b[i]);
+  if (fa->type == PF_DOUBLE) {
+    const double *x = fa->comp[k], *y = fb->comp[k];
+    for (size_t i = 0; i < n; i++) d += !(x[i] == y[i]);
+  } else if (fa->type == PF_INT64) {
+    const int64_t *x = fa->comp[k], *y = fb->comp[k];
+    for (size_t i = 0; i < n; i++) d += x[i] != y[i];
+  } else {
+    const int32_t *x = fa->comp[k], *y = fb->comp[k];
+    for (size_t i = 0; i < n; i++) d += x[i] != y[i];
+  }
   return d;
 }
 
-struct field {
-  const char *name;
-  const double *x, *y;
-};
-
-/* Compares every field; returns the number of differing values and names the first. */
-static size_t compare(const struct sim *a, const struct sim *b, long step)
+/* Compares every allocated particle field (particles_fields: the state, the rates, the
+ * signal speed, the per-step scratch) of the reals, the clock and the next step; returns
+ * the number of differing values and names the first field that differs. */
+static size_t compare(struct sim *a, struct sim *b, long step)
 {
-  const struct particles *p = &a->p, *q = &b->p;
-  if (p->n != q->n) {
-    CHECK(0, "step %ld: particle counts %zu and %zu", step, p->n, q->n);
+  if (a->p.n != b->p.n) {
+    CHECK(0, "step %ld: particle counts %zu and %zu", step, a->p.n, b->p.n);
     return 1;
   }
-  const size_t n = p->n;
-  struct field f[64];
-  int nf = 0;
-  static const char *const xn[3] = {"x", "y", "z"}, *const vn[3] = {"vx", "vy", "vz"};
-  static const char *const an[3] = {"ax", "ay", "az"};
-  static const char *const sn[6] = {"S0", "S1", "S2", "S3", "S4", "S5"};
-  for (int k = 0; k < 3; k++) {
-    f[nf++] = (struct field){xn[k], p->x[k], q->x[k]};
-    f[nf++] = (struct field){vn[k], p->v[k], q->v[k]};
-    f[nf++] = (struct field){an[k], p->a[k], q->a[k]};
+  struct pfield fa[HV_MAX_FIELDS], fb[HV_MAX_FIELDS];
+  const int nf = particles_fields(&a->p, fa);
+  if (particles_fields(&b->p, fb) != nf) {
+    CHECK(0, "step %ld: the two runs allocate different fields", step);
+    return 1;
   }
-  for (int k = 0; k < 6; k++) {
-    f[nf++] = (struct field){sn[k], p->S[k], q->S[k]};
-    f[nf++] = (struct field){"S1 (end of step)", p->S1[k], q->S1[k]};
-  }
-  f[nf++] = (struct field){"rho", p->rho, q->rho};
-  f[nf++] = (struct field){"e", p->e, q->e};
-  f[nf++] = (struct field){"p", p->p, q->p};
-  f[nf++] = (struct field){"cs", p->cs, q->cs};
-  f[nf++] = (struct field){"eps_p", p->eps_p, q->eps_p};
-  f[nf++] = (struct field){"damage", p->damage, q->damage};
-  f[nf++] = (struct field){"h", p->h, q->h};
-  f[nf++] = (struct field){"drho", p->drho, q->drho};
-  f[nf++] = (struct field){"de", p->de, q->de};
-  f[nf++] = (struct field){"vsig", p->vsig, q->vsig};
   size_t total = 0;
-  for (int k = 0; k < nf; k++) {
-    const size_t d = differ(f[k].x, f[k].y, n);
-    if (d && !total)
-      CHECK(0, "step %ld: field %s differs at %zu of %zu particles", step, f[k].name, d, n);
-    total += d;
-  }
-  for (size_t i = 0; i < n && !total; i++)
-    if (p->id[i] != q->id[i]) {
-      CHECK(0, "step %ld: particle order differs at slot %zu", step, i);
-      total++;
+  for (int f = 0; f < nf; f++)
+    for (int k = 0; k < fa[f].ncomp; k++) {
+      const size_t d = differ(&fa[f], &fb[f], k, a->p.n);
+      if (d && !total)
+        CHECK(0, "step %ld: field %s[%d] differs at %zu of %zu particles", step, fa[f].name, k,
+              d, a->p.n);
+      total += d;
     }
   if (!total && !(a->dt == b->dt && a->t == b->t)) {
     CHECK(0, "step %ld: t %.17g / %.17g, next dt %.17g / %.17g", step, a->t, b->t, a->dt, b->dt);
