@@ -7,9 +7,10 @@ the cases' alpha = 1, beta = 2 and with Table 2's steel (sessions 20 and 26): de
 crater-floor speed, channel (cavity_diameter_wall_mean / cavity_diameter_wall /
 cavity_diameter_mean) at 20 and 30 us, the floor speed Tate's balance gives with the
 resistance R_t the experiment's final depth needs (docs/runs/s26/tate), and the depth
-and diameter read onto the paper's counts by session 28's rule (L scaled by
-u/(v - u) of the 10-30 us floors, D by the ratio of D_wall_mean at 30 us, both against
-the Table-2-steel run at the same resolution and the paper's-count result).
+and diameter read onto the paper's counts (L scaled by u/(v - u) of the 10-30 us floors,
+session 28's rule; D by the ratio of D_wall_mean at 30 us, where session 28 used D_wall
+or D_mean; both against the Table-2-steel run at the same resolution and the
+paper's-count result).
 
 Usage: jcvisc.py   (in this folder)
 docs/validation.md ("The Johnson-Cook steel with less viscosity").
