@@ -14,7 +14,7 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   static const char *const switches[] = {"none", "cullen-dehnen", NULL};
   int k, dens, form, sw, no = 0, yes = 1;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, decay = 0.05;
-  double as_eps = 0.3, as_n = 4.0;
+  double as_eps = 0.3, as_n = 4.0, rest_tol = 1e-14;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_choice(c, "sph.density", "continuity", densities, &dens, err) ||
       cfg_get_choice(c, "sph.continuity", "volume", forms, &form, err) ||
@@ -30,6 +30,8 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err) ||
       cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err) ||
       cfg_get_bool(c, "sph.skip_resting", &yes, &sp->skip_resting, err) ||
+      cfg_get_quantity(c, "sph.rest_tolerance", UNIT_NONE, &rest_tol, 0.0, 1e-6,
+                       &sp->rest_tol, err) ||
       cfg_get_choice(c, "sph.viscosity.switch", "none", switches, &sw, err) ||
       cfg_get_quantity(c, "sph.viscosity.alpha_min", UNIT_NONE, &zero, 0.0, 10.0, &sp->av_min,
                        err) ||

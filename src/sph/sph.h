@@ -55,6 +55,10 @@ struct sph_params {
                           is not computed: its rates are exactly zero, so the results
                           are the same bits (sph_solid.c); not with the switch, whose
                           αᵢ decays at rest */
+  double rest_tol;     /* solids: a particle of a condensed material (ρ₀, K₀ > 0)
+                          whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
+                          their scales (c = √(K₀/ρ₀), c², ρ₀, K₀) at the end of a step
+                          is set exactly at rest (step.c, snap_rest); 0: never */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
