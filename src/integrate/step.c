@@ -246,21 +246,31 @@ static void snap_rest(struct sim *s, double dt)
   struct particles *p = &s->p;
   const double tol = s->sph.rest_tol;
   if (!(tol > 0.0) || !p->solid) return;
+  /* per material: the thresholds of v, e, ρ − ρ₀ and S (0: not a condensed material) */
+  double vt[HV_MAX_MATERIALS], et[HV_MAX_MATERIALS], rt[HV_MAX_MATERIALS], st[HV_MAX_MATERIALS];
+  for (int j = 0; j < s->nmat; j++) {
+    const struct material *m = &s->mat[j];
+    const int cond = m->rho0 > 0.0 && m->K0 > 0.0;
+    const double c = cond ? sqrt(m->K0 / m->rho0) : 0.0;
+    vt[j] = tol * c;
+    et[j] = tol * c * c;
+    rt[j] = tol * m->rho0;
+    st[j] = cond ? tol * m->K0 : 0.0;
+  }
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
-    const struct material *m = &s->mat[p->mat[i]];
-    if (!(m->rho0 > 0.0 && m->K0 > 0.0)) continue;
-    const double c = sqrt(m->K0 / m->rho0), vt = tol * c, et = tol * c * c, st = tol * m->K0;
-    int rest = fabs(p->e[i]) <= et && fabs(p->de[i]) * dt <= et &&
-               fabs(p->rho[i] - m->rho0) <= tol * m->rho0;
+    const int j = p->mat[i];
+    if (!(st[j] > 0.0)) continue;
+    int rest = fabs(p->e[i]) <= et[j] && fabs(p->de[i]) * dt <= et[j] &&
+               fabs(p->rho[i] - s->mat[j].rho0) <= rt[j];
     for (int k = 0; rest && k < 3; k++)
-      rest = fabs(p->v[k][i]) <= vt && fabs(p->a[k][i]) * dt <= vt;
-    for (int k = 0; rest && k < 6; k++) rest = fabs(p->S1[k][i]) <= st;
+      rest = fabs(p->v[k][i]) <= vt[j] && fabs(p->a[k][i]) * dt <= vt[j];
+    for (int k = 0; rest && k < 6; k++) rest = fabs(p->S1[k][i]) <= st[j];
     if (!rest) continue;
     for (int k = 0; k < 3; k++) p->v[k][i] = p->a[k][i] = 0.0;
     for (int k = 0; k < 6; k++) p->S1[k][i] = 0.0;
     p->e[i] = p->de[i] = 0.0;
-    p->rho[i] = m->rho0;
+    p->rho[i] = s->mat[j].rho0;
   }
 }
 
