@@ -1,0 +1,27 @@
+#!/usr/bin/python3
+"""Session 32: is the eroded tungsten in the channel what drives rod-5841's wall out?
+Session 26's r41-case-c10 (rod-5841, resolution 0.3, 1.0 mm core joined to the 2.5 mm
+block) with rod particles removed once they are slower than vcut along x and more than
+dbehind behind the rod's foremost particle (study.patch, HVSPH_ERODE=vcut,dbehind; not
+committed). Prints depth, floor speed and the channel, as session 31's eta.py.
+
+Usage: erode.py [RUN ...]   (run folders; default: the runs kept here)
+"""
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor'))
+from floor import depths  # noqa: E402
+
+print("run | L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
+      " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
+RUNS = ['base', 'e53', 'e10', 'e25', 'e01', 'c01', 'k01', 'rv02']
+for f in sys.argv[1:] or [os.path.join(HERE, r) for r in RUNS]:
+    L = depths(f, 'penetration_depth')
+    M = depths(f, 'cavity_diameter_wall_mean')
+    W = depths(f, 'cavity_diameter_wall')
+    A = depths(f, 'cavity_diameter_mean')
+    print(f"{os.path.basename(f.rstrip('/'))} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} |"
+          f" {(L[30] - L[10]) / 20:.3f} / {(L[30] - L[20]) / 10:.3f} | {M[20]:.2f} / {M[30]:.2f} |"
+          f" {W[20]:.2f} / {W[30]:.2f} | {A[20]:.2f} / {A[30]:.2f}")

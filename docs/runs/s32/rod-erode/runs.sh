@@ -1,0 +1,14 @@
+#!/bin/sh
+# Session 32: session 26's r41-case-c10.yaml (copied here) and its variants, 1 thread
+# each, two at a time; only the small outputs are kept. hvsph is the committed binary
+# (base); hvsph-study the build with study.patch applied (git apply study.patch).
+# Then: /usr/bin/python3 erode.py
+set -e
+hvsph run r41-case-c10.yaml -o base --threads 1
+HVSPH_ERODE=1820,10e-3 hvsph-study run r41-case-c10.yaml -o e10 --threads 1
+HVSPH_ERODE=1820,5.3e-3 hvsph-study run r41-case-c10.yaml -o e53 --threads 1
+HVSPH_ERODE=1600,2.5e-3 hvsph-study run r41-case-c10.yaml -o e25 --threads 1
+HVSPH_ERODE=1600,1.0e-3 hvsph-study run r41-case-c10.yaml -o e01 --threads 1
+HVSPH_ERODE=1600,1.0e-3,0 hvsph-study run r41-case-c10.yaml -o c01 --threads 1
+HVSPH_ERODE=1600,1.0e-3,3e5 hvsph-study run r41-case-c10.yaml -o k01 --threads 1
+HVSPH_RODVISC=0.2 hvsph-study run r41-case-c10.yaml -o rv02 --threads 1
