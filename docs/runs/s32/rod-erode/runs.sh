@@ -12,3 +12,5 @@ HVSPH_ERODE=1600,1.0e-3 hvsph-study run r41-case-c10.yaml -o e01 --threads 1
 HVSPH_ERODE=1600,1.0e-3,0 hvsph-study run r41-case-c10.yaml -o c01 --threads 1
 HVSPH_ERODE=1600,1.0e-3,3e5 hvsph-study run r41-case-c10.yaml -o k01 --threads 1
 HVSPH_RODVISC=0.2 hvsph-study run r41-case-c10.yaml -o rv02 --threads 1
+HVSPH_NCONTACT=1 hvsph-study run r41-case-c10.yaml -o nc41 --threads 1
+HVSPH_NCONTACT=1 hvsph-study run r29-case-c10.yaml -o nc29 --threads 1
