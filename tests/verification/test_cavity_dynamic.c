@@ -47,7 +47,7 @@
 #define B0 20e-3       /* [m] outer radius */
 #define V0 450.0       /* [m/s] at the bore */
 #define RHO0 7810.0    /* [kg/m3] steel-target */
-#define T_MAX 80e-6    /* [s] the bore stops at about 30 µs */
+#define T_MAX 80e-6    /* [s] the bore stops at 36-49 µs (1.0-0.5 mm spacing) */
 #define REL_TOL 0.05   /* on a_f: ±10 % in Y (see above) */
 
 static const char *const CASE =
@@ -98,9 +98,13 @@ int main(void)
   if (sim_from_text(text, "cavity-dynamic.yaml", &s, &c)) return test_finish();
   struct particles *p = &s.p;
   const size_t n = p->n;
-  /* the incompressible field v_r = q0/r and the first layer's r0² */
-  double *r02 = calloc(n, sizeof *r02);
-  int64_t *ids = calloc(n, sizeof *ids);
+  /* the incompressible field v_r = q0/r; the first layer's r0², by particle id */
+  int64_t idmax = 0;
+  for (size_t i = 0; i < n; i++) idmax = p->id[i] > idmax ? p->id[i] : idmax;
+  double *r0_of = calloc((size_t)idmax + 1, sizeof *r0_of);
+  unsigned char *inner = calloc((size_t)idmax + 1, 1);
+  CHECK(r0_of && inner, "memory for %lld ids", (long long)idmax + 1);
+  if (!r0_of || !inner) return test_finish();
   size_t nin = 0;
   for (size_t i = 0; i < n; i++) {
     const double y = p->x[1][i], z = p->x[2][i], r = hypot(y, z);
@@ -108,18 +112,10 @@ int main(void)
     p->v[1][i] = A0 * V0 * y / (r * r);
     p->v[2][i] = A0 * V0 * z / (r * r);
     if (r < A0 + dx) {
-      ids[nin] = p->id[i];
-      r02[nin++] = r * r;
+      r0_of[p->id[i]] = r * r;
+      inner[p->id[i]] = 1;
+      nin++;
     }
-  }
-  /* r02 by id */
-  int64_t idmax = 0;
-  for (size_t i = 0; i < n; i++) idmax = p->id[i] > idmax ? p->id[i] : idmax;
-  double *r0_of = calloc((size_t)idmax + 1, sizeof *r0_of);
-  unsigned char *inner = calloc((size_t)idmax + 1, 1);
-  for (size_t k = 0; k < nin; k++) {
-    r0_of[ids[k]] = r02[k];
-    inner[ids[k]] = 1;
   }
   struct hv_error err;
   hv_error_clear(&err);
@@ -154,8 +150,6 @@ int main(void)
   CHECK(t_stop > 0.0, "the bore stops before %.0f us", T_MAX * 1e6);
   CHECK(fabs(amax / af - 1.0) <= REL_TOL, "the bore stops at %.3f mm, exact %.3f mm (within %.0f %%)",
         amax * 1e3, af * 1e3, REL_TOL * 100);
-  free(r02);
-  free(ids);
   free(r0_of);
   free(inner);
   sim_free(&s);
