@@ -14,3 +14,5 @@ HVSPH_ERODE=1600,1.0e-3,3e5 hvsph-study run r41-case-c10.yaml -o k01 --threads 1
 HVSPH_RODVISC=0.2 hvsph-study run r41-case-c10.yaml -o rv02 --threads 1
 HVSPH_NCONTACT=1 hvsph-study run r41-case-c10.yaml -o nc41 --threads 1
 HVSPH_NCONTACT=1 hvsph-study run r29-case-c10.yaml -o nc29 --threads 1
+hvsph run r44-core.yaml -o b44 --threads 1 --set time.end=30us --set output.every=5us
+HVSPH_ERODE=3100,1.0e-3 hvsph-study run r44-core.yaml -o e44 --threads 1 --set time.end=30us --set output.every=5us
