@@ -16,3 +16,5 @@ HVSPH_NCONTACT=1 hvsph-study run r41-case-c10.yaml -o nc41 --threads 1
 HVSPH_NCONTACT=1 hvsph-study run r29-case-c10.yaml -o nc29 --threads 1
 hvsph run r44-core.yaml -o b44 --threads 1 --set time.end=30us --set output.every=5us
 HVSPH_ERODE=3100,1.0e-3 hvsph-study run r44-core.yaml -o e44 --threads 1 --set time.end=30us --set output.every=5us
+HVSPH_ERODE=840,2.5e-3 hvsph-study run r29-case-c10.yaml -o e29b --threads 1
+HVSPH_ERODE=840,1.0e-3 hvsph-study run r29-case-c10.yaml -o e29 --threads 1
