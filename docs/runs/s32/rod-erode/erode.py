@@ -3,7 +3,7 @@
 Session 26's r41-case-c10 (rod-5841, resolution 0.3, 1.0 mm core joined to the 2.5 mm
 block) with rod particles removed once they are slower than vcut along x and more than
 dbehind behind the rod's foremost particle (study.patch, HVSPH_ERODE=vcut,dbehind; not
-committed), cools them instead, scales the rod-rod viscosity, or (nc41, nc29: rod-1929's
+committed), stops their outward motion instead (r25, r01: ecap = -2), cools them instead, scales the rod-rod viscosity, or (nc41, nc29: rod-1929's
 r29-case-c10.yaml against session 26's case-c10) makes the contact force normal-only.
 e29b / e29: rod-1929 with the eroded rod taken out 2.5 / 1.0 mm behind the tip.
 b44 / e44: rod-5844 (session 19's r44-core.yaml to 30 us), the case and the eroded rod
@@ -21,7 +21,7 @@ from floor import depths  # noqa: E402
 
 print("run | L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
       " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
-RUNS = ['base', 'e53', 'e10', 'e25', 'e01', 'c01', 'k01', 'rv02', 'nc41',
+RUNS = ['base', 'e53', 'e10', 'e25', 'e01', 'r25', 'r01', 'c01', 'k01', 'rv02', 'nc41',
         '../../s26/rod-1929-floor/case-c10', 'nc29', 'e29b', 'e29', 'b44', 'e44']
 for f in sys.argv[1:] or [os.path.join(HERE, r) for r in RUNS]:
     L = depths(f, 'penetration_depth')
