@@ -22,7 +22,7 @@ from floor import depths  # noqa: E402
 print("run | L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
       " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
 RUNS = ['base', 'e53', 'e10', 'e25', 'e01', 'r25', 'r01', 'c01', 'k01', 'c00', 'k00', 'rv02', 'nc41',
-        '../../s26/rod-1929-floor/case-c10', 'nc29', 'e29b', 'e29', 'r29', 'b44', 'e44']
+        '../../s26/rod-1929-floor/case-c10', 'nc29', 'e29b', 'e29', 'r29', 'b44', 'e44', 'r44']
 for f in sys.argv[1:] or [os.path.join(HERE, r) for r in RUNS]:
     L = depths(f, 'penetration_depth')
     M = depths(f, 'cavity_diameter_wall_mean')

@@ -25,3 +25,4 @@ HVSPH_ERODE=1600,1.0e-3,-2 hvsph-study run r41-case-c10.yaml -o r01 --threads 1
 HVSPH_ERODE=1600,0,0 hvsph-study run r41-case-c10.yaml -o c00 --threads 1
 HVSPH_ERODE=1600,0,6e5 hvsph-study run r41-case-c10.yaml -o k00 --threads 1
 HVSPH_ERODE=840,1.0e-3,-2 hvsph-study run r29-case-c10.yaml -o r29 --threads 1
+HVSPH_ERODE=3100,1.0e-3,-2 hvsph-study run r44-core.yaml -o r44 --threads 1 --set time.end=30us --set output.every=5us
