@@ -46,6 +46,22 @@ def depths(folder, q='penetration_depth'):
     return out
 
 
+CHANNEL_HEADER = ("L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
+                  " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
+
+
+def channel_row(folder):
+    """Depth at 10 / 20 / 30 us, floor speed and the channel at 20 and 30 us of one run
+    (the columns of CHANNEL_HEADER; sessions 31 and 32's eta.py and erode.py)."""
+    L = depths(folder, 'penetration_depth')
+    M = depths(folder, 'cavity_diameter_wall_mean')
+    W = depths(folder, 'cavity_diameter_wall')
+    A = depths(folder, 'cavity_diameter_mean')
+    return (f"{L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {(L[30] - L[10]) / 20:.3f} /"
+            f" {(L[30] - L[20]) / 10:.3f} | {M[20]:.2f} / {M[30]:.2f} | {W[20]:.2f} / {W[30]:.2f} |"
+            f" {A[20]:.2f} / {A[30]:.2f}")
+
+
 def main():
     print("variant | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 | u 30-60 us (km/s) | theory |"
           " u 10-30 / theory | steps to 30 us (60 for the long run)")

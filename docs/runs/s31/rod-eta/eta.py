@@ -13,18 +13,11 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor'))
-from floor import depths  # noqa: E402
+from floor import CHANNEL_HEADER, channel_row  # noqa: E402
 
 RUNS = [('1.0', os.path.join(HERE, 'r41-eta10')),
         ('1.2', os.path.join(HERE, '..', 'rod-stress', 'r41-base')),
         ('1.5', os.path.join(HERE, 'r41-eta15'))]
-print("eta | L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
-      " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
+print("eta | " + CHANNEL_HEADER)
 for eta, f in RUNS:
-    L = depths(f, 'penetration_depth')
-    M = depths(f, 'cavity_diameter_wall_mean')
-    W = depths(f, 'cavity_diameter_wall')
-    A = depths(f, 'cavity_diameter_mean')
-    print(f"{eta} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {(L[30] - L[10]) / 20:.3f} /"
-          f" {(L[30] - L[20]) / 10:.3f} | {M[20]:.2f} / {M[30]:.2f} | {W[20]:.2f} / {W[30]:.2f} |"
-          f" {A[20]:.2f} / {A[30]:.2f}")
+    print(f"{eta} | {channel_row(f)}")

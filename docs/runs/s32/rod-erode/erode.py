@@ -17,17 +17,10 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'rod-1929-floor'))
-from floor import depths  # noqa: E402
+from floor import CHANNEL_HEADER, channel_row  # noqa: E402
 
-print("run | L 10 / 20 / 30 us (mm) | floor 10-30 / 20-30 (km/s) | D_wall_mean 20 / 30 |"
-      " D_wall 20 / 30 | D_mean 20 / 30 (mm)")
 RUNS = ['base', 'e53', 'e10', 'e25', 'e01', 'r25', 'r01', 'c01', 'k01', 'c00', 'k00', 'rv02', 'nc41',
         '../../s26/rod-1929-floor/case-c10', 'nc29', 'e29b', 'e29', 'r29', 'b44', 'e44', 'r44']
+print("run | " + CHANNEL_HEADER)
 for f in sys.argv[1:] or [os.path.join(HERE, r) for r in RUNS]:
-    L = depths(f, 'penetration_depth')
-    M = depths(f, 'cavity_diameter_wall_mean')
-    W = depths(f, 'cavity_diameter_wall')
-    A = depths(f, 'cavity_diameter_mean')
-    print(f"{os.path.basename(f.rstrip('/'))} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} |"
-          f" {(L[30] - L[10]) / 20:.3f} / {(L[30] - L[20]) / 10:.3f} | {M[20]:.2f} / {M[30]:.2f} |"
-          f" {W[20]:.2f} / {W[30]:.2f} | {A[20]:.2f} / {A[30]:.2f}")
+    print(f"{os.path.basename(f.rstrip('/'))} | {channel_row(f)}")
