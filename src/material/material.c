@@ -291,15 +291,18 @@ static int read_strength(struct cfg *c, const char *path, struct material *m,
 
 /* ---------------------------------------------------------------- fracture */
 
-static int read_sigma_c(struct cfg *c, const char *fp, const double *def, double *out,
-                        struct hv_error *err)
+/* zero_off: 0 is accepted and means "no tensile criterion" (cumulative damage, whose
+ * default it is), so that a case can switch off a library material's sigma_c. */
+static int read_sigma_c(struct cfg *c, const char *fp, const double *def, int zero_off,
+                        double *out, struct hv_error *err)
 {
   char k[320];
   key_of(k, sizeof k, fp, "sigma_c");
   if (cfg_get_quantity(c, k, UNIT_PRESSURE, def, -HUGE_VAL, HUGE_VAL, out, err)) return -1;
-  if (cfg_has(c, k) && !(*out < 0.0))
+  if (cfg_has(c, k) && !(*out < 0.0) && !(zero_off && *out == 0.0))
     return key_error(c, k, err, "sigma_c = %.9g Pa must be negative (tension is negative, as in "
-                     "the paper's tables)", *out);
+                     "the paper's tables)%s", *out,
+                     zero_off ? "; 0 switches the tensile criterion off" : "");
   return 0;
 }
 
@@ -329,11 +332,11 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
   case FRACTURE_TRESCA:
     if (not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
         not_used_here(c, fp, "tau", "tau applies to model: cumulative only", err) ||
-        read_sigma_c(c, fp, NULL, &f->sigma_c, err))
+        read_sigma_c(c, fp, NULL, 0, &f->sigma_c, err))
       return -1;
     break;
   case FRACTURE_CUMULATIVE:
-    if (read_sigma_c(c, fp, &zero, &f->sigma_c, err) ||
+    if (read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
         get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
         get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))
       return -1;

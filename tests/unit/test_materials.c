@@ -236,6 +236,35 @@ static void test_overrides(void)
   cfg_free(c);
 }
 
+/* A library material's tensile criterion switched off: sigma_c: 0 with cumulative damage
+ * leaves a pure plastic-strain (deformation) criterion; with tresca it stays an error. */
+static void test_sigma_c_off(void)
+{
+  struct material m;
+  struct hv_error err = {0};
+  int rc = read_case_material("materials:\n  x: {library: steel-bumper, fracture: {model: "
+                              "cumulative, sigma_c: 0, eps_f: 0.8}}\n", "x", &m, NULL, &err);
+  CHECK(rc == 0 && m.frac.kind == FRACTURE_CUMULATIVE && m.frac.sigma_c == 0.0 &&
+            m.frac.eps_f == 0.8,
+        "cumulative, sigma_c: 0 over steel-bumper's -0.47 GPa: strain criterion only (%s)",
+        rc ? err.msg : "ok");
+  if (!rc) material_free(&m);
+  rc = read_case_material("materials:\n  x: {library: steel-bumper, fracture: {model: "
+                          "cumulative, eps_f: 0.8}}\n", "x", &m, NULL, &err);
+  CHECK(rc == 0 && m.frac.sigma_c == -0.47e9,
+        "without sigma_c the library's -0.47 GPa stays (%s)", rc ? err.msg : "ok");
+  if (!rc) material_free(&m);
+  expect_error("materials:\n  x: {library: steel-bumper, fracture: {model: cumulative, "
+               "sigma_c: 0}}\n", "x", "case.yaml:2: materials.x.fracture.model: cumulative "
+               "damage needs eps_f > 0");
+  expect_error("materials:\n  x: {library: steel-bumper, fracture: {model: cumulative, "
+               "sigma_c: 0.1 GPa, eps_f: 1}}\n", "x", "must be negative (tension is negative, "
+               "as in the paper's tables); 0 switches the tensile criterion off");
+  expect_error("materials:\n  x: {library: steel-bumper, fracture: {sigma_c: 0}}\n", "x",
+               "case.yaml:2: materials.x.fracture.sigma_c: sigma_c = 0 Pa must be negative "
+               "(tension is negative, as in the paper's tables)");
+}
+
 /* ---------------------------------------------------------------- errors */
 
 static void test_errors(void)
@@ -477,6 +506,7 @@ int main(void)
   use_library(NULL);
   test_paper_values();
   test_overrides();
+  test_sigma_c_off();
   test_errors();
   test_library_errors();
   test_table_material();
