@@ -5,8 +5,5 @@
 # eps_f: 1, for projectile and bumper alike). hvsph e31c8e7, 1 thread each.
 set -e
 for c in wp1-base wp1-ef10 wp3-base wp3-ef10; do hvsph run $c.yaml -o $c --threads 1; done
-for d in wp1-base wp1-ef10 wp3-base wp3-ef10; do
-  printf '%-9s' $d
-  awk -F, '$2=="hole_diameter" && ($5=="bumper" || $5=="bumper1") {printf " %.2f", $3*1000}' $d/measurements.csv
-  echo
-done > holes.txt
+{ ../ws-bumper-fracture/holes.sh wp1-base wp1-ef10
+  OBJ=bumper1 ../ws-bumper-fracture/holes.sh wp3-base wp3-ef10; } > holes.txt
