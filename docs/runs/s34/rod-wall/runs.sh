@@ -17,5 +17,6 @@ HVSPH_RECON_SPLIT=1 hvsph-study run rw.yaml -o rw064-rs --threads 1 --set 'bodie
 HVSPH_RECON_SPLIT=1 hvsph-study run rw.yaml -o rw016-rs --threads 1 --set 'bodies[0].spacing=0.16 mm' --set time.end=14us
 HVSPH_RECON_SPLIT=1 hvsph-study run ../../s32/rod-erode/r41-case-c10.yaml -o rs41 --threads 1
 HVSPH_RECON_SPLIT=1 hvsph-study run ../../s32/rod-erode/r29-case-c10.yaml -o rs29 --threads 1
+HVSPH_RECON_SPLIT=1 hvsph-study run ../../s32/rod-erode/r44-core.yaml -o rs44 --threads 1 --set time.end=30us --set output.every=5us
 for d in rw064 rw032 rw016 rw064-rs rw032-rs rw016-rs rw032-nofrac rw032-a02 rw032-fluid; do
   /usr/bin/python3 wall.py $d; done > wall.txt
