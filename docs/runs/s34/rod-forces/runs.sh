@@ -7,3 +7,4 @@ F=base41/particles_00004.vtu
 { /usr/bin/python3 forces.py $F -5 -1 2.638
   /usr/bin/python3 forces.py $F -4 -1 4 7 1
   FORCES_NO_RECON=1 /usr/bin/python3 forces.py $F -4 -1 4 7 1; } > forces.txt
+F=base41/particles_00004.vtu; /usr/bin/python3 profile.py $F > profile.txt
