@@ -13,3 +13,14 @@ hvsph run ../../s32/rod-erode/r29-case-c10.yaml -o base29 --threads 1 --set time
 hvsph run ../../s32/rod-erode/r44-core.yaml -o base44 --threads 1 --set time.end=20us --set output.every=5us
 /usr/bin/python3 profile.py base29/particles_00004.vtu > profile29.txt
 /usr/bin/python3 profile.py base44/particles_00004.vtu > profile44.txt
+# rod-5841's case with the target's yield at 3 x Table 2's (1.17 GPa) and at 1 kPa, both
+# without fracture, to 20 us, then continued to 30 us
+for v in "y3-41 1.17 GPa" "y0-41 1 kPa"; do set -- $v
+  hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o $1 --threads 1 --set time.end=20us \
+    --set "materials.st={library: steel-target, strength: {yield: $2 $3}, fracture: {model: none}}" \
+    --set 'bodies[1].material=st' --set 'bodies[2].material=st'
+  hvsph restart $1 --threads 1 --set time.end=30us
+done
+/usr/bin/python3 profile.py y3-41/particles_00004.vtu > profile-y3.txt
+/usr/bin/python3 profile.py y0-41/particles_00004.vtu > profile-y0.txt
+/usr/bin/python3 ../../s32/rod-erode/erode.py y3-41 y0-41 ../../s32/rod-erode/base > strength.txt
