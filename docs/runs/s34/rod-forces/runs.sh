@@ -30,3 +30,11 @@ hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o rod15k --threads 1 --set time
 hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o rod40k --threads 1 --set time.end=20us --set 'bodies[0].particles=40000'
 /usr/bin/python3 profile.py rod15k/particles_00004.vtu > profile-rod15k.txt
 /usr/bin/python3 profile.py rod40k/particles_00004.vtu > profile-rod40k.txt
+# rod-5841's case with the rod unbroken and with its split material keeping its
+# compression and shear (fracture.split: no-tension), to 20 us
+hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o wnofrac --threads 1 --set time.end=20us \
+  --set 'materials.w={library: tungsten-alloy, fracture: {model: none}}' --set 'bodies[0].material=w'
+hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o wnt --threads 1 --set time.end=20us \
+  --set 'materials.w={library: tungsten-alloy, fracture: {split: no-tension}}' --set 'bodies[0].material=w'
+/usr/bin/python3 profile.py wnofrac/particles_00004.vtu > profile-wnofrac.txt
+/usr/bin/python3 profile.py wnt/particles_00004.vtu > profile-wnt.txt
