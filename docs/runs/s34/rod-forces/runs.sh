@@ -38,3 +38,7 @@ hvsph run ../../s32/rod-erode/r41-case-c10.yaml -o wnt --threads 1 --set time.en
   --set 'materials.w={library: tungsten-alloy, fracture: {split: no-tension}}' --set 'bodies[0].material=w'
 /usr/bin/python3 profile.py wnofrac/particles_00004.vtu > profile-wnofrac.txt
 /usr/bin/python3 profile.py wnt/particles_00004.vtu > profile-wnt.txt
+# the contact allowed to stretch a particle below rho0 in the density rate (a study
+# build: hvsph 7fd365b with contact-stretch.patch), 2 threads (bit for bit as 1)
+HVSPH_CONTACT_STRETCH=1 hvsph-stretch run ../../s32/rod-erode/r41-case-c10.yaml -o stretch --threads 2 --set time.end=20us
+/usr/bin/python3 profile.py stretch/particles_00004.vtu > profile-stretch.txt
