@@ -45,6 +45,20 @@ def read_vtu(path):
     return out
 
 
+def read_csv(path):
+    """One hvsph CSV snapshot: its time (s, from the first header line) and its columns
+    as a numpy structured array (docs/output-files.md)."""
+    with open(path) as f:
+        t = float(f.readline().split()[6])
+    return t, np.genfromtxt(path, delimiter=",", names=True, skip_header=2)
+
+
+def csv_snapshots(run):
+    """(time, columns) of every RUNDIR/particles_NNNNN.csv, in order."""
+    for path in sorted(glob.glob(os.path.join(run, "particles_*.csv"))):
+        yield read_csv(path)
+
+
 def body_index(path, name):
     """Index of body `name` from the run's used_parameters.yaml (bodies in order)."""
     names = []

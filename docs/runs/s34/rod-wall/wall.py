@@ -4,19 +4,17 @@ per time: the rod's rear end and speed, the eroded mass (particles outside 1.05 
 radial mass flux through cylinders r = R (shell R +- dR) against the rod's incoming flux,
 and the mass-mean radial speed there against the impact speed v (Bernoulli: v).
 usage: wall.py RUNDIR [r0_mm] [v_m_s]"""
-import sys, glob, numpy as np
+import os, sys, numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
+from rod_floor import csv_snapshots  # noqa: E402
 run = sys.argv[1]
 r0 = float(sys.argv[2]) * 1e-3 if len(sys.argv) > 2 else 2.638e-3
 v0 = float(sys.argv[3]) if len(sys.argv) > 3 else 1100.0
 R_list = [1.5, 2.0, 3.0, 4.0]
-files = sorted(glob.glob(run + "/particles_*.csv"))
 rho0 = None
 print("# %s  r0 = %.3f mm  v = %.0f m/s" % (run, r0 * 1e3, v0))
 print("# t_us  rear_mm  v_rear  eroded_g  inflow_g/us | per R/r0: flux/inflow  <v_r>/v  <|v|>/v  mass_in_shell_g")
-for f in files:
-    with open(f) as fh:
-        t = float(fh.readline().split()[6])
-    d = np.genfromtxt(f, delimiter=",", names=True, skip_header=2)
+for t, d in csv_snapshots(run):
     if t == 0:
         rho0 = np.median(d["rho"])
         continue

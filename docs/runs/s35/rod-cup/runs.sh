@@ -1,7 +1,8 @@
 #!/bin/sh
 # Session 35: the rod's 180-degree turn in a rigid cup (docs/validation.md, "The rods'
 # turn in a rigid cup"). hvsph 02e8e9f; 1 thread each unless said. Then summary.sh
-# (cup.txt, cup-summary.txt), path.py (path.txt) and slot.py (slot.txt).
+# (cup.txt, cup-summary.txt: turn.py cup), path.py (path.txt) and turn.py slot on the
+# four slot runs (slot.txt).
 set -e
 F='materials.w={library: tungsten-alloy, strength: {yield: 1 kPa}, fracture: {model: none}}'
 S='bodies[0].spacing=0.64mm'
