@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """Where the cup's reversed flow loses its speed (session 35 study): from one CSV
-snapshot of cup.yaml, the mass-mean speed |v|/v0 and the mass on a grid of
+snapshot of cup.yaml, the mass-mean speed |v|/v0 on a grid of
 (x, r) cells of 1 mm outside the rod (r > 1.05 r0).  usage: path.py SNAPSHOT.csv"""
-import sys, numpy as np
+import os, sys, numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
+from rod_floor import read_csv  # noqa: E402
 v0, r0 = 1100.0, 2.638
-d = np.genfromtxt(sys.argv[1], delimiter=",", names=True, skip_header=2)
+d = read_csv(sys.argv[1])[1]
 x, r = d["x"] * 1e3, np.hypot(d["y"], d["z"]) * 1e3
 sp = np.sqrt(d["vx"]**2 + d["vy"]**2 + d["vz"]**2) / v0
 m = d["m"] * 4e3

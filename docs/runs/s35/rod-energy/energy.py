@@ -28,9 +28,8 @@ for f in sorted(glob.glob(os.path.join(run, "particles_*.vtu"))):
     d = read_vtu(f)
     m, v, e, rho, S = d["m"], d["v"], d["e"], d["rho"], d["S"]
     ke = 0.5 * m * (v ** 2).sum(axis=1)
-    ss = (S ** 2).sum(axis=1) if S.ndim == 2 and S.shape[1] == 9 else None
-    if ss is None:   # 6 components: xx yy zz xy yz zx (off-diagonals count twice)
-        ss = (S[:, :3] ** 2).sum(axis=1) + 2 * (S[:, 3:] ** 2).sum(axis=1)
+    # S:S of the symmetric deviator, 6 components xx yy zz xy yz xz (particles.h)
+    ss = (S[:, :3] ** 2).sum(axis=1) + 2 * (S[:, 3:] ** 2).sum(axis=1)
     rod = d["body"] == 0
     Gp = np.where(rod, G[True], G[False])
     sh = m * ss / (4 * Gp * rho)
