@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Session 36: the three resolution-0.3 rod cases with the target's yield at 1.17 GPa
-(runs.sh here; rod-5841 with the cases' viscosity is session 34's y3-41), read onto the
+"""Session 36: the three resolution-0.3 rod cases with the target's yield at 1.17 GPa,
+unbroken or split at a plastic strain of 1 (runs.sh here; rod-5841 with the cases' viscosity is session 34's y3-41), read onto the
 paper's counts by session 28's ratio rule (an estimate, not a run): the depth scaled
 by u/(v - u) of the 10-30 us floor, D by D_wall_mean at 30 us, both against the
 Table-2-steel run at the same resolution and that case's result at the paper's counts.
@@ -28,6 +28,9 @@ RUNS = [  # rod, folder, what
     ('5841', 'y3a-41', 'Y = 1.17 GPa, alpha 0.2, beta 0.4'),
     ('5844', 'y3-44', 'Y = 1.17 GPa, alpha 1, beta 2'),
     ('5844', 'y3a-44', 'Y = 1.17 GPa, alpha 0.2, beta 0.4'),
+    ('1929', 'y3af-29', 'Y = 1.17 GPa, alpha 0.2, beta 0.4, split at plastic strain 1'),
+    ('5841', 'y3af-41', 'Y = 1.17 GPa, alpha 0.2, beta 0.4, split at plastic strain 1'),
+    ('5844', 'y3af-44', 'Y = 1.17 GPa, alpha 0.2, beta 0.4, split at plastic strain 1'),
 ]
 
 
