@@ -12,12 +12,21 @@ sphere (incompressible; Hill 1950). With the share of E that the target takes (s
   - the part of E that would have to go elsewhere than the target's plastic work for
     Table 2's steel (Y = 0.39 GPa, G = 95 GPa) to hold the experiment's cavity:
     s - p_sphere / (E / V).
+A second table gives the target resistance R_t that Tate's balance needs for the
+experiment's and for KERNEL's depth (solve_rt of ../../s26/tate/tate.py; 0.10 GPa is
+its bisection's floor: the depth is past Tate's hydrodynamic limit).
 
 Usage: bound.py   (prints the table; bound.txt here is its output)
 """
 import math
+import os
+import sys
 
 from scipy.optimize import brentq
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 's26',
+                                'tate'))
+import tate  # noqa: E402
 
 G, Y2, SHARE = 95.0, 0.39, 0.9          # GPa, GPa, target's share of E
 # test: v (km/s), m (g), L, D experiment, L, D KERNEL, L, D hvsph (mm)
@@ -57,6 +66,12 @@ def main():
         ys = brentq(lambda y: sphere(y) - SHARE * pe, 1e-3, 50.0)
         print(f"{test} | {v} | {e / 1e3:.1f} | {pe:.2f} | {pk:.2f} | {ph:.2f} | {yc:.2f} / {ys:.2f}"
               f" | {SHARE - sphere(Y2) / pe:.0%}")
+    print()
+    print("test | v km/s | R_t for the experiment's L | R_t for KERNEL's L (GPa)")
+    for test in RODS:
+        v, length, l_exp, l_kernel = tate.RODS[test]      # SI units
+        print(f"{test} | {v / 1e3} | {tate.solve_rt(v, length, l_exp) / 1e9:.2f} |"
+              f" {tate.solve_rt(v, length, l_kernel) / 1e9:.2f}")
 
 
 if __name__ == '__main__':
