@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Session 36: can Table 2's steel hold the experiments' cavities at all?
 
-For each rod of Table 3 the rod's kinetic energy E = m v^2 / 2 (Table 1) over the
-cavity's volume V = pi (D/2)^2 L, for the experiment, for the paper's KERNEL and for
-hvsph at the paper's counts (docs/validation.md, Status). Opening a cavity in an
+For each rod of Table 3 the rod's kinetic energy E = m v^2 / 2 (Table 1, as
+tools/gen_paper_cases.py holds it) over the cavity's volume V = pi (D/2)^2 L, for the
+experiment, for the paper's KERNEL and for hvsph at the paper's counts (L and D from
+the rods' validation table, ../../s23/rods_validation.csv, the Status table's runs). Opening a cavity in an
 elastic-perfectly plastic solid takes, per unit of the cavity's volume, its limit
 pressure: k (1 + ln(G/k)), k = Y/sqrt(3), for a cylinder, (2Y/3)(1 + ln(2G/Y)) for a
 sphere (incompressible; Hill 1950). With the share of E that the target takes (s =
@@ -18,26 +19,38 @@ its bisection's floor: the depth is past Tate's hydrodynamic limit).
 
 Usage: bound.py   (prints the table; bound.txt here is its output)
 """
+import csv
 import math
 import os
 import sys
 
 from scipy.optimize import brentq
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 's26',
-                                'tate'))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'tate'))
+ROOT = os.path.join(HERE, '..', '..', '..', '..')
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+_cwd = os.getcwd()
+os.chdir(ROOT)                   # gen_paper_cases reads data/materials.yaml from the root
+import gen_paper_cases  # noqa: E402
+os.chdir(_cwd)
 import tate  # noqa: E402
 
 G, Y2, SHARE = 95.0, 0.39, 0.9          # GPa, GPa, target's share of E
-# test: v (km/s), m (g), L, D experiment, L, D KERNEL, L, D hvsph (mm)
-RODS = {
-    '1929': (1.29, 100.0, 80.0, 12.5, 80.0, 12.1, 122.6, 20.8),
-    '5835': (2.65, 96.96, 228.5, 19.2, 221.0, 18.0, 199.7, 28.2),
-    '5839': (3.45, 96.73, 241.5, 26.0, 241.0, 25.0, 211.3, 34.2),
-    '5841': (2.37, 46.20, 165.2, 13.0, 161.0, 12.5, 148.0, 22.9),
-    '5842': (3.58, 46.02, 188.6, 20.1, 181.0, 20.0, 167.9, 28.9),
-    '5844': (4.46, 45.41, 193.7, 27.2, 191.0, 26.0, 168.4, 33.3),
-}
+VALIDATION = os.path.join(HERE, '..', '..', 's23', 'rods_validation.csv')
+
+
+def cavities():
+    """test -> {column: (L, D)} in mm for 'simulated' (hvsph), 'experiment' and
+    'paper_simulation' (KERNEL), from the rods' validation table."""
+    out = {}
+    with open(VALIDATION) as f:
+        for row in csv.DictReader(f):
+            test = row['case'].removeprefix('rod-')
+            i = {'penetration_depth:target': 0, 'cavity_diameter:target': 1}[row['quantity']]
+            for col in ('simulated', 'experiment', 'paper_simulation'):
+                out.setdefault(test, {}).setdefault(col, [0.0, 0.0])[i] = float(row[col])
+    return out
 
 
 def cylinder(y):
@@ -59,16 +72,18 @@ def main():
           f" {cylinder(Y2):.2f} GPa (cylinder), {sphere(Y2):.2f} GPa (sphere)")
     print("test | v km/s | E kJ | E/V experiment | E/V KERNEL | E/V hvsph (GPa) |"
           f" Y for {SHARE} E/V, cylinder / sphere (GPa) | share of E to go elsewhere with Table 2")
-    for test, (v, m, le, de, lk, dk, lh, dh) in RODS.items():
+    cav = cavities()
+    for test, (v, _, _, m, _) in gen_paper_cases.RODS.items():
         e = 0.5 * m * 1e-3 * (v * 1e3) ** 2
-        pe, pk, ph = per_volume(e, le, de), per_volume(e, lk, dk), per_volume(e, lh, dh)
+        pe, pk, ph = (per_volume(e, *cav[test][c]) for c in ('experiment', 'paper_simulation',
+                                                               'simulated'))
         yc = brentq(lambda y: cylinder(y) - SHARE * pe, 1e-3, 50.0)
         ys = brentq(lambda y: sphere(y) - SHARE * pe, 1e-3, 50.0)
         print(f"{test} | {v} | {e / 1e3:.1f} | {pe:.2f} | {pk:.2f} | {ph:.2f} | {yc:.2f} / {ys:.2f}"
               f" | {SHARE - sphere(Y2) / pe:.0%}")
     print()
     print("test | v km/s | R_t for the experiment's L | R_t for KERNEL's L (GPa)")
-    for test in RODS:
+    for test in gen_paper_cases.RODS:
         v, length, l_exp, l_kernel = tate.RODS[test]      # SI units
         print(f"{test} | {v / 1e3} | {tate.solve_rt(v, length, l_exp) / 1e9:.2f} |"
               f" {tate.solve_rt(v, length, l_kernel) / 1e9:.2f}")
