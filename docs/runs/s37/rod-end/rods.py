@@ -18,6 +18,8 @@ Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
      "cavity_diameter_wall", "cavity_diameter_wall_mean"]
 SHORT = {"penetration_depth": "L", "cavity_diameter": "D", "cavity_diameter_mean": "D_mean",
          "cavity_diameter_wall": "D_wall", "cavity_diameter_wall_mean": "D_wall_mean"}
+# 1/2 m v^2 of the rod (Table 1's mass and speed), for the estimated cavities' E/V
+E_ROD = {"rod-5841": 0.5 * 46.20e-3 * 2370.0 ** 2}
 S29 = os.path.join("..", "..", "s29", "rod-box")
 # case at the paper's counts (docs/validation.md: sessions 25-27, 22-23, 7), experiment (L, D)
 RODS = [
@@ -76,5 +78,14 @@ for name, v, base, others, paper, (eL, eD) in RODS:
             print(f"  {SHORT[q]}: {b[t][q]:.2f} -> {d[t][q]:.2f} mm, ratio {r:.3f} "
                   f"(last three outputs {', '.join(f'{x:.3f}' for x in rr)}; median "
                   f"{statistics.median(rr):.3f}) -> {r * pv:.1f} mm, "
-                  f"{(r * pv / e - 1) * 100:+.0f} % of the experiment")
+                  f"{(r * pv / e - 1) * 100:+.1f} % of the experiment")
+        # the rod's kinetic energy per unit volume of the estimated cavity (session 36's
+        # bound: E/V against the steel's limit pressure), V = pi (D/2)^2 L
+        if name in E_ROD:
+            L = d[t]["penetration_depth"] / b[t]["penetration_depth"] * paper["penetration_depth"]
+            for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
+                if q in paper:
+                    D = d[t][q] / b[t][q] * paper[q]
+                    ev = E_ROD[name] / (math.pi * (D / 2e3) ** 2 * L / 1e3) / 1e9
+                    print(f"  E/V of the estimated cavity (L {L:.1f} mm, {SHORT[q]} {D:.1f} mm): {ev:.2f} GPa")
     print()

@@ -2,7 +2,7 @@
 # Session 37: rod-5841, rod-1929 and rod-5844 at resolution 0.3 to their ends, 1 thread each, two at once
 # on the 2-core machine (hvsph f5805f4).  Run from a scratch folder; then copy the small
 # outputs (measurements.csv, summary.csv, used_parameters.yaml, the logs) here and run
-# /usr/bin/python3 end.py > end.txt
+# /usr/bin/python3 rods.py > rods.txt
 H=../../build/hvsph
 C=../../examples/paper/rod-5841.yaml
 $H run $C -o case03 --set resolution=0.3 --set output.every=30us --threads 1 --quiet \
@@ -25,6 +25,6 @@ wait
 $H run r44-box-jc.yaml -o r44jc02 --threads 1 --quiet --set sph.viscosity.alpha=0.2 \
   --set sph.viscosity.beta=0.4 > r44jc02.log 2>&1
 # then: copy measurements.csv, summary.csv, used_parameters.yaml, run_segments.csv and the
-# logs of each run here; /usr/bin/python3 rods.py > rods.txt; /usr/bin/python3 end.py > end.txt
+# logs of each run here; /usr/bin/python3 rods.py > rods.txt
 # /usr/bin/python3 slices.py 1 case03/particles_00006.vtu > slices.txt, and 0 for
 # jc02/particles_0000{5,6}.vtu and c29jc/particles_00013.vtu, 1 for c29case/particles_00013.vtu
