@@ -12,7 +12,6 @@
 
 #include "diag/fof.h"
 
-#define CAVITY_MAX_COUNT 8
 #define MEAS_MAX_CELLS 4096     /* per side of the backwall's column grid */
 #define CAVITY_MAX_SLICES 100000000
 
@@ -162,12 +161,12 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   if (geom_ok(g, "cavity measurement", err)) return -1;
   if (!(par->slice > 0 && isfinite(par->slice) && par->footprint >= 0 &&
         isfinite(par->footprint) && par->r_open >= 0 && isfinite(par->r_open) &&
-        par->v_max > 0 && par->min_count >= 1 && par->min_count <= CAVITY_MAX_COUNT &&
+        par->v_max > 0 && par->min_count >= 1 && par->min_count <= MEAS_CAVITY_MAX_COUNT &&
         par->wall_slab > 0 && isfinite(par->wall_slab) && par->wall_dr > 0 &&
         isfinite(par->wall_dr) && par->wall_fill > 0 && par->wall_fill < 1))
     return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: slice (> 0), footprint, r_open "
                         "(>= 0), v_max (> 0), min_count (1..%d), wall_slab and wall_dr (> 0) "
-                        "and wall_fill (0..1) out of range", CAVITY_MAX_COUNT);
+                        "and wall_fill (0..1) out of range", MEAS_CAVITY_MAX_COUNT);
   const int K = par->min_count;
   const double dx = par->slice, fp = par->footprint;
   out->slice = dx;

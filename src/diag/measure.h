@@ -82,13 +82,15 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  * next one (a single filled annulus of stray particles is passed over). D_wall = 2 max
  * and D_wall_mean = the mean of the wall radius over the slabs that lie wholly within
  * x0 .. x0 + L; 0 when none does. Resolution: about wall_dr where the wall is sharp. */
+#define MEAS_CAVITY_MAX_COUNT 8  /* the largest min_count */
+
 struct meas_cavity_params {
   double slice;      /* [m] slice thickness (default Δ/2) */
   double footprint;  /* [m] (default Δ/2) */
   double r_open;     /* [m] open-slice threshold on the cavity radius (default Δ) */
   double v_max;      /* [m/s] target particles faster than this are flying debris, not
                         cavity wall (default INFINITY: all taken) */
-  int min_count;     /* 1..8: the radius is set by the min_count-th nearest particle, so
+  int min_count;     /* 1..MEAS_CAVITY_MAX_COUNT (8): the radius is set by the min_count-th nearest particle, so
                         min_count − 1 stray particles inside the cavity are ignored (default 1) */
   double wall_slab;  /* [m] slab thickness of the filled-volume wall (default 4Δ) */
   double wall_dr;    /* [m] annulus width of the filled-volume wall (default Δ/4) */

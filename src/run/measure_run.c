@@ -122,6 +122,17 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       body_or_list(s, c, "measure.backwall", "the backwall's", mr->backwall, &mr->nbackwall, err))
     return -1;
   if (cfg_has(c, "measure.gas") && body_by_name(s, c, "measure.gas", &mr->gas, err)) return -1;
+  const long one = 1;
+  long mc = 1;
+  if (cfg_get_int(c, "measure.cavity_min_count", &one, 1, MEAS_CAVITY_MAX_COUNT, &mc, err))
+    return -1;
+  mr->cavity_min_count = (int)mc;
+  if (mc > 1 && mr->ntarget == 0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.cavity_min_count is the thick target's, "
+                        "but there is no measure.thick_target",
+                        cfg_where(c, "measure.cavity_min_count", where, sizeof where));
+  }
   mr->peak_pressure = -HUGE_VAL;
   if (cfg_get_quantity(c, "measure.pressure_radius", UNIT_LENGTH, &zero, 0.0, HUGE_VAL,
                        &mr->p_radius, err) ||
@@ -233,6 +244,7 @@ static int measure_target(struct measure_run *mr, const struct sim *s, double t,
   struct meas_cavity cav;
   meas_cavity_defaults(&cp, &g);
   cp.mask = mask;
+  cp.min_count = mr->cavity_min_count;
   /* slices one fine spacing thick: each holds a layer of the fine body, so that no slice
      sees only the coarse body's particles further out */
   if (mask) cp.slice = g.spacing;

@@ -36,6 +36,8 @@ struct measure_run {
   int nplate_body[MR_MAX], nplate;
   int debris[MR_MAX], ndebris;
   int backwall[MR_MAX], nbackwall;  /* the backwall's bodies (rows named after the first) */
+  int cavity_min_count;  /* the thick target's min_count (measure.cavity_min_count, default
+                           1): min_count - 1 strays in a slice do not close the cavity */
   int gas;
   int fragments;
   double peak_pressure;  /* [Pa] running maximum at the backwall's centre */

@@ -18,7 +18,8 @@
  * axis, run through `hvsph run` to t = 0): a cavity 8 mm deep and 6 mm across cut into
  * the fine core gives L and D within the core's spacing, in rows named after the first
  * body; the outer block alone would read the core's 10 mm channel as a perforation; an
- * empty list and an unknown body are refused (exit 2). A plate of two bodies
+ * empty list and an unknown body are refused (exit 2). `measure.cavity_min_count: 2`
+ * passes over a stray particle on the axis that closes the cavity halfway by default. A plate of two bodies
  * (`measure.plates: [[ring, disc]]`) and a backwall of two (`measure.backwall: [ring,
  * disc]`: a crater 1 mm deep and 6 mm across in the fine disc gives its depth, radius
  * and damaged radius within the disc's spacing, the coarse ring no crater) likewise.
@@ -612,6 +613,50 @@ static void test_cavity_two_bodies(void)
         "perforation: L = %.2f mm", 1e3 * L[1]);
 }
 
+/* measure.cavity_min_count through a case file: the block of test_cavity_two_bodies
+ * without its coarse ring (0.5 mm lattice), its 8 mm deep, 6 mm wide cavity holding one
+ * stray target particle on the axis 4 mm down (a body `stray` of one particle, measured
+ * with the block: thick_target: [block, stray]). The stray closes the cavity at 4 mm
+ * by default; cavity_min_count: 2 passes over it and reads the whole 8 mm. 0, 9 and a
+ * count without a thick target are refused, exit 2 naming the key. */
+static void test_cavity_min_count_case(void)
+{
+  static const char *const fmt =
+      "name: stray-target\n"
+      "domain: {min: [-5 mm, -5 mm, 0], max: [25 mm, 5 mm, 5 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: block\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [20 mm, 5 mm, 5 mm],\n"
+      "            minus: [{type: cylinder, center: [4 mm, 0, 0], axis: [1, 0, 0],\n"
+      "                     radius: 3 mm, length: 8 mm}]}\n"
+      "    spacing: 0.5 mm\n"
+      "  - name: stray\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [3.75 mm, -0.25 mm, 0], max: [4.25 mm, 0.25 mm, 0.5 mm]}\n"
+      "    spacing: 0.5 mm\n"
+      "time: {end: 0}\n"
+      "measure: {%s}\n";
+  const char *meas[] = {"thick_target: [block, stray]",
+                        "thick_target: [block, stray], cavity_min_count: 2",
+                        "thick_target: [block, stray], cavity_min_count: 0",
+                        "thick_target: [block, stray], cavity_min_count: 9",
+                        "cavity_min_count: 2"};
+  char text[2048], path[4400];
+  double L[2] = {NAN, NAN};
+  for (int k = 0; k < 5; k++) {
+    snprintf(text, sizeof text, fmt, meas[k]);
+    if (!run_variant(text, "stray", k, k >= 2, "cavity_min_count", meas[k], path, sizeof path))
+      continue;
+    L[k] = csv_value(path, "penetration_depth", "block");
+  }
+  const double d = 0.5e-3;
+  CHECK(fabs(L[0] - 4e-3) <= d, "a stray on the axis 4 mm down closes the cavity there by "
+        "default: L = %.3f mm, 4 mm within 0.5 mm", 1e3 * L[0]);
+  CHECK(fabs(L[1] - 8e-3) <= d, "cavity_min_count: 2 passes over it: L = %.3f mm, 8 mm within "
+        "0.5 mm", 1e3 * L[1]);
+}
+
 /* A plate (or backwall) of two bodies through a case file, variant k of a family: `ring`,
  * a box 0 <= x <= t mm, |y|, |z| <= 20 mm on a 1 mm lattice, with the disc cut out;
  * `disc`, the cylinder of radius r mm through the plate around (t/2, yd, 0) on a 0.25 mm
@@ -764,6 +809,7 @@ int main(void)
   test_cavity();
   test_cavity_wall();
   test_cavity_two_bodies();
+  test_cavity_min_count_case();
   test_plate_two_bodies();
   test_backwall_two_bodies();
   test_backwall_moved();
