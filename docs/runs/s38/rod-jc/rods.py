@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+"""Rods 5835 and 5839 at resolution 0.3 to their ends: the case (Table 2's steel,
+alpha = 1) beside the Johnson-Cook steel with alpha = 0.2, beta = 0.4, read onto the
+paper's counts by the ratio of the two at the end (the ratio x the case's result at the
+paper's counts), as session 37 did for rods 1929, 5841 and 5844 (../../s37/rod-end).
+Session 38, docs/validation.md ("The other three rods with the Johnson-Cook target").
+Run from this folder: /usr/bin/python3 rods.py
+
+The case at the paper's counts: the final output of its archived run (rod-5835
+../../s24/rod-5835, rod-5839 ../../s23/rod-5839); the experiment
+and KERNEL from the rods' validation table ../../s23/rods_validation.csv.  The last part
+puts five rods' estimates (these two and session 37's three, from its rods.txt) beside
+the experiment and KERNEL.
+"""
+import csv
+import math
+import os
+import re
+import statistics
+
+Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
+     "cavity_diameter_wall", "cavity_diameter_wall_mean"]
+SHORT = {"penetration_depth": "L", "cavity_diameter": "D", "cavity_diameter_mean": "D_mean",
+         "cavity_diameter_wall": "D_wall", "cavity_diameter_wall_mean": "D_wall_mean"}
+RUNS = os.path.join("..", "..")
+# rod, speed km/s, paper-count run(s) (later files fill what earlier ones lack), rod's m (g)
+RODS = [
+    ("rod-5835", 2.65, [os.path.join(RUNS, "s24", "rod-5835", "measurements.csv")], 96.96),
+    ("rod-5839", 3.45, [os.path.join(RUNS, "s23", "rod-5839", "measurements.csv")], 96.73),
+    # rod-5842 (its pair not yet run): the case at the paper's counts would be
+    # ../../s16/rod-5842/measurements.csv with its D_wall from
+    # ../../s20/wall-remeasured/rod-5842_measurements.csv, m 46.02 g
+]
+
+
+def read_csv(path):
+    """time (us, rounded) -> {quantity: value in mm}"""
+    out = {}
+    if not os.path.exists(path):
+        return out
+    with open(path) as f:
+        rows = [r for r in f if not r.startswith("#")]
+    for r in csv.DictReader(rows):
+        if r["quantity"] in Q:
+            out.setdefault(round(float(r["time"]) * 1e6, 3), {})[r["quantity"]] = float(r["value"]) * 1e3
+    return out
+
+
+def read(run):
+    return read_csv(os.path.join(run, "measurements.csv"))
+
+
+def paper_counts(paths):
+    """the final output of the paper-count run, each quantity from the first file that has it"""
+    res = {}
+    for p in paths:
+        d = read_csv(p)
+        t = max(d)
+        for q, v in d[t].items():
+            res.setdefault(q, v)
+    return res, t
+
+
+def table():
+    out = {}
+    with open(os.path.join(RUNS, "s23", "rods_validation.csv")) as f:
+        for r in csv.DictReader(f):
+            q = r["quantity"].split(":")[0]
+            out.setdefault(r["case"], {})[q] = (float(r["simulated"]), float(r["experiment"]),
+                                                float(r["paper_simulation"]))
+    return out
+
+
+VAL = table()
+EST = {}  # rod -> {quantity: estimate mm}
+for name, v, paths, m in RODS:
+    paper, tp = paper_counts(paths)
+    eL = VAL[name]["penetration_depth"][1]
+    eD = VAL[name]["cavity_diameter"][1]
+    base, other = "c" + name[4:], "jc" + name[4:]
+    b = read(base)
+    print(f"== {name} ({v} km/s); experiment L {eL} mm, D {eD} mm; the case at the paper's "
+          f"counts at {tp:.0f} us: " + ", ".join(f"{SHORT[q]} {paper[q]:.1f}" for q in Q if q in paper))
+    for run in (base, other):
+        d = read(run)
+        if not d:
+            print(f"{run}: no measurements")
+            continue
+        ts = sorted(d)
+        print(f"{run}: outputs to {ts[-1]:.1f} us")
+        print("   t us | " + " | ".join(SHORT[q] for q in Q) + " (mm)")
+        for t in ts:
+            if t == 0:
+                continue
+            print(f"  {t:6.1f} | " + " | ".join(f"{d[t].get(q, float('nan')):6.2f}" for q in Q))
+    d = read(other)
+    common = sorted(t for t in set(b) & set(d) if t > 0)
+    if not common:
+        print()
+        continue
+    t = common[-1]
+    print(f"{other} / {base} at {t:.1f} us, x the case at the paper's counts:")
+    EST[name] = {}
+    for q in Q:
+        if q not in paper:
+            continue
+        r = d[t][q] / b[t][q]
+        e = eL if q == "penetration_depth" else eD
+        # the last three common outputs: a single particle in the channel can close the
+        # cavity (L) or a thin slice miss the wall (D) at one output
+        rr = [d[s][q] / b[s][q] for s in common[-3:]]
+        EST[name][q] = r * paper[q]
+        print(f"  {SHORT[q]}: {b[t][q]:.2f} -> {d[t][q]:.2f} mm, ratio {r:.3f} "
+              f"(last three outputs {', '.join(f'{x:.3f}' for x in rr)}; median "
+              f"{statistics.median(rr):.3f}) -> {r * paper[q]:.1f} mm, "
+              f"{(r * paper[q] / e - 1) * 100:+.1f} % of the experiment")
+    # the rod's kinetic energy per unit volume of the estimated cavity (session 36's bound)
+    E = 0.5 * m * 1e-3 * (v * 1e3) ** 2
+    L = EST[name]["penetration_depth"]
+    for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
+        if q in EST[name]:
+            D = EST[name][q]
+            ev = E / (math.pi * (D / 2e3) ** 2 * L / 1e3) / 1e9
+            print(f"  E/V of the estimated cavity (L {L:.1f} mm, {SHORT[q]} {D:.1f} mm): {ev:.2f} GPa")
+    print()
+
+# session 37's three rods, from its printed estimates
+PCT = {}  # rod -> {quantity: printed relative error} for session 37's rods
+S37 = os.path.join(RUNS, "s37", "rod-end", "rods.txt")
+rod = None
+with open(S37) as f:
+    for line in f:
+        m = re.match(r"== (rod-\d+)", line)
+        if m:
+            rod = m.group(1)
+        m = re.match(r"\s+(\w+): .* -> ([\d.]+) mm, ([+-][\d.]+) % of the experiment", line)
+        if m and rod and "/" not in line:
+            q = {v: k for k, v in SHORT.items()}[m.group(1)]
+            # rod-5844: the alpha = 0.2 run (r44jc02) is the second estimate; keep the last.
+            # The printed error (of the unrounded estimate) is kept beside the estimate
+            EST.setdefault(rod, {})[q] = float(m.group(2))
+            PCT.setdefault(rod, {})[q] = float(m.group(3)) / 100
+
+print("== the rods run so far: the Johnson-Cook target at alpha = 0.2, estimated at the paper's counts")
+print("rod | L est | L exp | L KERNEL | err est | err case | err KERNEL | D est (D / D_wall) | D exp | err est | err case | err KERNEL")
+errs = {"L": [[], [], []], "D": [[], [], []]}
+for name in sorted(EST):
+    e = EST[name]
+    sL, xL, kL = VAL[name]["penetration_depth"]
+    sD, xD, kD = VAL[name]["cavity_diameter"]
+    L = e["penetration_depth"]
+    Dd, Dw = e.get("cavity_diameter"), e.get("cavity_diameter_wall")
+    D = Dw if Dw is not None else Dd
+    qD = "cavity_diameter_wall" if Dw is not None else "cavity_diameter"
+    p = PCT.get(name, {})
+    row = [p.get("penetration_depth", L / xL - 1), sL / xL - 1, kL / xL - 1]
+    rowD = [p.get(qD, D / xD - 1), sD / xD - 1, kD / xD - 1]
+    for i in range(3):
+        errs["L"][i].append(abs(row[i]))
+        errs["D"][i].append(abs(rowD[i]))
+    dtxt = (f"{Dd:.1f} / {Dw:.1f}" if Dw is not None else f"{Dd:.1f} / -")
+    print(f"{name} | {L:.1f} | {xL} | {kL} | {row[0]*100:+.1f} % | {row[1]*100:+.1f} % | "
+          f"{row[2]*100:+.1f} % | {dtxt} | {xD} | {rowD[0]*100:+.1f} % | {rowD[1]*100:+.1f} % | "
+          f"{rowD[2]*100:+.1f} %")
+for k in ("L", "D"):
+    a, c, kk = (statistics.mean(x) * 100 for x in errs[k])
+    print(f"mean |error| of {k} over {len(errs[k][0])} rods: JC estimate {a:.1f} %, case {c:.1f} %, KERNEL {kk:.1f} %")
+print("(D est: D_wall where the paper-count run has it, else D; the case's D column is D)")
