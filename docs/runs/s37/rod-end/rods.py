@@ -9,10 +9,13 @@ case's 353: the paper-count run's floor stops by 250 us); rod-5844: session 29's
 r44-box (the case) and r44-box-jc (JC steel, alpha = 1) in ../../s29/rod-box, and
 r44jc02 (JC steel, alpha = 0.2) here.
 """
-import csv
 import math
 import os
 import statistics
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
+import meas_csv  # noqa: E402
 
 Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
      "cavity_diameter_wall", "cavity_diameter_wall_mean"]
@@ -35,33 +38,14 @@ RODS = [
 
 
 def read(run):
-    out = {}
-    path = os.path.join(run, "measurements.csv")
-    if not os.path.exists(path):
-        return out
-    with open(path) as f:
-        rows = [r for r in f if not r.startswith("#")]
-    for r in csv.DictReader(rows):
-        if r["quantity"] in Q:
-            out.setdefault(round(float(r["time"]) * 1e6, 3), {})[r["quantity"]] = float(r["value"]) * 1e3
-    return out
+    return meas_csv.read(os.path.join(run, "measurements.csv"), Q)
 
 
 for name, v, base, others, paper, (eL, eD) in RODS:
     b = read(base)
     print(f"== {name} ({v} km/s); experiment L {eL} mm, D {eD} mm")
     for run in [base] + others:
-        d = read(run)
-        if not d:
-            print(f"{run}: no measurements")
-            continue
-        ts = sorted(d)
-        print(f"{run}: outputs to {ts[-1]:.1f} us")
-        print("   t us | " + " | ".join(SHORT[q] for q in Q) + " (mm)")
-        for t in ts:
-            if t == 0 or (len(ts) > 14 and round(t) % 20 and t != ts[-1]):
-                continue
-            print(f"  {t:6.1f} | " + " | ".join(f"{d[t].get(q, float('nan')):6.2f}" for q in Q))
+        meas_csv.print_history(run, read(run), Q, SHORT)
     for run in others:
         d = read(run)
         common = sorted(t for t in set(b) & set(d) if t > 0)

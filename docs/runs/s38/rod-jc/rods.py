@@ -17,6 +17,10 @@ import math
 import os
 import re
 import statistics
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
+import meas_csv  # noqa: E402
 
 Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
      "cavity_diameter_wall", "cavity_diameter_wall_mean"]
@@ -35,15 +39,7 @@ RODS = [
 
 def read_csv(path):
     """time (us, rounded) -> {quantity: value in mm}"""
-    out = {}
-    if not os.path.exists(path):
-        return out
-    with open(path) as f:
-        rows = [r for r in f if not r.startswith("#")]
-    for r in csv.DictReader(rows):
-        if r["quantity"] in Q:
-            out.setdefault(round(float(r["time"]) * 1e6, 3), {})[r["quantity"]] = float(r["value"]) * 1e3
-    return out
+    return meas_csv.read(path, Q)
 
 
 def read(run):
@@ -82,17 +78,7 @@ for name, v, paths, m in RODS:
     print(f"== {name} ({v} km/s); experiment L {eL} mm, D {eD} mm; the case at the paper's "
           f"counts at {tp:.0f} us: " + ", ".join(f"{SHORT[q]} {paper[q]:.1f}" for q in Q if q in paper))
     for run in (base, other):
-        d = read(run)
-        if not d:
-            print(f"{run}: no measurements")
-            continue
-        ts = sorted(d)
-        print(f"{run}: outputs to {ts[-1]:.1f} us")
-        print("   t us | " + " | ".join(SHORT[q] for q in Q) + " (mm)")
-        for t in ts:
-            if t == 0:
-                continue
-            print(f"  {t:6.1f} | " + " | ".join(f"{d[t].get(q, float('nan')):6.2f}" for q in Q))
+        meas_csv.print_history(run, read(run), Q, SHORT)
     d = read(other)
     common = sorted(t for t in set(b) & set(d) if t > 0)
     if not common:
