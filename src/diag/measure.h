@@ -90,8 +90,9 @@ struct meas_cavity_params {
   double r_open;     /* [m] open-slice threshold on the cavity radius (default Δ) */
   double v_max;      /* [m/s] target particles faster than this are flying debris, not
                         cavity wall (default INFINITY: all taken) */
-  int min_count;     /* 1..MEAS_CAVITY_MAX_COUNT (8): the radius is set by the min_count-th nearest particle, so
-                        min_count − 1 stray particles inside the cavity are ignored (default 1) */
+  int min_count;     /* 1..MEAS_CAVITY_MAX_COUNT: the radius is set by the min_count-th
+                        nearest particle, so min_count − 1 stray particles inside the
+                        cavity are ignored (default 1) */
   double wall_slab;  /* [m] slab thickness of the filled-volume wall (default 4Δ) */
   double wall_dr;    /* [m] annulus width of the filled-volume wall (default Δ/4) */
   double wall_fill;  /* filled fraction that marks the wall, in (0, 1) (default 0.5) */

@@ -19,10 +19,11 @@
  * the fine core gives L and D within the core's spacing, in rows named after the first
  * body; the outer block alone would read the core's 10 mm channel as a perforation; an
  * empty list and an unknown body are refused (exit 2). `measure.cavity_min_count: 2`
- * passes over a stray particle on the axis that closes the cavity halfway by default. A plate of two bodies
- * (`measure.plates: [[ring, disc]]`) and a backwall of two (`measure.backwall: [ring,
- * disc]`: a crater 1 mm deep and 6 mm across in the fine disc gives its depth, radius
- * and damaged radius within the disc's spacing, the coarse ring no crater) likewise.
+ * passes over a stray particle on the axis that closes the cavity halfway by default.
+ * A plate of two bodies (`measure.plates: [[ring, disc]]`) and a backwall of two
+ * (`measure.backwall: [ring, disc]`: a crater 1 mm deep and 6 mm across in the fine
+ * disc gives its depth, radius and damaged radius within the disc's spacing, the coarse
+ * ring no crater) likewise.
  */
 #include <math.h>
 #include <stdint.h>
