@@ -3,7 +3,7 @@
 alpha = 1) beside the Johnson-Cook steel with alpha = 0.2, beta = 0.4, read onto the
 paper's counts by the ratio of the two at the end (the ratio x the case's result at the
 paper's counts), as session 37 did for rods 1929, 5841 and 5844 (../../s37/rod-end).
-Session 38, docs/validation.md ("The other three rods with the Johnson-Cook target").
+Session 38, docs/validation.md ("The Johnson-Cook target on rods 5835 and 5839").
 Run from this folder: /usr/bin/python3 rods.py
 
 The case at the paper's counts: the final output of its archived run (rod-5835
