@@ -31,3 +31,67 @@ def print_history(run, d, quantities, short):
         if t == 0 or (len(ts) > 14 and round(t) % 20 and t != ts[-1]):
             continue
         print(f"  {t:6.1f} | " + " | ".join(f"{d[t].get(q, float('nan')):6.2f}" for q in quantities))
+
+
+def ratio_estimates(b, d, paper, exp_L, exp_D, short, title):
+    """Session 37's ratio rule: the run d (read()'s dict) over the run b at their last
+    common output t > 0, times paper (the b model's result at the paper's counts,
+    {quantity: mm}), for each quantity of paper.  Prints one line per quantity (the
+    ratio, those of the last three common outputs and their median: a single particle
+    in the channel can close the cavity (L) or a thin slice miss the wall (D) at one
+    output) after a heading "TITLE at T us, ...", and returns (t, {quantity: estimate
+    mm}); None, printing nothing, without a common output."""
+    import statistics
+    common = sorted(t for t in set(b) & set(d) if t > 0)
+    if not common:
+        return None
+    t = common[-1]
+    print(f"{title} at {t:.1f} us, x the case at the paper's counts:")
+    est = {}
+    for q, pv in paper.items():
+        r = d[t][q] / b[t][q]
+        e = exp_L if q == "penetration_depth" else exp_D
+        rr = [d[s][q] / b[s][q] for s in common[-3:]]
+        est[q] = r * pv
+        print(f"  {short[q]}: {b[t][q]:.2f} -> {d[t][q]:.2f} mm, ratio {r:.3f} "
+              f"(last three outputs {', '.join(f'{x:.3f}' for x in rr)}; median "
+              f"{statistics.median(rr):.3f}) -> {r * pv:.1f} mm, "
+              f"{(r * pv / e - 1) * 100:+.1f} % of the experiment")
+    return t, est
+
+
+def print_energy(e_rod, est, short):
+    """Session 36's bound: the rod's kinetic energy e_rod (J) per unit volume of the
+    cavity V = pi (D/2)^2 L, for est's L and each of D_wall and D_wall_mean it has (mm)."""
+    import math
+    L = est["penetration_depth"]
+    for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
+        if q in est:
+            D = est[q]
+            ev = e_rod / (math.pi * (D / 2e3) ** 2 * L / 1e3) / 1e9
+            print(f"  E/V of the estimated cavity (L {L:.1f} mm, {short[q]} {D:.1f} mm): {ev:.2f} GPa")
+
+
+def final_of(paths, quantities):
+    """The final output of a run read from one or more measurements files: (time in us,
+    {quantity: mm}), each quantity from the first file that has it at that file's last
+    output (a re-measurement can fill what the run's own file lacks)."""
+    res, t = {}, None
+    for p in paths:
+        d = read(p, quantities)
+        t = max(d)
+        for q, v in d[t].items():
+            res.setdefault(q, v)
+    return t, res
+
+
+def validation_table(path):
+    """A validation.csv (hvsph validate) as {case: {quantity: (simulated, experiment,
+    paper_simulation)}}, the quantity's name without its ':object' suffix."""
+    out = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            q = r["quantity"].split(":")[0]
+            out.setdefault(r["case"], {})[q] = (float(r["simulated"]), float(r["experiment"]),
+                                                float(r["paper_simulation"]))
+    return out

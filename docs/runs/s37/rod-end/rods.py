@@ -9,9 +9,7 @@ case's 353: the paper-count run's floor stops by 250 us); rod-5844: session 29's
 r44-box (the case) and r44-box-jc (JC steel, alpha = 1) in ../../s29/rod-box, and
 r44jc02 (JC steel, alpha = 0.2) here.
 """
-import math
 import os
-import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
@@ -48,28 +46,8 @@ for name, v, base, others, paper, (eL, eD) in RODS:
         meas_csv.print_history(run, read(run), Q, SHORT)
     for run in others:
         d = read(run)
-        common = sorted(t for t in set(b) & set(d) if t > 0)
-        if not common:
-            continue
-        t = common[-1]
-        print(f"{run} / {os.path.basename(base)} at {t:.1f} us, x the case at the paper's counts:")
-        for q, pv in paper.items():
-            r = d[t][q] / b[t][q]
-            e = eL if q == "penetration_depth" else eD
-            # the last three common outputs: a single particle in the channel can close
-            # the cavity (L) or a thin slice miss the wall (D) at one output
-            rr = [d[s][q] / b[s][q] for s in common[-3:]]
-            print(f"  {SHORT[q]}: {b[t][q]:.2f} -> {d[t][q]:.2f} mm, ratio {r:.3f} "
-                  f"(last three outputs {', '.join(f'{x:.3f}' for x in rr)}; median "
-                  f"{statistics.median(rr):.3f}) -> {r * pv:.1f} mm, "
-                  f"{(r * pv / e - 1) * 100:+.1f} % of the experiment")
-        # the rod's kinetic energy per unit volume of the estimated cavity (session 36's
-        # bound: E/V against the steel's limit pressure), V = pi (D/2)^2 L
-        if name in E_ROD:
-            L = d[t]["penetration_depth"] / b[t]["penetration_depth"] * paper["penetration_depth"]
-            for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
-                if q in paper:
-                    D = d[t][q] / b[t][q] * paper[q]
-                    ev = E_ROD[name] / (math.pi * (D / 2e3) ** 2 * L / 1e3) / 1e9
-                    print(f"  E/V of the estimated cavity (L {L:.1f} mm, {SHORT[q]} {D:.1f} mm): {ev:.2f} GPa")
+        res = meas_csv.ratio_estimates(b, d, paper, eL, eD, SHORT, f"{run} / {os.path.basename(base)}")
+        if res and name in E_ROD:
+            t, est = res
+            meas_csv.print_energy(E_ROD[name], est, SHORT)
     print()

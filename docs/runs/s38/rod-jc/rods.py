@@ -12,8 +12,6 @@ and KERNEL from the rods' validation table ../../s23/rods_validation.csv.  The l
 puts five rods' estimates (these two and session 37's three, from its rods.txt) beside
 the experiment and KERNEL.
 """
-import csv
-import math
 import os
 import re
 import statistics
@@ -31,46 +29,19 @@ RUNS = os.path.join("..", "..")
 RODS = [
     ("rod-5835", 2.65, [os.path.join(RUNS, "s24", "rod-5835", "measurements.csv")], 96.96),
     ("rod-5839", 3.45, [os.path.join(RUNS, "s23", "rod-5839", "measurements.csv")], 96.73),
-    # rod-5842 (its pair not yet run): the case at the paper's counts would be
-    # ../../s16/rod-5842/measurements.csv with its D_wall from
-    # ../../s20/wall-remeasured/rod-5842_measurements.csv, m 46.02 g
+    # rod-5842: its pair ran in session 39 (../../s39/rod-5842, whose rods.py puts
+    # the six rods together)
 ]
 
 
-def read_csv(path):
-    """time (us, rounded) -> {quantity: value in mm}"""
-    return meas_csv.read(path, Q)
-
-
 def read(run):
-    return read_csv(os.path.join(run, "measurements.csv"))
+    return meas_csv.read(os.path.join(run, "measurements.csv"), Q)
 
 
-def paper_counts(paths):
-    """the final output of the paper-count run, each quantity from the first file that has it"""
-    res = {}
-    for p in paths:
-        d = read_csv(p)
-        t = max(d)
-        for q, v in d[t].items():
-            res.setdefault(q, v)
-    return res, t
-
-
-def table():
-    out = {}
-    with open(os.path.join(RUNS, "s23", "rods_validation.csv")) as f:
-        for r in csv.DictReader(f):
-            q = r["quantity"].split(":")[0]
-            out.setdefault(r["case"], {})[q] = (float(r["simulated"]), float(r["experiment"]),
-                                                float(r["paper_simulation"]))
-    return out
-
-
-VAL = table()
+VAL = meas_csv.validation_table(os.path.join(RUNS, "s23", "rods_validation.csv"))
 EST = {}  # rod -> {quantity: estimate mm}
 for name, v, paths, m in RODS:
-    paper, tp = paper_counts(paths)
+    tp, paper = meas_csv.final_of(paths, Q)
     eL = VAL[name]["penetration_depth"][1]
     eD = VAL[name]["cavity_diameter"][1]
     base, other = "c" + name[4:], "jc" + name[4:]
@@ -80,34 +51,11 @@ for name, v, paths, m in RODS:
     for run in (base, other):
         meas_csv.print_history(run, read(run), Q, SHORT)
     d = read(other)
-    common = sorted(t for t in set(b) & set(d) if t > 0)
-    if not common:
-        print()
-        continue
-    t = common[-1]
-    print(f"{other} / {base} at {t:.1f} us, x the case at the paper's counts:")
-    EST[name] = {}
-    for q in Q:
-        if q not in paper:
-            continue
-        r = d[t][q] / b[t][q]
-        e = eL if q == "penetration_depth" else eD
-        # the last three common outputs: a single particle in the channel can close the
-        # cavity (L) or a thin slice miss the wall (D) at one output
-        rr = [d[s][q] / b[s][q] for s in common[-3:]]
-        EST[name][q] = r * paper[q]
-        print(f"  {SHORT[q]}: {b[t][q]:.2f} -> {d[t][q]:.2f} mm, ratio {r:.3f} "
-              f"(last three outputs {', '.join(f'{x:.3f}' for x in rr)}; median "
-              f"{statistics.median(rr):.3f}) -> {r * paper[q]:.1f} mm, "
-              f"{(r * paper[q] / e - 1) * 100:+.1f} % of the experiment")
-    # the rod's kinetic energy per unit volume of the estimated cavity (session 36's bound)
-    E = 0.5 * m * 1e-3 * (v * 1e3) ** 2
-    L = EST[name]["penetration_depth"]
-    for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
-        if q in EST[name]:
-            D = EST[name][q]
-            ev = E / (math.pi * (D / 2e3) ** 2 * L / 1e3) / 1e9
-            print(f"  E/V of the estimated cavity (L {L:.1f} mm, {SHORT[q]} {D:.1f} mm): {ev:.2f} GPa")
+    res = meas_csv.ratio_estimates(b, d, paper, eL, eD, SHORT, f"{other} / {base}")
+    if res:
+        EST[name] = res[1]
+        # the rod's kinetic energy per unit volume of the estimated cavity (session 36's bound)
+        meas_csv.print_energy(0.5 * m * 1e-3 * (v * 1e3) ** 2, EST[name], SHORT)
     print()
 
 # session 37's three rods, from its printed estimates
