@@ -5,6 +5,12 @@ A missing file gives {}."""
 import csv
 import os
 
+# the thick target's cavity quantities (docs/measurements.md) and their short names
+CAVITY_Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
+            "cavity_diameter_wall", "cavity_diameter_wall_mean"]
+CAVITY_SHORT = {"penetration_depth": "L", "cavity_diameter": "D", "cavity_diameter_mean": "D_mean",
+                "cavity_diameter_wall": "D_wall", "cavity_diameter_wall_mean": "D_wall_mean"}
+
 
 def read(path, quantities, scale=1e3):
     out = {}

@@ -15,10 +15,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
 import meas_csv  # noqa: E402
 
-Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
-     "cavity_diameter_wall", "cavity_diameter_wall_mean"]
-SHORT = {"penetration_depth": "L", "cavity_diameter": "D", "cavity_diameter_mean": "D_mean",
-         "cavity_diameter_wall": "D_wall", "cavity_diameter_wall_mean": "D_wall_mean"}
+Q, SHORT = meas_csv.CAVITY_Q, meas_csv.CAVITY_SHORT
 # 1/2 m v^2 of the rod (Table 1's mass and speed), for the estimated cavities' E/V
 E_ROD = {"rod-5841": 0.5 * 46.20e-3 * 2370.0 ** 2}
 S29 = os.path.join("..", "..", "s29", "rod-box")

@@ -7,18 +7,7 @@
 # measure.cavity_min_count key, default unchanged).  rod-5842 was queued too but left
 # for a later session: its pair would not have finished in this one.  Run from a scratch folder two levels below the repository root
 # (out/s38); then copy the small outputs here and run /usr/bin/python3 rods.py > rods.txt
-H=../../build/hvsph
-one() {  # one NAME KIND
-  C=../../examples/paper/rod-$1.yaml
-  if [ "$2" = case ]; then
-    $H run $C -o c$1 --set resolution=0.3 --threads 1 --quiet > c$1.log 2>&1
-  else
-    $H run $C -o jc$1 --set resolution=0.3 --threads 1 --quiet \
-      --set "materials.st={library: steel-target-jc}" --set 'bodies[1].material=st' \
-      --set sph.viscosity.alpha=0.2 --set sph.viscosity.beta=0.4 > jc$1.log 2>&1
-  fi
-  echo "$1 $2 rc=$? $(date -u +%H:%M:%S)" >> done.txt
-}
+. ../../docs/runs/rod_pair.sh  # one NAME KIND
 # as run: the two cases first, then the two Johnson-Cook runs (jc5839 started while
 # c5835 had 10 us to go)
 ( one 5835 case ) &

@@ -20,10 +20,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "tools"))
 import meas_csv  # noqa: E402
 
-Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
-     "cavity_diameter_wall", "cavity_diameter_wall_mean"]
-SHORT = {"penetration_depth": "L", "cavity_diameter": "D", "cavity_diameter_mean": "D_mean",
-         "cavity_diameter_wall": "D_wall", "cavity_diameter_wall_mean": "D_wall_mean"}
+Q, SHORT = meas_csv.CAVITY_Q, meas_csv.CAVITY_SHORT
 RUNS = os.path.join("..", "..")
 NAME, V, M = "rod-5842", 3.58, 46.02  # km/s, g (Table 1)
 PAPER = [os.path.join(RUNS, "s16", "rod-5842", "measurements.csv"),
