@@ -1,9 +1,13 @@
 """Reads a run's measurements.csv (docs/output-files.md) for the analysis scripts of
 docs/runs: read(path, quantities) -> {time in us (rounded to 1e-3): {quantity: value x
 scale}} for the rows whose quantity is one of `quantities` (scale 1e3: metres to mm).
-A missing file gives {}."""
+A missing file gives {}.  Also: print_history (one run's table), final_of (a run's last
+output), validation_table (a validation.csv), and the rods' ratio rule of sessions 37-39,
+ratio_estimates and print_energy."""
 import csv
+import math
 import os
+import statistics
 
 # the thick target's cavity quantities (docs/measurements.md) and their short names
 CAVITY_Q = ["penetration_depth", "cavity_diameter", "cavity_diameter_mean",
@@ -47,7 +51,6 @@ def ratio_estimates(b, d, paper, exp_L, exp_D, short, title):
     in the channel can close the cavity (L) or a thin slice miss the wall (D) at one
     output) after a heading "TITLE at T us, ...", and returns (t, {quantity: estimate
     mm}); None, printing nothing, without a common output."""
-    import statistics
     common = sorted(t for t in set(b) & set(d) if t > 0)
     if not common:
         return None
@@ -69,7 +72,6 @@ def ratio_estimates(b, d, paper, exp_L, exp_D, short, title):
 def print_energy(e_rod, est, short):
     """Session 36's bound: the rod's kinetic energy e_rod (J) per unit volume of the
     cavity V = pi (D/2)^2 L, for est's L and each of D_wall and D_wall_mean it has (mm)."""
-    import math
     L = est["penetration_depth"]
     for q in ("cavity_diameter_wall", "cavity_diameter_wall_mean"):
         if q in est:
