@@ -19,9 +19,11 @@ static void usage(FILE *f)
           "hvsph %s — 3D SPH for hypervelocity impact\n"
           "\n"
           "usage:\n"
-          "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--threads N] [--quiet]\n"
+          "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
+          "            [--threads N] [--quiet]\n"
           "      run a case file; results in OUTDIR (default out/<case name>)\n"
           "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
+          "      --material gives the bodies of material OLD the material NEW instead\n"
           "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
           "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
           "      --set time.end=\"60 us\" carries a finished run further\n"
@@ -37,7 +39,7 @@ static void usage(FILE *f)
           "      take a run's measurements again from its particle snapshots\n"
           "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"
           "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--no-run]\n"
-          "                 [--resume]\n"
+          "                 [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
           "      run the paper's cases (examples/paper, particle counts x S) and compare\n"
           "      with its experiments and simulations: DIR/validation.md and .csv\n"
           "  hvsph --version | --help\n"
@@ -61,7 +63,8 @@ static int cmd_run(int argc, char **argv, int restart)
 {
   const char *cmd = restart ? "restart" : "run";
   struct run_options o = {0};
-  const char **sets = calloc((size_t)argc, sizeof *sets);
+  const char **sets = calloc((size_t)argc + 1, sizeof *sets);
+  const char **swaps = calloc((size_t)argc + 1, sizeof *swaps);
   for (int i = 0; i < argc; i++) {
     const char *a = argv[i];
     long v;
@@ -69,11 +72,13 @@ static int cmd_run(int argc, char **argv, int restart)
       o.outdir = argv[++i];
     else if (!strcmp(a, "--set") && i + 1 < argc) sets[o.nsets++] = argv[++i];
     else if (!strncmp(a, "--set=", 6)) sets[o.nsets++] = a + 6;
+    else if (!restart && !strcmp(a, "--material") && i + 1 < argc) swaps[o.nswaps++] = argv[++i];
     else if (!strcmp(a, "--threads") && i + 1 < argc) {
       if (parse_long(argv[++i], 1, 4096, &v)) {
         fprintf(stderr, "hvsph %s: --threads needs a positive integer, not '%s'\n", cmd,
                 argv[i]);
         free(sets);
+        free(swaps);
         return HV_EXIT_USAGE;
       }
       o.threads = (int)v;
@@ -81,6 +86,7 @@ static int cmd_run(int argc, char **argv, int restart)
     else if (a[0] == '-' || o.case_path) {
       fprintf(stderr, "hvsph %s: unexpected argument '%s' (see hvsph --help)\n", cmd, a);
       free(sets);
+      free(swaps);
       return HV_EXIT_USAGE;
     } else o.case_path = a;
   }
@@ -88,12 +94,15 @@ static int cmd_run(int argc, char **argv, int restart)
     fprintf(stderr, "hvsph %s: missing %s (see hvsph --help)\n", cmd,
             restart ? "run folder" : "case file");
     free(sets);
+    free(swaps);
     return HV_EXIT_USAGE;
   }
   o.sets = sets;
+  o.swaps = swaps;
   if (restart) o.restart_dir = o.case_path;
   int st = run_main(&o);
   free(sets);
+  free(swaps);
   return st;
 }
 

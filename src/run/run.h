@@ -14,6 +14,10 @@ struct run_options {
   int quiet;
   const char *restart_dir;      /* continue the run in this folder from its checkpoint
                                    (case_path and outdir unused) */
+  const char *const *swaps;     /* --material OLD=NEW: bodies of material OLD get NEW */
+  int nswaps;
+  int swaps_lenient;            /* 0: a swap that no body takes is bad input; 1: it is
+                                   ignored (validate, which checks over all its cases) */
 };
 
 /* Returns an exit status (enum hv_exit); prints its own messages. */
@@ -21,6 +25,14 @@ int run_main(const struct run_options *o);
 /* Whether the last run_main was stopped by SIGINT or SIGTERM, whatever its exit status
  * (a failure to write the state after the signal returns that failure's status). */
 int run_interrupted(void);
+
+/* --material OLD=NEW on a loaded case: every body whose `material` is OLD is given NEW
+ * instead (a library entry or a material of the case), as --set bodies[i].material=NEW
+ * would; NEW is checked like any material name when the bodies are read. With hits NULL
+ * a swap that no body takes is bad input (a misspelt name would otherwise run the case
+ * unchanged); else the bodies that took swap k are added to hits[k]. */
+int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int *hits,
+                    struct hv_error *err);
 
 /* Reads a case file (with overrides) into a ready simulation; used by run and bench. */
 struct sim;

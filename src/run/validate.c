@@ -9,6 +9,9 @@
  * the final states of the impact cases). --no-run only re-reads earlier runs' outputs.
  * --resume continues each case that has a checkpoint in DIR/<case>/ (hvsph restart:
  * a stopped run goes on, a finished one is only re-read) and runs the others.
+ * --set KEY=VALUE and --material OLD=NEW go to every case's run as to hvsph run's (a
+ * material swap that no selected case takes is bad input) and are written at the head
+ * of validation.md: one material set for the whole table, as the paper's aims ask.
  */
 #include "run/validate.h"
 
@@ -31,6 +34,7 @@
 
 #define VAL_MAX_CASES 64
 #define VAL_MAX_ROWS 512
+#define VAL_MAX_OVERRIDES 32
 
 struct val_row {
   char cas[64], quantity[64], object[64], unit[16], note[256];
@@ -154,20 +158,29 @@ static int render_final(const char *dir, const char *png, struct hv_error *err)
   return rc;
 }
 
+/* The user's --set and --material, given to every case's run. */
+struct val_overrides {
+  const char *sets[VAL_MAX_OVERRIDES], *swaps[VAL_MAX_OVERRIDES];
+  int nsets, nswaps;
+};
+
 static int run_case(const char *cases, const char *name, const char *outdir, double scale,
-                    int threads, int resume, struct val_case *vc)
+                    int threads, int resume, struct val_overrides *ov, struct val_case *vc)
 {
   char casefile[8400], set1[64];
   snprintf(casefile, sizeof casefile, "%s/%s.yaml", cases, name);
   snprintf(set1, sizeof set1, "resolution=%.17g", scale);
-  const char *sets[] = {set1, "output.csv=true"};
-  struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets, .nsets = 2,
-                           .threads = threads};
+  const char *sets[VAL_MAX_OVERRIDES + 2] = {set1, "output.csv=true"};
+  for (int k = 0; k < ov->nsets; k++) sets[2 + k] = ov->sets[k];
+  struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets,
+                           .nsets = 2 + ov->nsets, .threads = threads, .swaps = ov->swaps,
+                           .nswaps = ov->nswaps, .swaps_lenient = 1};
   char ckpt[8400];
   restart_path(outdir, ckpt, sizeof ckpt);
   if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
-    ro.restart_dir = outdir;
+    ro.restart_dir = outdir;   /* its used_parameters.yaml holds the overrides */
     ro.nsets = 0;
+    ro.nswaps = 0;
     fprintf(stderr, "hvsph validate: %s: continuing the run in %s from its checkpoint\n", name,
             outdir);
   } else {
@@ -199,7 +212,7 @@ static const char *display_unit(enum unit_dim d, double *f)
 
 static int write_reports(const char *dir, const struct val_row *rows, int nrows,
                          const struct val_case *cs, int ncase, double scale, int norun,
-                         struct hv_error *err)
+                         const struct val_overrides *ov, struct hv_error *err)
 {
   char path[4200];
   struct afile af;
@@ -230,6 +243,13 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
     afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
                  "of the paper's (resolution %g), %d threads.\n\n", HVSPH_VERSION, scale, scale,
                  omp_get_max_threads());
+  if (ov->nsets + ov->nswaps) {
+    afile_printf(&af, err, "Every case run with");
+    for (int k = 0; k < ov->nswaps; k++)
+      afile_printf(&af, err, " `--material %s`", ov->swaps[k]);
+    for (int k = 0; k < ov->nsets; k++) afile_printf(&af, err, " `--set %s`", ov->sets[k]);
+    afile_printf(&af, err, " (the case files otherwise as committed).\n\n");
+  }
   afile_printf(&af, err,
                "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
                "|---|---|---|---|---|---|---|---|\n");
@@ -291,7 +311,8 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
 static int usage(void)
 {
   fprintf(stderr, "usage: hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] "
-                  "[--cases DIR] [--no-run] [--resume]\n");
+                  "[--cases DIR] [--no-run] [--resume] [--set KEY=VALUE]... "
+                  "[--material OLD=NEW]...\n");
   return HV_EXIT_USAGE;
 }
 
@@ -300,6 +321,7 @@ int validate_main(int argc, char **argv)
   double scale = 1.0;
   const char *outdir = "out/validation", *cases = NULL, *only[VAL_MAX_CASES];
   int nonly = 0, threads = 0, norun = 0, resume = 0;
+  static struct val_overrides ov;
   for (int i = 0; i < argc; i++) {
     if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
       char *end;
@@ -316,11 +338,20 @@ int validate_main(int argc, char **argv)
       norun = 1;
     } else if (!strcmp(argv[i], "--resume")) {
       resume = 1;
+    } else if (!strcmp(argv[i], "--set") && i + 1 < argc && ov.nsets < VAL_MAX_OVERRIDES) {
+      ov.sets[ov.nsets++] = argv[++i];
+    } else if (!strcmp(argv[i], "--material") && i + 1 < argc && ov.nswaps < VAL_MAX_OVERRIDES) {
+      ov.swaps[ov.nswaps++] = argv[++i];
     } else if (!strcmp(argv[i], "--only")) {
       while (i + 1 < argc && argv[i + 1][0] != '-' && nonly < VAL_MAX_CASES) only[nonly++] = argv[++i];
     } else {
       return usage();
     }
+  }
+  if (norun && ov.nsets + ov.nswaps) {
+    fprintf(stderr, "hvsph validate: --set and --material change the runs; with --no-run "
+                    "nothing is run (each run's used_parameters.yaml holds what it ran with)\n");
+    return HV_EXIT_USAGE;
   }
   if (threads > 0) omp_set_num_threads(threads);
   struct hv_error err;
@@ -345,6 +376,44 @@ int validate_main(int argc, char **argv)
       goto fail;
     }
   }
+  /* each --material swap must be taken by a body of some selected case: checked on the
+     case files before anything runs (a misspelt name would run every case unchanged) */
+  if (ov.nswaps && !norun) {
+    int hits[VAL_MAX_OVERRIDES] = {0};
+    for (int j = 0; j < nnames; j++) {
+      int want = nonly == 0;
+      for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
+      if (!want) continue;
+      char cf[8400];
+      snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
+      struct cfg *cc = cfg_load(cf, &err);
+      if (!cc) {
+        hv_error_clear(&err);   /* reported by its run */
+        continue;
+      }
+      struct hv_error serr;
+      const int level = hv_log_level;
+      hv_log_level = 1;   /* the runs log their overrides */
+      for (int k = 0; k < ov.nsets; k++) {
+        hv_error_clear(&serr);
+        cfg_apply_set(cc, ov.sets[k], &serr);
+      }
+      hv_log_level = level;
+      const int rc = run_apply_swaps(cc, ov.swaps, ov.nswaps, hits, &err);
+      cfg_free(cc);
+      if (rc) {
+        cfg_free(ref);
+        goto fail;
+      }
+    }
+    for (int k = 0; k < ov.nswaps; k++)
+      if (!hits[k]) {
+        hv_error_set(&err, HV_EXIT_INPUT, "validate: --material %s: no body of the selected "
+                     "case(s) in %s has that material", ov.swaps[k], casedir);
+        cfg_free(ref);
+        goto fail;
+      }
+  }
   static struct val_row rows[VAL_MAX_ROWS];
   static struct val_case cs[VAL_MAX_CASES];
   int nrows = 0, ncase = 0, failed = 0, interrupted = 0;
@@ -361,7 +430,7 @@ int validate_main(int argc, char **argv)
     char dir[4200], mpath[4300], png[4300];
     snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
     /* a case stopped by the user with its state written has not failed */
-    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, vc) &&
+    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, &ov, vc) &&
         vc->status != HV_EXIT_INTERRUPTED)
       failed++;
     /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
@@ -432,7 +501,8 @@ int validate_main(int argc, char **argv)
   }
   meas_table_free(&mt);
   cfg_free(ref);
-  if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &err)) goto fail;
+  if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &ov, &err)) goto fail;
+
   fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
                   "validation.csv\n", ncase, failed,
           interrupted ? ", interrupted (the later cases were not run)" : "", outdir);

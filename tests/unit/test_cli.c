@@ -333,6 +333,53 @@ static void test_commands(void)
         "bench --set with an unknown key: exit %d (want 2), %.*s", rc, (int)strcspn(out, "\n"),
         out);
 
+  /* --material OLD=NEW: the bodies of material OLD run with NEW (here the library's
+     nitrogen for the case's own gas), as used_parameters.yaml records; a name no body has
+     is bad input naming the case file and the bodies' materials (a typo would otherwise
+     run the case unchanged); NEW is checked as any material name; no '=' is a usage error */
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogen",
+           casefile, path_of("swap"));
+  rc = hvsph(args, out, sizeof out);
+  snprintf(up, sizeof up, "%s/used_parameters.yaml", path_of("swap"));
+  u = test_slurp(up, NULL);
+  CHECK(rc == 0 && u && strstr(u, "material: \"nitrogen\"") && !strstr(u, "material: \"gas\""),
+        "run --material gas=nitrogen runs the slab as nitrogen (exit %d)", rc);
+  free(u);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gsa=nitrogen",
+           casefile, path_of("swap2"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, "base.yaml: --material gsa=nitrogen: no body of the case has "
+        "the material 'gsa' (its bodies have: gas)"), "--material with a name no body has: "
+        "exit %d (want 2): %.*s", rc, (int)strcspn(out, "\n"), out);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogne",
+           casefile, path_of("swap3"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, "unknown material 'nitrogne'"), "--material to an unknown "
+        "material: exit %d (want 2): %s", rc, out);
+  {   /* the swaps act at once: a=b and b=a exchange the two bodies' materials */
+    char two[16384];
+    snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
+                                                "max: [0.05, 0.05, 0.05]}"));
+    char *t = strstr(two, "time:\n"), *g = strstr(two, "  gas: {");
+    char whole[16400];
+    snprintf(whole, sizeof whole, "%.*s  gas2: {eos: ideal-gas, gamma: 1.6667}\n%.*s  - name: "
+             "right\n    material: gas2\n    shape: {type: box, min: [0.05, 0, 0], max: [0.1, "
+             "0.05, 0.05]}\n    spacing: 6.25 mm\n    density: 1.0\n    pressure: 1.0\n%s",
+             g ? (int)(g - two) : 0, two, g && t ? (int)(t - g) : 0, g ? g : "", t ? t : "");
+    const char *f = test_write_file("swap2.yaml", whole);
+    snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=gas2 "
+             "--material gas2=gas", f, path_of("swapx"));
+    rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 0 && strstr(out, "override: bodies[0].material = gas2") &&
+          strstr(out, "override: bodies[1].material = gas") &&
+          !strstr(out, "bodies[0].material = gas\n"), "--material gas=gas2 --material gas2=gas "
+          "exchanges the two bodies' materials (exit %d): %s", rc, out);
+  }
+  snprintf(args, sizeof args, "run '%s' -o '%s' --material gas", casefile, path_of("swap4"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 1 && strstr(out, "--material 'gas': write OLD=NEW"), "--material without '=': "
+        "exit %d (want 1): %s", rc, out);
+
   static const struct {
     const char *args, *what;
   } usage[] = {

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "diag/measure_table.h"
 #include "testlib.h"
@@ -117,6 +118,37 @@ int main(void)
   CHECK(st == 0 && md && strstr(md, "| bumper-1 | hole_diameter (bumper) |"),
         "validate --no-run writes validation.md with the case (exit %d)", st);
   free(md);
+  /* validate --material / --set: every selected case runs with them, and validation.md
+     says so at its head (here bumper-1's plate of the projectile's steel, to 1 us at
+     resolution 0.05); a swap that no selected case takes is refused before anything runs
+     (exit 2, no case folder), and with --no-run they are a usage error (exit 1) */
+  snprintf(cmd, sizeof cmd, "cd %s && %s validate --only bumper-1 --scale 0.05 --threads 1 "
+           "--set time.end=\"1 us\" --set output.every=\"1 us\" --material "
+           "steel-bumper=steel-projectile -o %s/valswap", test_source_dir(), test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  snprintf(path, sizeof path, "%s/valswap/validation.md", tmp);
+  md = test_slurp(path, NULL);
+  snprintf(path, sizeof path, "%s/valswap/bumper-1/used_parameters.yaml", tmp);
+  char *up = test_slurp(path, NULL);
+  CHECK(st == 0 && md && strstr(md, "Every case run with `--material steel-bumper=steel-projectile` "
+        "`--set time.end=1 us` `--set output.every=1 us`") && up &&
+        !strstr(up, "\"steel-bumper\"") && strstr(up, "\"steel-projectile\""),
+        "validate --material --set: the runs take them and validation.md records them (exit %d)",
+        st);
+  free(md);
+  free(up);
+  snprintf(cmd, sizeof cmd, "cd %s && %s validate --only bumper-1 --material "
+           "steel-target=steel-target-jc -o %s/valswap2 2>&1 && echo ran", test_source_dir(),
+           test_bin(), tmp);
+  st = test_run(cmd, out, sizeof out);
+  snprintf(path, sizeof path, "%s/valswap2/bumper-1", tmp);
+  CHECK(st == 2 && strstr(out, "--material steel-target=steel-target-jc: no body of the "
+        "selected case(s)") && access(path, F_OK) != 0 && !strstr(out, "ran"),
+        "validate: a swap no selected case takes: exit %d (want 2), nothing run: %s", st, out);
+  snprintf(cmd, sizeof cmd, "%s validate --no-run --set time.end=0 -o %s/valswap3", test_bin(),
+           tmp);
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 1, "validate --no-run --set: exit %d (want 1): %s", st, out);
 
   /* which time validate compares a debris cloud at: a hand-written W.P.2 table whose
      cloud arrives at the backwall (gap 200 mm) between 10 and 15 us and piles up there:
