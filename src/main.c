@@ -73,6 +73,13 @@ static int cmd_run(int argc, char **argv, int restart)
     else if (!strcmp(a, "--set") && i + 1 < argc) sets[o.nsets++] = argv[++i];
     else if (!strncmp(a, "--set=", 6)) sets[o.nsets++] = a + 6;
     else if (!restart && !strcmp(a, "--material") && i + 1 < argc) swaps[o.nswaps++] = argv[++i];
+    else if (restart && !strcmp(a, "--material")) {
+      fprintf(stderr, "hvsph restart: --material is for hvsph run: a restart goes on with the "
+                      "materials of the run's used_parameters.yaml\n");
+      free(sets);
+      free(swaps);
+      return HV_EXIT_USAGE;
+    }
     else if (!strcmp(a, "--threads") && i + 1 < argc) {
       if (parse_long(argv[++i], 1, 4096, &v)) {
         fprintf(stderr, "hvsph %s: --threads needs a positive integer, not '%s'\n", cmd,

@@ -391,6 +391,7 @@ static void test_commands(void)
       {"run a.yaml b.yaml", "two case files"},
       {"run a.yaml --bogus", "an unknown option"},
       {"bench --particles", "bench --particles without a value"},
+      {"restart somewhere --material a=b", "restart with --material"},
   };
   for (size_t k = 0; k < sizeof usage / sizeof usage[0]; k++) {
     rc = hvsph(usage[k].args, out, sizeof out);
