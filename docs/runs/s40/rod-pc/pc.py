@@ -59,7 +59,8 @@ VAL = meas_csv.validation_table(os.path.join(RUNS, "s23", "rods_validation.csv")
 
 def at(d, t, q="penetration_depth"):
     """d's q at t, linear between the two outputs around t when d has none at t (the
-    resolution-0.3 runs wrote every 20 us), None outside d's outputs."""
+    resolution-0.3 runs wrote every 20 or 30 us; the JC runs stopped between outputs),
+    None outside d's outputs."""
     if q in d.get(t, {}):
         return d[t][q]
     ts = sorted(s for s in d if q in d[s])
@@ -81,12 +82,12 @@ for name, v, case, jc, c03, j03 in RODS:
         print("  no JC run at the paper's counts\n")
         continue
     print("   t us | L case | L JC | JC/case | same at res 0.3 | D_wall case | D_wall JC | D JC (mm)"
-          "  (res 0.3: linear between its outputs where it has none at t)")
+          "  (L case and res 0.3: linear between their outputs where they have none at t)")
     for t in sorted(jc):
         if t == 0:
             continue
         L = jc[t].get("penetration_depth")
-        Lc = case.get(t, {}).get("penetration_depth")
+        Lc = at(case, t)
         r = L / Lc if L and Lc else None
         a, b = at(c03, t), at(j03, t)
         r03 = b / a if a and b else None
