@@ -22,6 +22,7 @@
 #include "integrate/step.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
+#include "material/material.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
 #include "run/sim.h"
@@ -341,6 +342,22 @@ int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int *hi
                           "names", sw);
     }
     snprintf(old, sizeof old, "%.*s", (int)(eq - sw), sw);
+    {   /* NEW: a material of the case or an entry of the library, named here as the swap */
+      char mpath[320];
+      snprintf(mpath, sizeof mpath, "materials.%s", eq + 1);
+      struct cfg *lib = NULL;
+      struct hv_error lerr = {0};
+      const int known = !strpbrk(eq + 1, ".[]") &&
+                        (cfg_is_map(c, mpath) ||
+                         (!material_library_load(NULL, &lib, &lerr) && cfg_is_map(lib, eq + 1)));
+      cfg_free(lib);
+      if (!known) {
+        free(done);
+        return hv_error_set(err, HV_EXIT_INPUT, "%s: --material %s: unknown material '%s': "
+                            "neither the case's materials nor the library have it "
+                            "(hvsph materials lists the library)", cfg_file(c), sw, eq + 1);
+      }
+    }
     int hits = 0;
     for (int b = 0; b < nb; b++) {
       const char *m;

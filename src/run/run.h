@@ -27,8 +27,8 @@ int run_main(const struct run_options *o);
 int run_interrupted(void);
 
 /* --material OLD=NEW on a loaded case: every body whose `material` is OLD is given NEW
- * instead (a library entry or a material of the case), as --set bodies[i].material=NEW
- * would; NEW is checked like any material name when the bodies are read. With hits NULL
+ * instead (a library entry or a material of the case: another NEW is bad input), as
+ * --set bodies[i].material=NEW would. With hits NULL
  * a swap that no body takes is bad input (a misspelt name would otherwise run the case
  * unchanged); else the bodies that took swap k are added to hits[k]. */
 int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int *hits,

@@ -336,7 +336,8 @@ static void test_commands(void)
   /* --material OLD=NEW: the bodies of material OLD run with NEW (here the library's
      nitrogen for the case's own gas), as used_parameters.yaml records; a name no body has
      is bad input naming the case file and the bodies' materials (a typo would otherwise
-     run the case unchanged); NEW is checked as any material name; no '=' is a usage error */
+     run the case unchanged); so is a NEW that neither the case nor the library has; no '='
+     is a usage error */
   snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogen",
            casefile, path_of("swap"));
   rc = hvsph(args, out, sizeof out);
@@ -354,8 +355,11 @@ static void test_commands(void)
   snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogne",
            casefile, path_of("swap3"));
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 2 && strstr(out, "unknown material 'nitrogne'"), "--material to an unknown "
-        "material: exit %d (want 2): %s", rc, out);
+  CHECK(rc == 2 &&
+            strstr(out, "base.yaml: --material gas=nitrogne: unknown material 'nitrogne'") &&
+            !strstr(out, "bodies[0].material"),
+        "--material to an unknown material: exit %d (want 2), named as the swap, nothing "
+        "applied: %s", rc, out);
   {   /* the swaps act at once: a=b and b=a exchange the two bodies' materials */
     char two[16384];
     snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
