@@ -398,8 +398,8 @@ int validate_main(int argc, char **argv)
         hv_error_clear(&serr);
         cfg_apply_set(cc, ov.sets[k], &serr);
       }
-      hv_log_level = level;
       const int rc = run_apply_swaps(cc, ov.swaps, ov.nswaps, hits, &err);
+      hv_log_level = level;
       cfg_free(cc);
       if (rc) {
         cfg_free(ref);
