@@ -326,72 +326,65 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
   return 0;
 }
 
-int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int *hits_out,
-                    struct hv_error *err)
+int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict,
+                    int *hits_out, struct hv_error *err)
 {
   const int nb = cfg_len(c, "bodies");
   /* the swaps act at once: with a=b and b=a the two exchange, not a to b and back */
   unsigned char *done = calloc(nb > 0 ? (size_t)nb : 1, 1);
-  if (!done) return hv_error_set(err, HV_EXIT_RUN, "out of memory");
-  for (int k = 0; k < nswaps; k++) {
+  struct material *scratch = calloc(1, sizeof *scratch);
+  int rc = 0;
+  if (!done || !scratch) rc = hv_error_set(err, HV_EXIT_RUN, "out of memory");
+  for (int k = 0; k < nswaps && !rc; k++) {
     const char *sw = swaps[k], *eq = strchr(sw, '=');
-    char old[128], key[64], used[1024] = "";
+    char old[128], key[64], bodies[1024] = "";
     if (!eq || eq == sw || !eq[1] || (size_t)(eq - sw) >= sizeof old || strchr(eq + 1, '=')) {
-      free(done);
-      return hv_error_set(err, HV_EXIT_USAGE, "--material '%s': write OLD=NEW, two material "
-                          "names", sw);
+      rc = hv_error_set(err, HV_EXIT_USAGE, "--material '%s': write OLD=NEW, two material "
+                        "names", sw);
+      break;
     }
     snprintf(old, sizeof old, "%.*s", (int)(eq - sw), sw);
-    {   /* NEW: a material of the case or an entry of the library, named here as the swap */
-      char mpath[320];
-      snprintf(mpath, sizeof mpath, "materials.%s", eq + 1);
-      struct cfg *lib = NULL;
-      struct hv_error lerr = {0};
-      const int known = !strpbrk(eq + 1, ".[]") &&
-                        (cfg_is_map(c, mpath) ||
-                         (!material_library_load(NULL, &lib, &lerr) && cfg_is_map(lib, eq + 1)));
-      cfg_free(lib);
-      if (!known) {
-        free(done);
-        return hv_error_set(err, HV_EXIT_INPUT, "%s: --material %s: unknown material '%s': "
-                            "neither the case's materials nor the library have it "
-                            "(hvsph materials lists the library)", cfg_file(c), sw, eq + 1);
-      }
-    }
     int hits = 0;
-    for (int b = 0; b < nb; b++) {
+    for (int b = 0; b < nb && !rc; b++) {
       const char *m;
       snprintf(key, sizeof key, "bodies[%d].material", b);
-      if (done[b] || !cfg_has(c, key) || cfg_get_string(c, key, NULL, &m, err)) continue;
-      if (strcmp(m, old)) {   /* listed once each in the message */
-        char item[160];
-        snprintf(item, sizeof item, ", %s,", m);
-        char list[1040];
-        snprintf(list, sizeof list, ", %s,", used);
-        if (!strstr(list, item) && strlen(used) + strlen(m) + 3 < sizeof used)
-          snprintf(used + strlen(used), sizeof used - strlen(used), "%s%s", used[0] ? ", " : "", m);
+      if (done[b] || !cfg_has(c, key) || cfg_get_string(c, key, NULL, &m, err)) {
+        hv_error_clear(err);   /* a body without a usable material: its own error later */
         continue;
+      }
+      if (strcmp(m, old)) {
+        const size_t u = strlen(bodies);
+        snprintf(bodies + u, sizeof bodies - u, "%s%s", u ? ", " : "", m);
+        continue;
+      }
+      /* NEW looked up as the body will look it up, named as the swap if unknown */
+      int nscratch = 0;
+      if (!hits) {
+        if (material_find_or_load(c, key, eq + 1, scratch, &nscratch, 1, err) < 0) {
+          rc = hv_error_prefix(err, "--material %s: ", sw);
+          break;
+        }
+        material_free(scratch);
       }
       char set[512];
       snprintf(set, sizeof set, "%s=%s", key, eq + 1);
       if (cfg_apply_set(c, set, err)) {
-        free(done);
-        return -1;
+        rc = -1;
+        break;
       }
       done[b] = 1;
       hits++;
     }
-    hv_error_clear(err);
+    if (rc) break;
     if (hits_out) hits_out[k] += hits;
-    else if (!hits) {
-      free(done);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: --material %s: no body of the case has the "
-                          "material '%s' (its bodies have: %s)", cfg_file(c), sw, old,
-                          used[0] ? used : "none");
-    }
+    if (strict && !hits)
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: --material %s: no body of the case has the "
+                        "material '%s' (its bodies have: %s)", cfg_file(c), sw, old,
+                        bodies[0] ? bodies : "none");
   }
+  free(scratch);
   free(done);
-  return 0;
+  return rc;
 }
 
 int run_main(const struct run_options *ro)
@@ -426,15 +419,8 @@ int run_main(const struct run_options *ro)
   if (!c) goto fail;
   for (int i = 0; i < ro->nsets; i++)
     if (cfg_apply_set(c, ro->sets[i], &err)) goto fail;
-  if (!restart) {
-    int hits[64] = {0};
-    if (ro->nswaps > 64) {
-      hv_error_set(&err, HV_EXIT_USAGE, "at most 64 --material swaps");
-      goto fail;
-    }
-    if (run_apply_swaps(c, ro->swaps, ro->nswaps, ro->swaps_lenient ? hits : NULL, &err))
-      goto fail;
-  }
+  if (!restart && run_apply_swaps(c, ro->swaps, ro->nswaps, !ro->swaps_lenient, NULL, &err))
+    goto fail;
   if (run_setup(&s, c, &err) || measure_run_read(&o.mr, &s, c, &err) ||
       cfg_check_unused(c, &err))
     goto fail;

@@ -27,12 +27,13 @@ int run_main(const struct run_options *o);
 int run_interrupted(void);
 
 /* --material OLD=NEW on a loaded case: every body whose `material` is OLD is given NEW
- * instead (a library entry or a material of the case: another NEW is bad input), as
- * --set bodies[i].material=NEW would. With hits NULL
- * a swap that no body takes is bad input (a misspelt name would otherwise run the case
- * unchanged); else the bodies that took swap k are added to hits[k]. */
-int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int *hits,
-                    struct hv_error *err);
+ * instead, as --set bodies[i].material=NEW would; NEW is looked up as the body's material
+ * would be (material_find_or_load: the case's materials, then the library), an unknown
+ * one bad input named as the swap. strict: a swap that no body takes is bad input (a
+ * misspelt name would otherwise run the case unchanged). hits (or NULL): the bodies that
+ * took swap k are added to hits[k]. */
+int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict,
+                    int *hits, struct hv_error *err);
 
 /* Reads a case file (with overrides) into a ready simulation; used by run and bench. */
 struct sim;

@@ -398,7 +398,7 @@ int validate_main(int argc, char **argv)
         hv_error_clear(&serr);
         cfg_apply_set(cc, ov.sets[k], &serr);
       }
-      const int rc = run_apply_swaps(cc, ov.swaps, ov.nswaps, hits, &err);
+      const int rc = run_apply_swaps(cc, ov.swaps, ov.nswaps, 0, hits, &err);
       hv_log_level = level;
       cfg_free(cc);
       if (rc) {

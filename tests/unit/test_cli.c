@@ -356,10 +356,12 @@ static void test_commands(void)
            casefile, path_of("swap3"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2 &&
-            strstr(out, "base.yaml: --material gas=nitrogne: unknown material 'nitrogne'") &&
-            !strstr(out, "bodies[0].material"),
-        "--material to an unknown material: exit %d (want 2), named as the swap, nothing "
-        "applied: %s", rc, out);
+            strstr(out, "error: --material gas=nitrogne: ") &&
+            strstr(out, "base.yaml:10: bodies[0].material: unknown material 'nitrogne' (the "
+                        "case defines: gas; the library ") &&
+            !strstr(out, "override: bodies[0]"),
+        "--material to an unknown material: exit %d (want 2), named as the swap and the "
+        "body's key, nothing applied: %s", rc, out);
   {   /* the swaps act at once: a=b and b=a exchange the two bodies' materials */
     char two[16384];
     snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
