@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""The wide free symmetric test at 1.29 km/s (free129.yaml, session 41): tungsten into
+tungsten without strength, where the floor of a steady penetration moves at v/2 = 0.645
+km/s exactly. Mean floor speed (penetration depth L of measurements.csv, every 5 us) over
+the intervals below, for each run whose outputs reach them.
+
+Usage: free.py   (in this folder; writes free.txt). docs/validation.md, session 41.
+"""
+import csv
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+V2 = 1.29 / 2
+RUNS = [  # folder, what
+    ('free-a1', 'alpha = 1, beta = 2 (the cases), 0.7 mm'),
+    ('free-a02', 'alpha = 0.2, beta = 0.4, 0.7 mm'),
+    ('free-cd', 'the switch (cullen-dehnen, alpha_min = 0.1), 0.7 mm'),
+    ('free-a0', 'no artificial viscosity, 0.7 mm (lent machine, stopped at 23.6 us)'),
+    ('free-h05', 'alpha = 1, rod and core 0.5 mm (lent machine, stopped at 17.6 us)'),
+]
+SPANS = [(5, 15), (10, 30), (20, 30), (30, 50), (40, 50)]
+
+
+def depths(folder):
+    out = {}
+    path = os.path.join(HERE, folder, 'measurements.csv')
+    if not os.path.exists(path):
+        return out
+    with open(path) as f:
+        for row in csv.reader(r for r in f if not r.startswith('#')):
+            if len(row) > 2 and row[1] == 'penetration_depth':
+                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
+    return out
+
+
+def main():
+    head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
+    lines = [f'run | L at 10 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
+    for folder, what in RUNS:
+        L = depths(folder)
+        if not L:
+            continue
+        cells = []
+        for a, b in SPANS:
+            if a in L and b in L:
+                u = (L[b] - L[a]) / (b - a)
+                cells.append(f'{u:.3f} ({100 * (u / V2 - 1):+.1f}%)')
+            else:
+                cells.append('-')
+        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 30, 50))
+        lines.append(f'{what} | {ls} | ' + ' | '.join(cells))
+    text = '\n'.join(lines) + '\n'
+    with open(os.path.join(HERE, 'free.txt'), 'w') as f:
+        f.write(text)
+    print(text, end='')
+
+
+if __name__ == '__main__':
+    main()
