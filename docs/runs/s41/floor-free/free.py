@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""The wide free symmetric test at 1.29 km/s (free129.yaml, session 41): tungsten into
-tungsten without strength, where the floor of a steady penetration moves at v/2 = 0.645
-km/s exactly. Mean floor speed (penetration depth L of measurements.csv, every 5 us) over
-the intervals below, for each run whose outputs reach them.
+"""The wide free symmetric test (session 41): tungsten into tungsten without strength,
+where the floor of a steady penetration moves at v/2 exactly; at 1.29 km/s
+(free129.yaml, L every 5 us) and at session 15's 4.46 km/s (its symc-free.yaml with a
+measure section, L every 2.5 us). Mean floor speed (penetration depth L of
+measurements.csv) over the intervals below, for each run whose outputs reach them.
 
 Usage: free.py   (in this folder; writes free.txt). docs/validation.md, session 41.
 """
@@ -10,15 +11,16 @@ import csv
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-V2 = 1.29 / 2
-RUNS = [  # folder, what
-    ('free-a1', 'alpha = 1, beta = 2 (the cases), 0.7 mm'),
-    ('free-a02', 'alpha = 0.2, beta = 0.4, 0.7 mm'),
-    ('free-cd', 'the switch (cullen-dehnen, alpha_min = 0.1), 0.7 mm'),
-    ('free-a0', 'no artificial viscosity, 0.7 mm (lent machine, stopped at 23.6 us)'),
-    ('free-h05', 'alpha = 1, rod and core 0.5 mm (lent machine, stopped at 17.6 us)'),
+RUNS = [  # folder, v (km/s), what
+    ('free-a1', 1.29, 'alpha = 1, beta = 2 (the cases), 0.7 mm'),
+    ('free-a02', 1.29, 'alpha = 0.2, beta = 0.4, 0.7 mm'),
+    ('free-cd', 1.29, 'the switch (cullen-dehnen, alpha_min = 0.1), 0.7 mm'),
+    ('free-a0', 1.29, 'no artificial viscosity, 0.7 mm (lent machine, stopped at 23.6 us)'),
+    ('free-h05', 1.29, 'alpha = 1, rod and core 0.5 mm (lent machine, stopped at 17.6 us)'),
+    ('free446-a1', 4.46, '4.46 km/s, alpha = 1, beta = 2, 0.7 mm'),
+    ('free446-a02', 4.46, '4.46 km/s, alpha = 0.2, beta = 0.4, 0.7 mm'),
 ]
-SPANS = [(5, 15), (10, 30), (20, 30), (30, 50), (40, 50)]
+SPANS = [(5, 15), (5, 20), (10, 20), (10, 30), (20, 30), (30, 50), (40, 50)]
 
 
 def depths(folder):
@@ -35,8 +37,8 @@ def depths(folder):
 
 def main():
     head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
-    lines = [f'run | L at 10 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
-    for folder, what in RUNS:
+    lines = [f'run | L at 10 / 20 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
+    for folder, v, what in RUNS:
         L = depths(folder)
         if not L:
             continue
@@ -44,10 +46,10 @@ def main():
         for a, b in SPANS:
             if a in L and b in L:
                 u = (L[b] - L[a]) / (b - a)
-                cells.append(f'{u:.3f} ({100 * (u / V2 - 1):+.1f}%)')
+                cells.append(f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)')
             else:
                 cells.append('-')
-        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 30, 50))
+        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 20, 30, 50))
         lines.append(f'{what} | {ls} | ' + ' | '.join(cells))
     text = '\n'.join(lines) + '\n'
     with open(os.path.join(HERE, 'free.txt'), 'w') as f:
