@@ -1,7 +1,9 @@
 """Reads a run's measurements.csv (docs/output-files.md) for the analysis scripts of
 docs/runs: read(path, quantities) -> {time in us (rounded to 1e-3): {quantity: value x
 scale}} for the rows whose quantity is one of `quantities` (scale 1e3: metres to mm).
-A missing file gives {}.  Also: print_history (one run's table), final_of (a run's last
+A missing file gives {}.  series(path, quantity): one quantity, {time in us: value x
+scale}.  emit(path, lines): writes a report's lines to path and prints them.  Also:
+print_history (one run's table), final_of (a run's last
 output), validation_table (a validation.csv), and the rods' ratio rule of sessions 37-39,
 ratio_estimates and print_energy."""
 import csv
@@ -26,6 +28,19 @@ def read(path, quantities, scale=1e3):
         if r["quantity"] in quantities:
             out.setdefault(round(float(r["time"]) * 1e6, 3), {})[r["quantity"]] = float(r["value"]) * scale
     return out
+
+
+def series(path, quantity, scale=1e3):
+    """read() for one quantity: {time in us (rounded to 1e-3): value x scale}."""
+    return {t: q[quantity] for t, q in read(path, (quantity,), scale).items()}
+
+
+def emit(path, lines):
+    """Writes lines (a report, one string each) to path and prints them."""
+    text = "\n".join(lines) + "\n"
+    with open(path, "w") as f:
+        f.write(text)
+    print(text, end="")
 
 
 def print_history(run, d, quantities, short):

@@ -7,10 +7,13 @@ measurements.csv) over the intervals below, for each run whose outputs reach the
 
 Usage: free.py   (in this folder; writes free.txt). docs/validation.md, session 41.
 """
-import csv
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', '..', '..', 'tools'))
+import meas_csv  # noqa: E402
+
 RUNS = [  # folder, v (km/s), what
     ('free-a1', 1.29, 'alpha = 1, beta = 2 (the cases), 0.7 mm'),
     ('free-a02', 1.29, 'alpha = 0.2, beta = 0.4, 0.7 mm'),
@@ -23,23 +26,11 @@ RUNS = [  # folder, v (km/s), what
 SPANS = [(5, 15), (5, 20), (10, 20), (10, 30), (20, 30), (30, 50), (40, 50), (40, 60), (30, 60)]
 
 
-def depths(folder):
-    out = {}
-    path = os.path.join(HERE, folder, 'measurements.csv')
-    if not os.path.exists(path):
-        return out
-    with open(path) as f:
-        for row in csv.reader(r for r in f if not r.startswith('#')):
-            if len(row) > 2 and row[1] == 'penetration_depth':
-                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
-    return out
-
-
 def main():
     head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
     lines = [f'run | L at 10 / 20 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
     for folder, v, what in RUNS:
-        L = depths(folder)
+        L = meas_csv.series(os.path.join(HERE, folder, 'measurements.csv'), 'penetration_depth')
         if not L:
             continue
         cells = []
@@ -51,10 +42,7 @@ def main():
                 cells.append('-')
         ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 20, 30, 50))
         lines.append(f'{what} | {ls} | ' + ' | '.join(cells))
-    text = '\n'.join(lines) + '\n'
-    with open(os.path.join(HERE, 'free.txt'), 'w') as f:
-        f.write(text)
-    print(text, end='')
+    meas_csv.emit(os.path.join(HERE, 'free.txt'), lines)
 
 
 if __name__ == '__main__':

@@ -9,11 +9,14 @@ penetration depth L (measurements.csv, every 5 us) over 10-30 and 20-30 us.
 Usage: floor.py   (in this folder; writes floor.txt)
 docs/validation.md ("The floor at 1.29 km/s with one material on both sides").
 """
-import csv
 import math
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', '..', '..', '..', 'tools'))
+import meas_csv  # noqa: E402
+
 V = 1.29
 RHO_W, RHO_S = 17.78, 7.81
 RUNS = [  # folder, what, theory (km/s)
@@ -24,28 +27,16 @@ RUNS = [  # folder, what, theory (km/s)
 ]
 
 
-def depths(folder):
-    out = {}
-    with open(os.path.join(HERE, folder, 'measurements.csv')) as f:
-        for row in csv.reader(r for r in f if not r.startswith('#')):
-            if len(row) > 2 and row[1] == 'penetration_depth':
-                out[round(float(row[0]) * 1e6)] = float(row[2]) * 1e3
-    return out
-
-
 def main():
     lines = ['pair | L at 10 / 20 / 30 us (mm) | u 10-30 | u 20-30 (km/s) | theory |'
              ' u 10-30 / theory - 1 | u 20-30 / theory - 1']
     for folder, what, theory in RUNS:
-        L = depths(folder)
+        L = meas_csv.series(os.path.join(HERE, folder, 'measurements.csv'), 'penetration_depth')
         u1 = (L[30] - L[10]) / 20.0
         u2 = (L[30] - L[20]) / 10.0
         lines.append(f"{what} | {L[10]:.2f} / {L[20]:.2f} / {L[30]:.2f} | {u1:.3f} | {u2:.3f} |"
                      f" {theory:.3f} | {100 * (u1 / theory - 1):+.1f}% | {100 * (u2 / theory - 1):+.1f}%")
-    text = '\n'.join(lines) + '\n'
-    with open(os.path.join(HERE, 'floor.txt'), 'w') as f:
-        f.write(text)
-    print(text, end='')
+    meas_csv.emit(os.path.join(HERE, 'floor.txt'), lines)
 
 
 if __name__ == '__main__':

@@ -15,6 +15,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', '..', 's26', 'tate'))
+sys.path.insert(0, os.path.join(HERE, '..', '..', '..', '..', 'tools'))
+import meas_csv  # noqa: E402
 import tate  # noqa: E402
 
 
@@ -49,10 +51,7 @@ def main():
         l1 = depth(v, l, rt, delta) * 1e3
         lines.append(f'{test} | {v / 1e3:.2f} | {delta:.3f} | {l0:.1f} | {l1:.1f} |'
                      f' {100 * (l1 / l0 - 1):+.1f}% | {tate.HVSPH[test] * 1e3:.1f} | {lexp * 1e3:.1f}')
-    text = '\n'.join(lines) + '\n'
-    with open(os.path.join(HERE, 'deficit.txt'), 'w') as f:
-        f.write(text)
-    print(text, end='')
+    meas_csv.emit(os.path.join(HERE, 'deficit.txt'), lines)
 
 
 if __name__ == '__main__':
