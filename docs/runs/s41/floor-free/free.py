@@ -3,7 +3,9 @@
 where the floor of a steady penetration moves at v/2 exactly; at 1.29 km/s
 (free129.yaml, L every 5 us) and at session 15's 4.46 km/s (its symc-free.yaml with a
 measure section, L every 2.5 us). Mean floor speed (penetration depth L of
-measurements.csv) over the intervals below, for each run whose outputs reach them.
+measurements.csv) over the intervals below, for each run whose outputs reach them: the
+difference of L at the two ends, then the least-squares slope over every output within
+the interval (at least three).
 
 Usage: free.py   (in this folder; writes free.txt). docs/validation.md, session 41.
 """
@@ -27,9 +29,24 @@ RUNS = [  # folder, v (km/s), what
 SPANS = [(5, 15), (5, 20), (10, 20), (10, 30), (20, 30), (30, 50), (40, 50), (40, 60), (30, 60)]
 
 
+def fit(L, a, b):
+    """Least-squares slope of L over the outputs with a <= t <= b; None unless the run
+    has outputs at a and b and at least three in all."""
+    if a not in L or b not in L:
+        return None
+    pts = [(t, x) for t, x in L.items() if a - 1e-6 <= t <= b + 1e-6]
+    if len(pts) < 3:
+        return None
+    mt = sum(t for t, _ in pts) / len(pts)
+    mx = sum(x for _, x in pts) / len(pts)
+    return (sum((t - mt) * (x - mx) for t, x in pts) /
+            sum((t - mt) ** 2 for t, _ in pts))
+
+
 def main():
     head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
     lines = [f'run | L at 10 / 20 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
+    fits = []
     for folder, v, what in RUNS:
         L = meas_csv.series(os.path.join(HERE, folder, 'measurements.csv'), 'penetration_depth')
         if not L:
@@ -43,6 +60,10 @@ def main():
                 cells.append('-')
         ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 20, 30, 50))
         lines.append(f'{what} | {ls} | ' + ' | '.join(cells))
+        fits.append(f'{what} | ' + ' | '.join(
+            '-' if u is None else f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)'
+            for u in (fit(L, a, b) for a, b in SPANS)))
+    lines += ['', f'least-squares slopes | {head}'] + fits
     meas_csv.emit(os.path.join(HERE, 'free.txt'), lines)
 
 
