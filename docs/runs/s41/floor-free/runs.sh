@@ -19,4 +19,10 @@ wait
 #   build/hvsph run $S -o out/s41/free446-h05 --threads 2 --set "$M" --set output.csv=false \
 #     --set 'bodies[0].spacing=0.5 mm' --set 'bodies[1].spacing=0.5 mm'
 # (free446-h05 ran its first 152 steps on 1 thread, then `hvsph restart` on 2.)
+# The same two with the blocks joined to the core (tension and shear across the seams):
+#   J="--set bodies[2].part_of=core --set bodies[3].part_of=core"
+#   build/hvsph run $S -o out/s41/free446-j07 --threads 1 --set "$M" --set output.csv=false $J
+#   build/hvsph run $S -o out/s41/free446-j05 --threads 1 --set "$M" --set output.csv=false $J \
+#     --set 'bodies[0].spacing=0.5 mm' --set 'bodies[1].spacing=0.5 mm'
+# (free446-j05: 853 steps on 1 thread, then `hvsph restart` on 2.)
 # The alpha = 0 and 0.5 mm runs at 1.29 km/s are device.sh's.
