@@ -27,6 +27,7 @@ RUNS = [  # folder, v (km/s), what
     ('free446-h05', 4.46, '4.46 km/s, alpha = 1, beta = 2, rod and core 0.5 mm'),
     ('free446-j07', 4.46, '4.46 km/s, alpha = 1, 0.7 mm, the blocks joined to the core'),
     ('free446-j05', 4.46, '4.46 km/s, alpha = 1, rod and core 0.5 mm, the blocks joined'),
+    ('free446-wide', 4.46, '4.46 km/s, alpha = 1, 0.7 mm, the core +-20 mm (symc-free-wide.yaml)'),
 ]
 SPANS = [(5, 15), (5, 20), (10, 20), (10, 30), (20, 30), (30, 50), (40, 50), (40, 60), (30, 60)]
 

@@ -26,3 +26,5 @@ wait
 #     --set 'bodies[0].spacing=0.5 mm' --set 'bodies[1].spacing=0.5 mm'
 # (free446-j05: 853 steps on 1 thread, then `hvsph restart` on 2.)
 # The alpha = 0 and 0.5 mm runs at 1.29 km/s are device.sh's.
+# And the core widened to +-20 mm (wider than the crater), 2 threads:
+#   build/hvsph run docs/runs/s41/floor-free/symc-free-wide.yaml -o out/s41/free446-wide --threads 2
