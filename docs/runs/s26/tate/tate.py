@@ -45,7 +45,9 @@ def head_speed(v, rt):
     return max(0.0, min(u, v))
 
 
-def depth(v, l, rt, dt=1e-8):
+def depth(v, l, rt, dt=1e-8, delta=0.0):
+    """Final depth; delta > 0 takes the eroding head's speed short by that fraction of
+    the balance's (session 41, docs/runs/s41/tate-deficit)."""
     x = 0.0
     while l > 1e-6 and v > 0:
         u = head_speed(v, rt)
@@ -53,6 +55,7 @@ def depth(v, l, rt, dt=1e-8):
             x += v * dt
             v -= rt / (RHO_P * l) * dt
             continue
+        u *= 1.0 - delta
         x += u * dt
         l -= (v - u) * dt
         v -= YP / (RHO_P * l) * dt if l > 1e-6 else 0.0

@@ -21,4 +21,4 @@ for t in 1 2 4 8 16; do
 done
 cd $W && tar cf $OUT/s41dev.tar machine.txt version.txt *.log bench-*.txt \
   free-*/measurements.csv free-*/run_segments.csv free-*/summary.csv
-tail -3 $W/free-a0.log $W/free-h05.log; grep -h -i "particle-steps" $W/bench-*.txt
+tail -n 3 $W/free-a0.log $W/free-h05.log; grep -h -i "particle-steps" $W/bench-*.txt

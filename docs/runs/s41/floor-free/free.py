@@ -46,6 +46,11 @@ def fit(L, a, b):
             sum((t - mt) ** 2 for t, _ in pts))
 
 
+def cell(u, v):
+    """A speed u (km/s) and its deficit against v/2, for the tables; '-' for None."""
+    return '-' if u is None else f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)'
+
+
 def main():
     head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
     lines = [f'run | L at 10 / 20 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
@@ -54,18 +59,10 @@ def main():
         L = meas_csv.series(os.path.join(HERE, folder, 'measurements.csv'), 'penetration_depth')
         if not L:
             continue
-        cells = []
-        for a, b in SPANS:
-            if a in L and b in L:
-                u = (L[b] - L[a]) / (b - a)
-                cells.append(f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)')
-            else:
-                cells.append('-')
+        ends = [(L[b] - L[a]) / (b - a) if a in L and b in L else None for a, b in SPANS]
         ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 20, 30, 50))
-        lines.append(f'{what} | {ls} | ' + ' | '.join(cells))
-        fits.append(f'{what} | ' + ' | '.join(
-            '-' if u is None else f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)'
-            for u in (fit(L, a, b) for a, b in SPANS)))
+        lines.append(f'{what} | {ls} | ' + ' | '.join(cell(u, v) for u in ends))
+        fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), v) for a, b in SPANS))
     lines += ['', f'least-squares slopes | {head}'] + fits
     meas_csv.emit(os.path.join(HERE, 'free.txt'), lines)
 

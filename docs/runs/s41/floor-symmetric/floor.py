@@ -7,7 +7,8 @@ alpha = 1, reconstruction), materials swapped with --material. Mean speed of the
 penetration depth L (measurements.csv, every 5 us) over 10-30 and 20-30 us.
 
 Usage: floor.py   (in this folder; writes floor.txt)
-docs/validation.md ("The floor at 1.29 km/s with one material on both sides").
+docs/validation.md ("The floor without strength at 1.29 km/s, and what a floor's deficit
+does to the depth").
 """
 import math
 import os

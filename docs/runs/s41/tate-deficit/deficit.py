@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""Tate's model (session 26's docs/runs/s26/tate/tate.py, imported, unchanged) with the
+"""Tate's model (session 26's docs/runs/s26/tate/tate.py, imported; its depth() takes the
+deficit as `delta` since session 41, its own output unchanged) with the
 head's speed taken short by a fraction delta of the balance's: u = (1 - delta) u_Tate(v),
 as the SPH stagnation flow without strength leaves it (the floor's deficit against
 Bernoulli measured in the fluid runs of sessions 9, 26 and 41). Table 2's materials,
 R_t = 1.59 GPa (Hill's cylindrical cavity pressure for its steel).
 
 How a floor deficit reaches the depth: in steady penetration L/l = u/(v - u), so
-dL/L = du/u (1 + u/(v - u)): about 2.5 times the floor's deficit for tungsten into steel.
+dL/L = du/u (1 + u/(v - u)): 2.3-2.5 times the floor's deficit for tungsten into steel.
 
 Usage: deficit.py   (writes deficit.txt beside it). Session 41, docs/validation.md.
 """
@@ -20,24 +21,6 @@ import meas_csv  # noqa: E402
 import tate  # noqa: E402
 
 
-def depth(v, l, rt, delta, dt=1e-8):
-    """tate.depth with the eroding head's speed scaled by (1 - delta)."""
-    x = 0.0
-    while l > 1e-6 and v > 0:
-        u = tate.head_speed(v, rt)
-        if u >= v - 1e-9:           # rigid body: no erosion
-            x += v * dt
-            v -= rt / (tate.RHO_P * l) * dt
-            continue
-        u *= 1.0 - delta
-        x += u * dt
-        l -= (v - u) * dt
-        v -= tate.YP / (tate.RHO_P * l) * dt if l > 1e-6 else 0.0
-        if u <= 0:
-            break
-    return x
-
-
 def main():
     rt = 1.59e9
     lines = ['test | v km/s | delta | L Tate mm | L Tate, head (1 - delta) mm | change |'
@@ -47,8 +30,8 @@ def main():
     # over 10-30 and 30-60 us)
     for test, delta in (('5844', 0.033), ('1929', 0.151), ('1929', 0.187)):
         v, l, lexp, _ = tate.RODS[test]
-        l0 = depth(v, l, rt, 0.0) * 1e3
-        l1 = depth(v, l, rt, delta) * 1e3
+        l0 = tate.depth(v, l, rt) * 1e3
+        l1 = tate.depth(v, l, rt, delta=delta) * 1e3
         lines.append(f'{test} | {v / 1e3:.2f} | {delta:.3f} | {l0:.1f} | {l1:.1f} |'
                      f' {100 * (l1 / l0 - 1):+.1f}% | {tate.HVSPH[test] * 1e3:.1f} | {lexp * 1e3:.1f}')
     meas_csv.emit(os.path.join(HERE, 'deficit.txt'), lines)
