@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""Session 42: the floor of the free symmetric test at 4.46 km/s (tungsten into tungsten
+without strength; a steady floor moves at v/2 = 2.23 km/s exactly) in four more runs,
+beside session 41's half models: the whole crater in the lattice at 0.5 mm (the +-20 mm
+core of symc-free-wide.yaml); the +-8 mm core as a full model, on the cubic lattice and
+with rod and core on an hcp lattice; the half model with half the Courant number; and
+the half model with a cold tungsten (Grueneisen coefficient 0: heat carries no
+pressure); and the rod and the core at different spacings (the rod at 0.35, 0.5, 0.7
+and 1.0 mm in the 0.7 mm core, and at 0.7 mm in a 0.5 mm core). Speeds from the penetration depth L of each
+run's measurements.csv, as session 41's free.py reads them (its fit and cell).
+
+Usage: full.py   (in this folder; writes full.txt). docs/validation.md, session 42.
+"""
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+S41 = os.path.join(HERE, '..', '..', 's41', 'floor-free')
+sys.path.insert(0, os.path.join(HERE, '..', '..', '..', '..', 'tools'))
+sys.path.insert(0, S41)
+import meas_csv  # noqa: E402
+from free import cell, fit  # noqa: E402
+
+V = 4.46
+RUNS = [  # folder, what
+    (os.path.join(S41, 'free446-a1'), 'half model, +-8 mm core, 0.7 mm (session 41)'),
+    (os.path.join(S41, 'free446-h05'), 'half model, +-8 mm core, 0.5 mm (session 41)'),
+    (os.path.join(S41, 'free446-wide'), 'half model, +-20 mm core, 0.7 mm (session 41)'),
+    (os.path.join(HERE, 'free446-wide-h05'), 'half model, +-20 mm core, 0.5 mm'),
+    (os.path.join(HERE, 'full-cubic'), 'full model, +-8 mm core, 0.7 mm cubic'),
+    (os.path.join(HERE, 'full-hcp'), 'full model, +-8 mm core, rod and core hcp (0.7^3 mm^3 each)'),
+    (os.path.join(HERE, 'half-cfl015'), 'half model, +-8 mm core, 0.7 mm, Courant number 0.15 (0.3)'),
+    (os.path.join(HERE, 'half-g0'), 'half model, +-8 mm core, 0.7 mm, Grueneisen 0 (cold tungsten)'),
+    (os.path.join(HERE, 'half-r05-c07'), 'half model, +-8 mm core, rod 0.5 mm, core 0.7 mm'),
+    (os.path.join(HERE, 'half-r07-c05'), 'half model, +-8 mm core, rod 0.7 mm, core 0.5 mm'),
+    (os.path.join(HERE, 'half-r10-c07'), 'half model, +-8 mm core, rod 1.0 mm, core 0.7 mm'),
+    (os.path.join(HERE, 'half-r035-c07'), 'half model, +-8 mm core, rod 0.35 mm, core 0.7 mm'),
+]
+SPANS = [(5, 10), (10, 15), (15, 20), (5, 20), (10, 20)]
+
+
+def main():
+    head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
+    lines = [f'run | L at 5 / 10 / 15 / 20 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
+    fits = []
+    for folder, what in RUNS:
+        L = meas_csv.series(os.path.join(folder, 'measurements.csv'), 'penetration_depth')
+        if not L:
+            continue
+        ends = [(L[b] - L[a]) / (b - a) if a in L and b in L else None for a, b in SPANS]
+        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (5, 10, 15, 20))
+        lines.append(f'{what} | {ls} | ' + ' | '.join(cell(u, V) for u in ends))
+        fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), V) for a, b in SPANS))
+    lines += ['', f'least-squares slopes | {head}'] + fits
+    meas_csv.emit(os.path.join(HERE, 'full.txt'), lines)
+
+
+if __name__ == '__main__':
+    main()
