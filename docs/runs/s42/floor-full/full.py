@@ -52,7 +52,33 @@ def main():
         lines.append(f'{what} | {ls} | ' + ' | '.join(cell(u, V) for u in ends))
         fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), V) for a, b in SPANS))
     lines += ['', f'least-squares slopes | {head}'] + fits
+    lines += ['', 'Bernoulli with the target\'s measured enthalpy (FOLDER_axis.txt, session 15\'s',
+              'axis_enthalpy.py: u = V/2 - dH/V, its mean over the outputs at 10-20 us) against the',
+              'least-squares slope of L over 10-20 us: what the pressure pulse ahead of the floor',
+              'explains, and what is left (the run under the estimate)',
+              'run | estimate (km/s, against v/2) | L slope 10-20 us | run against the estimate']
+    for folder, what in RUNS:
+        est = axis_estimate(folder + '_axis.txt' if os.path.dirname(folder) == HERE else None)
+        L = meas_csv.series(os.path.join(folder, 'measurements.csv'), 'penetration_depth')
+        u = fit(L, 10, 20) if L else None
+        if est is None or u is None:
+            continue
+        lines.append(f'{what} | {cell(est, V)} | {cell(u, V)} | {100 * (u / est - 1):+.1f}%')
     meas_csv.emit(os.path.join(HERE, 'full.txt'), lines)
+
+
+def axis_estimate(path):
+    """Mean of axis_enthalpy.py's last column (u = V/2 - dH/V, km/s) over its rows at
+    10 <= t <= 20 us; None without the file."""
+    if not path or not os.path.exists(path):
+        return None
+    us = []
+    with open(path) as f:
+        for line in f:
+            cols = line.split()
+            if len(cols) > 8 and cols[0].replace('.', '', 1).isdigit() and 10 <= float(cols[0]) <= 20:
+                us.append(float(cols[-1]))
+    return sum(us) / len(us) if us else None
 
 
 if __name__ == '__main__':
