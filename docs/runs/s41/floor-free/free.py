@@ -51,21 +51,30 @@ def cell(u, v):
     return '-' if u is None else f'{u:.3f} ({100 * (u / (v / 2) - 1):+.1f}%)'
 
 
-def main():
-    head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
-    lines = [f'run | L at 10 / 20 / 30 / 50 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
-    fits = []
-    for folder, v, what in RUNS:
-        L = meas_csv.series(os.path.join(HERE, folder, 'measurements.csv'), 'penetration_depth')
+def speed_tables(runs, spans, times):
+    """The two tables of a set of runs: for each (folder, v km/s, what) of runs whose
+    measurements.csv has L, a row of L at `times` and the end-point speeds over `spans`,
+    and a row of the least-squares slopes over them; returns (header and rows, header
+    and rows of the slopes)."""
+    head = ' | '.join(f'u {a}-{b} us' for a, b in spans)
+    at = ' / '.join(f'{t:g}' for t in times)
+    lines = [f'run | L at {at} us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
+    fits = [f'least-squares slopes | {head}']
+    for folder, v, what in runs:
+        L = meas_csv.series(os.path.join(folder, 'measurements.csv'), 'penetration_depth')
         if not L:
             continue
-        ends = [(L[b] - L[a]) / (b - a) if a in L and b in L else None for a, b in SPANS]
-        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (10, 20, 30, 50))
+        ends = [(L[b] - L[a]) / (b - a) if a in L and b in L else None for a, b in spans]
+        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in times)
         lines.append(f'{what} | {ls} | ' + ' | '.join(cell(u, v) for u in ends))
-        fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), v) for a, b in SPANS))
-    lines += ['', f'least-squares slopes | {head}'] + fits
-    meas_csv.emit(os.path.join(HERE, 'free.txt'), lines)
+        fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), v) for a, b in spans))
+    return lines, fits
 
+
+def main():
+    lines, fits = speed_tables([(os.path.join(HERE, f), v, w) for f, v, w in RUNS], SPANS,
+                               (10, 20, 30, 50))
+    meas_csv.emit(os.path.join(HERE, 'free.txt'), lines + [''] + fits)
 
 if __name__ == '__main__':
     main()

@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Session 42: the floor of the free symmetric test at 4.46 km/s (tungsten into tungsten
-without strength; a steady floor moves at v/2 = 2.23 km/s exactly) in four more runs,
+without strength; a steady floor moves at v/2 = 2.23 km/s exactly) in nine more runs,
 beside session 41's half models: the whole crater in the lattice at 0.5 mm (the +-20 mm
 core of symc-free-wide.yaml); the +-8 mm core as a full model, on the cubic lattice and
-with rod and core on an hcp lattice; the half model with half the Courant number; and
-the half model with a cold tungsten (Grueneisen coefficient 0: heat carries no
-pressure); and the rod and the core at different spacings (the rod at 0.35, 0.5, 0.7
-and 1.0 mm in the 0.7 mm core, and at 0.7 mm in a 0.5 mm core). Speeds from the penetration depth L of each
-run's measurements.csv, as session 41's free.py reads them (its fit and cell).
+with rod and core on an hcp lattice; the half model with half the Courant number, and
+with a cold tungsten (Grueneisen coefficient 0: heat carries no pressure); and the rod
+and the core at different spacings (the rod at 0.35, 0.5 and 1.0 mm in the 0.7 mm core,
+and at 0.7 mm in a 0.5 mm core). Speeds from the penetration depth L of each run's
+measurements.csv, by session 41's free.py (its speed_tables); then Bernoulli with the
+target's measured enthalpy from each FOLDER_axis.txt beside the run's slope.
 
 Usage: full.py   (in this folder; writes full.txt). docs/validation.md, session 42.
 """
@@ -19,7 +20,7 @@ S41 = os.path.join(HERE, '..', '..', 's41', 'floor-free')
 sys.path.insert(0, os.path.join(HERE, '..', '..', '..', '..', 'tools'))
 sys.path.insert(0, S41)
 import meas_csv  # noqa: E402
-from free import cell, fit  # noqa: E402
+from free import cell, fit, speed_tables  # noqa: E402
 
 V = 4.46
 RUNS = [  # folder, what
@@ -40,18 +41,8 @@ SPANS = [(5, 10), (10, 15), (15, 20), (5, 20), (10, 20)]
 
 
 def main():
-    head = ' | '.join(f'u {a}-{b} us' for a, b in SPANS)
-    lines = [f'run | L at 5 / 10 / 15 / 20 us (mm) | {head} (km/s; in brackets u / (v/2) - 1)']
-    fits = []
-    for folder, what in RUNS:
-        L = meas_csv.series(os.path.join(folder, 'measurements.csv'), 'penetration_depth')
-        if not L:
-            continue
-        ends = [(L[b] - L[a]) / (b - a) if a in L and b in L else None for a, b in SPANS]
-        ls = ' / '.join(f'{L[t]:.2f}' if t in L else '-' for t in (5, 10, 15, 20))
-        lines.append(f'{what} | {ls} | ' + ' | '.join(cell(u, V) for u in ends))
-        fits.append(f'{what} | ' + ' | '.join(cell(fit(L, a, b), V) for a, b in SPANS))
-    lines += ['', f'least-squares slopes | {head}'] + fits
+    lines, fits = speed_tables([(f, V, w) for f, w in RUNS], SPANS, (5, 10, 15, 20))
+    lines += [''] + fits
     lines += ['', 'Bernoulli with the target\'s measured enthalpy (FOLDER_axis.txt, session 15\'s',
               'axis_enthalpy.py: u = V/2 - dH/V, its mean over the outputs at 10-20 us) against the',
               'least-squares slope of L over 10-20 us: what the pressure pulse ahead of the floor',
