@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """Session 42: the floor of the free symmetric test at 4.46 km/s (tungsten into tungsten
-without strength; a steady floor moves at v/2 = 2.23 km/s exactly) in nine more runs,
+without strength; a steady floor moves at v/2 = 2.23 km/s exactly) in eleven more runs,
 beside session 41's half models: the whole crater in the lattice at 0.5 mm (the +-20 mm
 core of symc-free-wide.yaml); the +-8 mm core as a full model, on the cubic lattice and
 with rod and core on an hcp lattice; the half model with half the Courant number, and
 with a cold tungsten (Grueneisen coefficient 0: heat carries no pressure); and the rod
-and the core at different spacings (the rod at 0.35, 0.5 and 1.0 mm in the 0.7 mm core,
-and at 0.7 mm in a 0.5 mm core). Speeds from the penetration depth L of each run's
+and the core at different spacings (the rod at 0.35, 0.5, 0.62, 0.68 and 1.0 mm in the
+0.7 mm core, and at 0.7 mm in a 0.5 mm core). Speeds from the penetration depth L of
+each run's
 measurements.csv, by session 41's free.py (its speed_tables); then Bernoulli with the
 target's measured enthalpy from each FOLDER_axis.txt beside the run's slope.
 
@@ -36,6 +37,8 @@ RUNS = [  # folder, what
     (os.path.join(HERE, 'half-r07-c05'), 'half model, +-8 mm core, rod 0.7 mm, core 0.5 mm'),
     (os.path.join(HERE, 'half-r10-c07'), 'half model, +-8 mm core, rod 1.0 mm, core 0.7 mm'),
     (os.path.join(HERE, 'half-r035-c07'), 'half model, +-8 mm core, rod 0.35 mm, core 0.7 mm'),
+    (os.path.join(HERE, 'half-r062-c07'), 'half model, +-8 mm core, rod 0.62 mm, core 0.7 mm'),
+    (os.path.join(HERE, 'half-r068-c07'), 'half model, +-8 mm core, rod 0.68 mm, core 0.7 mm'),
 ]
 SPANS = [(5, 10), (10, 15), (15, 20), (5, 20), (10, 20)]
 

@@ -20,3 +20,11 @@ build/hvsph run $S -o out/s42/half-r10-c07 --threads 2 --set "$M" --set output.c
   --set 'bodies[0].spacing=1.0 mm'
 build/hvsph run $S -o out/s42/half-r035-c07 --threads 2 --set "$M" --set output.csv=false \
   --set 'bodies[0].spacing=0.35 mm'
+# Last, a test of the cross-section order: two rod spacings near 0.7 mm whose lattices
+# cover 0.93 and 1.119 times the rod's cross-section (0.62 and 0.68 mm), 1 thread each,
+# both at once:
+build/hvsph run $S -o out/s42/half-r062-c07 --threads 1 --set "$M" --set output.csv=false \
+  --set 'bodies[0].spacing=0.62 mm' &
+build/hvsph run $S -o out/s42/half-r068-c07 --threads 1 --set "$M" --set output.csv=false \
+  --set 'bodies[0].spacing=0.68 mm' &
+wait
