@@ -76,5 +76,6 @@ def main():
                                (10, 20, 30, 50))
     meas_csv.emit(os.path.join(HERE, 'free.txt'), lines + [''] + fits)
 
+
 if __name__ == '__main__':
     main()

@@ -52,7 +52,7 @@ def main():
               'explains, and what is left (the run under the estimate)',
               'run | estimate (km/s, against v/2) | L slope 10-20 us | run against the estimate']
     for folder, what in RUNS:
-        est = axis_estimate(folder + '_axis.txt' if os.path.dirname(folder) == HERE else None)
+        est = axis_estimate(folder + '_axis.txt')
         L = meas_csv.series(os.path.join(folder, 'measurements.csv'), 'penetration_depth')
         u = fit(L, 10, 20) if L else None
         if est is None or u is None:
@@ -63,8 +63,8 @@ def main():
 
 def axis_estimate(path):
     """Mean of axis_enthalpy.py's last column (u = V/2 - dH/V, km/s) over its rows at
-    10 <= t <= 20 us; None without the file."""
-    if not path or not os.path.exists(path):
+    10 <= t <= 20 us; None without the file (session 41's runs have none)."""
+    if not os.path.exists(path):
         return None
     us = []
     with open(path) as f:
