@@ -618,6 +618,50 @@ static void test_mass_ratio_warning(void)
         "(exit %d): %s", st, out);
 }
 
+/* A body whose lattice cells fill more than 1.02 of its exact volume is named in a
+ * warning that offers a fitting spacing: a half rod of 1 mm radius, 4 mm long, on a
+ * 0.45 mm cubic lattice holds 72 points, whose cells fill 72 x 0.45^3 / (pi/2 x 4) =
+ * 1.044 of it; 0.3 mm (208 points: 0.8939) does not warn, nor does the spacing the
+ * warning offers. */
+static void test_lattice_cover_warning(void)
+{
+  static const char *const fmt =
+      "name: cover\n"
+      "domain: {min: [-8 mm, -5 mm, 0], max: [1 mm, 5 mm, 5 mm], half_model: true}\n"
+      "bodies:\n"
+      "  - name: rod\n"
+      "    material: tungsten-alloy\n"
+      "    shape: {type: cylinder, center: [-5 mm, 0, 0], axis: [1, 0, 0], radius: 1 mm, length: 4 mm}\n"
+      "    spacing: %s\n"
+      "    velocity: [1 km/s, 0, 0]\n"
+      "time: {end: 0}\n";
+  char yaml[2048], args[4400], out[16384], fit[64] = "";
+  const char *const spacing[] = {"0.45 mm", "0.3 mm", fit};
+  for (int k = 0; k < 3; k++) {
+    snprintf(yaml, sizeof yaml, fmt, spacing[k]);
+    char name[64];
+    snprintf(name, sizeof name, "cover_%d.yaml", k);
+    const char *file = test_write_file(name, yaml);
+    snprintf(args, sizeof args, "run '%s' -o '%s/cover_%d'", file, test_tmpdir(), k);
+    const int st = hvsph(args, out, sizeof out);
+    const char *w = strstr(out, "body 'rod': its ");
+    if (k == 0) {
+      CHECK(st == 0 && w && strstr(w, "its 72 lattice cells of 0.45 mm fill 1.044 times") &&
+                strstr(w, "4.2 % lighter"),
+            "a 0.45 mm lattice filling 1.044 of the rod: warned with its numbers (exit %d): %s",
+            st, out);
+      const char *f = w ? strstr(w, "Nearest fit: spacing ") : NULL;
+      double sp = 0.0;
+      CHECK(f && sscanf(f, "Nearest fit: spacing %lf mm", &sp) == 1 && sp > 0.405 && sp < 0.495,
+            "the warning offers a spacing within 10 %% of 0.45 mm: %s", out);
+      snprintf(fit, sizeof fit, "%.5g mm", sp);
+    } else {
+      CHECK(st == 0 && !w, "spacing %s: no lattice-cover warning (exit %d): %s", spacing[k], st,
+            out);
+    }
+  }
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -630,6 +674,7 @@ int main(void)
   test_outdir();
   test_late_input_error();
   test_mass_ratio_warning();
+  test_lattice_cover_warning();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "field rho: -", NULL});
