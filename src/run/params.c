@@ -29,6 +29,7 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_quantity(c, "sph.artificial_stress.n", UNIT_NONE, &as_n, 1.0, 10.0, &sp->as_n, err) ||
       cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err) ||
       cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err) ||
+      cfg_get_bool(c, "sph.viscosity.reconstruct_contact", &no, &sp->reconstruct_contact, err) ||
       cfg_get_bool(c, "sph.skip_resting", &yes, &sp->skip_resting, err) ||
       cfg_get_quantity(c, "sph.rest_tolerance", UNIT_NONE, &rest_tol, 0.0, 1e-6,
                        &sp->rest_tol, err) ||
@@ -52,6 +53,11 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
                         "sph.viscosity.alpha (%g), the switch's largest alpha",
                         cfg_where(c, "sph.viscosity.alpha_min", where, sizeof where),
                         sp->av_min, sp->alpha);
+  if (sp->reconstruct_contact && !sp->reconstruct)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct_contact: it extends "
+                        "the reconstruction to pairs of different bodies, and needs "
+                        "sph.viscosity.reconstruct: true",
+                        cfg_where(c, "sph.viscosity.reconstruct_contact", where, sizeof where));
   if (sp->h_max > 0 && sp->h_min > sp->h_max)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.h_min (%g m) exceeds sph.h_max (%g m)",
                         cfg_where(c, "sph.h_min", where, sizeof where), sp->h_min, sp->h_max);

@@ -43,6 +43,8 @@ struct sph_params {
   int reconstruct;     /* solids: the viscosity of a pair of one body, both with
                           strength, sees the velocity difference reconstructed linearly
                           to the pair's midpoint (slope-limited); see sph_forces_solid */
+  int reconstruct_contact; /* with reconstruct: pairs of different pieces (contact)
+                          too, each particle reconstructed by its own piece's gradient */
   const int32_t *piece; /* solids: piece[b] is the body that body b is part of
                           (bodies[i].part_of); pairs of one piece interact as within
                           one body (stress, tension, velocity gradient), pairs of

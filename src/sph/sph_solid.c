@@ -454,7 +454,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           if (vdx < 0.0) {
             double mu = hij * vdx / (r2 + eps * hij * hij);
             if (-mu > mumax) mumax = -mu;   /* the time step sees the whole jump */
-            if (gradv && (bf[j] >> 1) == bi)
+            if (gradv && ((bf[j] >> 1) == bi || sp->reconstruct_contact))
               mu = hij *
                    sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
                    (r2 + eps * hij * hij);

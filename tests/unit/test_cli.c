@@ -472,6 +472,11 @@ static void test_bad_input(void)
             variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"), NULL,
             (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
                                   "mass is for cases without strength", NULL});
+  bad_input("recon_contact_alone",
+            variant(3, "  gas: {library: al-alloy}\nsph: {viscosity: {reconstruct_contact: true}}"),
+            NULL, (const char *const[]){"recon_contact_alone.yaml:4: "
+                                        "sph.viscosity.reconstruct_contact: ",
+                                        "needs sph.viscosity.reconstruct: true", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
