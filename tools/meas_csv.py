@@ -5,7 +5,8 @@ A missing file gives {}.  series(path, quantity): one quantity, {time in us: val
 scale}.  emit(path, lines): writes a report's lines to path and prints them.  Also:
 print_history (one run's table), final_of (a run's last
 output), validation_table (a validation.csv), and the rods' ratio rule of sessions 37-39,
-ratio_estimates and print_energy."""
+ratio_estimates and print_energy; at (a quantity between outputs) and jc_rows / rod_heading
+(sessions 40 and 43: a material set beside the case, output by output)."""
 import csv
 import math
 import os
@@ -118,3 +119,47 @@ def validation_table(path):
             out.setdefault(r["case"], {})[q] = (float(r["simulated"]), float(r["experiment"]),
                                                 float(r["paper_simulation"]))
     return out
+
+
+def at(d, t, q="penetration_depth"):
+    """read()'s d's q at t, linear between the two outputs around t when d has none at t
+    (runs that wrote every 20 or 30 us, or stopped between outputs), None outside d's
+    outputs."""
+    if q in d.get(t, {}):
+        return d[t][q]
+    ts = sorted(s for s in d if q in d[s])
+    for a, b in zip(ts, ts[1:]):
+        if a < t < b:
+            return d[a][q] + (d[b][q] - d[a][q]) * (t - a) / (b - a)
+    return None
+
+
+def fmt_or_dash(x, fmt="6.1f"):
+    """x formatted, or a dash for None (the tables' empty cells)."""
+    return format(x, fmt) if x is not None else "     -"
+
+
+def rod_heading(name, v, val, jc):
+    """Prints a rod's heading line from validation_table()'s val and returns (experiment
+    L, KERNEL L, experiment D, KERNEL D) in mm; without the run jc (read()'s dict, empty)
+    says so and returns None."""
+    _, eL, kL = val[name]["penetration_depth"]
+    _, eD, kD = val[name]["cavity_diameter"]
+    print(f"== {name} ({v} km/s): experiment L {eL} mm, D {eD} mm; KERNEL L {kL}, D {kD}")
+    if not jc:
+        print("  no JC run at the paper's counts\n")
+        return None
+    return eL, kL, eD, kD
+
+
+def jc_rows(case, jc, c03, j03):
+    """For each output t > 0 of jc (read()'s dict of a run with another material set)
+    yields (t, L of the case at t, L of jc, their ratio, the same ratio of the pair c03,
+    j03 at resolution 0.3); case and the pair linear between their outputs (at)."""
+    for t in sorted(jc):
+        if t == 0:
+            continue
+        L = jc[t].get("penetration_depth")
+        Lc = at(case, t)
+        a, b = at(c03, t), at(j03, t)
+        yield t, Lc, L, (L / Lc if L and Lc else None), (b / a if a and b else None)

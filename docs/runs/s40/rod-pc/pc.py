@@ -57,40 +57,17 @@ RODS = [
 VAL = meas_csv.validation_table(os.path.join(RUNS, "s23", "rods_validation.csv"))
 
 
-def at(d, t, q="penetration_depth"):
-    """d's q at t, linear between the two outputs around t when d has none at t (the
-    resolution-0.3 runs wrote every 20 or 30 us; the JC runs stopped between outputs),
-    None outside d's outputs."""
-    if q in d.get(t, {}):
-        return d[t][q]
-    ts = sorted(s for s in d if q in d[s])
-    for a, b in zip(ts, ts[1:]):
-        if a < t < b:
-            return d[a][q] + (d[b][q] - d[a][q]) * (t - a) / (b - a)
-    return None
-
-
-def f(x, fmt="6.1f"):
-    return format(x, fmt) if x is not None else "     -"
+at, f = meas_csv.at, meas_csv.fmt_or_dash
 
 
 for name, v, case, jc, c03, j03 in RODS:
-    _, eL, kL = VAL[name]["penetration_depth"]
-    _, eD, kD = VAL[name]["cavity_diameter"]
-    print(f"== {name} ({v} km/s): experiment L {eL} mm, D {eD} mm; KERNEL L {kL}, D {kD}")
-    if not jc:
-        print("  no JC run at the paper's counts\n")
+    ref = meas_csv.rod_heading(name, v, VAL, jc)
+    if ref is None:
         continue
+    eL, kL, eD, kD = ref
     print("   t us | L case | L JC | JC/case | same at res 0.3 | D_wall case | D_wall JC | D JC (mm)"
           "  (L case and res 0.3: linear between their outputs where they have none at t)")
-    for t in sorted(jc):
-        if t == 0:
-            continue
-        L = jc[t].get("penetration_depth")
-        Lc = at(case, t)
-        r = L / Lc if L and Lc else None
-        a, b = at(c03, t), at(j03, t)
-        r03 = b / a if a and b else None
+    for t, Lc, L, r, r03 in meas_csv.jc_rows(case, jc, c03, j03):
         print(f"  {t:6.1f} | {f(Lc)} | {f(L)} | {f(r, '7.3f')} | {f(r03, '7.3f')} | "
               f"{f(case.get(t, {}).get('cavity_diameter_wall'))} | "
               f"{f(jc[t].get('cavity_diameter_wall'))} | {f(jc[t].get('cavity_diameter'))}")
