@@ -652,9 +652,10 @@ static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, 
     }
     hv_warn("body '%s': its %zu lattice cells of %.5g mm fill %.3f times the shape's volume, "
             "so each particle (mass from the exact volume) is %.1f %% lighter than density "
-            "x lattice cell and the SPH sums inside it read low; in a free penetration test, rods "
-            "whose lattices filled 1.02-1.12 of their volume had crater floors 3-5 %% slow (docs/validation.md, \"The floor "
-            "without strength at 4.46 km/s\"). Nearest fit: %s",
+            "x lattice cell and the SPH sums inside it read low; in a free penetration test, "
+            "rods whose lattices filled 1.02-1.12 of their volume had crater floors 3-5 %% "
+            "slow (docs/validation.md, \"The floor without strength at 4.46 km/s\"). "
+            "Nearest fit: %s",
             s->body[b].name, s->body[b].count, 1e3 * bs[b].spacing, cover,
             100.0 * (1.0 - 1.0 / cover), fix);
   }

@@ -321,6 +321,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
   const double bfac = av ? beta / alpha : 0.0;
   const int use_as = sp->as_eps > 0;
   const double *gradv = sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL;
+  const int recon_contact = sp->reconstruct_contact;   /* and for pairs of two pieces */
   /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
   const double inv_w_dp = 1.0 / kernel_w_h3(kk, 1.0 / sp->eta);
   /* Each particle's data as a partner (ghosts included) in two cache lines, read
@@ -454,7 +455,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
           if (vdx < 0.0) {
             double mu = hij * vdx / (r2 + eps * hij * hij);
             if (-mu > mumax) mumax = -mu;   /* the time step sees the whole jump */
-            if (gradv && ((bf[j] >> 1) == bi || sp->reconstruct_contact))
+            if (gradv && ((bf[j] >> 1) == bi || recon_contact))
               mu = hij *
                    sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
                    (r2 + eps * hij * hij);
