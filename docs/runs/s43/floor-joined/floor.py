@@ -28,6 +28,8 @@ RUNS = [  # folder, v (km/s), what
      'alpha = 1, the reconstruction for the pairs of the two bodies too (reconstruct_contact)'),
     (os.path.join(HERE, 'free-a1-recongrad'), 1.29,
      '... and each gradient over both bodies (HV_GRAD_ALL), to 30 us'),
+    (os.path.join(HERE, 'free-a1-densall'), 1.29,
+     'alpha = 1, bodies apart, the contact density rule off (HV_DENS_ALL), to 30 us'),
 ]
 SPANS = [(10, 30), (20, 30), (30, 50), (30, 45), (10, 50)]
 

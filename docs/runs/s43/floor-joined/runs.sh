@@ -24,9 +24,9 @@ HV_RECON_ALL=1 build-exp/hvsph run $Y -o out/s43/free-a1-reconall --threads 1 --
 # 3. study.patch's other two switches, to 30 us: HV_GRAD_ALL, each particle's velocity
 #    gradient over the condensed neighbours of every body, not only its own piece's;
 #    HV_DENS_ALL, the continuity sum without the contact rule's "a separating pair of
-#    different bodies does not unload a particle below rho0" (stopped at 5 us for the
-#    machine's time, no result):
+#    different bodies does not unload a particle below rho0" (a first 1-thread run was
+#    stopped at 5 us; run again on 2 threads alone at the session's end):
 HV_RECON_ALL=1 HV_GRAD_ALL=1 build-exp/hvsph run $Y -o out/s43/free-a1-recongrad --threads 1 --quiet --set time.end=30us
-# HV_DENS_ALL=1 build-exp/hvsph run $Y -o out/s43/free-a1-densall --threads 1 --quiet --set time.end=30us
+HV_DENS_ALL=1 build-exp/hvsph run $Y -o out/s43/free-a1-densall --threads 2 --quiet --set time.end=30us
 # Then copy measurements.csv, summary.csv, run_segments.csv, used_parameters.yaml of each
 # here and run /usr/bin/python3 floor.py (floor.txt).
