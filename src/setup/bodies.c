@@ -619,7 +619,8 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
  * body's (within ±10 %, in steps of 0.25 %) whose lattice fills COVER_LO to 1. */
 #define COVER_WARN 1.02
 #define COVER_LO 0.95
-#define COVER_SEARCH_MAX 2000000   /* points; larger bodies get no suggestion */
+#define COVER_SEARCH_MAX 500000   /* points; larger bodies get no suggestion (up to 80
+                                     counts of the lattice) */
 
 static double lattice_cover(const struct body_spec *bs, size_t n)
 {
