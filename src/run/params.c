@@ -30,6 +30,8 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_bool(c, "sph.gradient_correction", &no, &sp->grad_correction, err) ||
       cfg_get_bool(c, "sph.viscosity.reconstruct", &no, &sp->reconstruct, err) ||
       cfg_get_bool(c, "sph.viscosity.reconstruct_contact", &no, &sp->reconstruct_contact, err) ||
+      cfg_get_quantity(c, "sph.density_diffusion", UNIT_NONE, &zero, 0.0, 1.0,
+                       &sp->density_diffusion, err) ||
       cfg_get_bool(c, "sph.skip_resting", &yes, &sp->skip_resting, err) ||
       cfg_get_quantity(c, "sph.rest_tolerance", UNIT_NONE, &rest_tol, 0.0, 1e-6,
                        &sp->rest_tol, err) ||

@@ -45,6 +45,10 @@ struct sph_params {
                           to the pair's midpoint (slope-limited); see sph_forces_solid */
   int reconstruct_contact; /* with reconstruct: pairs of different pieces (contact)
                           too, each particle reconstructed by its own piece's gradient */
+  double density_diffusion; /* solids: δ of the continuity rate's density diffusion
+                          (Molteni & Colagrossi 2009), δ hᵢⱼ cᵢ Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ,
+                          ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ², over the pairs of one piece
+                          and one condensed material; 0: off */
   const int32_t *piece; /* solids: piece[b] is the body that body b is part of
                           (bodies[i].part_of); pairs of one piece interact as within
                           one body (stress, tension, velocity gradient), pairs of

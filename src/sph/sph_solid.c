@@ -150,6 +150,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
     cache->gradv_valid = 0;
   }
   const int skip = sp->skip_resting && cache && !p->av;
+  const double ddelta = sp->density_diffusion;
   if (skip) {
     rest_alloc(cache, g->ncells);
 #pragma omp parallel for schedule(static)
@@ -202,6 +203,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const int corr = strong && (sp->grad_correction || (gradv && recon));
         const int sw = p->av;   /* the viscosity switch's gradient, every neighbour */
         double Lsw[9] = {0}, Asw[9] = {0};
+        const int dd = ddelta > 0.0 && cond_i;
+        double ddiff = 0.0;   /* Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ hᵢⱼ, the density diffusion */
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
           const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
@@ -231,6 +234,13 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
             if (rho[j] < 0.5 * rho0j) wd = 2.0 * m[j] / rho0j * f;
           }
           sum -= wd * udx;
+          /* sph.density_diffusion (Molteni & Colagrossi 2009): ψᵢⱼ·∇ᵢWᵢⱼ =
+             2(ρⱼ − ρᵢ)(xⱼ − xᵢ)·(xᵢ − xⱼ) f/r² = −2(ρⱼ − ρᵢ) f (f < 0): the particle's
+             density relaxes towards its neighbours' — a discrete Laplacian of ρ, zero
+             in a uniform or linear density field; never across two pieces or two
+             materials, whose densities differ by right */
+          if (dd && bj == bi && p->mat[j] == p->mat[i])
+            ddiff -= w * 2.0 * (rho[j] - rho[i]) * 0.5 * (hi + cd.h[q]);
           if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
           if (strong && bj == bi) {
             L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
@@ -243,7 +253,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
             }
           }
         }
-        p->drho[i] = rho[i] * sum;
+        p->drho[i] = rho[i] * sum + (dd ? ddelta * p->cs[i] * ddiff : 0.0);
         if (sw)
           p->alpha[i] = avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt,
                                     &p->divv[i]);
