@@ -3,7 +3,9 @@
 tungsten without strength, where a steady floor moves at v/2 = 0.645 km/s), alpha = 1,
 the reconstruction across the contact (sph.viscosity.reconstruct_contact) and the pairs
 of the two bodies exchanging their whole pressures, tension included (study.patch's
-HV_CT), beside session 43's runs: the rod joined to the core, and the reconstruction
+HV_CT=1) or their sum clipped at 0 (HV_CT=2); density diffusion (HV_DDIFF=0.1, what
+sph.density_diffusion does since e823530); the standard viscosity everywhere, with and
+without every body split from the start; beside session 43's runs: the rod joined to the core, and the reconstruction
 across the contact alone (its folders free-a1-joined, free-a1-reconall), and session
 41's alpha = 1 (free-a1). Speeds as session 41's free.py.
 
@@ -27,7 +29,15 @@ RUNS = [  # folder, v (km/s), what
     (os.path.join(S43, 'free-a1-reconall'), 1.29,
      'bodies apart, reconstruct_contact (session 43)'),
     (os.path.join(HERE, 'free-a1-ct'), 1.29,
-     'bodies apart, reconstruct_contact, tension across the contact (HV_CT), to 30 us'),
+     'bodies apart, reconstruct_contact, tension across the contact (HV_CT=1), to 30 us'),
+    (os.path.join(HERE, 'free-a1-ct2'), 1.29,
+     'bodies apart, reconstruct_contact, the pair sum clipped at 0 (HV_CT=2), to 30 us'),
+    (os.path.join(HERE, 'free-a1-dd01'), 1.29,
+     'the cases\' rules, density diffusion delta = 0.1, to 30 us'),
+    (os.path.join(HERE, 'free-a1-norecon'), 1.29,
+     'the standard viscosity everywhere (reconstruct: false), to 30 us'),
+    (os.path.join(HERE, 'free-a1-split'), 1.29,
+     '... every body split from the start (free129-split.yaml), to 30 us'),
 ]
 SPANS = [(10, 20), (10, 30), (20, 30), (30, 50)]
 

@@ -8,3 +8,6 @@ $H run ../../examples/paper/rod-1929.yaml -o pc1929jc --threads 2 --quiet \
   --set sph.viscosity.alpha=0.2 --set sph.viscosity.beta=0.4 > pc1929jc.log 2>&1
 # continue: $H restart pc1929jc --threads 2 --quiet
 # Then: sh ../../docs/runs/s38/rod-jc/remeasure.sh pc1929jc (cavity_min_count: 2)
+# Started 02:50:58 after rod-5835 and interrupted (SIGINT) at 28.2 us, step 713, for the
+# session's studies; out/s44/pc1929jc holds its checkpoint: continue with
+#   ../../build/hvsph restart pc1929jc --threads 2 --quiet   (from out/s44)
