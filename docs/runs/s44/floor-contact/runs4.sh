@@ -21,3 +21,5 @@ else
     --threads 1 --quiet --set time.end=30us
   HV_DDIFF=0.1 $H run $S/r29-case-c10.yaml -o out/s44/r29-dd01 --threads 1 --quiet
 fi
+# (after both lanes) W.P.3's first bumper to 12 us (wp3-base.yaml; 8.21 mm without it):
+#   HV_DDIFF=0.1 build-exp3/hvsph run docs/runs/s33/al-bumper-fracture/wp3-base.yaml -o out/s44/wp3-dd01 --threads 1 --quiet
