@@ -46,7 +46,7 @@ struct sph_params {
   int reconstruct_contact; /* with reconstruct: pairs of different pieces (contact)
                           too, each particle reconstructed by its own piece's gradient */
   double density_diffusion; /* solids: δ of the continuity rate's density diffusion
-                          (Molteni & Colagrossi 2009), δ hᵢⱼ cᵢ Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ,
+                          (Molteni & Colagrossi 2009), δ cᵢ Σⱼ hᵢⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ,
                           ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ², over the pairs of one piece
                           and one condensed material; 0: off */
   const int32_t *piece; /* solids: piece[b] is the body that body b is part of

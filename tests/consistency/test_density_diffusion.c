@@ -1,5 +1,5 @@
 /* test_density_diffusion.c — sph.density_diffusion (the solid pass's continuity rate):
- * the term δ hᵢⱼ cᵢ Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ, ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ² (Molteni &
+ * the term δ cᵢ Σⱼ hᵢⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ, ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ² (Molteni &
  * Colagrossi 2009) is a discrete Laplacian: for a density ρ₀(1 + A sin kx) it adds
  * −δ h c k² ρ₀ A sin kx to dρ/dt.
  *
@@ -101,9 +101,9 @@ static int inside(double x, double y, double z)
 
 int main(void)
 {
-  enum { NMAX = 20000, NF = 6 };
-  double *a[NF * 2];
-  for (int t = 0; t < NF * 2; t++) a[t] = calloc(NMAX, sizeof(double));
+  enum { NMAX = 20000, NA = 11 };
+  double *a[NA];
+  for (int t = 0; t < NA; t++) a[t] = calloc(NMAX, sizeof(double));
   double *d0 = a[0], *d1 = a[1], *h = a[2], *cs = a[3], *x = a[4], *y = a[5], *z = a[6];
   double *du0 = a[7], *du1 = a[8], *dc0 = a[9], *dc1 = a[10];
   size_t n = 0, n2 = 0;
@@ -155,6 +155,6 @@ int main(void)
       CHECK(big <= 1e-9 * smax, "diffusion across two pieces (%.3e)", big);
     }
   }
-  for (int t = 0; t < NF * 2; t++) free(a[t]);
+  for (int t = 0; t < NA; t++) free(a[t]);
   return test_finish();
 }
