@@ -48,7 +48,7 @@ struct sph_params {
   double density_diffusion; /* solids: δ of the continuity rate's density diffusion
                           (Molteni & Colagrossi 2009), δ cᵢ Σⱼ hᵢⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ,
                           ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ², over the pairs of one piece
-                          and one condensed material; 0: off */
+                          and one condensed material, both at ρ ≥ ρ₀/2; 0: off */
   const int32_t *piece; /* solids: piece[b] is the body that body b is part of
                           (bodies[i].part_of); pairs of one piece interact as within
                           one body (stress, tension, velocity gradient), pairs of

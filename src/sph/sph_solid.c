@@ -203,7 +203,11 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const int corr = strong && (sp->grad_correction || (gradv && recon));
         const int sw = p->av;   /* the viscosity switch's gradient, every neighbour */
         double Lsw[9] = {0}, Asw[9] = {0};
-        const int dd = ddelta > 0.0 && cond_i;
+        /* density diffusion between condensed states only (ρ ≥ ρ₀/2 on both sides):
+           an expanded neighbour's volume mⱼ/ρⱼ, hundreds of times its reference volume in
+           debris, would make the explicit term unstable (W.P.3's projectile: ρ < 0 at 6 µs) */
+        const double dd_rho = 0.5 * mi->rho0;
+        const int dd = ddelta > 0.0 && cond_i && rho[i] >= dd_rho;
         double ddiff = 0.0;   /* Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ hᵢⱼ, the density diffusion */
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
@@ -238,8 +242,8 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
              2(ρⱼ − ρᵢ)(xⱼ − xᵢ)·(xᵢ − xⱼ) f/r² = −2(ρⱼ − ρᵢ) f (f < 0): the particle's
              density relaxes towards its neighbours' — a discrete Laplacian of ρ, zero
              in a uniform or linear density field; never across two pieces or two
-             materials, whose densities differ by right */
-          if (dd && bj == bi && p->mat[j] == p->mat[i])
+             materials, whose densities differ by right, nor with expanded material */
+          if (dd && bj == bi && p->mat[j] == p->mat[i] && rho[j] >= dd_rho)
             ddiff -= w * 2.0 * (rho[j] - rho[i]) * 0.5 * (hi + cd.h[q]);
           if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
           if (strong && bj == bi) {

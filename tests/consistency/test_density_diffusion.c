@@ -14,7 +14,10 @@
  *   - two bodies of different uniform densities in contact (the block cut at its
  *     middle, one half at 1.001 ρ₀): no diffusion across the cut (the pairs of two
  *     pieces are left out), so the rates of the particles beside the cut are the
- *     δ = 0 run's.
+ *     δ = 0 run's;
+ *   - one body whose right half is expanded to 0.01 ρ₀ (debris): no diffusion at all —
+ *     the term acts between condensed states only (ρ ≥ ρ₀/2 on both sides); an expanded
+ *     neighbour's volume mⱼ/ρⱼ made it unstable (W.P.3's projectile reached ρ < 0).
  */
 #include <math.h>
 #include <stdio.h>
@@ -53,7 +56,7 @@
     "  - {name: right, material: al, spacing: 0.25 mm,\n" \
     "     shape: {type: box, min: [4 mm, 0, 0], max: [8 mm, 3 mm, 3 mm]}}\n"
 
-enum field { SINE, UNIFORM, CUT };
+enum field { SINE, UNIFORM, CUT, EXPANDED };
 
 /* One step; drho, h, cs and x by particle id (n entries). */
 static int one_step(double delta, enum field f, double *drho, double *h, double *cs, double *x,
@@ -73,6 +76,7 @@ static int one_step(double delta, enum field f, double *drho, double *h, double 
     double r = 1.0;
     if (f == SINE) r += AMP * sin(k * (p->x[0][i] - X0));
     if (f == CUT && p->x[0][i] > 4e-3) r += AMP;
+    if (f == EXPANDED && p->x[0][i] > 4e-3) r = 0.01;
     p->rho[i] = *rho0 * r;
   }
   int ok = !step_init(&s, &err) && !step_advance(&s, &err);
@@ -153,6 +157,15 @@ int main(void)
              big, DELTA * h[0] * cs[0] * rho0 * AMP / (h[0] * h[0]));
       CHECK(near > 10, "particles beside the cut: %ld", near);
       CHECK(big <= 1e-9 * smax, "diffusion across two pieces (%.3e)", big);
+    }
+    /* expanded material (one body, its right half at 0.01 ρ₀): no diffusion with it;
+       the dense half's uniform density gets none from its own side either */
+    if (!one_step(0.0, EXPANDED, dc0, h, cs, x, y, z, &n2, &rho0) &&
+        !one_step(DELTA, EXPANDED, dc1, h, cs, x, y, z, &n2, &rho0)) {
+      double big = 0.0;
+      for (size_t i = 0; i < n2; i++) big = fmax(big, fabs(dc1[i] - dc0[i]));
+      printf("expanded: largest diffusion rate %.3e kg/m3/s\n", big);
+      CHECK(big <= 1e-9 * smax, "diffusion with expanded material (%.3e)", big);
     }
   }
   for (int t = 0; t < NA; t++) free(a[t]);
