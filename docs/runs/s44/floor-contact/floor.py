@@ -38,6 +38,10 @@ RUNS = [  # folder, v (km/s), what
      'the standard viscosity everywhere (reconstruct: false), to 30 us'),
     (os.path.join(HERE, 'free-a1-split'), 1.29,
      '... every body split from the start (free129-split.yaml), to 30 us'),
+    (os.path.join(HERE, 'free-a1-split-dd01'), 1.29,
+     '... split, density diffusion 0.1 (000984d, before the rho0/2 bound), to 30 us'),
+    (os.path.join(HERE, 'free-a02-split'), 1.29,
+     '... split, alpha = 0.2, beta = 0.4, to 30 us'),
 ]
 SPANS = [(10, 20), (10, 30), (20, 30), (30, 50)]
 
