@@ -55,8 +55,9 @@ static int update_eos(struct sim *s, struct hv_error *err)
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (size_t i = 0; i < p->n; i++) {
     struct eos_state st;
-    if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) || eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) ||
-        !isfinite(st.p) || !isfinite(st.cs)) {
+    if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) ||
+        eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) || !isfinite(st.p) ||
+        !isfinite(st.cs)) {
       if ((long)i < bad) bad = (long)i;
       continue;
     }
