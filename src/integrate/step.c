@@ -333,7 +333,7 @@ int step_advance(struct sim *s, struct hv_error *err)
      neighbours: W.P.3 with density diffusion went below 0 at 5 µs with the linear
      update, before the neighbour-volume bound of sph_solid.c); the mass form, the
      exact rate of the summed density, is not proportional to ρ and stays linear */
-  const int logrho = !summed && !s->sph.continuity_mass;
+  const int logrho = !s->sph.continuity_mass;   /* an error with strength or fracture */
   if (!summed) {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++)

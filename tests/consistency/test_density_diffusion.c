@@ -16,8 +16,8 @@
  *     pieces are left out), so the rates of the particles beside the cut are the
  *     δ = 0 run's;
  *   - one body whose right half is expanded to 0.01 ρ₀ (debris): no diffusion at all —
- *     the term acts between condensed states only (ρ ≥ ρ₀/2 on both sides); an expanded
- *     neighbour's volume mⱼ/ρⱼ made it unstable (W.P.3's projectile reached ρ < 0).
+ *     the term acts between condensed states only (ρ ≥ ρ₀/2 on both sides), where it
+ *     was tested.
  */
 #include <math.h>
 #include <stdio.h>

@@ -7,12 +7,12 @@
  *   - f = 1: the particles in the block's middle (more than 2 mm inside) get
  *     D = (dρ/dt)/ρ = −3A to within the lattice's sum Σⱼ Vⱼ (xⱼ − xᵢ)⊗∇ᵢWᵢⱼ ≈ I
  *     (within TOL_REF);
- *   - f = 0.05 (debris whose densities say it fills twenty times the space it does, h
- *     2.7 times as long): each neighbour counts with at most twice its reference
+ *   - f = 0.05 (debris whose densities say it fills twenty times the space it does; h
+ *     stays the lattice's, as step_init does not recompute it): each neighbour counts with at most twice its reference
  *     volume, 2mⱼ/ρ₀ⱼ, so D is twice the f = 1 value (within TOL_CAP). With each
  *     neighbour's own volume mⱼ/ρⱼ it would be twenty times: a cluster of expanding
  *     debris whose volumes overlap fed its own expansion, W.P.3's projectile with density
- *     diffusion went from 465 kg/m³ to 0 in 150 steps;
+ *     diffusion went from 465 kg/m³ to 0 in 210 steps;
  *   - every particle's new density is ρⁿ exp(Δt Dρ/ρⁿ) (to 10⁻¹²): positive whatever the
  *     rate (the linear ρⁿ + Δt Dρ is not).
  */
