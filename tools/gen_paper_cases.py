@@ -69,7 +69,7 @@ BACKWALL_DISC = (40, 4)
 #   Adopted in session 46 (docs/validation.md, "The projectile's spacing against the
 #   plate's disc"): at the paper's counts the projectiles of 2.4, W.P.2 and W.P.3 were
 #   1.8, 1.27 and 1.27 times coarser than the discs; matched, the holes at 12 us move
-#   from 12.60 to 12.13 mm (2.4), 17.33 to 16.63 (W.P.2) and 8.21 to 8.15 (W.P.3).
+#   from 12.60 to 12.13 mm (2.4), 17.33 to 16.63 (W.P.2) and 8.20 to 8.15 (W.P.3).
 #   W.P.1's projectile is already finer than its disc (0.254 against 0.3 mm): a finer one
 #   still (0.2 mm) leaves its hole at 11.14 mm. False: the paper's counts.
 PROJECTILE_MATCH = True
