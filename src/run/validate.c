@@ -241,8 +241,8 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
                  "of each run are in its `used_parameters.yaml` and log.\n\n", HVSPH_VERSION);
   else
     afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
-                 "of the paper's (resolution %g), %d threads.\n\n", HVSPH_VERSION, scale, scale,
-                 omp_get_max_threads());
+                 "of the paper's (resolution %g), %d thread%s.\n\n", HVSPH_VERSION, scale, scale,
+                 omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s");
   if (ov->nsets + ov->nswaps) {
     afile_printf(&af, err, "Every case run with");
     for (int k = 0; k < ov->nswaps; k++)
@@ -288,10 +288,11 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
                  "KERNEL code %.1f %%. Rows marked ² are a second reading of an experimental "
                  "value already counted and are left out of the mean.\n", n_both,
                  100 * sum_us / n_both, 100 * sum_paper / n_both);
-  afile_printf(&af, err, "\n¹ notes:\n\n");
+  int noted = 0;   /* the notes' heading only where a row has one */
   for (int k = 0; k < nrows; k++)
     if (rows[k].note[0])
-      afile_printf(&af, err, "- %s, %s: %s\n", rows[k].cas, rows[k].quantity, rows[k].note);
+      afile_printf(&af, err, "%s- %s, %s: %s\n", noted++ ? "" : "\n¹ notes:\n\n", rows[k].cas,
+                   rows[k].quantity, rows[k].note);
   afile_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
   for (int k = 0; k < ncase; k++) {
     char rt[64];

@@ -117,6 +117,8 @@ int main(void)
   char *md = test_slurp(path, NULL);
   CHECK(st == 0 && md && strstr(md, "| bumper-1 | hole_diameter (bumper) |"),
         "validate --no-run writes validation.md with the case (exit %d)", st);
+  /* bumper-1's rows have no notes: no notes heading (W.P.3's below has one) */
+  CHECK(md && !strstr(md, "notes:"), "validation.md without noted rows has no notes heading");
   free(md);
   /* validate --material / --set: every selected case runs with them, and validation.md
      says so at its head (here bumper-1's plate of the projectile's steel, to 1 us at
@@ -205,7 +207,8 @@ int main(void)
   md = test_slurp(path, NULL);
   CHECK(st == 0 && md && strstr(md, "over the 2 quantities") &&
             strstr(md, "hvsph 55.0 %, the paper's KERNEL code 10.3 %") &&
-            strstr(md, "cloud_half_angle_front (cloud:bumper1) ¹ ² | 33 "),
+            strstr(md, "cloud_half_angle_front (cloud:bumper1) ¹ ² | 33 ") &&
+            strstr(md, "\n¹ notes:\n\n- wp3, cloud_half_angle_front: "),
         "validate's mean error counts the front spray angle's row (marked ²) not a second "
         "time (exit %d):\n%s", st, md ? md : "(no validation.md)");
   free(md);
