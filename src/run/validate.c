@@ -291,8 +291,8 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   int noted = 0;   /* the notes' heading only where a row has one */
   for (int k = 0; k < nrows; k++)
     if (rows[k].note[0])
-      afile_printf(&af, err, "%s- %s, %s: %s\n", noted++ ? "" : "\n¹ notes:\n\n", rows[k].cas,
-                   rows[k].quantity, rows[k].note);
+      afile_printf(&af, err, "%s- %s, %s (%s): %s\n", noted++ ? "" : "\n¹ notes:\n\n",
+                   rows[k].cas, rows[k].quantity, rows[k].object, rows[k].note);
   afile_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
   for (int k = 0; k < ncase; k++) {
     char rt[64];

@@ -208,7 +208,7 @@ int main(void)
   CHECK(st == 0 && md && strstr(md, "over the 2 quantities") &&
             strstr(md, "hvsph 55.0 %, the paper's KERNEL code 10.3 %") &&
             strstr(md, "cloud_half_angle_front (cloud:bumper1) ¹ ² | 33 ") &&
-            strstr(md, "\n¹ notes:\n\n- wp3, cloud_half_angle_front: "),
+            strstr(md, "\n¹ notes:\n\n- wp3, cloud_half_angle_front (cloud:bumper1): "),
         "validate's mean error counts the front spray angle's row (marked ²) not a second "
         "time (exit %d):\n%s", st, md ? md : "(no validation.md)");
   free(md);
