@@ -114,6 +114,13 @@ def model_block(body):
     return "\n".join(lines) + "\n"
 
 
+def disc_spacing(t, disc_r, layers=None):
+    """The spacing of a plate's refined disc (PLATE_LAYERS), or None without one."""
+    if PLATE_LAYERS is None or disc_r is None:
+        return None
+    return t / (layers or PLATE_LAYERS)
+
+
 def plate_bodies(name, mat, x0, t, w, count, disc_r, layers=None):
     """YAML of a thin plate x0 <= x <= x0 + t, |y|, |z| <= w, given by its particle count,
     and (PLATE_LAYERS, disc_r not None) its disc of radius disc_r around the impact axis
@@ -132,7 +139,7 @@ def plate_bodies(name, mat, x0, t, w, count, disc_r, layers=None):
     # count's spacing, rounded to whole layers (up), gives PLATE_LAYERS (and more at a
     # finer --scale)
     layers = layers or PLATE_LAYERS
-    dx = t / layers
+    dx = disc_spacing(t, disc_r, layers)
     n_disc = int(round(0.8 * 0.5 * math.pi * disc_r ** 2 * t / dx ** 3))
     # the ring's count: the plate's, less the disc's share, less 5 % for the lattice
     # points the disc's curved edge cuts off, so that it keeps the plain plate's layers
@@ -338,13 +345,6 @@ def projectile_count(d, mat, count, plate_mat, dx):
                "script."]
 
 
-def disc_spacing(t, disc_r, layers=None):
-    """The spacing of a plate's refined disc (PLATE_LAYERS), or None without one."""
-    if PLATE_LAYERS is None or disc_r is None:
-        return None
-    return t / (layers or PLATE_LAYERS)
-
-
 # ---------------------------------------------------------------- Whipple shields (2.4, 2.5)
 def plate_spacing(t, w, count):
     """The spacing the solver gives a half-model plate of thickness t, half-width w (mm)
@@ -365,8 +365,7 @@ def backwall_count(proj, d, plates, pcounts):
     projectile's, each plate's or its disc's); returns the header's note."""
     masses = [RHO0[proj] * math.pi / 12 * d ** 3 / pcounts[0]]   # half sphere, mm3 x kg/m3
     for k, (pname, mat, x0, t, w, disc_r, lay) in enumerate(map(plate_tuple, plates[:-1])):
-        dx = t / lay if (PLATE_LAYERS is not None and disc_r is not None) \
-            else plate_spacing(t, w, pcounts[k + 1])
+        dx = disc_spacing(t, disc_r, lay) or plate_spacing(t, w, pcounts[k + 1])
         masses.append(RHO0[mat] * dx ** 3)
     pname, mat, x0, t, w, _, _ = plate_tuple(plates[-1])
     paper = RHO0[mat] * plate_spacing(t, w, pcounts[-1]) ** 3 / min(masses)
