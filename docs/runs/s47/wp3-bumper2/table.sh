@@ -1,10 +1,12 @@
 #!/bin/sh
 # Session 47: the second bumper's hole over time in each lane of runs.sh (and the first
-# bumper's, and the first cloud, as a check that the lanes meet the same cloud).
+# bumper's, and the first cloud, as a check that the lanes meet the same cloud), from
+# out/s47/b2-LANE or the copy committed beside this script.
 # Usage (from the repository root): sh docs/runs/s47/wp3-bumper2/table.sh [LANE...]
-lanes=${*:-one two}
+lanes=${*:-one two three cloud040 cloud016}
 for l in $lanes; do
     f=out/s47/b2-$l/measurements.csv
+    [ -f "$f" ] || f=docs/runs/s47/wp3-bumper2/$l/measurements.csv   # the committed copy
     [ -f "$f" ] || continue
     echo "== $l"
     awk -F, 'NR > 2 && ($5 == "bumper2" || $5 == "bumper1") &&
