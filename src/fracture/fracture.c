@@ -1,6 +1,9 @@
 /* fracture.c — see fracture.h. */
 #include "fracture/fracture.h"
 
+#include <math.h>
+
+#include "particles/particles.h"
 #include "strength/sym3.h"
 
 double fracture_max_principal(double p, const double S[6])
@@ -10,9 +13,15 @@ double fracture_max_principal(double p, const double S[6])
   return lam[0];
 }
 
+int fracture_cracked(const struct fracture_params *fp, double damage)
+{
+  return fp->split == SPLIT_CRACK && damage >= 1.0 && damage < 2.0;
+}
+
 int fracture_keeps_stress(const struct fracture_params *fp, double damage)
 {
-  return damage < 1.0 || fp->friction > 0.0 || fp->split == SPLIT_NO_TENSION;
+  return damage < 1.0 || fp->friction > 0.0 || fp->split == SPLIT_NO_TENSION ||
+         fracture_cracked(fp, damage);
 }
 
 int fracture_no_tension(const struct fracture_params *fp, double damage)
@@ -22,7 +31,7 @@ int fracture_no_tension(const struct fracture_params *fp, double damage)
 
 double fracture_yield(const struct fracture_params *fp, double damage, double Y, double p)
 {
-  if (damage < 1.0 || fp->split == SPLIT_NO_TENSION) return Y;
+  if (damage < 1.0 || fp->split == SPLIT_NO_TENSION || fracture_cracked(fp, damage)) return Y;
   const double Yd = fp->friction * (p > 0.0 ? p : 0.0);
   return Yd < Y ? Yd : Y;
 }
@@ -67,4 +76,80 @@ double fracture_tension(const struct fracture_params *fp, double damage, double 
   if (fp->kind == FRACTURE_TRESCA) return over ? 1.0 : damage;
   if (over) damage += fp->tau > 0 ? dt / fp->tau : 1.0;
   return damage >= 1.0 ? 1.0 : damage;
+}
+
+void fracture_crack_normal(double p, const double S[6], double n[3])
+{
+  double sig[6] = {S[0] - p, S[1] - p, S[2] - p, S[3], S[4], S[5]}, lam[3], Q[9];
+  sym3_eigen(sig, lam, Q);
+  /* the eigenvector of lam[0], the largest: Q's first column (sym3.h) */
+  n[0] = Q[0];
+  n[1] = Q[3];
+  n[2] = Q[6];
+  const double r = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (r > 0.0 && isfinite(r)) {
+    for (int k = 0; k < 3; k++) n[k] /= r;
+  } else {
+    n[0] = 1.0;
+    n[1] = n[2] = 0.0;
+  }
+}
+
+void fracture_crack_rotate(double n[3], const double L[9], double dt)
+{
+  double m[3];
+  for (int a = 0; a < 3; a++) {
+    double w = 0.0;   /* (Ω n)_a = Σ_b ½(L_ab − L_ba) n_b */
+    for (int b = 0; b < 3; b++) w += 0.5 * (L[3 * a + b] - L[3 * b + a]) * n[b];
+    m[a] = n[a] + dt * w;
+  }
+  const double r = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+  if (!(r > 0.0) || !isfinite(r)) return;
+  for (int a = 0; a < 3; a++) n[a] = m[a] / r;
+}
+
+double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
+                             double K, double G, double S[6], double n[3], double *eps_c,
+                             double *dp)
+{
+  *dp = 0.0;
+  if (d < 1.0 || d >= 2.0) return d;
+  if (d0 < 1.0) {   /* split in this step: the crack */
+    fracture_crack_normal(p, S, n);
+    *eps_c = 0.0;
+  }
+  /* nᵀSn, and the crack strain that returns σ_nn = −p + nᵀSn to 0 (not below ε_c = 0) */
+  const double Sn[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
+                        S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
+                        S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+  const double snn = -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
+  const double M = K + 4.0 / 3.0 * G;
+  double de = M > 0.0 ? snn / M : 0.0;
+  if (*eps_c + de < 0.0) de = -*eps_c;
+  if (de != 0.0) {
+    *eps_c += de;
+    const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
+    for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * de * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
+    *dp = K * de;
+  }
+  if (*eps_c > 0.0) {   /* open: no shear traction on the plane, t_s = Sn − (nᵀSn) n */
+    const double t[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
+                         S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
+                         S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+    const double tn = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
+    const double ts[3] = {t[0] - tn * n[0], t[1] - tn * n[1], t[2] - tn * n[2]};
+    S[T_XX] -= 2.0 * ts[0] * n[0];
+    S[T_YY] -= 2.0 * ts[1] * n[1];
+    S[T_ZZ] -= 2.0 * ts[2] * n[2];
+    S[T_XY] -= ts[0] * n[1] + n[0] * ts[1];
+    S[T_YZ] -= ts[1] * n[2] + n[1] * ts[2];
+    S[T_XZ] -= ts[0] * n[2] + n[0] * ts[2];
+  }
+  if (fp->sigma_c < 0.0 && fracture_max_principal(p + *dp, S) > -fp->sigma_c) {
+    for (int k = 0; k < 6; k++) S[k] = 0.0;   /* split again: fluid */
+    n[0] = n[1] = n[2] = 0.0;
+    *eps_c = 0.0;
+    return 2.0;
+  }
+  return 1.0;
 }

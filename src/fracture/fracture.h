@@ -17,6 +17,19 @@
  * The state (ρ, e, S) is not projected within a step — p stays the EOS's, S the
  * updated deviator — only the stress the forces and the heating use; at the end of
  * the step S takes the deviator of σ' (the elastic stress a crack releases).
+ * Split along a crack (option, fracture.split: crack; a smeared crack): a particle
+ * that splits cracks across the plane normal to its largest principal tension (the
+ * unit normal n, stored per particle and turned with the material's spin, ṅ = Ωn).
+ * The crack opens by a strain ε_c >= 0 of its own (a distension, as porosity: the
+ * material's density is ρ_m = ρ e^{ε_c}, and the EOS takes ρ_m), so that the open
+ * plane carries no traction: at the end of each step the normal stress σ_nn = nᵀσn is
+ * returned to 0 by Δε_c = σ_nn/M (M = K + 4G/3, the uniaxial-strain modulus; the
+ * material's stress changes by −Δε_c (K I + 2G dev(nnᵀ))), bounded by ε_c >= 0 (a
+ * closed crack carries compression), and while it is open the shear traction on the
+ * plane is released. Within its plane the material keeps its stress, tension included,
+ * and its strength: a spalled plate keeps its membrane tension. When the largest
+ * principal stress within the plane exceeds |σ_c| the particle splits a second time
+ * and is split fluid (the default rule). D = 1 marks the cracked state, D = 2 the fluid.
  * Cumulative (option): D grows with plastic strain, ΔD = Δε_p/ε_f, and with time
  * under tension beyond |σ_c|, ΔD = Δt/τ; the particle splits when D reaches 1.
  */
@@ -31,10 +44,11 @@ double fracture_plastic(const struct fracture_params *fp, double damage, double 
 double fracture_tension(const struct fracture_params *fp, double damage, double p,
                         const double S[6], double dt);
 /* Whether a particle of damage D keeps a deviatoric stress: intact (D < 1), split with
- * friction > 0, or split without tension. (The material must have strength as well.) */
+ * friction > 0, split without tension, or cracked once (split: crack, 1 <= D < 2). (The
+ * material must have strength as well.) */
 int fracture_keeps_stress(const struct fracture_params *fp, double damage);
 /* Yield stress [Pa] of a particle of damage D whose intact yield stress is Y and
- * pressure p: Y while D < 1 or split without tension; once split (fluid),
+ * pressure p: Y while D < 1, split without tension or cracked once; once split (fluid),
  * min(Y, μ max(p, 0)) (0 without friction). */
 double fracture_yield(const struct fracture_params *fp, double damage, double Y, double p);
 /* Whether particle of damage D is split with fracture.split: no-tension. */
@@ -47,5 +61,26 @@ int fracture_project(double p, double T[6]);
 double fracture_effective(double p, const double S[6], double Se[6]);
 /* Largest principal stress of σ = −p I + S [Pa], tension positive. */
 double fracture_max_principal(double p, const double S[6]);
+
+/* Whether a particle of damage D is cracked once with fracture.split: crack (1 <= D < 2). */
+int fracture_cracked(const struct fracture_params *fp, double damage);
+/* The unit normal of the largest principal stress of σ = −pI + S (the crack's plane). */
+void fracture_crack_normal(double p, const double S[6], double n[3]);
+/* Turns the crack normal n with the spin Ω = ½(L − Lᵀ) over dt (L[3a+b] = ∂v_a/∂x_b):
+ * n ← (n + dt Ω n)/|n + dt Ω n|. */
+void fracture_crack_rotate(double n[3], const double L[9], double dt);
+/* The end of a step with fracture.split: crack. d0 the damage at the step's start, d the
+ * damage after the tensile test (fracture_tension); p, S the end-of-step pressure and
+ * deviator, K and G the bulk and shear moduli, n the crack normal and *eps_c the crack
+ * strain. A particle split in this step (d0 < 1 <= d) cracks across its largest principal
+ * tension (n, ε_c = 0). A cracked one's crack opens or closes by Δε_c = σ_nn/(K + 4G/3)
+ * (ε_c >= 0): S −= 2G Δε_c dev(nnᵀ), and the pressure rises by about K Δε_c (*dp; the
+ * caller evaluates the EOS again at ρ e^{ε_c}); while open, the shear traction on the
+ * plane is removed from S. If then the largest principal stress of −(p + dp)I + S
+ * exceeds |σ_c| (σ_c < 0), the particle splits again: D = 2 (fluid), S = 0, n = 0,
+ * ε_c = 0. Returns the new damage. */
+double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
+                             double K, double G, double S[6], double n[3], double *eps_c,
+                             double *dp);
 
 #endif

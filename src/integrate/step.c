@@ -55,15 +55,20 @@ static int update_eos(struct sim *s, struct hv_error *err)
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (size_t i = 0; i < p->n; i++) {
     struct eos_state st;
+    const struct material *m = &s->mat[p->mat[i]];
+    /* cracked (fracture.split: crack): the material's density, without the crack's
+       opening, ρ e^{ε_c} (fracture.h) */
+    const int cracked = p->cracks && fracture_cracked(&m->frac, p->damage[i]);
+    const double rho_m = cracked ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];
     if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) ||
-        eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st) || !isfinite(st.p) ||
-        !isfinite(st.cs)) {
+        eos_evaluate(m, rho_m, p->e[i], &st) || !isfinite(st.p) || !isfinite(st.cs)) {
       if ((long)i < bad) bad = (long)i;
       continue;
     }
-    const struct material *m = &s->mat[p->mat[i]];
-    /* split: no tension (fracture.split: no-tension removes it from σ instead) */
-    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0 && m->frac.split != SPLIT_NO_TENSION)
+    /* split: no tension (fracture.split: no-tension removes it from σ instead, and a
+       cracked particle keeps the material's tension within its crack's plane) */
+    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0 && m->frac.split != SPLIT_NO_TENSION &&
+        !cracked)
       st.p = 0.0;
     if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->damage[i])))
       st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
@@ -214,7 +219,23 @@ static long end_stress(struct sim *s, double dt)
     const struct material *m = &s->mat[p->mat[i]];
     const double d0 = p->damage[i];
     p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
-    if (fracture_no_tension(&m->frac, p->damage[i])) {
+    if (m->frac.split == SPLIT_CRACK && p->damage[i] >= 1.0) {
+      /* split along a crack (fracture.h): cracked now, the crack opened or closed to
+         carry no normal stress, or split again (fluid, damage 2: S = 0, no tension);
+         the pressure then moves, so the EOS is evaluated again */
+      if (p->damage[i] < 2.0) {
+        double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, ec = p->eps_c[i], dp;
+        const double rho_m = p->rho[i] * exp(ec), G = m->str.G;
+        const double M = rho_m * p->cs[i] * p->cs[i];   /* cs: the longitudinal speed */
+        const double K = fmax(M - 4.0 / 3.0 * G, 0.0);
+        p->damage[i] = fracture_crack_return(&m->frac, d0, p->damage[i], p->p[i], K, G, S, n,
+                                             &ec, &dp);
+        for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
+        p->eps_c[i] = ec;
+        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
+        splits += dp != 0.0 || (p->damage[i] >= 2.0 && p->p[i] < 0.0);
+      }
+    } else if (fracture_no_tension(&m->frac, p->damage[i])) {
       /* split without tension: the deviator of σ with its principal tensions removed
          (the pressure stays the EOS's; each step's forces remove its tension again) */
       double Se[6];

@@ -144,6 +144,7 @@ struct csv_reader {
   int nknown;  /* entries in cols[] */
   int solid;   /* the file has solid fields (PF_SOLID) */
   int av;      /* the file has the viscosity switch's fields (PF_AV) */
+  int crack;   /* the file has the crack normals (PF_CRACK) */
   const struct pfield *fields;  /* particles_fields_all() view the cols refer to */
   struct csv_col cols[CSV_MAX_COLS];
 };
@@ -184,6 +185,7 @@ static int csv_header(struct csv_reader *r, char *line, struct hv_error *err)
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_SOLID))
       r->solid = 1;  /* a solid field in the file: the store needs its solid arrays */
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_AV)) r->av = 1;
+    if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_CRACK)) r->crack = 1;
   }
   for (int k = 0; k < 4; k++)
     if (!have[k])
@@ -266,6 +268,7 @@ static int csv_lines(struct csv_reader *r, FILE *f, struct particles *p, double 
     rc = r->map ? csv_row(r, p, line, err) : csv_header(r, line, err);
     if (!rc && r->solid) particles_enable_solid(p);
     if (!rc && r->av) particles_enable_av(p);
+    if (!rc && r->crack) particles_enable_crack(p);
     errno = 0;
   }
   if (rc == 0 && ferror(f))

@@ -268,7 +268,7 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
     rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no closing </VTKFile> at its end (the file "
                       "was cut short?)", path);
   const struct vtu_array *ax = NULL, *aid = NULL;
-  int solid = 0, av = 0;
+  int solid = 0, av = 0, crack = 0;
   struct pfield fv[HV_MAX_FIELDS];
   const int nf = particles_fields_all(NULL, fv);
   int match[VTU_MAX_ARRAYS];
@@ -289,6 +289,7 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
       if (!strcmp(a->name, "id")) aid = a;
       if (fv[j].flags & PF_SOLID) solid = 1;
       if (fv[j].flags & PF_AV) av = 1;
+      if (fv[j].flags & PF_CRACK) crack = 1;
     }
   }
   if (!rc && !ax) rc = bad(err, path, "no point positions (array 'x')");
@@ -301,6 +302,7 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
   if (!rc) {
     if (solid) particles_enable_solid(p);
     if (av) particles_enable_av(p);
+    if (crack) particles_enable_crack(p);
     const size_t first = particles_add(p, vh->n);
     struct pfield f[HV_MAX_FIELDS];
     particles_fields_all(p, f);   /* after particles_add: the arrays may have moved */

@@ -244,7 +244,8 @@ void material_print(FILE *f, const struct material *m)
     pq(f, "tau", fr->tau, "s");
   }
   if (fr->kind != FRACTURE_NONE && fr->friction > 0.0) pq(f, "friction", fr->friction, "");
-  if (fr->kind != FRACTURE_NONE && fr->split == SPLIT_NO_TENSION) fprintf(f, "  split: no-tension\n");
+  if (fr->kind != FRACTURE_NONE && fr->split != SPLIT_FLUID)
+    fprintf(f, "  split: %s\n", fr->split == SPLIT_NO_TENSION ? "no-tension" : "crack");
 }
 
 /* ---------------------------------------------------------------- hvsph materials */

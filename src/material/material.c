@@ -29,7 +29,7 @@ const char *const eos_kind_names[] = {"ideal-gas", "mie-gruneisen", "tillotson",
 
 static const char *const yield_names[] = {"constant", "linear", "johnson-cook", NULL};
 static const char *const fracture_names[] = {"none", "tresca", "cumulative", NULL};
-static const char *const split_names[] = {"fluid", "no-tension", NULL};
+static const char *const split_names[] = {"fluid", "no-tension", "crack", NULL};
 
 /* "path.key" into buf. */
 static const char *key_of(char *buf, size_t len, const char *path, const char *key)
@@ -359,13 +359,15 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
     if (cfg_get_choice(c, key_of(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
       return -1;
     f->split = (enum split_kind)split;
-    if (f->split == SPLIT_NO_TENSION && !m->str.enabled)
-      return key_error(c, k, err, "split: no-tension keeps the deviatoric stress of split "
+    const char *sname = split_names[f->split];
+    if (f->split != SPLIT_FLUID && !m->str.enabled)
+      return key_error(c, k, err, "split: %s keeps the deviatoric stress of split "
                        "material, but the material has no strength (give strength with "
-                       "shear modulus and yield > 0)");
-    if (f->split == SPLIT_NO_TENSION && f->friction > 0.0)
-      return key_error(c, k, err, "split: no-tension keeps the yield stress of split material; "
-                       "friction (which limits it to min(Y, mu p)) applies to split: fluid only");
+                       "shear modulus and yield > 0)", sname);
+    if (f->split != SPLIT_FLUID && f->friction > 0.0)
+      return key_error(c, k, err, "split: %s keeps the yield stress of split material; "
+                       "friction (which limits it to min(Y, mu p)) applies to split: fluid only",
+                       sname);
   }
   return 0;
 }

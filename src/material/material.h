@@ -73,8 +73,11 @@ enum fracture_kind { FRACTURE_NONE = 0, FRACTURE_TRESCA, FRACTURE_CUMULATIVE, FR
 /* What a split particle (D = 1) carries: FLUID, no deviatoric stress and no tension
    (the paper's rule as hvsph reads it); NO_TENSION, its stress as if intact with the
    principal tensions removed: cracks open under tension and close under compression,
-   where the material keeps its yield stress. */
-enum split_kind { SPLIT_FLUID = 0, SPLIT_NO_TENSION, SPLIT_KIND_COUNT };
+   where the material keeps its yield stress; CRACK, one crack across the largest
+   principal tension, which opens (a crack strain, not the material's) so that its plane
+   carries no traction, while the material keeps its stress within the plane up to
+   |sigma_c|, then fluid (damage 2; fracture.h). */
+enum split_kind { SPLIT_FLUID = 0, SPLIT_NO_TENSION, SPLIT_CRACK, SPLIT_KIND_COUNT };
 
 struct fracture_params {
   enum fracture_kind kind;

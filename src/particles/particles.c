@@ -51,7 +51,8 @@ int particles_fields_all(struct particles *p, struct pfield *out) { return all_f
 
 static int field_allocated(const struct particles *p, const struct pfield *f)
 {
-  return (!(f->flags & PF_SOLID) || p->solid) && (!(f->flags & PF_AV) || p->av);
+  return (!(f->flags & PF_SOLID) || p->solid) && (!(f->flags & PF_AV) || p->av) &&
+         (!(f->flags & PF_CRACK) || p->cracks);
 }
 
 int particles_fields(struct particles *p, struct pfield *out)
@@ -69,7 +70,7 @@ size_t particles_bytes_per_particle(const struct particles *p)
   int nf = all_fields(NULL, f);
   size_t b = 0;
   for (int i = 0; i < nf; i++)
-    if (p ? field_allocated(p, &f[i]) : !(f[i].flags & (PF_SOLID | PF_AV)))
+    if (p ? field_allocated(p, &f[i]) : !(f[i].flags & (PF_SOLID | PF_AV | PF_CRACK)))
       b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }
@@ -145,6 +146,13 @@ void particles_enable_av(struct particles *p)
   if (p->av) return;
   p->av = 1;
   if (p->cap) reserve_to(p, p->cap);   /* allocates the switch's fields only */
+}
+
+void particles_enable_crack(struct particles *p)
+{
+  if (p->cracks) return;
+  p->cracks = 1;
+  if (p->cap) reserve_to(p, p->cap);   /* allocates the crack normals only */
 }
 
 size_t particles_add(struct particles *p, size_t count)

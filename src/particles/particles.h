@@ -11,6 +11,7 @@
  *   PF_STATE   part of the physical state (checkpoint/restart, MPI migration)
  *   PF_SOLID   allocated only when some material has strength or fracture
  *   PF_AV      allocated only with the viscosity switch (sph.viscosity.switch)
+ *   PF_CRACK   allocated only when a material splits along cracks (fracture.split: crack)
  * Tensors are symmetric, 6 components in VTK's order: xx, yy, zz, xy, yz, xz.
  */
 #ifndef HV_PARTICLES_H
@@ -25,6 +26,7 @@ enum {
   PF_STATE = 1u << 2,
   PF_SOLID = 1u << 3,
   PF_AV = 1u << 4,
+  PF_CRACK = 1u << 5,
 };
 
 /* Components of a symmetric tensor (VTK order). */
@@ -49,16 +51,18 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  vol,   "m3",     0,                            "m/rho (per pass, all slots)") \
   X(double,  pr2,   "m5/kg/s2", 0,                          "p/rho^2 (per pass, all slots)") \
   X(double,  eps_p, "",       PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain") \
-  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split, no tension)") \
+  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split; 2: split again, fracture.split: crack)") \
   X(double,  alpha, "",       PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)") \
-  X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step")
+  X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step") \
+  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack)")
 
 /* Vectors (3 components: name[0..2]) */
 #define HV_PARTICLE_VECTORS(X)                                                        \
   X(double, x,  "m",    PF_OUT | PF_GHOST | PF_STATE, "position")                    \
   X(double, v,  "m/s",  PF_OUT | PF_GHOST | PF_STATE, "velocity")                    \
   X(double, a,  "m/s2", PF_STATE,                     "acceleration (last step)")    \
-  X(double, v0, "m/s",  0,                            "velocity at step start")
+  X(double, v0, "m/s",  0,                            "velocity at step start")      \
+  X(double, crack, "",  PF_OUT | PF_STATE | PF_CRACK,  "crack normal (fracture.split: crack; 0: none)")
 
 /* Symmetric tensors (6 components: name[0..5], order T_XX ... T_XZ) */
 #define HV_PARTICLE_TENSORS(X)                                                        \
@@ -71,6 +75,7 @@ enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
 struct particles {
   int solid;       /* the PF_SOLID fields are allocated */
   int av;          /* the PF_AV fields are allocated */
+  int cracks;      /* the PF_CRACK fields are allocated */
   size_t n;        /* real particles */
   size_t n_ghost;  /* ghosts after the reals */
   size_t cap;      /* allocated length of every array */
@@ -114,6 +119,8 @@ void particles_init(struct particles *p);
 void particles_enable_solid(struct particles *p);
 /* Allocates the PF_AV fields (zeroed) from now on. */
 void particles_enable_av(struct particles *p);
+/* Allocates the PF_CRACK fields (zeroed) from now on. */
+void particles_enable_crack(struct particles *p);
 void particles_free(struct particles *p);
 /* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
 void particles_reserve(struct particles *p, size_t cap);

@@ -364,6 +364,10 @@ static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t f
     p->h[q] = h;
     p->e[q] = bs->e;
     if (p->solid) p->damage[q] = bs->damage;
+    /* split at the start with fracture.split: crack: no crack is known, so split fluid
+       (damage 2, fracture.h) */
+    if (p->solid && bs->damage >= 1.0 && s->mat[bs->mat].frac.split == SPLIT_CRACK)
+      p->damage[q] = 2.0;
     double r[3], rn = 0.0;
     for (int c = 0; c < 3; c++) {
       r[c] = p->x[c][q] - bs->shape.center[c];
@@ -738,6 +742,10 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
       particles_enable_solid(&s->p);
   /* each particle's viscosity coefficient and last velocity divergence (the switch) */
   if (!rc && s->sph.av_switch) particles_enable_av(&s->p);
+  /* each particle's crack normal (fracture.split: crack) */
+  for (int m = 0; m < s->nmat && !rc; m++)
+    if (s->mat[m].frac.kind != FRACTURE_NONE && s->mat[m].frac.split == SPLIT_CRACK)
+      particles_enable_crack(&s->p);
   if (!rc && s->sph.summation && s->p.solid) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
                       "strength or fracture (a free surface of a solid would lose density); "

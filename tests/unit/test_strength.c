@@ -130,6 +130,135 @@ static void test_no_tension(void)
         "no-tension: p and S unchanged without tension");
 }
 
+/* split: crack — the smeared crack's return (fracture.h). Moduli K, G of al-alloy's
+ * order; M = K + 4G/3. */
+static double sig_nn(double p, const double S[6], const double n[3])
+{
+  const double t[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
+                       S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
+                       S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+  return -p + t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
+}
+
+static void test_crack(void)
+{
+  struct fracture_params cr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_CRACK};
+  CHECK(fracture_cracked(&cr, 1.0) && !fracture_cracked(&cr, 0.99) && !fracture_cracked(&cr, 2.0),
+        "crack: cracked at D = 1, intact below, fluid at D = 2");
+  CHECK(fracture_keeps_stress(&cr, 1.0) && !fracture_keeps_stress(&cr, 2.0),
+        "crack: a cracked particle keeps its stress, a twice-split one none");
+  CHECK(fracture_yield(&cr, 1.0, 0.383e9, -1e8) == 0.383e9 &&
+        fracture_yield(&cr, 2.0, 0.383e9, 1e9) == 0.0, "crack: cracked keeps Y, fluid has none");
+  CHECK(!fracture_no_tension(&cr, 1.0), "crack is not no-tension");
+  const double K = 76e9, G = 26e9, M = K + 4.0 / 3.0 * G;
+  /* uniaxial strain ε along y (elastic): p = −Kε, S = 2Gε dev(e_y e_y), σ_yy = Mε =
+     0.5 GPa: it cracks across y, and the crack's opening ε_c = ε takes the whole
+     strain: σ = 0 after (dp = Kε) */
+  const double eps = 0.5e9 / M;
+  double S[6] = {-2 * G * eps / 3, 4 * G * eps / 3, -2 * G * eps / 3, 0, 0, 0}, n[3] = {0, 0, 0};
+  double ec = 0.0, dp = 0.0, p = -K * eps;
+  double d = fracture_crack_return(&cr, 0.0, fracture_tension(&cr, 0.0, p, S, 1e-9), p, K, G, S,
+                                   n, &ec, &dp);
+  double smax = 0.0;
+  for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(S[k]));
+  CHECK(d == 1.0 && fabs(fabs(n[1]) - 1.0) < 1e-12, "crack: uniaxial strain in y cracks across y "
+        "(D = %g, n = (%g, %g, %g))", d, n[0], n[1], n[2]);
+  CHECK(fabs(ec - eps) < 1e-12 * eps && smax < 1e-6 * 0.5e9 && fabs(p + dp) < 1e-6 * 0.5e9,
+        "crack: the opening takes the whole uniaxial strain (ε_c/ε = %.12f, |S| %g Pa, p + dp "
+        "= %g Pa)", ec / eps, smax, p + dp);
+  /* in-plane tension with the crack's plane traction-free (plane stress, σ_xx = 0 across
+     a crack normal to x): carried, nothing moves, below |σ_c| */
+  const double T = 0.3e9;   /* σ = diag(0, T, T) = −pI + S */
+  double Sm[6] = {-2 * T / 3, T / 3, T / 3, 0, 0, 0}, nx[3] = {1, 0, 0}, S0[6];
+  for (int k = 0; k < 6; k++) S0[k] = Sm[k];
+  ec = 0.0;
+  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T / 3, K, G, Sm, nx, &ec, &dp);
+  CHECK(d == 1.0 && ec == 0.0 && dp == 0.0 && !memcmp(Sm, S0, sizeof Sm),
+        "crack: 0.3 GPa of membrane tension within the plane is carried, unchanged");
+  const double T2 = 0.45e9;
+  double Sm2[6] = {-2 * T2 / 3, T2 / 3, T2 / 3, 0, 0, 0}, nx2[3] = {1, 0, 0};
+  ec = 0.0;
+  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T2 / 3, K, G, Sm2, nx2, &ec, &dp);
+  CHECK(d == 2.0 && Sm2[1] == 0.0 && nx2[0] == 0.0 && ec == 0.0,
+        "crack: 0.45 GPa within the plane splits it again (D = %g): S = 0, n = 0, ε_c = 0", d);
+  /* hydrostatic tension T: the crack opens by T/M and the plane keeps T·2G/M */
+  double Sh[6] = {0, 0, 0, 0, 0, 0}, nh[3] = {1, 0, 0};
+  ec = 0.0;
+  d = fracture_crack_return(&cr, 1.0, 1.0, -T, K, G, Sh, nh, &ec, &dp);
+  const double syy = -(-T + dp) + Sh[T_YY], sxx = -(-T + dp) + Sh[T_XX];
+  CHECK(d == 1.0 && fabs(ec - T / M) < 1e-12 * T / M && fabs(sxx) < 1e-6 * T &&
+        fabs(syy - T * 2 * G / M) < 1e-6 * T, "crack: hydrostatic tension T opens it by T/M = "
+        "%.4g and leaves σ_xx = %g Pa, σ_yy = %.5g GPa (T·2G/M = %.5g)", ec, sxx, syy * 1e-9,
+        T * 2 * G / M * 1e-9);
+  /* an open crack closes under compression, down to ε_c = 0, and then carries the rest */
+  double Sc[6] = {0, 0, 0, 0, 0, 0}, nc[3] = {1, 0, 0};
+  ec = 1e-3;
+  const double pc = 0.0;   /* σ_xx = −2e-3 M (as if compressed by 2e-3 in x) */
+  for (int k = 0; k < 6; k++) Sc[k] = 0.0;
+  Sc[T_XX] = -2e-3 * 4 * G / 3;
+  Sc[T_YY] = Sc[T_ZZ] = 2e-3 * 2 * G / 3;
+  const double pcl = 2e-3 * K;
+  d = fracture_crack_return(&cr, 1.0, 1.0, pcl + pc, K, G, Sc, nc, &ec, &dp);
+  CHECK(d == 1.0 && ec == 0.0 && fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
+        "crack: closes by 1e-3 of its 2e-3 compression and carries σ_nn = %.5g GPa (−1e-3 M "
+        "= %.5g)", sig_nn(pcl + dp, Sc, nc) * 1e-9, -1e-3 * M * 1e-9);
+  /* open, with shear on its plane: the shear traction is released, in-plane shear kept */
+  const double ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3}, c = cos(0.7), s = sin(0.7);
+  double Q[9];   /* Rodrigues, as test_no_tension: the crack's frame turned */
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) Q[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * ax[a] * ax[b];
+  Q[1] -= s * ax[2]; Q[2] += s * ax[1]; Q[3] += s * ax[2];
+  Q[5] -= s * ax[0]; Q[6] -= s * ax[1]; Q[7] += s * ax[0];
+  double nq[3] = {Q[0], Q[3], Q[6]};
+  /* σ₀ in the crack's frame (e₁ = n): normal 0.1 GPa, shear 0.05 and −0.03 on the plane,
+     in-plane 0.2, −0.1 and 0.04 GPa */
+  const double s0[3][3] = {{1e8, 5e7, -3e7}, {5e7, 2e8, 4e7}, {-3e7, 4e7, -1e8}};
+  double m3[3][3] = {{0}};
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      for (int k = 0; k < 3; k++)
+        for (int l = 0; l < 3; l++) m3[i][j] += Q[3 * i + k] * s0[k][l] * Q[3 * j + l];
+  const double ps = -(m3[0][0] + m3[1][1] + m3[2][2]) / 3;
+  double Sq[6] = {m3[0][0] + ps, m3[1][1] + ps, m3[2][2] + ps, m3[0][1], m3[1][2], m3[0][2]};
+  ec = 0.0;
+  d = fracture_crack_return(&cr, 1.0, 1.0, ps, K, G, Sq, nq, &ec, &dp);
+  double t[3] = {0, 0, 0};   /* the traction on the plane after: (σ n) */
+  const double sg[3][3] = {{Sq[T_XX] - ps - dp, Sq[T_XY], Sq[T_XZ]},
+                           {Sq[T_XY], Sq[T_YY] - ps - dp, Sq[T_YZ]},
+                           {Sq[T_XZ], Sq[T_YZ], Sq[T_ZZ] - ps - dp}};
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) t[a] += sg[a][b] * nq[b];
+  const double tt = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+  /* the in-plane shear (e₂, e₃ turned) is kept: e₂ᵀ σ e₃ = 0.04 GPa */
+  const double e2[3] = {Q[1], Q[4], Q[7]}, e3[3] = {Q[2], Q[5], Q[8]};
+  double s23 = 0.0;
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) s23 += e2[a] * sg[a][b] * e3[b];
+  CHECK(d == 1.0 && ec > 0.0 && tt < 1e-6 * 1e8 && fabs(s23 - 4e7) < 1e-6 * 1e8,
+        "crack, open in a turned frame: no traction on the plane (|σn| = %g Pa), in-plane "
+        "shear kept (%.6g GPa, 0.04)", tt, s23 * 1e-9);
+  /* the normal of the largest principal tension */
+  const double lam[3] = {3e8, 1e8, -2e8};
+  double d6[6], nn[3];
+  sym3_from_eigen(Q, lam, d6);
+  for (int k = 0; k < 6; k++) S[k] = d6[k] + (k < 3 ? -(2e8 / 3) : 0.0);   /* p = −tr/3 */
+  fracture_crack_normal(-(2e8 / 3), S, nn);
+  const double dot = nn[0] * nq[0] + nn[1] * nq[1] + nn[2] * nq[2];
+  CHECK(fabs(fabs(dot) - 1.0) < 1e-12, "crack normal along the largest principal stress "
+        "(|n·e| = %.15f)", fabs(dot));
+  /* the spin turns n: rigid rotation about z at ω, 0.5 rad in 1000 steps; a stretch does not */
+  const double w = 5e5, dt = 1e-9;
+  const double Lr[9] = {0, -w, 0, w, 0, 0, 0, 0, 0};   /* L[3a+b] = ∂v_a/∂x_b, v = ω × x */
+  double r[3] = {1, 0, 0};
+  for (int k = 0; k < 1000; k++) fracture_crack_rotate(r, Lr, dt);
+  CHECK(fabs(r[0] - cos(0.5)) < 1e-3 && fabs(r[1] - sin(0.5)) < 1e-3 && r[2] == 0.0,
+        "crack: turned by the spin to (%.5f, %.5f, %g), want (cos 0.5, sin 0.5, 0)", r[0], r[1], r[2]);
+  const double Ls[9] = {1e5, 0, 0, 0, -1e5, 0, 0, 0, 0};
+  double q[3] = {0.6, 0.8, 0};
+  for (int k = 0; k < 100; k++) fracture_crack_rotate(q, Ls, dt);
+  CHECK(q[0] == 0.6 && q[1] == 0.8, "crack: a pure stretch does not turn it");
+}
+
 static void test_fracture(void)
 {
   const double S0[6] = {0};
@@ -155,6 +284,7 @@ static void test_fracture(void)
   CHECK(fracture_yield(&fr, 1.0, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
   CHECK(fracture_yield(&fr, 1.0, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
   test_no_tension();
+  test_crack();
 }
 
 int main(void)
