@@ -85,8 +85,10 @@ static int update_eos(struct sim *s, struct hv_error *err)
                         s->step, s->t, s->t + s->dt, (long long)p->id[i], bname, p->rho[i]);
   char what[512];
   struct eos_state st;
-  eos_describe(&s->mat[p->mat[i]], p->rho[i], p->e[i],
-               eos_evaluate(&s->mat[p->mat[i]], p->rho[i], p->e[i], &st), what, sizeof what);
+  const struct material *mb = &s->mat[p->mat[i]];
+  const double rho_b = p->cracks && fracture_cracked(&mb->frac, p->damage[i])
+                           ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];   /* as above */
+  eos_describe(mb, rho_b, p->e[i], eos_evaluate(mb, rho_b, p->e[i], &st), what, sizeof what);
   return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
                       "material '%s'): field p: %s", s->step, s->t, (long long)p->id[i], bname,
                       mname, what);
