@@ -119,9 +119,8 @@ double fracture_crack_return(const struct fracture_params *fp, double d0, double
     *eps_c = 0.0;
   }
   /* nᵀSn, and the crack strain that returns σ_nn = −p + nᵀSn to 0 (not below ε_c = 0) */
-  const double Sn[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
-                        S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
-                        S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+  double Sn[3];
+  sym3_apply(S, n, Sn);
   const double snn = -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
   const double M = K + 4.0 / 3.0 * G;
   double de = M > 0.0 ? snn / M : 0.0;
@@ -133,9 +132,8 @@ double fracture_crack_return(const struct fracture_params *fp, double d0, double
     *dp = K * de;
   }
   if (*eps_c > 0.0) {   /* open: no shear traction on the plane, t_s = Sn − (nᵀSn) n */
-    const double t[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
-                         S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
-                         S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+    double t[3];
+    sym3_apply(S, n, t);
     const double tn = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
     const double ts[3] = {t[0] - tn * n[0], t[1] - tn * n[1], t[2] - tn * n[2]};
     S[T_XX] -= 2.0 * ts[0] * n[0];

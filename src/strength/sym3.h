@@ -18,6 +18,14 @@ static inline void sym3_full(const double a[6], double m[9])
 }
 /* An upper bound of the largest eigenvalue (Gershgorin discs): cheap test before an
  * eigen-decomposition. */
+/* out = A v for a symmetric A given as 6 components (VTK order xx, yy, zz, xy, yz, xz). */
+static inline void sym3_apply(const double a[6], const double v[3], double out[3])
+{
+  out[0] = a[0] * v[0] + a[3] * v[1] + a[5] * v[2];
+  out[1] = a[3] * v[0] + a[1] * v[1] + a[4] * v[2];
+  out[2] = a[5] * v[0] + a[4] * v[1] + a[2] * v[2];
+}
+
 static inline double sym3_max_bound(const double a[6])
 {
   const double r0 = a[0] + (a[3] < 0 ? -a[3] : a[3]) + (a[5] < 0 ? -a[5] : a[5]);

@@ -134,9 +134,8 @@ static void test_no_tension(void)
  * order; M = K + 4G/3. */
 static double sig_nn(double p, const double S[6], const double n[3])
 {
-  const double t[3] = {S[T_XX] * n[0] + S[T_XY] * n[1] + S[T_XZ] * n[2],
-                       S[T_XY] * n[0] + S[T_YY] * n[1] + S[T_YZ] * n[2],
-                       S[T_XZ] * n[0] + S[T_YZ] * n[1] + S[T_ZZ] * n[2]};
+  double t[3];
+  sym3_apply(S, n, t);
   return -p + t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
 }
 
