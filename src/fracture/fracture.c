@@ -108,9 +108,22 @@ void fracture_crack_rotate(double n[3], const double L[9], double dt)
   for (int a = 0; a < 3; a++) n[a] = m[a] / r;
 }
 
+double fracture_crack_eps_f(const struct fracture_params *fp, double p, const double S[6])
+{
+  if (!fp->crack_eps_f_on) return HUGE_VAL;
+  /* σ* = σ_m/σ_eq, σ_m = −p, σ_eq = √(3J₂) = √(3/2 S:S); ±1.5 without deviator */
+  const double ss = S[0] * S[0] + S[1] * S[1] + S[2] * S[2] +
+                    2.0 * (S[3] * S[3] + S[4] * S[4] + S[5] * S[5]);
+  const double seq = sqrt(1.5 * ss);
+  double tri = seq > 0.0 ? -p / seq : (p < 0.0 ? 1.5 : p > 0.0 ? -1.5 : 0.0);
+  if (!(tri <= 1.5)) tri = 1.5;
+  if (!(tri >= -1.5)) tri = -1.5;
+  return fp->crack_d[0] + fp->crack_d[1] * exp(fp->crack_d[2] * tri);
+}
+
 double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
-                             double K, double G, double S[6], double n[3], double *eps_c,
-                             double *dp)
+                             double K, double G, double eps_p, double S[6], double n[3],
+                             double *eps_c, double *dp)
 {
   *dp = 0.0;
   if (d < 1.0 || d >= 2.0) return d;
@@ -143,7 +156,8 @@ double fracture_crack_return(const struct fracture_params *fp, double d0, double
     S[T_YZ] -= ts[1] * n[2] + n[1] * ts[2];
     S[T_XZ] -= ts[0] * n[2] + n[0] * ts[2];
   }
-  if (fp->sigma_c < 0.0 && fracture_max_principal(p + *dp, S) > -fp->sigma_c) {
+  if ((fp->sigma_c < 0.0 && fracture_max_principal(p + *dp, S) > -fp->sigma_c) ||
+      (fp->crack_eps_f_on && eps_p >= fracture_crack_eps_f(fp, p + *dp, S))) {
     for (int k = 0; k < 6; k++) S[k] = 0.0;   /* split again: fluid */
     n[0] = n[1] = n[2] = 0.0;
     *eps_c = 0.0;

@@ -29,7 +29,11 @@
  * plane is released. Within its plane the material keeps its stress, tension included,
  * and its strength: a spalled plate keeps its membrane tension. When the largest
  * principal stress within the plane exceeds |σ_c| the particle splits a second time
- * and is split fluid (the default rule). D = 1 marks the cracked state, D = 2 the fluid.
+ * and is split fluid (the default rule); with fracture.crack_eps_f it does so as well once
+ * its equivalent plastic strain ε_p reaches ε_f = d1 + d2 exp(d3 σ*), σ* = σ_m/σ_eq the
+ * stress triaxiality (the Johnson–Cook failure strain without its rate and temperature
+ * factors): a cracked membrane, in plane stress below |σ_c|, tears by stretching.
+ * D = 1 marks the cracked state, D = 2 the fluid.
  * Cumulative (option): D grows with plastic strain, ΔD = Δε_p/ε_f, and with time
  * under tension beyond |σ_c|, ΔD = Δt/τ; the particle splits when D reaches 1.
  */
@@ -69,18 +73,22 @@ void fracture_crack_normal(double p, const double S[6], double n[3]);
 /* Turns the crack normal n with the spin Ω = ½(L − Lᵀ) over dt (L[3a+b] = ∂v_a/∂x_b):
  * n ← (n + dt Ω n)/|n + dt Ω n|. */
 void fracture_crack_rotate(double n[3], const double L[9], double dt);
+/* The strain to failure of the cracked state (fracture.crack_eps_f) in the stress state
+ * −pI + S: d1 + d2 exp(d3 σ*), σ* = −p/√(3J₂) clamped to [−1.5, 1.5] (±1.5 without a
+ * deviator, by the sign of −p); HUGE_VAL when crack_eps_f is not given. */
+double fracture_crack_eps_f(const struct fracture_params *fp, double p, const double S[6]);
 /* The end of a step with fracture.split: crack. d0 the damage at the step's start, d the
  * damage after the tensile test (fracture_tension); p, S the end-of-step pressure and
- * deviator, K and G the bulk and shear moduli, n the crack normal and *eps_c the crack
- * strain. A particle split in this step (d0 < 1 <= d) cracks across its largest principal
+ * deviator, K and G the bulk and shear moduli, eps_p the equivalent plastic strain, n the
+ * crack normal and *eps_c the crack strain. A particle split in this step (d0 < 1 <= d) cracks across its largest principal
  * tension (n, ε_c = 0). A cracked one's crack opens or closes by Δε_c = σ_nn/(K + 4G/3)
  * (ε_c >= 0): S −= 2G Δε_c dev(nnᵀ), and the pressure rises by about K Δε_c (*dp; the
  * caller evaluates the EOS again at ρ e^{ε_c}); while open, the shear traction on the
  * plane is removed from S. If then the largest principal stress of −(p + dp)I + S
- * exceeds |σ_c| (σ_c < 0), the particle splits again: D = 2 (fluid), S = 0, n = 0,
- * ε_c = 0. Returns the new damage. */
+ * exceeds |σ_c| (σ_c < 0), or eps_p reaches fracture_crack_eps_f of that state, the
+ * particle splits again: D = 2 (fluid), S = 0, n = 0, ε_c = 0. Returns the new damage. */
 double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
-                             double K, double G, double S[6], double n[3], double *eps_c,
-                             double *dp);
+                             double K, double G, double eps_p, double S[6], double n[3],
+                             double *eps_c, double *dp);
 
 #endif

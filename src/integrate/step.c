@@ -230,8 +230,8 @@ static long end_stress(struct sim *s, double dt)
         const double rho_m = p->rho[i] * exp(ec), G = m->str.G;
         const double M = rho_m * p->cs[i] * p->cs[i];   /* cs: the longitudinal speed */
         const double K = fmax(M - 4.0 / 3.0 * G, 0.0);
-        p->damage[i] = fracture_crack_return(&m->frac, d0, p->damage[i], p->p[i], K, G, S, n,
-                                             &ec, &dp);
+        p->damage[i] = fracture_crack_return(&m->frac, d0, p->damage[i], p->p[i], K, G,
+                                             p->eps_p[i], S, n, &ec, &dp);
         for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
         p->eps_c[i] = ec;
         for (int k = 0; k < 6; k++) p->S[k][i] = S[k];

@@ -246,6 +246,9 @@ void material_print(FILE *f, const struct material *m)
   if (fr->kind != FRACTURE_NONE && fr->friction > 0.0) pq(f, "friction", fr->friction, "");
   if (fr->kind != FRACTURE_NONE && fr->split != SPLIT_FLUID)
     fprintf(f, "  split: %s\n", fr->split == SPLIT_NO_TENSION ? "no-tension" : "crack");
+  if (fr->split == SPLIT_CRACK && fr->crack_eps_f_on)
+    fprintf(f, "  crack_eps_f: %.6g + %.6g exp(%.6g sigma*)\n", fr->crack_d[0], fr->crack_d[1],
+            fr->crack_d[2]);
 }
 
 /* ---------------------------------------------------------------- hvsph materials */

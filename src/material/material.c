@@ -306,6 +306,40 @@ static int read_sigma_c(struct cfg *c, const char *fp, const double *def, int ze
   return 0;
 }
 
+/* fracture.crack_eps_f (split: crack): a number (a constant strain to failure of the
+ * cracked state) or {d1, d2, d3} (ε_f = d1 + d2 exp(d3 σ*), the Johnson–Cook form). */
+static int read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_params *f,
+                            struct hv_error *err)
+{
+  char k[320];
+  key_of(k, sizeof k, fp, "crack_eps_f");
+  if (!cfg_has(c, k)) return 0;
+  const double zero = 0.0;
+  if (!cfg_is_map(c, k)) {
+    if (cfg_get_quantity(c, k, UNIT_NONE, NULL, 0.0, HUGE_VAL, &f->crack_d[0], err)) return -1;
+    if (!(f->crack_d[0] > 0.0))
+      return key_error(c, k, err, "the strain to failure must be > 0 (leave crack_eps_f out "
+                       "for none)");
+  } else {
+    static const char *const dn[3] = {"d1", "d2", "d3"};
+    for (int j = 0; j < 3; j++) {
+      char kd[340];
+      if (cfg_get_quantity(c, key_of(kd, sizeof kd, k, dn[j]), UNIT_NONE, j ? &zero : NULL,
+                           -HUGE_VAL, HUGE_VAL, &f->crack_d[j], err))
+        return -1;
+    }
+    /* positive over the triaxialities it is evaluated at, σ* in [−1.5, 1.5] */
+    for (int e = -1; e <= 1; e += 2) {
+      const double ef = f->crack_d[0] + f->crack_d[1] * exp(f->crack_d[2] * 1.5 * e);
+      if (!(ef > 0.0))
+        return key_error(c, k, err, "d1 + d2 exp(d3 sigma*) = %.6g at sigma* = %g: the strain "
+                         "to failure must be > 0 for sigma* in [-1.5, 1.5]", ef, 1.5 * e);
+    }
+  }
+  f->crack_eps_f_on = 1;
+  return 0;
+}
+
 static int read_fracture(struct cfg *c, const char *path, struct material *m,
                          struct hv_error *err)
 {
@@ -368,6 +402,16 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
       return key_error(c, k, err, "split: %s keeps the yield stress of split material; "
                        "friction (which limits it to min(Y, mu p)) applies to split: fluid only",
                        sname);
+    if (f->split != SPLIT_CRACK) {
+      if (not_used_here(c, fp, "crack_eps_f", "crack_eps_f is the strain to failure of a "
+                        "cracked particle: it applies to split: crack only", err))
+        return -1;
+    } else if (read_crack_eps_f(c, fp, f, err)) {
+      return -1;
+    }
+  } else if (not_used_here(c, fp, "crack_eps_f", "crack_eps_f applies to split: crack "
+                           "(model tresca or cumulative)", err)) {
+    return -1;
   }
   return 0;
 }

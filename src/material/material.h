@@ -91,6 +91,13 @@ struct fracture_params {
      min(Y, μ max(p, 0)) (a cohesionless Drucker–Prager/Coulomb limit) */
   double friction;     /* [-] */
   enum split_kind split;
+  /* split: crack — strain to failure of the cracked state (fracture.crack_eps_f): a
+     cracked particle splits again (fluid) once its equivalent plastic strain reaches
+     eps_f = d1 + d2 exp(d3 sigma*), sigma* = sigma_m/sigma_eq its stress triaxiality
+     (the Johnson–Cook form without its rate and temperature factors); off when
+     crack_eps_f_on is 0 */
+  int crack_eps_f_on;
+  double crack_d[3];   /* d1, d2 [-], d3 [-] */
 };
 
 struct material {

@@ -25,6 +25,9 @@
 #  6. 1. again with split material without tension (fracture.split: no-tension);
 #  7. 1. again with the viscosity switch (sph.viscosity.switch: cullen-dehnen), whose
 #     per-particle alpha and last velocity divergence are state; a run made without it
+#     refuses to take it up when continued (exit 2, its files untouched);
+#  8. 1. again with split along a crack (fracture.split: crack, and crack_eps_f for the
+#     plate), whose crack normals and opening strains are state; a run made without it
 #     refuses to take it up when continued (exit 2, its files untouched).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
@@ -218,6 +221,32 @@ cp -r "$T/nt_ref" "$T/nt_sw"
 st=$?
 [ $st -eq 2 ] && grep -q "without sph.viscosity.switch" "$T/nt_sw.log" && same_files "$T/nt_ref" "$T/nt_sw"
 check $? "switch: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
+
+# 8. split along a crack (fracture.split: crack) with the cracked state's strain to failure
+#    (crack_eps_f): the crack normal and opening strain are state, carried in the
+#    checkpoint; a run made without the crack cannot take it up when continued
+CR=(--set materials.steel-bumper.library=steel-bumper
+    --set materials.steel-bumper.fracture.split=crack
+    --set materials.steel-bumper.fracture.crack_eps_f=0.3
+    --set materials.steel-projectile.library=steel-projectile
+    --set materials.steel-projectile.fracture.split=crack)
+"$BIN" run "$CASE" -o "$T/cr_ref" "${SETS[@]}" "${CR[@]}" --threads 2 --quiet 2> /dev/null &&
+  "$BIN" run "$CASE" -o "$T/cr" "${SETS[@]}" "${CR[@]}" --set time.max_steps=300 --threads 2 \
+    --quiet 2> /dev/null &&
+  "$BIN" restart "$T/cr" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
+check $? "split: crack: straight run, stopped run and its continuation"
+dcol=$(grep -m1 '^id,' "$T/cr_ref/particles_00004.csv" | tr ',' '\n' | grep -n '^damage$' | cut -d: -f1)
+ncr=$(awk -F, -v c="${dcol:-0}" '$1 !~ /^[#i]/ && $c == 1' "$T/cr_ref/particles_00004.csv" | wc -l)
+nfl=$(awk -F, -v c="${dcol:-0}" '$1 !~ /^[#i]/ && $c == 2' "$T/cr_ref/particles_00004.csv" | wc -l)
+[ "$ncr" -gt 50 ] && [ "$nfl" -gt 50 ]
+check $? "split: crack: $ncr particles cracked (damage 1) and $nfl split again (damage 2) by 12 us"
+same_files "$T/cr_ref" "$T/cr"
+check $? "split: crack: continued run, every file identical to the straight run's"
+cp -r "$T/nt_ref" "$T/nt_cr"
+"$BIN" restart "$T/nt_cr" "${CR[@]}" --set time.end=15us --quiet > "$T/nt_cr.log" 2>&1
+st=$?
+[ $st -eq 2 ] && grep -q "without fracture.split: crack" "$T/nt_cr.log" && same_files "$T/nt_ref" "$T/nt_cr"
+check $? "split: crack: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -327,6 +327,39 @@ static void test_errors(void)
   expect_error("materials:\n  x: {library: steel-target, fracture: {split: no-tension, friction: "
                "0.5}}\n", "x", "materials.x.fracture.split: split: no-tension keeps the yield "
                "stress of split material; friction");
+  /* crack_eps_f: the cracked state's strain to failure, with split: crack only */
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {crack_eps_f: 0.2}}\n", "x",
+               "case.yaml:2: materials.x.fracture.crack_eps_f: crack_eps_f is the strain to "
+               "failure of a cracked particle: it applies to split: crack only");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {model: none, crack_eps_f: "
+               "0.2}}\n", "x", "materials.x.fracture.crack_eps_f: crack_eps_f applies to split: crack");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: 0}}\n",
+               "x", "materials.x.fracture.crack_eps_f: the strain to failure must be > 0");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: "
+               "{d2: 0.1}}}\n", "x", "materials.x.fracture.crack_eps_f.d1");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: "
+               "{d1: -2.2, d2: 5.43, d3: -2}}}\n", "x", "materials.x.fracture.crack_eps_f: "
+               "d1 + d2 exp(d3 sigma*) = ");
+  {
+    struct material m;
+    struct hv_error err = {0};
+    int rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack, "
+                                "crack_eps_f: {d1: 0.13, d2: 0.13, d3: -1.5}}}\n", "x", &m, NULL,
+                                &err);
+    CHECK(rc == 0 && m.frac.crack_eps_f_on && m.frac.crack_d[0] == 0.13 &&
+          m.frac.crack_d[1] == 0.13 && m.frac.crack_d[2] == -1.5,
+          "crack_eps_f {d1, d2, d3} read (%s)", rc ? err.msg : "ok");
+    if (!rc) material_free(&m);
+    rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack, "
+                            "crack_eps_f: 0.3}}\n", "x", &m, NULL, &err);
+    CHECK(rc == 0 && m.frac.crack_eps_f_on && m.frac.crack_d[0] == 0.3 && m.frac.crack_d[1] == 0.0,
+          "crack_eps_f as a number: a constant strain to failure (%s)", rc ? err.msg : "ok");
+    if (!rc) material_free(&m);
+    rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack}}\n",
+                            "x", &m, NULL, &err);
+    CHECK(rc == 0 && !m.frac.crack_eps_f_on, "split: crack without crack_eps_f: none");
+    if (!rc) material_free(&m);
+  }
 }
 
 /* An error in a library value names the library file and line. */

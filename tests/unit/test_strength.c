@@ -141,6 +141,7 @@ static double sig_nn(double p, const double S[6], const double n[3])
 
 static void test_crack(void)
 {
+  const double S0c[6] = {0, 0, 0, 0, 0, 0};
   struct fracture_params cr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_CRACK};
   CHECK(fracture_cracked(&cr, 1.0) && !fracture_cracked(&cr, 0.99) && !fracture_cracked(&cr, 2.0),
         "crack: cracked at D = 1, intact below, fluid at D = 2");
@@ -156,7 +157,7 @@ static void test_crack(void)
   const double eps = 0.5e9 / M;
   double S[6] = {-2 * G * eps / 3, 4 * G * eps / 3, -2 * G * eps / 3, 0, 0, 0}, n[3] = {0, 0, 0};
   double ec = 0.0, dp = 0.0, p = -K * eps;
-  double d = fracture_crack_return(&cr, 0.0, fracture_tension(&cr, 0.0, p, S, 1e-9), p, K, G, S,
+  double d = fracture_crack_return(&cr, 0.0, fracture_tension(&cr, 0.0, p, S, 1e-9), p, K, G, 0.0, S,
                                    n, &ec, &dp);
   double smax = 0.0;
   for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(S[k]));
@@ -171,19 +172,19 @@ static void test_crack(void)
   double Sm[6] = {-2 * T / 3, T / 3, T / 3, 0, 0, 0}, nx[3] = {1, 0, 0}, S0[6];
   for (int k = 0; k < 6; k++) S0[k] = Sm[k];
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T / 3, K, G, Sm, nx, &ec, &dp);
+  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T / 3, K, G, 0.0, Sm, nx, &ec, &dp);
   CHECK(d == 1.0 && ec == 0.0 && dp == 0.0 && !memcmp(Sm, S0, sizeof Sm),
         "crack: 0.3 GPa of membrane tension within the plane is carried, unchanged");
   const double T2 = 0.45e9;
   double Sm2[6] = {-2 * T2 / 3, T2 / 3, T2 / 3, 0, 0, 0}, nx2[3] = {1, 0, 0};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T2 / 3, K, G, Sm2, nx2, &ec, &dp);
+  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T2 / 3, K, G, 0.0, Sm2, nx2, &ec, &dp);
   CHECK(d == 2.0 && Sm2[1] == 0.0 && nx2[0] == 0.0 && ec == 0.0,
         "crack: 0.45 GPa within the plane splits it again (D = %g): S = 0, n = 0, ε_c = 0", d);
   /* hydrostatic tension T: the crack opens by T/M and the plane keeps T·2G/M */
   double Sh[6] = {0, 0, 0, 0, 0, 0}, nh[3] = {1, 0, 0};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -T, K, G, Sh, nh, &ec, &dp);
+  d = fracture_crack_return(&cr, 1.0, 1.0, -T, K, G, 0.0, Sh, nh, &ec, &dp);
   const double syy = -(-T + dp) + Sh[T_YY], sxx = -(-T + dp) + Sh[T_XX];
   CHECK(d == 1.0 && fabs(ec - T / M) < 1e-12 * T / M && fabs(sxx) < 1e-6 * T &&
         fabs(syy - T * 2 * G / M) < 1e-6 * T, "crack: hydrostatic tension T opens it by T/M = "
@@ -197,7 +198,7 @@ static void test_crack(void)
   Sc[T_XX] = -2e-3 * 4 * G / 3;
   Sc[T_YY] = Sc[T_ZZ] = 2e-3 * 2 * G / 3;
   const double pcl = 2e-3 * K;
-  d = fracture_crack_return(&cr, 1.0, 1.0, pcl + pc, K, G, Sc, nc, &ec, &dp);
+  d = fracture_crack_return(&cr, 1.0, 1.0, pcl + pc, K, G, 0.0, Sc, nc, &ec, &dp);
   CHECK(d == 1.0 && ec == 0.0 && fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
         "crack: closes by 1e-3 of its 2e-3 compression and carries σ_nn = %.5g GPa (−1e-3 M "
         "= %.5g)", sig_nn(pcl + dp, Sc, nc) * 1e-9, -1e-3 * M * 1e-9);
@@ -220,7 +221,7 @@ static void test_crack(void)
   const double ps = -(m3[0][0] + m3[1][1] + m3[2][2]) / 3;
   double Sq[6] = {m3[0][0] + ps, m3[1][1] + ps, m3[2][2] + ps, m3[0][1], m3[1][2], m3[0][2]};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, ps, K, G, Sq, nq, &ec, &dp);
+  d = fracture_crack_return(&cr, 1.0, 1.0, ps, K, G, 0.0, Sq, nq, &ec, &dp);
   double t[3] = {0, 0, 0};   /* the traction on the plane after: (σ n) */
   const double sg[3][3] = {{Sq[T_XX] - ps - dp, Sq[T_XY], Sq[T_XZ]},
                            {Sq[T_XY], Sq[T_YY] - ps - dp, Sq[T_YZ]},
@@ -256,6 +257,47 @@ static void test_crack(void)
   double q[3] = {0.6, 0.8, 0};
   for (int k = 0; k < 100; k++) fracture_crack_rotate(q, Ls, dt);
   CHECK(q[0] == 0.6 && q[1] == 0.8, "crack: a pure stretch does not turn it");
+
+  /* crack_eps_f: the cracked state's strain to failure, ε_f = d1 + d2 exp(d3 σ*) (2024-T351's
+     Johnson–Cook d1..d3). Equibiaxial membrane tension T within a plane cracked across x,
+     σ = diag(0, T, T): σ_m = 2T/3, σ_eq = T, σ* = 2/3 → ε_f = 0.13 + 0.13 e^{−1} = 0.17782;
+     uniaxial tension σ* = 1/3 → 0.13 + 0.13 e^{−0.5} = 0.20885; pure shear σ* = 0 → 0.26 */
+  struct fracture_params cf = cr;
+  cf.crack_eps_f_on = 1;
+  cf.crack_d[0] = 0.13;
+  cf.crack_d[1] = 0.13;
+  cf.crack_d[2] = -1.5;
+  const double Tm = 0.3e9;
+  const double Sb[6] = {-2 * Tm / 3, Tm / 3, Tm / 3, 0, 0, 0};
+  const double Su[6] = {2 * Tm / 3, -Tm / 3, -Tm / 3, 0, 0, 0};   /* σ = diag(T, 0, 0) */
+  const double Sp[6] = {0, 0, 0, Tm, 0, 0};                       /* pure shear */
+  const double ef_b = fracture_crack_eps_f(&cf, -2 * Tm / 3, Sb);
+  const double ef_u = fracture_crack_eps_f(&cf, -Tm / 3, Su);
+  const double ef_s = fracture_crack_eps_f(&cf, 0.0, Sp);
+  CHECK(fabs(ef_b - (0.13 + 0.13 * exp(-1.0))) < 1e-12 && fabs(ef_u - (0.13 + 0.13 * exp(-0.5))) < 1e-12 &&
+        fabs(ef_s - 0.26) < 1e-12, "crack_eps_f: ε_f = %.5f (equibiaxial, want 0.17782), %.5f "
+        "(uniaxial, 0.20885), %.5f (shear, 0.26)", ef_b, ef_u, ef_s);
+  CHECK(fracture_crack_eps_f(&cf, -1e8, S0c) == 0.13 + 0.13 * exp(-2.25) &&
+        fracture_crack_eps_f(&cf, 1e8, S0c) == 0.13 + 0.13 * exp(2.25) &&
+        fracture_crack_eps_f(&cr, -1e8, S0c) == HUGE_VAL,
+        "crack_eps_f: σ* clamped to ±1.5 without a deviator; none without crack_eps_f");
+  /* the membrane of 0.3 GPa (carried above, below |σ_c|) tears once ε_p reaches ε_f */
+  double Sa[6], na[3] = {1, 0, 0};
+  for (int k = 0; k < 6; k++) Sa[k] = Sb[k];
+  ec = 0.0;
+  d = fracture_crack_return(&cf, 1.0, 1.0, -2 * Tm / 3, K, G, 0.99 * ef_b, Sa, na, &ec, &dp);
+  CHECK(d == 1.0 && !memcmp(Sa, Sb, sizeof Sa), "crack_eps_f: carried at ε_p = 0.99 ε_f");
+  d = fracture_crack_return(&cf, 1.0, 1.0, -2 * Tm / 3, K, G, ef_b, Sa, na, &ec, &dp);
+  CHECK(d == 2.0 && Sa[1] == 0.0 && na[0] == 0.0, "crack_eps_f: split again (D = %g) at ε_p = ε_f", d);
+  /* under compression (σ* = −1: ε_f = 0.13 + 0.13 e^{1.5} = 0.7126) the same strain is carried */
+  const double Pc = 2e8;
+  /* pure shear τ: σ_eq = √3 τ; with p = 2e8 and τ = p/√3, σ* = −p/σ_eq = −1 */
+  double Sk[6] = {0, 0, 0, Pc / sqrt(3.0), 0, 0}, nk[3] = {1, 0, 0};
+  CHECK(fabs(fracture_crack_eps_f(&cf, Pc, Sk) - (0.13 + 0.13 * exp(1.5))) < 1e-12,
+        "crack_eps_f: σ* = −1 gives 0.7126");
+  ec = 0.0;
+  d = fracture_crack_return(&cf, 1.0, 1.0, Pc, K, G, 0.5, Sk, nk, &ec, &dp);
+  CHECK(d == 1.0, "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), D = %g", d);
 }
 
 static void test_fracture(void)
