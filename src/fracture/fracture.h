@@ -80,13 +80,14 @@ double fracture_crack_eps_f(const struct fracture_params *fp, double p, const do
 /* The end of a step with fracture.split: crack. d0 the damage at the step's start, d the
  * damage after the tensile test (fracture_tension); p, S the end-of-step pressure and
  * deviator, K and G the bulk and shear moduli, eps_p the equivalent plastic strain, n the
- * crack normal and *eps_c the crack strain. A particle split in this step (d0 < 1 <= d) cracks across its largest principal
- * tension (n, ε_c = 0). A cracked one's crack opens or closes by Δε_c = σ_nn/(K + 4G/3)
- * (ε_c >= 0): S −= 2G Δε_c dev(nnᵀ), and the pressure rises by about K Δε_c (*dp; the
- * caller evaluates the EOS again at ρ e^{ε_c}); while open, the shear traction on the
- * plane is removed from S. If then the largest principal stress of −(p + dp)I + S
- * exceeds |σ_c| (σ_c < 0), or eps_p reaches fracture_crack_eps_f of that state, the
- * particle splits again: D = 2 (fluid), S = 0, n = 0, ε_c = 0. Returns the new damage. */
+ * crack normal and *eps_c the crack strain. A particle split in this step (d0 < 1 <= d)
+ * cracks across its largest principal tension (n, ε_c = 0). A cracked one's crack opens or
+ * closes by Δε_c = σ_nn/(K + 4G/3) (ε_c >= 0): S −= 2G Δε_c dev(nnᵀ), and the pressure
+ * rises by about K Δε_c (*dp; the caller evaluates the EOS again at ρ e^{ε_c}); while open,
+ * the shear traction on the plane is removed from S. If then the largest principal stress
+ * of −(p + dp)I + S exceeds |σ_c| (σ_c < 0), or eps_p reaches fracture_crack_eps_f of that
+ * state, the particle splits again: D = 2 (fluid), S = 0, n = 0, ε_c = 0. Returns the new
+ * damage. */
 double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
                              double K, double G, double eps_p, double S[6], double n[3],
                              double *eps_c, double *dp);
