@@ -186,6 +186,29 @@ check $? "its validation.csv and measurements.csv are identical to the straight 
 grep -q '^| bumper-1 | [0-9]* | [0-9]* (2 segments) | ok |' "$T/val/validation.md"
 check $? "validation.md gives its runtime summed over its 2 segments: $(grep '^| bumper-1 | [0-9]* |' "$T/val/validation.md")"
 
+# a run with the options "$@" made straight to 12 us into $T/TAG_ref, and again stopped
+# after 300 steps into $T/TAG and continued on 1 thread (sections 6-8)
+straight_and_continued() {  # TAG LABEL OPTION...
+  local tag=$1 label=$2
+  shift 2
+  "$BIN" run "$CASE" -o "$T/${tag}_ref" "${SETS[@]}" "$@" --threads 2 --quiet 2> /dev/null &&
+    "$BIN" run "$CASE" -o "$T/$tag" "${SETS[@]}" "$@" --set time.max_steps=300 --threads 2 \
+      --quiet 2> /dev/null &&
+    "$BIN" restart "$T/$tag" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
+  check $? "$label: straight run, stopped run and its continuation"
+}
+# a copy of the no-tension run ($T/nt_ref, made without OPTION...) continued with them
+# must end with exit 2 and a message matching PATTERN, its files untouched
+refuses_to_take_up() {  # TAG LABEL PATTERN OPTION...
+  local tag=$1 label=$2 pattern=$3
+  shift 3
+  cp -r "$T/nt_ref" "$T/$tag"
+  "$BIN" restart "$T/$tag" "$@" --set time.end=15us --quiet > "$T/$tag.log" 2>&1
+  local st=$?
+  [ $st -eq 2 ] && grep -q "$pattern" "$T/$tag.log" && same_files "$T/nt_ref" "$T/$tag"
+  check $? "$label: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
+}
+
 # 6. split material without tension (fracture.split: no-tension): its state is (rho, e,
 #    S) with S projected at each step's end and p from the EOS, so a continued run must
 #    again equal a straight one
@@ -193,11 +216,7 @@ NT=(--set materials.steel-bumper.library=steel-bumper
     --set materials.steel-bumper.fracture.split=no-tension
     --set materials.steel-projectile.library=steel-projectile
     --set materials.steel-projectile.fracture.split=no-tension)
-"$BIN" run "$CASE" -o "$T/nt_ref" "${SETS[@]}" "${NT[@]}" --threads 2 --quiet 2> /dev/null &&
-  "$BIN" run "$CASE" -o "$T/nt" "${SETS[@]}" "${NT[@]}" --set time.max_steps=300 --threads 2 \
-    --quiet 2> /dev/null &&
-  "$BIN" restart "$T/nt" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
-check $? "split: no-tension: straight run, stopped run and its continuation"
+straight_and_continued nt "split: no-tension" "${NT[@]}"
 nsplit=$(awk -F, 'NR > 2 && $17 == 1' "$T/nt_ref/particles_00004.csv" | wc -l)
 [ "$nsplit" -gt 100 ]
 check $? "split: no-tension: $nsplit particles split by 12 us"
@@ -206,21 +225,13 @@ check $? "split: no-tension: continued run, every file identical to the straight
 
 # 7. the viscosity switch: alpha and the last divergence are carried in the checkpoint
 SW=(--set sph.viscosity.switch=cullen-dehnen)
-"$BIN" run "$CASE" -o "$T/sw_ref" "${SETS[@]}" "${SW[@]}" --threads 2 --quiet 2> /dev/null &&
-  "$BIN" run "$CASE" -o "$T/sw" "${SETS[@]}" "${SW[@]}" --set time.max_steps=300 --threads 2 \
-    --quiet 2> /dev/null &&
-  "$BIN" restart "$T/sw" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
-check $? "switch: straight run, stopped run and its continuation"
+straight_and_continued sw "switch" "${SW[@]}"
 head -3 "$T/sw_ref/particles_00004.csv" | grep -q ',alpha'
 check $? "switch: the snapshots carry each particle's alpha"
 same_files "$T/sw_ref" "$T/sw"
 check $? "switch: continued run, every file identical to the straight run's"
 # a run made without the switch cannot take it up when continued: exit 2, nothing changed
-cp -r "$T/nt_ref" "$T/nt_sw"
-"$BIN" restart "$T/nt_sw" "${SW[@]}" --set time.end=15us --quiet > "$T/nt_sw.log" 2>&1
-st=$?
-[ $st -eq 2 ] && grep -q "without sph.viscosity.switch" "$T/nt_sw.log" && same_files "$T/nt_ref" "$T/nt_sw"
-check $? "switch: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
+refuses_to_take_up nt_sw "switch" "without sph.viscosity.switch" "${SW[@]}"
 
 # 8. split along a crack (fracture.split: crack) with the cracked state's strain to failure
 #    (crack_eps_f): the crack normal and opening strain are state, carried in the
@@ -230,11 +241,7 @@ CR=(--set materials.steel-bumper.library=steel-bumper
     --set materials.steel-bumper.fracture.crack_eps_f=0.3
     --set materials.steel-projectile.library=steel-projectile
     --set materials.steel-projectile.fracture.split=crack)
-"$BIN" run "$CASE" -o "$T/cr_ref" "${SETS[@]}" "${CR[@]}" --threads 2 --quiet 2> /dev/null &&
-  "$BIN" run "$CASE" -o "$T/cr" "${SETS[@]}" "${CR[@]}" --set time.max_steps=300 --threads 2 \
-    --quiet 2> /dev/null &&
-  "$BIN" restart "$T/cr" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
-check $? "split: crack: straight run, stopped run and its continuation"
+straight_and_continued cr "split: crack" "${CR[@]}"
 dcol=$(grep -m1 '^id,' "$T/cr_ref/particles_00004.csv" | tr ',' '\n' | grep -n '^damage$' | cut -d: -f1)
 ncr=$(awk -F, -v c="${dcol:-0}" '$1 !~ /^[#i]/ && $c == 1' "$T/cr_ref/particles_00004.csv" | wc -l)
 nfl=$(awk -F, -v c="${dcol:-0}" '$1 !~ /^[#i]/ && $c == 2' "$T/cr_ref/particles_00004.csv" | wc -l)
@@ -242,11 +249,7 @@ nfl=$(awk -F, -v c="${dcol:-0}" '$1 !~ /^[#i]/ && $c == 2' "$T/cr_ref/particles_
 check $? "split: crack: $ncr particles cracked (damage 1) and $nfl split again (damage 2) by 12 us"
 same_files "$T/cr_ref" "$T/cr"
 check $? "split: crack: continued run, every file identical to the straight run's"
-cp -r "$T/nt_ref" "$T/nt_cr"
-"$BIN" restart "$T/nt_cr" "${CR[@]}" --set time.end=15us --quiet > "$T/nt_cr.log" 2>&1
-st=$?
-[ $st -eq 2 ] && grep -q "without fracture.split: crack" "$T/nt_cr.log" && same_files "$T/nt_ref" "$T/nt_cr"
-check $? "split: crack: continuing a run made without it ends with exit 2 ($st) and a message, files untouched"
+refuses_to_take_up nt_cr "split: crack" "without fracture.split: crack" "${CR[@]}"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
