@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Session 49: W.P.3's second bumper over time, from each lane's measurements.csv:
 hole_diameter and hole_diameter_intact of bumper2 (mm) at 12, 20, 30, 40, 50, 60 us.
-Usage: table.py NAME=RUN/measurements.csv ..."""
-import csv, sys
+Usage: table.py NAME=RUN/measurements.csv ...; TIMES="60 70 80 90" table.py ... for other
+times."""
+import csv, os, sys
 
-TIMES = [12, 20, 30, 40, 50, 60]
-print("| lane | quantity | " + " | ".join(f"{t} µs" for t in TIMES) + " |")
+TIMES = [float(t) for t in os.environ.get("TIMES", "12 20 30 40 50 60").split()]
+print("| lane | quantity | " + " | ".join(f"{t:g} µs" for t in TIMES) + " |")
 print("|---|---|" + "---|" * len(TIMES))
 for arg in sys.argv[1:]:
     name, path = arg.split("=", 1)
