@@ -111,10 +111,8 @@ void fracture_crack_rotate(double n[3], const double L[9], double dt)
 double fracture_crack_eps_f(const struct fracture_params *fp, double p, const double S[6])
 {
   if (!fp->crack_eps_f_on) return HUGE_VAL;
-  /* σ* = σ_m/σ_eq, σ_m = −p, σ_eq = √(3J₂) = √(3/2 S:S); ±1.5 without deviator */
-  const double ss = S[0] * S[0] + S[1] * S[1] + S[2] * S[2] +
-                    2.0 * (S[3] * S[3] + S[4] * S[4] + S[5] * S[5]);
-  const double seq = sqrt(1.5 * ss);
+  /* σ* = σ_m/σ_eq, σ_m = −p, σ_eq = √(3J₂); ±1.5 without deviator */
+  const double seq = sqrt(3.0 * sym3_j2(S));
   double tri = seq > 0.0 ? -p / seq : (p < 0.0 ? 1.5 : p > 0.0 ? -1.5 : 0.0);
   if (!(tri <= 1.5)) tri = 1.5;
   if (!(tri >= -1.5)) tri = -1.5;

@@ -281,6 +281,10 @@ static void test_crack(void)
         fracture_crack_eps_f(&cf, 1e8, S0c) == 0.13 + 0.13 * exp(2.25) &&
         fracture_crack_eps_f(&cr, -1e8, S0c) == HUGE_VAL,
         "crack_eps_f: σ* clamped to ±1.5 without a deviator; none without crack_eps_f");
+  const double Ssm[6] = {0, 0, 0, 1e6, 0, 0};   /* σ_eq = √3 MPa under 0.1 GPa: σ* = ±57.7 */
+  CHECK(fracture_crack_eps_f(&cf, -1e8, Ssm) == 0.13 + 0.13 * exp(-2.25) &&
+        fracture_crack_eps_f(&cf, 1e8, Ssm) == 0.13 + 0.13 * exp(2.25),
+        "crack_eps_f: σ* = ±57.7 (a small deviator) clamped to ±1.5");
   /* the membrane of 0.3 GPa (carried above, below |σ_c|) tears once ε_p reaches ε_f */
   double Sa[6], na[3] = {1, 0, 0};
   for (int k = 0; k < 6; k++) Sa[k] = Sb[k];
