@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo check bench clean
+.PHONY: all deps build demo check bench analyze clean
 
 all: build
 
@@ -24,5 +24,16 @@ check: build
 bench: build
 	@$(BUILD)/hvsph bench
 
+# Static analysis of the library, build/hvsph and the tests (clang's analyser through
+# scan-build, a Debug build in $(BUILD)-analyze): fails when it reports anything; the HTML report is in $(BUILD)-analyze/report. Not part of check
+# (docs/design.md, "Static analysis").
+analyze:
+	@bash tools/install-deps.sh --analyze
+	@rm -rf $(BUILD)-analyze
+	@scan-build-14 -o $(BUILD)-analyze/report cmake -S . -B $(BUILD)-analyze \
+	  -DCMAKE_BUILD_TYPE=Debug $(CMAKE_FLAGS) >/dev/null
+	@scan-build-14 -o $(BUILD)-analyze/report --status-bugs \
+	  cmake --build $(BUILD)-analyze -j $(JOBS)
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(BUILD)-analyze

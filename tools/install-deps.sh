@@ -4,9 +4,16 @@
 #   tools/install-deps.sh          build + test dependencies
 #   tools/install-deps.sh --docs   also python3-numpy/matplotlib/scipy for the doc plots
 #                                  and study tools (tools/*.py)
+#   tools/install-deps.sh --analyze   also clang-tools-14 (scan-build) for `make analyze`
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3)
-if [ "${1:-}" = "--docs" ]; then pkgs+=(python3-numpy python3-matplotlib python3-scipy); fi
+for arg in "$@"; do
+  case "$arg" in
+    --docs) pkgs+=(python3-numpy python3-matplotlib python3-scipy) ;;
+    --analyze) pkgs+=(clang-tools-14) ;;
+    *) echo "install-deps: unknown option '$arg' (--docs, --analyze)" >&2; exit 1 ;;
+  esac
+done
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

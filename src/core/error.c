@@ -15,20 +15,19 @@ void hv_error_clear(struct hv_error *err)
   err->msg[0] = '\0';
 }
 
-int hv_error_set(struct hv_error *err, int code, const char *fmt, ...)
+void hv_error_set_(struct hv_error *err, int code, const char *fmt, ...)
 {
-  if (!err) return -1;
+  if (!err) return;
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(err->msg, sizeof err->msg, fmt, ap);
   va_end(ap);
   err->code = code;
-  return -1;
 }
 
-int hv_error_prefix(struct hv_error *err, const char *fmt, ...)
+void hv_error_prefix_(struct hv_error *err, const char *fmt, ...)
 {
-  if (!err) return -1;
+  if (!err) return;
   char head[1024], old[sizeof err->msg];
   va_list ap;
   va_start(ap, fmt);
@@ -42,7 +41,6 @@ int hv_error_prefix(struct hv_error *err, const char *fmt, ...)
   memcpy(err->msg + hl, old, ol);
   err->msg[hl + ol] = '\0';
   if (!err->code) err->code = HV_EXIT_RUN;
-  return -1;
 }
 
 void hv_log(int level, const char *fmt, ...)

@@ -24,12 +24,17 @@ struct hv_error {
 };
 
 void hv_error_clear(struct hv_error *err);
-/* Sets code and message (printf format). Returns -1 so callers can `return hv_error_set(...)`. */
-int hv_error_set(struct hv_error *err, int code, const char *fmt, ...)
+/* Sets code and message (printf format). Evaluates to -1 so callers can
+ * `return hv_error_set(...)`; the -1 is in the macro, where a static analyser that
+ * reads one file at a time (scan-build, `make analyze`) sees it. */
+static inline int hv_error_minus_one_(void) { return -1; }
+void hv_error_set_(struct hv_error *err, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* Prepends context to an existing message. Returns -1. */
-int hv_error_prefix(struct hv_error *err, const char *fmt, ...)
+#define hv_error_set(...) (hv_error_set_(__VA_ARGS__), hv_error_minus_one_())
+/* Prepends context to an existing message. Evaluates to -1. */
+void hv_error_prefix_(struct hv_error *err, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
+#define hv_error_prefix(...) (hv_error_prefix_(__VA_ARGS__), hv_error_minus_one_())
 
 /* Logging to stderr. Levels: 0 error, 1 warning, 2 info, 3 debug. */
 extern int hv_log_level;

@@ -309,7 +309,7 @@ int units_parse(const char *text, enum unit_dim dim, double *si, char *msg, size
     *si = x; /* bare numbers are SI (angles in rad) */
     return 0;
   }
-  char unit[256];
+  char unit[256] = "";
   size_t n = strlen(p);
   while (n && isspace((unsigned char)p[n - 1])) n--;
   if (n >= sizeof unit) return fail(msg, msglen, "unit too long in '%s'", text);

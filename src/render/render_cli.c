@@ -103,7 +103,7 @@ int render_main(int argc, char **argv)
   const char *in = NULL, *out = NULL, *range = NULL;
   char msg[512];
   for (int i = 0; i < argc; i++) {
-    const char *a = argv[i], *val = NULL;
+    const char *a = argv[i], *val = ""; /* set below for the options that take one */
     char opt[64];
     const char *eq = strncmp(a, "--", 2) == 0 ? strchr(a, '=') : NULL;
     snprintf(opt, sizeof opt, "%.*s", eq ? (int)(eq - a) : (int)strlen(a), a);

@@ -62,12 +62,14 @@ static double one_step(double f, double *worst)
   long cnt = 0;
   int ok = !step_init(&s, &err);
   /* ρⁿ of each slot (step_advance may reorder only on its reorder steps: not the first) */
-  double *rn = malloc(p->n * sizeof *rn);
-  for (size_t i = 0; ok && i < p->n; i++) rn[i] = p->rho[i];
+  const size_t n0 = p->n;
+  double *rn = malloc(n0 * sizeof *rn);
+  for (size_t i = 0; i < n0; i++) rn[i] = p->rho[i];
   ok = ok && !step_advance(&s, &err);
   CHECK(ok, "f = %g: one step (%s)", f, ok ? "ok" : err.msg);
-  if (ok) {
-    for (size_t i = 0; i < p->n; i++) {
+  CHECK(p->n == n0, "f = %g: the step keeps the particles (%zu of %zu)", f, p->n, n0);
+  if (ok && p->n == n0) {
+    for (size_t i = 0; i < n0; i++) {
       const double want = rn[i] * exp(s.dt * p->drho[i] / rn[i]);
       w = fmax(w, fabs(p->rho[i] / want - 1.0));
       int mid = 1;

@@ -106,7 +106,7 @@ static void test_two_clusters(void)
   fof_result_free(&r);
 
   /* a mask leaves out the second cluster */
-  unsigned char *mask = calloc(p.n, 1);
+  unsigned char *mask = calloc(125 + 64, 1);   /* the two clusters' particles */
   for (size_t i = 0; i < 125; i++) mask[i] = 1;
   par.b = 1.01 * gap;
   par.mask = mask;

@@ -396,11 +396,11 @@ static void test_gauge(void)
                       msg, sizeof msg);
   CHECK(rc == 0 && fabs(pc / 1e9 - 0.16) < 0.25 * 0.16, "pressure_radius 4 mm: %.4g GPa, the "
         "area share (1.6/4)^2 = 0.16 within 25 %%", pc / 1e9);
-  pc = gauge_pressure("pressure_radius: 4 mm", &rc, msg, sizeof msg);
+  (void)gauge_pressure("pressure_radius: 4 mm", &rc, msg, sizeof msg);
   CHECK(rc == HV_EXIT_INPUT && strstr(msg, "gauge.yaml") && strstr(msg, "pressure_radius") &&
             strstr(msg, "no measure.backwall"),
         "no backwall: refused, exit 2 (%d): %s", rc, msg);
-  pc = gauge_pressure("backwall: wall, pressure_depth: -1 mm", &rc, msg, sizeof msg);
+  (void)gauge_pressure("backwall: wall, pressure_depth: -1 mm", &rc, msg, sizeof msg);
   CHECK(rc == HV_EXIT_INPUT && strstr(msg, "pressure_depth"), "a negative depth: refused (%d): "
         "%s", rc, msg);
 }

@@ -78,6 +78,7 @@ static struct sig areal(const struct particles *p, const struct render_options *
   struct hv_error err;
   hv_error_clear(&err);
   struct sig s = {0, 0, NAN};
+  if (view_out) memset(view_out, 0, sizeof *view_out);
   if (render_view_setup(p, o, &v0, &err)) {
     CHECK(0, "view setup: %s", err.msg);
     return s;

@@ -104,7 +104,11 @@ int main(void)
   double *r0_of = calloc((size_t)idmax + 1, sizeof *r0_of);
   unsigned char *inner = calloc((size_t)idmax + 1, 1);
   CHECK(r0_of && inner, "memory for %lld ids", (long long)idmax + 1);
-  if (!r0_of || !inner) return test_finish();
+  if (!r0_of || !inner) {
+    free(r0_of);
+    free(inner);
+    return test_finish();
+  }
   size_t nin = 0;
   for (size_t i = 0; i < n; i++) {
     const double y = p->x[1][i], z = p->x[2][i], r = hypot(y, z);

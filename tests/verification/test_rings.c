@@ -222,6 +222,8 @@ static int run_variant(const char *out, const char *extra, int *worst_groups, in
   *nsnap_out = nsnap;
   *worst_groups = *worst_cuts = 0;
   *first_cut = -1;
+  *t_end = NAN;   /* with fewer than two outputs the checks on these fail, as they should */
+  for (int b = 0; b < 2; b++) xc[b] = vc[b] = xc_prev[b] = NAN;
   double link = 0;
   for (int k = 0; k < nsnap; k++) {
     struct particles p;

@@ -100,7 +100,10 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
   for (int k = 1; k < nsnap; k++) {
     struct particles p;
     double t;
-    if (sc_read(dir, k, &p, &t)) return -1;
+    if (sc_read(dir, k, &p, &t)) {
+      free(x0);
+      return -1;
+    }
     double smax = 0, xsm = 0;
     for (size_t i = 0; i < p.n; i++) {
       if (fabs(x0[p.id[i]] - contact) < EXCLUDE_CONTACT * o->dx || p.damage[i] >= 1) continue;

@@ -110,7 +110,11 @@ int main(void)
          "R = %.3f mm (true 32.4, 3.2)\n", p.n, dx * 1e3, s0.L * 1e3, s0.R * 1e3);
   particles_free(&p);
   for (int k = 1; k < nsnap; k++) {
-    if (sc_read(dir, k, &p, &t)) return CHECK(0, "snapshot %d readable", k), test_finish();
+    if (sc_read(dir, k, &p, &t)) {
+      free(face);
+      free(rear);
+      return CHECK(0, "snapshot %d readable", k), test_finish();
+    }
     measure(&p, dx, face, rear, &s);
     printf("  t = %5.1f us: L = %.3f mm, R = %.3f mm, rear radius %.3f mm, mean v_x = %+.2f m/s, "
            "max plastic strain %.3f\n", t * 1e6, s.L * 1e3, s.R * 1e3, s.Rrear * 1e3, s.vx,
