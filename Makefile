@@ -25,8 +25,9 @@ bench: build
 	@$(BUILD)/hvsph bench
 
 # Static analysis of the library, build/hvsph and the tests (clang's analyser through
-# scan-build, a Debug build in $(BUILD)-analyze): fails when it reports anything; the HTML report is in $(BUILD)-analyze/report. Not part of check
-# (docs/design.md, "Static analysis").
+# scan-build, a Debug build in $(BUILD)-analyze): fails when it reports anything; the
+# HTML report is in $(BUILD)-analyze/report. Not part of check (docs/design.md,
+# "Static analysis").
 analyze:
 	@bash tools/install-deps.sh --analyze
 	@rm -rf $(BUILD)-analyze
