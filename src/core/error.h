@@ -26,7 +26,9 @@ struct hv_error {
 void hv_error_clear(struct hv_error *err);
 /* Sets code and message (printf format). Evaluates to -1 so callers can
  * `return hv_error_set(...)`; the -1 is in the macro, where a static analyser that
- * reads one file at a time (scan-build, `make analyze`) sees it. */
+ * reads one file at a time (scan-build, `make analyze`) sees it. The -1 comes from an
+ * inline function, not a literal, so that a call whose value is dropped does not warn
+ * (-Wunused-value). */
 static inline int hv_error_minus_one_(void) { return -1; }
 void hv_error_set_(struct hv_error *err, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

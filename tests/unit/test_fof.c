@@ -106,7 +106,12 @@ static void test_two_clusters(void)
   fof_result_free(&r);
 
   /* a mask leaves out the second cluster */
-  unsigned char *mask = calloc(125 + 64, 1);   /* the two clusters' particles */
+  if (p.n != 125 + 64) {   /* two_clusters' particles; the mask below is one per slot */
+    CHECK(0, "two clusters of 125 + 64 particles: %zu", p.n);
+    particles_free(&p);
+    return;
+  }
+  unsigned char *mask = calloc(p.n, 1);
   for (size_t i = 0; i < 125; i++) mask[i] = 1;
   par.b = 1.01 * gap;
   par.mask = mask;
