@@ -1,5 +1,7 @@
+# cmp10.py SNAPSHOT...: per body, W.P.3 at a snapshot: momentum, mass behind the second bumper (x > 61.3 mm),
+# mass moving back between the bumpers; the second bumper's particles above 1.2 rho0 and 10 GPa (session 51)
 import sys, numpy as np
-sys.path.insert(0, "/tmp/s51"); import vtu
+sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(__file__))); import vtu
 RHO0 = 2785.0
 for f in sys.argv[1:]:
     d = vtu.load(f); b = d["body"].astype(int); m = d["m"]; vx = d["vx"]; x = d["x"]; r = np.hypot(d["y"], d["z"])
