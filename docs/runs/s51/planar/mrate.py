@@ -1,6 +1,7 @@
 import sys, glob, numpy as np
 sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__import__("os").path.abspath(__file__)), "..")); import vtu
-A = 1.8e-3**2
+import os
+A = float(os.environ.get("AREA", "3.24e-6"))
 for d, pex in zip(sys.argv[1::2], sys.argv[2::2]):
     T, P = [], []
     for f in sorted(glob.glob(d + "/particles_*.csv")):
