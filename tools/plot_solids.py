@@ -3,7 +3,7 @@
 
 Reads the particle snapshots (particles_NNNNN.csv) the verification tests leave in
 their scratch folders and writes docs/img/verif_solid_{hugoniot,elastic_wave,rings,
-taylor,spall}.png. Needs Debian's python3-numpy and python3-matplotlib
+taylor,spall,porous_impact}.png. Needs Debian's python3-numpy and python3-matplotlib
 (/usr/bin/python3).
 
 usage:
@@ -331,6 +331,67 @@ def plot_spall(d, dlow, out):
     plt.close(fig)
 
 
+def porous_match(f, V=7000.0, rho0=2780.0, c0=5612.0, n=3.54, gam=1.176):
+    """Distended debris (f rho0, E = 0, p = 0; pressure cut at 0) on the solid plate at V:
+    the plate's particle speed u and pressure p (test_porous_impact.c)."""
+    def eos(r, E):
+        eta = r / rho0
+        pc = rho0 * c0 ** 2 / n * (eta ** n - 1)
+        Ec = c0 ** 2 / n * ((eta ** (n - 1) - 1) / (n - 1) - 1 + rho0 / r)
+        return pc + gam * r * (E - Ec)
+
+    def debris_p(w):
+        r00 = f * rho0
+        a, b = r00 * (1 + 1e-9), 4 * rho0
+        for _ in range(200):
+            r = 0.5 * (a + b)
+            pj = r00 * w * w * r / (r - r00)
+            a, b = (a, r) if max(eos(r, 0.5 * w * w), 0.0) - pj > 0 else (r, b)
+        r = 0.5 * (a + b)
+        return r00 * w * w * r / (r - r00)
+
+    lo, hi = 0.0, V
+    for _ in range(100):
+        u = 0.5 * (lo + hi)
+        lo, hi = (lo, u) if rankine_hugoniot(u)[2] > debris_p(V - u) else (u, hi)
+    u = 0.5 * (lo + hi)
+    return u, rankine_hugoniot(u)[2]
+
+
+def plot_porous_impact(dirs, out, area=1.8e-3 ** 2):
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.2))
+    for (f, d), col in zip(dirs, ("C0", "C1", "C2")):
+        u, p = porous_match(f)
+        files = snapshots(d)
+        _, a0 = load(files[0])
+        sel = a0["body"] == 1
+        lay, nl = layers(a0, sel, 0.2 * a0["h"][0])
+        ts, mom = [], []
+        for fl in files:
+            t, a = load(fl)
+            s = a["body"] == 1
+            ts.append(t)
+            mom.append(np.sum(a["m"][s] * a["vx"][s]))
+        X, P = (layer_mean(a, lay, nl, c) for c in ("x", "p"))
+        ax[0].plot(X * 1e3, P * 1e-9, color=col, lw=1,
+                   label="f = %g, %.1f µs" % (f, t * 1e6))
+        ax[0].axhline(p * 1e-9, color=col, ls="--", lw=0.8)
+        ts, mom = np.array(ts), np.array(mom)
+        ax[1].plot(ts * 1e6, (mom - mom[0]) * 1e3, "o", color=col, ms=4,
+                   label="f = %g" % f)
+        ax[1].plot(ts * 1e6, p * area * (ts - ts[0]) * 1e3, "--", color=col, lw=0.8)
+    ax[0].set(xlabel="x [mm] (contact at 0)", ylabel="plate layer-mean pressure [GPa]",
+              title="debris at f ρ₀ on aluminium at 7 km/s (dashed: porous Hugoniot)",
+              ylim=(0, 45))   # f = 0.3's squeezed contact layer is off the scale
+    ax[0].legend(fontsize=8)
+    ax[1].set(xlabel="t [µs]", ylabel="plate momentum gained [g m/s]",
+              title="momentum handed to the plate (dashed: p A t)")
+    ax[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--tmp", default="build/testtmp", help="the tests' scratch root")
@@ -351,6 +412,8 @@ def main():
         "spall": o.spall or os.path.join(T, "test_spall", "spall"),
         "spall_low": o.spall_low or os.path.join(T, "test_spall", "spall_low"),
     }
+    porous = [(f, os.path.join(T, "test_porous_impact", "porous_impact_%02d" % round(100 * f)))
+              for f in (0.3, 0.1, 0.03)]
     os.makedirs(o.out, exist_ok=True)
     jobs = {
         "hugoniot": lambda p: plot_hugoniot(dirs["hugoniot"], p),
@@ -362,6 +425,7 @@ def main():
         "taylor": lambda p: plot_taylor(dirs["taylor"], p),
         "spall": lambda p: plot_spall(dirs["spall"], dirs["spall_low"]
                                       if os.path.isdir(dirs["spall_low"]) else None, p),
+        "porous_impact": lambda p: plot_porous_impact(porous, p),
     }
     for name, job in jobs.items():
         if o.only and name not in o.only:
