@@ -28,9 +28,9 @@
  *     hands the plate it strikes. The debris arrives as a train of particle layers (at
  *     f = 0.03 one every 44 ns), so the force is read over the whole run, not at one
  *     time. Without the bound on neighbours' volumes (today's code with its condition
- *     made false, for neighbours of either body) the test fails six checks: the force +86 % at f = 0.03 and +5.7 %
- *     at f = 0.1, the f = 0.03 shock speed +10.9 %, and 180, 324 and 504 plate particles
- *     above 2 ρ₀ (up to 16 ρ₀). W.P.3's second bumper ran without it until session 29
+ *     made false, for neighbours of either body) the test fails six checks: the force
+ *     +86 % at f = 0.03 and +5.7 % at f = 0.1, the f = 0.03 shock speed +10.9 %, and
+ *     180, 324 and 504 plate particles above 2 ρ₀ (up to 16 ρ₀). W.P.3's second bumper ran without it until session 29
  *     (docs/validation.md, "W.P.3's second cloud and backwall: the contact's density
  *     rate");
  *   - the shock speed relative to the plate ahead (layer means, the front where the mean
