@@ -91,12 +91,17 @@ def front(X, V, level, from_end):
 
 # ---------------------------------------------------------------- references
 
+def mg_pressure(r, E, rho0=2780.0, c0=5612.0, n=3.54, gam=1.176):
+    """The paper's Mie-Grueneisen EOS with the Murnaghan cold curve (al-alloy)."""
+    eta = r / rho0
+    pc = rho0 * c0 ** 2 / n * (eta ** n - 1)
+    Ec = c0 ** 2 / n * ((eta ** (n - 1) - 1) / (n - 1) - 1 + rho0 / r)
+    return pc + gam * r * (E - Ec)
+
+
 def rankine_hugoniot(up, rho0=2780.0, c0=5612.0, n=3.54, gam=1.176):
     def eos(r, E):
-        eta = r / rho0
-        pc = rho0 * c0 ** 2 / n * (eta ** n - 1)
-        Ec = c0 ** 2 / n * ((eta ** (n - 1) - 1) / (n - 1) - 1 + rho0 / r)
-        return pc + gam * r * (E - Ec)
+        return mg_pressure(r, E, rho0, c0, n, gam)
 
     def res(r1):
         p1 = rho0 * up ** 2 * r1 / (r1 - rho0)
@@ -331,22 +336,16 @@ def plot_spall(d, dlow, out):
     plt.close(fig)
 
 
-def porous_match(f, V=7000.0, rho0=2780.0, c0=5612.0, n=3.54, gam=1.176):
-    """Distended debris (f rho0, E = 0, p = 0; pressure cut at 0) on the solid plate at V:
-    the plate's particle speed u and pressure p (test_porous_impact.c)."""
-    def eos(r, E):
-        eta = r / rho0
-        pc = rho0 * c0 ** 2 / n * (eta ** n - 1)
-        Ec = c0 ** 2 / n * ((eta ** (n - 1) - 1) / (n - 1) - 1 + rho0 / r)
-        return pc + gam * r * (E - Ec)
-
+def porous_match(f, V=7000.0, rho0=2780.0):
+    """Distended al-alloy debris (f rho0, E = 0, p = 0; pressure cut at 0) on the solid
+    plate at V: the plate's particle speed u and pressure p (test_porous_impact.c)."""
     def debris_p(w):
         r00 = f * rho0
         a, b = r00 * (1 + 1e-9), 4 * rho0
         for _ in range(200):
             r = 0.5 * (a + b)
             pj = r00 * w * w * r / (r - r00)
-            a, b = (a, r) if max(eos(r, 0.5 * w * w), 0.0) - pj > 0 else (r, b)
+            a, b = (a, r) if max(mg_pressure(r, 0.5 * w * w), 0.0) - pj > 0 else (r, b)
         r = 0.5 * (a + b)
         return r00 * w * w * r / (r - r00)
 
