@@ -63,12 +63,15 @@
 #define GAMMA_G 1.176    /* [-] */
 #define V_IMPACT 7000.0  /* [m/s] */
 
-#define FORCE_TOL 0.05           /* the plate's momentum rate / (p A) */
+#define FORCE_TOL 0.05           /* the plate's momentum rate / (p A): the debris arrives in
+                                    layer pulses, the fit over 8 outputs reads them to a few
+                                    % (measured 3.8 % at most; the unbounded rule 86 %) */
 #define INTERFACE_TOL 0.02       /* plateau velocity / u (f = 0.3) */
 #define AREA (1.8e-3 * 1.8e-3)   /* [m2] the periodic cross-section */
 #define SHOCK_SPEED_TOL 0.03     /* issue 3 */
 #define PRESSURE_TOL 0.03        /* issue 3 */
-#define OVERCOMPRESSED_TOL 0.01  /* plate particles above 2 ρ₀, fraction of the plate */
+#define OVERCOMPRESSED_TOL 0.01  /* plate particles above 2 ρ₀, fraction of the plate
+                                    (measured 0.32 % at f = 0.3; the unbounded rule 1.6-4.4 %) */
 #define T_FIT_START 0.1e-6       /* [s] fit the front from here on */
 
 /* The debris' shocked state at particle speed jump w from (f ρ₀, 0, 0). */
