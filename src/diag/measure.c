@@ -355,6 +355,8 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->mask = NULL;
   par->scale = NULL;
   par->attached_only = 1;
+  par->far_reference = 1;
+  par->far_fraction = 0.8;
 }
 
 int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g,
@@ -388,10 +390,10 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
         par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
         isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
         par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
-        par->area_fraction <= 1))
+        par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1))
     return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
                         "footprint, margin_front and crater_min (>= 0) must be finite and "
-                        "area_fraction in (0, 1]");
+                        "area_fraction and far_fraction in (0, 1]");
   const double xlo = g->x0 - par->margin_front, fp = par->footprint, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (size_t i = 0; i < p->n; i++) {
@@ -459,6 +461,24 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       }
     }
   }
+  /* the far wall: the median front of the columns at ρ >= far_fraction R_in */
+  double shift = 0.0;
+  if (par->far_reference) {
+    double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
+    if (!g->half_model) r_in = fmin(r_in, -lo[1]);
+    struct wval *far = hv_malloc((size_t)nu * (size_t)nw * sizeof *far, "backwall far wall");
+    size_t nfar = 0;
+    for (int b = 0; b < nw && r_in > 0; b++)
+      for (int a = 0; a < nu; a++) {
+        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+        const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
+        if (isfinite(xf[k]) && hypot(u, w) >= par->far_fraction * r_in)
+          far[nfar++] = (struct wval){xf[k] - g->x0, 1.0};
+      }
+    if (nfar) shift = wquantile(far, nfar, 0.5);
+    free(far);
+  }
+  out->wall_shift = shift;
   /* rings around the axis: columns counted, and damaged columns among them */
   const double rmax = hypot(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
   const size_t nring = (size_t)(rmax / par->ring) + 2;
@@ -473,7 +493,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       const size_t q = (size_t)(r / par->ring);
       int damaged = !isfinite(x) || hit[k];   /* a hole, or damaged material */
       if (isfinite(x)) {
-        const double d = x - g->x0;   /* xf: the particles' front, x − footprint */
+        const double d = x - g->x0 - shift;   /* xf: the particles' front, x − footprint */
         if (d > dmax) {
           dmax = d;
           out->crater_pos[0] = u + g->yc;

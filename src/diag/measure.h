@@ -236,11 +236,17 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  * further out are no longer wall). Columns along x of square section `cell` cover the
  * projected wall; a column holds the particles whose projection lies within `tol` of
  * its axis; its front surface is x_f = the smallest x among them.
- * crater_depth: the deepest material-free region below the original front face,
- *    max over columns of x_f − footprint − x0 (>= 0; bulging of the whole wall adds to
- *    it — it is measured from the original face, like a depth gauge referenced to the
- *    untouched wall far from the impact); crater_pos its column (y, z).
- * r_crater: the largest radial distance ρ of a column cratered deeper than crater_min.
+ * wall_shift: how far the wall far from the impact has moved along x, the median of
+ *    x_f − footprint − x0 over the columns at ρ >= far_fraction R_in, R_in the largest
+ *    radius about the axis within the wall's projection (its inscribed radius); 0 with
+ *    far_reference 0 or when no column lies there. A wall whose edges are not held
+ *    (rigid walls let them slide) drifts back as a whole with the momentum it took.
+ * crater_depth: the deepest material-free region below the front face, max over
+ *    columns of x_f − footprint − x0 − wall_shift (>= 0): measured like a depth gauge
+ *    laid across the crater and resting on the wall far from the impact, so a bulge
+ *    adds to it and a drift of the whole wall does not; crater_pos its column (y, z).
+ * r_crater: the largest radial distance ρ of a column cratered (below x0 + wall_shift)
+ *    deeper than crater_min.
  * r_damage_particles: the largest ρ of a wall particle with damage >= damage_min or
  *    plastic strain eps_p >= eps_p_min (solid fields; 0 when the store has none) —
  *    the extent of any damage, however sparse.
@@ -275,9 +281,12 @@ struct meas_backwall_params {
   const unsigned char *mask;  /* optional [p->n] */
   const double *scale;  /* optional [p->n]: Δ_i/Δ per particle; NULL: 1 for all */
   int attached_only;    /* 1 (default): the columns see only the wall's largest piece */
+  int far_reference;    /* 1 (default): depths from the far wall (wall_shift); 0: from x0 */
+  double far_fraction;  /* the far wall: ρ >= far_fraction R_in, in (0, 1] (default 0.8) */
 };
 struct meas_backwall {
   double crater_depth;        /* [m] */
+  double wall_shift;          /* [m] the far wall's move along x (0: none measured) */
   double crater_pos[2];       /* [m] (y, z) of the deepest column */
   double r_crater;            /* [m] */
   double r_damage_particles;  /* [m] */

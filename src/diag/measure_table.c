@@ -148,6 +148,7 @@ void meas_table_add_backwall(struct meas_table *t, double time, const char *obje
                              const struct meas_backwall *r)
 {
   meas_table_add(t, time, "crater_depth", r->crater_depth, "m", object);
+  meas_table_add(t, time, "wall_shift", r->wall_shift, "m", object);
   meas_table_add(t, time, "damage_radius", r->r_damage, "m", object);
   meas_table_add(t, time, "crater_radius", r->r_crater, "m", object);
   meas_table_add(t, time, "damage_radius_particles", r->r_damage_particles, "m", object);

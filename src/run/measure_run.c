@@ -145,6 +145,16 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
     return hv_error_set(err, HV_EXIT_INPUT, "%s: %s is the backwall's centre pressure, but there is "
                         "no measure.backwall", cfg_where(c, key, where, sizeof where), key);
   }
+  static const char *const crater_refs[] = {"far-wall", "original-face", NULL};
+  if (cfg_get_choice(c, "measure.crater_reference", crater_refs[0], crater_refs,
+                     &mr->crater_original, err))
+    return -1;
+  if (mr->crater_original && mr->nbackwall == 0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.crater_reference is the backwall's, but "
+                        "there is no measure.backwall",
+                        cfg_where(c, "measure.crater_reference", where, sizeof where));
+  }
   return cfg_get_quantity(c, "measure.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &mr->every, err);
 }
 
@@ -345,6 +355,7 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     meas_backwall_defaults(&bp, &g);
     bp.mask = mask;
     bp.scale = bscale;
+    bp.far_reference = !mr->crater_original;
     struct meas_plate_params pp;
     struct meas_plate hole;
     meas_plate_defaults(&pp, &g);

@@ -44,6 +44,9 @@ struct measure_run {
   double p_radius, p_depth;  /* [m] the centre pressure's averaging disc and depth
                                 (measure.pressure_radius/_depth; 0: 2 x the finest
                                 backwall spacing) */
+  int crater_original;   /* 1: backwall depths from the original face x0
+                            (measure.crater_reference: original-face); 0 (default,
+                            far-wall): from the wall far from the impact */
   double every;          /* [s] measurements also at these intervals between output times
                             (measure.every; 0: at output times only) */
   struct meas_table table;

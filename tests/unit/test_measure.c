@@ -774,11 +774,13 @@ static void test_backwall_two_bodies(void)
 /* A backwall that has moved back as a whole, 5 mm behind its 1 mm thickness (a free
  * plate at 1 km/s for 5 us, intact): its material still blocks the line of sight, so
  * it is not perforated (a slab ending 2t behind the original face would hold none of
- * it and read one open hole); its crater depth is the 5 mm it has moved (measured from
- * the original face, docs/measurements.md). */
+ * it and read one open hole). The wall far from the impact has moved 5 mm with it
+ * (wall_shift), so it has no crater; measured from the original face
+ * (`measure.crater_reference: original-face`) its depth is the 5 mm it has moved
+ * (docs/measurements.md). */
 static void test_backwall_moved(void)
 {
-  static const char *const text =
+  static const char *const fmt =
       "name: moved-backwall\n"
       "domain: {min: [-5 mm, -10 mm, 0], max: [15 mm, 10 mm, 10 mm], half_model: true}\n"
       "bodies:\n"
@@ -789,16 +791,31 @@ static void test_backwall_moved(void)
       "    velocity: [1 km/s, 0, 0]\n"
       "time: {end: 5 us}\n"
       "output: {every: 5 us}\n"
-      "measure: {backwall: wall}\n";
-  char path[4400];
+      "measure: {backwall: wall%s}\n";
+  char text[1024], path[4400];
+  snprintf(text, sizeof text, fmt, "");
   if (!run_variant(text, "moved_backwall", 0, 0, "measure.backwall", "a backwall moved 5 mm",
                    path, sizeof path))
     return;
   const double perf = csv_value(path, "perforated", "wall");
   const double depth = csv_value(path, "crater_depth", "wall");
+  const double shift = csv_value(path, "wall_shift", "wall");
   CHECK(perf == 0.0, "a wall moved 5 mm back is not perforated (%g)", perf);
-  CHECK(fabs(depth - 5e-3) <= 0.25e-3, "... its depth from the original face %.3f mm (5 mm "
-        "within half its 0.5 mm spacing)", 1e3 * depth);
+  CHECK(fabs(shift - 5e-3) <= 1e-6, "... the wall far from the impact moved %.4f mm (5 mm)",
+        1e3 * shift);
+  CHECK(fabs(depth) <= 1e-6, "... and it has no crater: depth %.4f mm from the far wall",
+        1e3 * depth);
+  snprintf(text, sizeof text, fmt, ", crater_reference: original-face");
+  if (!run_variant(text, "moved_backwall", 1, 0, "measure.backwall", "the moved backwall from its "
+                   "original face", path, sizeof path))
+    return;
+  const double depth0 = csv_value(path, "crater_depth", "wall");
+  CHECK(fabs(depth0 - 5e-3) <= 0.25e-3, "... its depth from the original face %.3f mm (5 mm "
+        "within half its 0.5 mm spacing)", 1e3 * depth0);
+  CHECK(csv_value(path, "wall_shift", "wall") == 0.0, "... and no wall_shift then");
+  snprintf(text, sizeof text, fmt, ", crater_reference: far");
+  run_variant(text, "moved_backwall", 2, 1, "measure.crater_reference",
+              "an unknown crater_reference", path, sizeof path);
 }
 
 int main(void)

@@ -12,7 +12,8 @@
  * radius R about the entry point: the front is found at R within one spacing, axially,
  * radially and in distance.
  * Backwall: two flat-bottomed craters of known depth, damage inside a known radius: the
- * deepest crater and the damaged radius within one spacing; bulging adds to the depth;
+ * deepest crater and the damaged radius within one spacing; a bulge adds to the depth, a
+ * drift of the whole wall does not (wall_shift);
  * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken).
  * Pressure: layers of known pressure at the front face; through a case file, the
  * averaging disc and depth of `measure.pressure_radius` / `pressure_depth` (default 2Δ
@@ -268,12 +269,42 @@ static void test_backwall(void)
   par.area_fraction = 0.5;
   particles_free(&p);
 
-  /* the whole wall bulged by 2Δ: measured from the original face, the depth grows by 2Δ */
+  CHECK(fabs(r.wall_shift) <= 1e-12, "the wall in place: wall_shift %gΔ", r.wall_shift / S);
+  particles_free(&p);
+
+  /* the whole wall moved back by 2Δ (a free wall drifting with the momentum it took): the
+     wall far from the impact moved with it, the craters are as deep as before; from the
+     original face (far_reference 0) the depth grows by 2Δ */
   particles_init(&p);
   backwall(&p, 2 * S);
   meas_backwall_defaults(&par, &g);
-  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.crater_depth - 6.4 * S) <= S,
-        "bulged wall: depth from the original face %.3fΔ", r.crater_depth / S);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.wall_shift - 2 * S) <= 1e-12 &&
+            fabs(r.crater_depth - 4.4 * S) <= S,
+        "moved wall: wall_shift %.3fΔ (2Δ), depth from the far wall %.3fΔ (4.4Δ within Δ)",
+        r.wall_shift / S, r.crater_depth / S);
+  CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
+        "... its damaged area as before: r_damage %.2fΔ", r.r_damage / S);
+  par.far_reference = 0;
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.wall_shift) <= 1e-12 &&
+            fabs(r.crater_depth - 6.4 * S) <= S,
+        "... from the original face %.3fΔ (6.4Δ within Δ)", r.crater_depth / S);
+  particles_free(&p);
+
+  /* a bulge: the wall within ρ < 12Δ of the axis pushed back by 2Δ, the rest in place:
+     the far wall has not moved, the bulge adds to the depth */
+  particles_init(&p);
+  backwall(&p, 0.0);
+  for (size_t i = 0; i < p.n; i++)
+    if (hypot(p.x[1][i], p.x[2][i]) < 12 * S) p.x[0][i] += 2 * S;
+  meas_backwall_defaults(&par, &g);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.wall_shift) <= 1e-12 &&
+            fabs(r.crater_depth - 6.4 * S) <= S,
+        "bulged wall: wall_shift %gΔ, depth %.3fΔ (6.4Δ within Δ)", r.wall_shift / S,
+        r.crater_depth / S);
+  par.far_fraction = 0.0;
+  hv_error_clear(&err);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "far_fraction 0: an error");
   particles_free(&p);
 
   /* a wall perforated by a hole of radius 5Δ, no other damage: the hole is the area */

@@ -112,7 +112,7 @@ static void test_measurement_rows(void)
     meas_table_add_gas(&t, 1e-4, "nitrogen", &gf);
     meas_table_add_fragments(&t, 1e-4, "all", &fo);
   }
-  CHECK(t.n == 6 + 6 + 9 + 5 + 4 + 6, "one row per quantity and object: %zu", t.n);
+  CHECK(t.n == 6 + 6 + 9 + 6 + 4 + 6, "one row per quantity and object: %zu", t.n);
   CHECK(count_rows(&t, "penetration_depth", "target") == 1 &&
             count_rows(&t, "hole_diameter", "bumper") == 1 &&
             count_rows(&t, "cloud_half_angle", "cloud1") == 1 &&
