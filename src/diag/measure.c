@@ -466,16 +466,24 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   if (par->far_reference) {
     double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
     if (!g->half_model) r_in = fmin(r_in, -lo[1]);
-    struct wval *far = hv_malloc((size_t)nu * (size_t)nw * sizeof *far, "backwall far wall");
+    struct wval *far = NULL;
     size_t nfar = 0;
-    for (int b = 0; b < nw && r_in > 0; b++)
-      for (int a = 0; a < nu; a++) {
-        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
-        const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
-        if (isfinite(xf[k]) && hypot(u, w) >= par->far_fraction * r_in)
-          far[nfar++] = (struct wval){xf[k] - g->x0, 1.0};
+    for (int pass = 0; pass < 2 && r_in > 0; pass++) {  /* count, then collect */
+      if (pass == 1) {
+        if (!nfar) break;
+        far = hv_malloc(nfar * sizeof *far, "backwall far wall");
+        nfar = 0;
       }
-    if (nfar) shift = wquantile(far, nfar, 0.5);
+      for (int b = 0; b < nw; b++)
+        for (int a = 0; a < nu; a++) {
+          const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+          const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
+          if (!isfinite(xf[k]) || hypot(u, w) < par->far_fraction * r_in) continue;
+          if (far) far[nfar] = (struct wval){xf[k] - g->x0, 1.0};
+          nfar++;
+        }
+    }
+    if (far) shift = wquantile(far, nfar, 0.5);  /* the median (the lower one of two) */
     free(far);
   }
   out->wall_shift = shift;

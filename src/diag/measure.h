@@ -236,7 +236,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  * further out are no longer wall). Columns along x of square section `cell` cover the
  * projected wall; a column holds the particles whose projection lies within `tol` of
  * its axis; its front surface is x_f = the smallest x among them.
- * wall_shift: how far the wall far from the impact has moved along x, the median of
+ * wall_shift: how far the wall far from the impact has moved along x, the (lower) median of
  *    x_f − footprint − x0 over the columns at ρ >= far_fraction R_in, R_in the largest
  *    radius about the axis within the wall's projection (its inscribed radius); 0 with
  *    far_reference 0 or when no column lies there. A wall whose edges are not held
