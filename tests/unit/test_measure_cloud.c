@@ -267,8 +267,6 @@ static void test_backwall(void)
   CHECK(rc == 0 && r.r_damage > 29 * S,
         "... unless area_fraction is lowered below its share: %.2fΔ", r.r_damage / S);
   par.area_fraction = 0.5;
-  particles_free(&p);
-
   CHECK(fabs(r.wall_shift) <= 1e-12, "the wall in place: wall_shift %gΔ", r.wall_shift / S);
   particles_free(&p);
 
