@@ -357,6 +357,8 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
   par->attached_only = 1;
   par->far_reference = 1;
   par->far_fraction = 0.8;
+  par->local_inner = fmax(0.5 * g->thickness, 2.0 * s);
+  par->local_outer = fmax(g->thickness, 4.0 * s);
 }
 
 int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g,
@@ -380,6 +382,100 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
   return rc;
 }
 
+/* The backwall's columns: xf[k] the smallest x − footprint of the wall particles (col, or
+ * those of the body/mask at x >= xlo) within tol of column k's axis, among those whose
+ * x − footprint >= xmin; hit[k] (when not NULL) set where a damaged one lies.
+ * In a half model a column with centre w >= 0 is never nearer a mirrored particle
+ * (u, −z) than the particle itself, so the mirror images add nothing. */
+static void fill_columns(const struct particles *p, const struct meas_geom *g,
+                         const struct meas_backwall_params *par, const unsigned char *col,
+                         double xlo, double xmin, const double lo[2], double c, int nu, int nw,
+                         double *xf, unsigned char *hit)
+{
+  const double fp = par->footprint, tol = par->tol;
+  for (size_t i = 0; i < p->n; i++) {
+    if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
+    const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
+    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
+    if (x < xmin) continue;
+    const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
+    int a0 = (int)ceil((u - ti - lo[0]) / c - 0.5), a1 = (int)floor((u + ti - lo[0]) / c - 0.5);
+    int b0 = (int)ceil((w - ti - lo[1]) / c - 0.5), b1 = (int)floor((w + ti - lo[1]) / c - 0.5);
+    if (a0 < 0) a0 = 0;
+    if (b0 < 0) b0 = 0;
+    if (a1 > nu - 1) a1 = nu - 1;
+    if (b1 > nw - 1) b1 = nw - 1;
+    for (int b = b0; b <= b1; b++) {
+      const double dw = lo[1] + ((double)b + 0.5) * c - w;
+      for (int a = a0; a <= a1; a++) {
+        const double du = lo[0] + ((double)a + 0.5) * c - u;
+        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+        if (du * du + dw * dw > ti * ti) continue;
+        if (x < xf[k]) xf[k] = x;
+        if (dmg && hit) hit[k] = 1;
+      }
+    }
+  }
+}
+
+/* crater_depth_local (measure.h): each column cratered below the far wall against the
+ * lower median front of the columns local_inner to local_outer from it. The ring is
+ * sampled on every st-th column (st about local_inner / 4 cells: some 150–200 samples),
+ * mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
+ * than a quarter of its samples (the wall's edge, a hole) is skipped. */
+static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
+                         const double lo[2], double c, int nu, int nw, const double *xf,
+                         double shift, struct meas_backwall *out)
+{
+  out->crater_depth_local = 0.0;
+  const int st = par->local_inner / (4.0 * c) > 1.0 ? (int)(par->local_inner / (4.0 * c)) : 1;
+  const int m = (int)ceil(par->local_outer / c);
+  size_t noff = 0;
+  for (int db = -m; db <= m; db += st)
+    for (int da = -m; da <= m; da += st) {
+      const double r = c * hypot(da, db);
+      if (r >= par->local_inner && r <= par->local_outer) noff++;
+    }
+  if (!noff) return;
+  int *off = hv_malloc(2 * noff * sizeof *off, "crater ring");
+  struct wval *ring = hv_malloc(noff * sizeof *ring, "crater ring");
+  noff = 0;
+  for (int db = -m; db <= m; db += st)
+    for (int da = -m; da <= m; da += st) {
+      const double r = c * hypot(da, db);
+      if (r < par->local_inner || r > par->local_outer) continue;
+      off[2 * noff] = da;
+      off[2 * noff + 1] = db;
+      noff++;
+    }
+  double best = -INFINITY;
+  for (int b = 0; b < nw; b++)
+    for (int a = 0; a < nu; a++) {
+      const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
+      if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
+      size_t n = 0;
+      for (size_t k = 0; k < noff; k++) {
+        const int aa = a + off[2 * k];
+        int bb = b + off[2 * k + 1];
+        if (bb < 0 && g->half_model) bb = -bb - 1;
+        if (aa < 0 || aa >= nu || bb < 0 || bb >= nw) continue;
+        const double v = xf[(size_t)bb * (size_t)nu + (size_t)aa];
+        if (isfinite(v)) ring[n++] = (struct wval){v, 1.0};
+      }
+      if (4 * n < noff) continue;
+      const double ref = wquantile(ring, n, 0.5);
+      if (x - ref > best) {
+        best = x - ref;
+        out->crater_local_pos[0] = lo[0] + ((double)a + 0.5) * c + g->yc;
+        out->crater_local_pos[1] = lo[1] + ((double)b + 0.5) * c;
+        out->crater_local_ref = ref - g->x0 - shift;
+      }
+    }
+  free(off);
+  free(ring);
+  out->crater_depth_local = fmax(best, 0.0);
+}
+
 int measure_backwall(const struct particles *p, const struct meas_geom *g,
                      const struct meas_backwall_params *par, struct meas_backwall *out,
                      struct hv_error *err)
@@ -390,11 +486,14 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
         par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
         isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
         par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
-        par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1))
+        par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1 &&
+        par->local_inner >= 0 && par->local_outer > par->local_inner &&
+        isfinite(par->local_outer)))
     return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
-                        "footprint, margin_front and crater_min (>= 0) must be finite and "
-                        "area_fraction and far_fraction in (0, 1]");
-  const double xlo = g->x0 - par->margin_front, fp = par->footprint, tol = par->tol;
+                        "footprint, margin_front and crater_min (>= 0) must be finite, "
+                        "area_fraction and far_fraction in (0, 1] and 0 <= local_inner < "
+                        "local_outer finite");
+  const double xlo = g->x0 - par->margin_front, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (size_t i = 0; i < p->n; i++) {
     if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
@@ -437,30 +536,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     xf[k] = INFINITY;
     hit[k] = 0;
   }
-  /* In a half model a column with centre w >= 0 is never nearer a mirrored particle
-   * (u, −z) than the particle itself, so the mirror images add nothing. */
-  for (size_t i = 0; i < p->n; i++) {
-    if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
-    const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
-    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
-    const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
-    int a0 = (int)ceil((u - ti - lo[0]) / c - 0.5), a1 = (int)floor((u + ti - lo[0]) / c - 0.5);
-    int b0 = (int)ceil((w - ti - lo[1]) / c - 0.5), b1 = (int)floor((w + ti - lo[1]) / c - 0.5);
-    if (a0 < 0) a0 = 0;
-    if (b0 < 0) b0 = 0;
-    if (a1 > nu - 1) a1 = nu - 1;
-    if (b1 > nw - 1) b1 = nw - 1;
-    for (int b = b0; b <= b1; b++) {
-      const double dw = lo[1] + ((double)b + 0.5) * c - w;
-      for (int a = a0; a <= a1; a++) {
-        const double du = lo[0] + ((double)a + 0.5) * c - u;
-        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
-        if (du * du + dw * dw > ti * ti) continue;
-        if (x < xf[k]) xf[k] = x;
-        if (dmg) hit[k] = 1;
-      }
-    }
-  }
+  fill_columns(p, g, par, col, xlo, -INFINITY, lo, c, nu, nw, xf, hit);
   /* the far wall: the median front of the columns at ρ >= far_fraction R_in */
   double shift = 0.0;
   if (par->far_reference) {
@@ -487,6 +563,16 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     free(far);
   }
   out->wall_shift = shift;
+  {
+    /* the surface a gauge rests on: wall particles at most tol ahead of the far wall's
+       face (splash still joined to the wall is not its surface) */
+    const size_t ncol = (size_t)nu * (size_t)nw;
+    double *xs = hv_malloc(ncol * sizeof *xs, "backwall surface");
+    for (size_t k = 0; k < ncol; k++) xs[k] = INFINITY;
+    fill_columns(p, g, par, col, xlo, g->x0 + shift - tol, lo, c, nu, nw, xs, NULL);
+    crater_local(par, g, lo, c, nu, nw, xs, shift, out);
+    free(xs);
+  }
   /* rings around the axis: columns counted, and damaged columns among them */
   const double rmax = hypot(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
   const size_t nring = (size_t)(rmax / par->ring) + 2;

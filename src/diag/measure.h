@@ -245,6 +245,15 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  *    columns of x_f − footprint − x0 − wall_shift (>= 0): measured like a depth gauge
  *    laid across the crater and resting on the wall far from the impact, so a bulge
  *    adds to it and a drift of the whole wall does not; crater_pos its column (y, z).
+ * crater_depth_local: the deepest column below its own surroundings, max over columns of
+ *    x_f − the (lower) median x_f of the columns whose centres lie local_inner to
+ *    local_outer from its centre (mirrored at z = 0 in a half model): a depth gauge laid
+ *    across one crater and resting on the wall around it, so a bulge or a drift of the
+ *    whole wall does not add to it; the columns' fronts here see only the wall particles
+ *    at most tol ahead of x0 + wall_shift (splash still joined to the wall, as it leaves
+ *    the face, is not the surface a gauge rests on); taken over the columns cratered
+ *    below x0 + wall_shift; crater_local_pos its column (y, z), crater_local_ref the median front
+ *    there (x_f − footprint − x0 − wall_shift: how far its surroundings have bulged).
  * r_crater: the largest radial distance ρ of a column cratered (below x0 + wall_shift)
  *    deeper than crater_min.
  * r_damage_particles: the largest ρ of a wall particle with damage >= damage_min or
@@ -283,11 +292,16 @@ struct meas_backwall_params {
   int attached_only;    /* 1 (default): the columns see only the wall's largest piece */
   int far_reference;    /* 1 (default): depths from the far wall (wall_shift); 0: from x0 */
   double far_fraction;  /* the far wall: ρ >= far_fraction R_in, in (0, 1] (default 0.8) */
+  double local_inner;   /* [m] crater_depth_local's ring (default max(thickness/2, 2Δ)) */
+  double local_outer;   /* [m] (default max(thickness, 4Δ)); > local_inner */
 };
 struct meas_backwall {
   double crater_depth;        /* [m] */
   double wall_shift;          /* [m] the far wall's move along x (0: none measured) */
   double crater_pos[2];       /* [m] (y, z) of the deepest column */
+  double crater_depth_local;  /* [m] below the column's surroundings */
+  double crater_local_pos[2]; /* [m] (y, z) of that column */
+  double crater_local_ref;    /* [m] its surroundings' front below the far wall */
   double r_crater;            /* [m] */
   double r_damage_particles;  /* [m] */
   double r_damage;            /* [m] */

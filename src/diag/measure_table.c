@@ -149,6 +149,8 @@ void meas_table_add_backwall(struct meas_table *t, double time, const char *obje
 {
   meas_table_add(t, time, "crater_depth", r->crater_depth, "m", object);
   meas_table_add(t, time, "wall_shift", r->wall_shift, "m", object);
+  meas_table_add(t, time, "crater_depth_local", r->crater_depth_local, "m", object);
+  meas_table_add(t, time, "crater_local_ref", r->crater_local_ref, "m", object);
   meas_table_add(t, time, "damage_radius", r->r_damage, "m", object);
   meas_table_add(t, time, "crater_radius", r->r_crater, "m", object);
   meas_table_add(t, time, "damage_radius_particles", r->r_damage_particles, "m", object);

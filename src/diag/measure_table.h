@@ -54,8 +54,8 @@ int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err
  * debris:    cloud_particles, cloud_mass kg, cloud_velocity_mean m/s, cloud_velocity_lead
  *            m/s, cloud_velocity_max m/s, cloud_lead_distance m, cloud_half_angle deg,
  *            cloud_half_angle_front deg, cloud_gap m
- * backwall:  crater_depth m, wall_shift m, damage_radius m, crater_radius m,
- *            damage_radius_particles m, damaged_mass kg
+ * backwall:  crater_depth m, wall_shift m, crater_depth_local m, crater_local_ref m,
+ *            damage_radius m, crater_radius m, damage_radius_particles m, damaged_mass kg
  * gas:       shock_front_axial m, shock_front_radial m, shock_front_distance m,
  *            shocked_particles
  * fragments: fragments_count, fragments_count_multi (>= 2 particles), fragment_mass_largest

@@ -13,7 +13,8 @@
  * radially and in distance.
  * Backwall: two flat-bottomed craters of known depth, damage inside a known radius: the
  * deepest crater and the damaged radius within one spacing; a bulge adds to the depth, a
- * drift of the whole wall does not (wall_shift);
+ * drift of the whole wall does not (wall_shift); below its own surroundings
+ * (crater_depth_local) the crater reads 4.4Δ on the flat, moved and bulged wall alike;
  * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken).
  * Pressure: layers of known pressure at the front face; through a case file, the
  * averaging disc and depth of `measure.pressure_radius` / `pressure_depth` (default 2Δ
@@ -224,6 +225,13 @@ static void test_backwall(void)
         r.crater_depth / S);
   CHECK(hypot(r.crater_pos[0], r.crater_pos[1]) < 3.2 * S, "... at the centre (%.2fΔ, %.2fΔ)",
         r.crater_pos[0] / S, r.crater_pos[1] / S);
+  /* below its own surroundings (the ring 4Δ..8Δ around it, beyond the crater's 3.2Δ):
+     the same 4.4Δ on a flat wall */
+  CHECK(fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_local_ref) <= 0.5 * S &&
+            hypot(r.crater_local_pos[0], r.crater_local_pos[1]) < 3.2 * S,
+        "local crater depth 4.4Δ: %.3fΔ within Δ, its surroundings at %.3fΔ, at (%.2fΔ, %.2fΔ)",
+        r.crater_depth_local / S, r.crater_local_ref / S, r.crater_local_pos[0] / S,
+        r.crater_local_pos[1] / S);
   CHECK(r.r_crater > 20 * S && r.r_crater < 23.2 * S, "cratered area reaches the second crater "
         "(r_crater %.2fΔ)", r.r_crater / S);
   CHECK(fabs(r.r_damage_particles - 19 * S) <= S, "damaged particles out to 19Δ: %.3fΔ",
@@ -280,6 +288,9 @@ static void test_backwall(void)
             fabs(r.crater_depth - 4.4 * S) <= S,
         "moved wall: wall_shift %.3fΔ (2Δ), depth from the far wall %.3fΔ (4.4Δ within Δ)",
         r.wall_shift / S, r.crater_depth / S);
+  CHECK(fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_local_ref) <= 0.5 * S,
+        "... below its surroundings %.3fΔ (4.4Δ within Δ), they at %.3fΔ",
+        r.crater_depth_local / S, r.crater_local_ref / S);
   CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
         "... its damaged area as before: r_damage %.2fΔ", r.r_damage / S);
   par.far_reference = 0;
@@ -299,6 +310,22 @@ static void test_backwall(void)
             fabs(r.crater_depth - 6.4 * S) <= S,
         "bulged wall: wall_shift %gΔ, depth %.3fΔ (6.4Δ within Δ)", r.wall_shift / S,
         r.crater_depth / S);
+  /* the crater's surroundings (4Δ..8Δ) lie on the bulge: below them it is 4.4Δ deep, and
+     they are 2Δ back */
+  CHECK(fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_local_ref - 2 * S) <= 0.5 * S,
+        "... below its surroundings %.3fΔ (4.4Δ within Δ), they at %.3fΔ (2Δ)",
+        r.crater_depth_local / S, r.crater_local_ref / S);
+  /* a ring beyond the bulge (13Δ..18Δ) takes the bulge in again: 6.4Δ */
+  par.local_inner = 13 * S;
+  par.local_outer = 18 * S;
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 &&
+            fabs(r.crater_depth_local - 6.4 * S) <= S && fabs(r.crater_local_ref) <= 0.5 * S,
+        "... with a ring beyond the bulge %.3fΔ (6.4Δ within Δ)", r.crater_depth_local / S);
+  par.local_outer = S;
+  hv_error_clear(&err);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "local_outer <= local_inner: an error");
+  meas_backwall_defaults(&par, &g);
   par.far_fraction = 0.0;
   hv_error_clear(&err);
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,

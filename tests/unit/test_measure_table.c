@@ -112,11 +112,12 @@ static void test_measurement_rows(void)
     meas_table_add_gas(&t, 1e-4, "nitrogen", &gf);
     meas_table_add_fragments(&t, 1e-4, "all", &fo);
   }
-  CHECK(t.n == 6 + 6 + 9 + 6 + 4 + 6, "one row per quantity and object: %zu", t.n);
+  CHECK(t.n == 6 + 6 + 9 + 8 + 4 + 6, "one row per quantity and object: %zu", t.n);
   CHECK(count_rows(&t, "penetration_depth", "target") == 1 &&
             count_rows(&t, "hole_diameter", "bumper") == 1 &&
             count_rows(&t, "cloud_half_angle", "cloud1") == 1 &&
             count_rows(&t, "crater_depth", "backwall") == 1 &&
+            count_rows(&t, "crater_depth_local", "backwall") == 1 &&
             count_rows(&t, "shock_front_axial", "nitrogen") == 1 &&
             count_rows(&t, "fragments_count", "all") == 1,
         "the documented quantity names");
