@@ -420,7 +420,8 @@ static void fill_columns(const struct particles *p, const struct meas_geom *g,
 
 /* crater_depth_local (measure.h): each column cratered below the far wall against the
  * lower median front of the columns local_inner to local_outer from it. The ring is
- * sampled on every st-th column (st about local_inner / 4 cells: some 150–200 samples),
+ * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric about
+ * the column),
  * mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
  * than a quarter of its samples (the wall's edge, a hole) is skipped. */
 static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
@@ -429,17 +430,11 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
 {
   out->crater_depth_local = 0.0;
   const int st = par->local_inner / (4.0 * c) > 1.0 ? (int)(par->local_inner / (4.0 * c)) : 1;
-  const int m = (int)ceil(par->local_outer / c);
+  const int m = (int)ceil(par->local_outer / c) / st * st;
+  const size_t side = (size_t)(2 * (m / st) + 1);   /* the sampled square holds the ring */
+  int *off = hv_malloc(2 * side * side * sizeof *off, "crater ring");
+  struct wval *ring = hv_malloc(side * side * sizeof *ring, "crater ring");
   size_t noff = 0;
-  for (int db = -m; db <= m; db += st)
-    for (int da = -m; da <= m; da += st) {
-      const double r = c * hypot(da, db);
-      if (r >= par->local_inner && r <= par->local_outer) noff++;
-    }
-  if (!noff) return;
-  int *off = hv_malloc(2 * noff * sizeof *off, "crater ring");
-  struct wval *ring = hv_malloc(noff * sizeof *ring, "crater ring");
-  noff = 0;
   for (int db = -m; db <= m; db += st)
     for (int da = -m; da <= m; da += st) {
       const double r = c * hypot(da, db);
@@ -448,11 +443,11 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
       off[2 * noff + 1] = db;
       noff++;
     }
-  double best = -INFINITY;
+  double best = noff ? (double)-INFINITY : 0.0;
   for (int b = 0; b < nw; b++)
     for (int a = 0; a < nu; a++) {
       const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
-      if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
+      if (!noff || !isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
       size_t n = 0;
       for (size_t k = 0; k < noff; k++) {
         const int aa = a + off[2 * k];

@@ -291,6 +291,27 @@ static void test_backwall(void)
   CHECK(fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_local_ref) <= 0.5 * S,
         "... below its surroundings %.3fΔ (4.4Δ within Δ), they at %.3fΔ",
         r.crater_depth_local / S, r.crater_local_ref / S);
+  /* splash joined to the moved wall (two layers 0.8Δ and 2Δ before its face, linked to
+     it and to each other within the friends-of-friends link of 1.5Δ) over the whole
+     ring 4Δ..8Δ: not the surface a gauge rests on, the crater still 4.4Δ below its
+     surroundings (taken with the splash it reads 6.5Δ) */
+  {
+    const size_t n0 = p.n;
+    for (int k = 0; k < 9; k++)
+      for (int j = -9; j < 9; j++) {
+        const double y = (j + 0.5) * S, z = (k + 0.5) * S, rho = hypot(y, z);
+        if (rho >= 3.5 * S && rho <= 8.5 * S) {
+          add_particle(&p, x0 + 1.2 * S, y, z, 1e-6, 4);
+          add_particle(&p, x0, y, z, 1e-6, 4);
+        }
+      }
+    CHECK(p.n > n0 + 50 && measure_backwall(&p, &g, &par, &r, &err) == 0 &&
+              fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_depth - 4.4 * S) <= S,
+          "splash over the ring (%zu particles): below its surroundings %.3fΔ (4.4Δ within Δ), "
+          "from the far wall %.3fΔ", p.n - n0, r.crater_depth_local / S, r.crater_depth / S);
+    p.n = n0;
+    measure_backwall(&p, &g, &par, &r, &err);
+  }
   CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
         "... its damaged area as before: r_damage %.2fΔ", r.r_damage / S);
   par.far_reference = 0;

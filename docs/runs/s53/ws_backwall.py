@@ -22,7 +22,6 @@ import numpy as np
 
 DX = 0.875                      # backwall spacing, mm
 X0, X1 = 201.0, 208.0           # backwall faces, mm
-DEPTH = float(os.environ.get('DEPTH', '1.0'))
 FRONT_MARGIN = float(os.environ.get('FRONT_MARGIN', '0.3'))   # mm before the original face
 
 
@@ -67,51 +66,3 @@ for fn in sys.argv[1:]:
         row.append('%g-%g: %+.2f / %+.2f (max %+.2f)' %
                    (r1, r2, np.median(front[s]), np.median(rear[s]), front[s].max()))
     print('  front / rear median (deepest front), mm: ' + ' | '.join(row))
-    # depth below the neighbourhood's face
-    grid = {(a, b): f for a, b, f in zip(cy, cz, front)}
-    local = np.zeros_like(front)
-    for i, (a, b) in enumerate(zip(cy, cz)):
-        ring = []
-        for da in range(-3, 4):
-            for db in range(-3, 4):
-                dd = np.hypot(da, db) * DX
-                if 1.5 <= dd <= 3.0:
-                    bb = b + db
-                    if bb < 0:
-                        bb = -bb - 1          # mirror at z = 0
-                    v = grid.get((a + da, bb))
-                    if v is not None:
-                        ring.append(v)
-        local[i] = front[i] - np.median(ring) if ring else 0.0
-    deep = local > DEPTH
-    idx = {(a, b): i for i, (a, b) in enumerate(zip(cy, cz))}
-    seen = set()
-    groups = []
-    for i in np.nonzero(deep)[0]:
-        if i in seen:
-            continue
-        stack, g = [i], []
-        seen.add(i)
-        while stack:
-            j = stack.pop()
-            g.append(j)
-            for da in (-1, 0, 1):
-                for db in (-1, 0, 1):
-                    bb = cz[j] + db
-                    if bb < 0:
-                        bb = -bb - 1
-                    k = idx.get((cy[j] + da, bb))
-                    if k is not None and deep[k] and k not in seen:
-                        seen.add(k)
-                        stack.append(k)
-        groups.append(g)
-    groups.sort(key=lambda g: -front[g].max())
-    n_centre = sum(1 for g in groups if rr[g].min() < 20)
-    print('  craters deeper than %.1f mm below their neighbourhood: %d (%d reaching within 20 mm of the axis)'
-          % (DEPTH, len(groups), n_centre))
-    for g in groups[:8]:
-        j = g[int(np.argmax(front[g]))]
-        print('    deepest %.2f mm below the far wall, %.2f below its neighbourhood, at r = %.1f mm'
-              ' (y %+.1f, z %.1f), %d columns (%.1f mm equiv. diameter)'
-              % (front[j], local[j], rr[j], yc[j], zc[j], len(g),
-                 2 * np.sqrt(len(g) * DX * DX / np.pi)))
