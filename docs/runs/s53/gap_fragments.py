@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The largest pieces flying in a shield's gap, from `hvsph validate`'s fragment tables
 (friends-of-friends pieces, half model; a piece on the axis plane counts once, with
-its multiplicity in the full picture): their masses (half model, mg) and equivalent
+its multiplicity in the full picture): their masses (mg: a piece of the full picture, docs/measurements.md) and equivalent
 sphere diameters, for pieces between X0 and X1 (m) along the axis.
 usage: gap_fragments.py X0 X1 RHO fragments_*.csv   (RHO: density for the diameters)"""
 import sys

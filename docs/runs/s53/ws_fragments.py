@@ -2,7 +2,7 @@
 """§2.4: how the steel projectile breaks up, from `hvsph validate`'s fragment tables
 (fragments_NNNNN.csv: friends-of-friends pieces, half model, with each piece's mass
 of each material and its multiplicity in the full picture).
-Prints, per table: the five largest pieces' projectile mass (half model, mg), their
+Prints, per table: the five largest pieces' projectile mass (mg: a piece of the full picture, docs/measurements.md), their
 equivalent sphere diameters (steel, 7850 kg/m3), and the share of the projectile's
 mass (full picture) in pieces of at most 3 particles.
 usage: ws_fragments.py fragments_*.csv"""
