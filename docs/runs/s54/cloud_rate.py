@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The projectile's expansion rate in §2.4's debris (an input to Grady's fragment-size
+"""The projectile's expansion rate in a debris cloud (§2.4, W.P.2; an input to Grady's fragment-size
 estimates). Least-squares fit, mass-weighted, of v = v0 + A (x - x0) over the projectile's
 particles (body 0), mirrored at z = 0 (half model). Prints the rates' eigenvalues
 (1/s) and tr(A)/3, and the spread of v about the fit.
