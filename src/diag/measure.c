@@ -420,9 +420,8 @@ static void fill_columns(const struct particles *p, const struct meas_geom *g,
 
 /* crater_depth_local (measure.h): each column cratered below the far wall against the
  * lower median front of the columns local_inner to local_outer from it. The ring is
- * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric about
- * the column),
- * mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
+ * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric
+ * about the column), mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
  * than a quarter of its samples (the wall's edge, a hole) is skipped. */
 static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
                          const double lo[2], double c, int nu, int nw, const double *xf,
@@ -443,11 +442,11 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
       off[2 * noff + 1] = db;
       noff++;
     }
-  double best = noff ? (double)-INFINITY : 0.0;
-  for (int b = 0; b < nw; b++)
+  double best = -INFINITY;   /* stays so (no reading) when the ring holds no sample */
+  for (int b = 0; noff && b < nw; b++)
     for (int a = 0; a < nu; a++) {
       const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
-      if (!noff || !isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
+      if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
       size_t n = 0;
       for (size_t k = 0; k < noff; k++) {
         const int aa = a + off[2 * k];
