@@ -90,8 +90,10 @@ static void key_colorbar(struct canvas *c, int x0, int y, int w, int s)
 static void key_legend(struct canvas *c, const struct caption_key *k,
                        const struct render_info *info, int x, int y, int s)
 {
-  for (int m = 0; m < k->nmat; m++) {
-    if (!k->present[m]) continue;
+  for (int slot = 0; slot < k->nmat; slot++) {   /* in palette order */
+    int m = 0;
+    while (m < k->nmat && k->slot[m] != slot) m++;
+    if (m == k->nmat || !k->present[m]) continue;
     char name[96];
     if (info && info->material_names && m < info->nmat && info->material_names[m])
       snprintf(name, sizeof name, "%s", info->material_names[m]);
@@ -102,7 +104,7 @@ static void key_legend(struct canvas *c, const struct caption_key *k,
       return;
     }
     unsigned char rgb[3];
-    render_palette(m, rgb);
+    render_palette(slot, rgb);
     canvas_rect(c, x, y, x + 7 * s, y + 7 * s, rgb);
     canvas_text(c, x + 10 * s, y, s, ink, name);
     x += need + 12 * s;

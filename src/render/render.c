@@ -91,6 +91,7 @@ int render_png(const char *path, const struct particles *p, const struct render_
   char what[2][128], desc[1024], mu_label[96];
   char axis = "xyz"[v.axis], right = "xyz"[v.iu], up = "xyz"[v.iv];
   unsigned char *present = NULL;
+  int *slot = NULL;
   if (o->mode == RENDER_RADIOGRAPH) {
     draw_radiograph(&c, p, &v, o, &key, desc, sizeof desc);
     snprintf(mu_label, sizeof mu_label, "σ [kg/m²]  film T = exp(−μσ), μ = %g m²/kg", o->mu);
@@ -104,12 +105,15 @@ int render_png(const char *path, const struct particles *p, const struct render_
     for (size_t i = 0; i < p->n; i++)
       if (p->mat[i] >= nmat && p->mat[i] < 1024) nmat = p->mat[i] + 1;
     present = hv_calloc((size_t)nmat, 1, "material flags");
+    slot = hv_malloc((size_t)nmat * sizeof *slot, "material slots");
+    render_material_slots(p, nmat, slot);
     double lo, hi;
-    size_t nd = render_discs(&c, p, &v, o, &lo, &hi, present, nmat);
+    size_t nd = render_discs(&c, p, &v, o, &lo, &hi, present, slot, nmat);
     key.kind = o->color == RENDER_COLOR_MATERIAL ? 2 : 1;
     key.lo = lo;
     key.hi = hi;
     key.present = present;
+    key.slot = slot;
     key.nmat = nmat;
     color_unit(o->color, lo, hi, &key.unit, &key.label[0]);
     const char *how = v.mirror ? ", mirrored" : v.axis == 2 ? ", cut at z = 0" : "";
@@ -122,6 +126,7 @@ int render_png(const char *path, const struct particles *p, const struct render_
   const char *whatp[2] = {what[0], what[1]};
   render_caption(&c, &v, info, whatp, &key);
   free(present);
+  free(slot);
 
   char full[2048];
   snprintf(full, sizeof full, "%s; %s%s%st = %.9g s; picture %c right %.6g..%.6g m, %c up "

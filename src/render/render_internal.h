@@ -47,12 +47,19 @@ int font_glyph(unsigned long cp, unsigned char rows[FONT_H]);
 void render_film(struct canvas *c, const struct render_view *view, const double *sigma,
                  double mu);
 
+/* The palette slot of each material index 0..nmat-1 (slot[m]): the materials ranked by
+ * the first body (lowest body index) made of them, ties and materials without particles
+ * by index. A case's bodies come in the case file's order whatever order its materials
+ * were numbered in (a `materials:` block, or one made by --set, numbers them otherwise),
+ * so the same material of the same case gets the same colour in every run. */
+void render_material_slots(const struct particles *p, int nmat, int *slot);
+
 /* Particles mode: draws the discs into the plot area; *lo, *hi get the colour range used
- * (SI); present[k] is set for every material index drawn (k < nmat_present). Returns the
- * count of discs drawn. */
+ * (SI); present[k] is set for every material index drawn (k < nmat_present), whose
+ * colour is the palette's entry slot[k]. Returns the count of discs drawn. */
 size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *view,
                     const struct render_options *o, double *lo, double *hi,
-                    unsigned char *present, int nmat_present);
+                    unsigned char *present, const int *slot, int nmat_present);
 
 /* The caption band below the plot: scale bar, time, view, and the colour key of the mode. */
 struct caption_key {
@@ -62,6 +69,7 @@ struct caption_key {
   const char *label[2];   /* quantity and unit, e.g. "|v| [km/s]": long form, short form (may be NULL) */
   double mu;              /* [m2/kg] film wedge */
   const unsigned char *present;  /* materials drawn (legend) */
+  const int *slot;        /* palette slot of each material (legend order) */
   int nmat;
 };
 /* what[0]: the long description of the view, what[1] a short one for narrow pictures. */

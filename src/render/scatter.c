@@ -8,6 +8,7 @@
  * negative side of the view axis: discs are drawn in order of decreasing depth
  * (painter's algorithm; equal depths by particle order, so pictures are reproducible).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -63,9 +64,25 @@ static void draw_disc(struct canvas *c, const struct render_view *v, const struc
     }
 }
 
+void render_material_slots(const struct particles *p, int nmat, int *slot)
+{
+  int *first = hv_malloc((size_t)nmat * sizeof *first, "material slots");
+  for (int m = 0; m < nmat; m++) first[m] = INT_MAX;
+  for (size_t i = 0; i < p->n; i++) {
+    const int m = p->mat[i], b = p->body[i];
+    if (m >= 0 && m < nmat && b >= 0 && b < first[m]) first[m] = b;
+  }
+  for (int m = 0; m < nmat; m++) {   /* rank: materials ahead of m by (first body, index) */
+    slot[m] = 0;
+    for (int k = 0; k < nmat; k++)
+      if (first[k] < first[m] || (first[k] == first[m] && k < m)) slot[m]++;
+  }
+  free(first);
+}
+
 size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *v,
                     const struct render_options *o, double *lo, double *hi,
-                    unsigned char *present, int nmat_present)
+                    unsigned char *present, const int *slot, int nmat_present)
 {
   size_t cap = p->n * (size_t)(v->mirror + 1), n = 0;
   struct disc *d = hv_malloc((cap ? cap : 1) * sizeof *d, "particle discs");
@@ -110,7 +127,10 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
   qsort(d, n, sizeof *d, disc_cmp);
   for (size_t k = 0; k < n; k++) {
     unsigned char rgb[3];
-    if (o->color == RENDER_COLOR_MATERIAL) render_palette((int)d[k].value, rgb);
+    if (o->color == RENDER_COLOR_MATERIAL) {
+      const int m = (int)d[k].value;
+      render_palette(m >= 0 && m < nmat_present ? slot[m] : m, rgb);
+    }
     else render_colormap((d[k].value - vmin) / (vmax - vmin), rgb);
     draw_disc(c, v, &d[k], rgb);
   }

@@ -240,8 +240,10 @@ static void test_plate(void)
 /* ---- the command ------------------------------------------------------ */
 
 /* Sphere (13.5 mm steel, 3 km/s) behind a 2 mm steel plate with a 20 mm hole and a debris
- * cloud of small clusters; a half model z >= 0. Material 0 projectile, 1 bumper. */
-static const char *write_scene(const char *name, int solid)
+ * cloud of small clusters; a half model z >= 0. Body 0 the projectile, body 1 the bumper
+ * and its debris; material 0 projectile, 1 bumper, or with swap the other way round (as a
+ * case whose materials are numbered in another order). */
+static const char *write_scene(const char *name, int solid, int swap)
 {
   struct particles p;
   particles_init(&p);
@@ -265,7 +267,15 @@ static const char *write_scene(const char *name, int solid)
   }
   if (solid)
     for (size_t i = 0; i < p.n; i++) p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
+  for (size_t i = 0; i < p.n; i++) {
+    p.body[i] = p.mat[i];
+    if (swap) p.mat[i] = 1 - p.mat[i];
+  }
   const char *names[2] = {"steel-projectile", "steel-bumper"};
+  if (swap) {
+    names[0] = "steel-bumper";
+    names[1] = "steel-projectile";
+  }
   struct snapshot_meta meta = {.time = 12e-6, .step = 400, .version = "test", .case_name = "scene",
                                .material_names = names, .nmat = 2};
   static char path[8][4096];
@@ -317,8 +327,9 @@ static int tmp_files_left(void)
 
 static void test_command(void)
 {
-  const char *scene = write_scene("scene.csv", 1);
-  const char *gas = write_scene("scene_gas.csv", 0);
+  const char *scene = write_scene("scene.csv", 1, 0);
+  const char *gas = write_scene("scene_gas.csv", 0, 0);
+  const char *swapped = write_scene("scene_swapped.csv", 1, 1);
   const char *dir = test_tmpdir();
   char args[8192], out[4096];
   int w = 0, h = 0;
@@ -348,6 +359,26 @@ static void test_command(void)
   img = read_png(args, &w, &h);
   CHECK(st == 0 && img && w == 800 && h == 500, "particles by material: exit %d, %dx%d", st, w, h);
   if (img) CHECK(img[0] == 255 && img[1] == 255 && img[2] == 255, "particles: background pixel is white");
+
+  /* the same bodies with their materials numbered the other way round: the same picture,
+   * legend included (colours follow the bodies' order, not the material index) */
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_swapped.png' --mode particles --axis y --size 800x500",
+           swapped, dir);
+  st = run(args, out, sizeof out);
+  snprintf(args, sizeof args, "%s/particles_swapped.png", dir);
+  int w2 = 0, h2 = 0;
+  unsigned char *img2 = read_png(args, &w2, &h2);
+  CHECK(st == 0 && img2 && w2 == w && h2 == h, "particles by material, materials renumbered: exit %d, %dx%d",
+        st, w2, h2);
+  if (img && img2 && w2 == w && h2 == h) {
+    long differ = 0, colored = 0;
+    for (long k = 0; k < 3L * w * h; k++) differ += img[k] != img2[k];
+    for (long k = 0; k < (long)w * h; k++) colored += img[3 * k] != img[3 * k + 1] || img[3 * k] != img[3 * k + 2];
+    CHECK(differ == 0 && colored > 1000,
+          "materials renumbered: the same picture (%ld of %ld bytes differ, 0; %ld coloured pixels)", differ,
+          3L * w * h, colored);
+  }
+  free(img2);
   free(img);
 
   const char *colors[] = {"velocity", "damage", "pressure", "density"};
