@@ -96,6 +96,7 @@ static const struct {
     [UNIT_TEMPERATURE] = {"temperature", "a", "K", {0, 0, 0, 1, 0}},
     [UNIT_ANGLE] = {"angle", "an", "rad", {0, 0, 0, 0, 1}},
     [UNIT_RATE] = {"rate", "a", "1/s", {0, 0, -1, 0, 0}},
+    [UNIT_FRACTURE_ENERGY] = {"fracture energy", "a", "J/m2", {1, 0, -2, 0, 0}},
 };
 
 const char *units_dim_name(enum unit_dim dim)

@@ -26,6 +26,7 @@ enum unit_dim {
   UNIT_TEMPERATURE,       /* K   */
   UNIT_ANGLE,             /* rad (deg accepted) */
   UNIT_RATE,              /* 1/s */
+  UNIT_FRACTURE_ENERGY,   /* J/m2 (= N/m, kg/s2): energy per unit crack area */
   UNIT_DIM_COUNT
 };
 

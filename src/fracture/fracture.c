@@ -163,3 +163,63 @@ double fracture_crack_return(const struct fracture_params *fp, double d0, double
   }
   return 1.0;
 }
+
+int fracture_opening(const struct fracture_params *fp, double damage)
+{
+  return fracture_cracked(fp, damage) || (fp->energy > 0.0 && damage > 0.0 && damage < 1.0);
+}
+
+double fracture_open_strain(const struct fracture_params *fp, double l)
+{
+  return 2.0 * fp->energy / (-fp->sigma_c * l);
+}
+
+/* S −= 2G dw dev(nnᵀ) */
+static void open_by(double S[6], const double n[3], double G, double dw)
+{
+  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
+  for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * dw * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
+}
+
+double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
+                                double K, double G, double l, double S[6], double n[3],
+                                double *w, double *dp)
+{
+  *dp = 0.0;
+  if (!(d0 > 0.0)) {
+    if (d < 1.0) return d0;   /* intact, and stays so */
+    fracture_crack_normal(p, S, n);   /* starts to open */
+    *w = 0.0;
+    d0 = 1e-12;
+  }
+  const double sc = -fp->sigma_c, wu = fracture_open_strain(fp, l);
+  double wmax = d0 * wu;
+  double Sn[3];
+  sym3_apply(S, n, Sn);
+  const double snn = -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
+  const double M = K + 4.0 / 3.0 * G, T = sc * (1.0 - wmax / wu), soft = sc / wu;
+  double dw = 0.0, s = snn;
+  if (s > 0.0 && *w < wmax) {   /* a part closed before reopens without traction */
+    dw = s / M < wmax - *w ? s / M : wmax - *w;
+    s -= M * dw;
+  }
+  if (s > T) {   /* opens on along the softening line */
+    double more = M > soft ? (s - T) / (M - soft) : wu - wmax;
+    if (wmax + more > wu || !isfinite(more)) more = wu - wmax;
+    dw += more;
+    wmax += more;
+  } else if (s < 0.0 && *w > 0.0) {   /* closes under compression, without traction */
+    dw = s / M < -*w ? -*w : s / M;
+  }
+  if (dw != 0.0) {
+    *w += dw;
+    open_by(S, n, G, dw);
+    *dp = K * dw;
+  }
+  if (!(wmax < wu)) {   /* opened through: split (the paper's rule) */
+    n[0] = n[1] = n[2] = 0.0;
+    *w = 0.0;
+    return 1.0;
+  }
+  return wmax / wu > 1e-12 ? wmax / wu : 1e-12;
+}

@@ -36,6 +36,17 @@
  * D = 1 marks the cracked state, D = 2 the fluid.
  * Cumulative (option): D grows with plastic strain, ΔD = Δε_p/ε_f, and with time
  * under tension beyond |σ_c|, ΔD = Δt/τ; the particle splits when D reaches 1.
+ * Cohesive opening before the split (option, fracture.energy = G_f > 0, model tresca,
+ * split fluid; a crack band, Bažant & Oh 1983, Mater. Struct. 16:155): where the
+ * paper's rule would split the particle, it starts to open across the plane normal to
+ * its largest principal tension (n, as split: crack) by a strain w >= 0 of its own (the
+ * EOS takes ρ e^{w}); the traction the opening plane carries falls linearly from |σ_c|
+ * to 0 as the largest opening w_max reached grows to w_u = 2 G_f/(|σ_c| l), l = (m/ρ₀)^{1/3}
+ * the particle's spacing, so that a particle opened through has taken G_f per unit area
+ * of its cross-section, ½|σ_c| w_u l = G_f, whatever its size. D = max(w_max/w_u, 10⁻¹²)
+ * while it opens (0 < D < 1; it keeps its deviatoric stress and yield stress); at w_u
+ * it splits (D = 1, the paper's rule). G_f → 0 is the paper's rule. The opening runs
+ * only while the tension is there: a short tensile pulse leaves D < 1.
  */
 #ifndef HV_FRACTURE_H
 #define HV_FRACTURE_H
@@ -91,5 +102,29 @@ double fracture_crack_eps_f(const struct fracture_params *fp, double p, const do
 double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
                              double K, double G, double eps_p, double S[6], double n[3],
                              double *eps_c, double *dp);
+
+/* Whether a particle of damage D carries an opening strain (p->eps_c) and a normal
+ * (p->crack): cracked once with fracture.split: crack (1 <= D < 2), or opening with
+ * fracture.energy (0 < D < 1). */
+int fracture_opening(const struct fracture_params *fp, double damage);
+/* The opening's end w_u = 2 G_f/(|σ_c| l) [-] of a particle of spacing l [m]. */
+double fracture_open_strain(const struct fracture_params *fp, double l);
+/* The end of a step with fracture.energy > 0 for a particle of damage d0 < 1 whose
+ * split test (fracture_tension) gave d: nothing unless it opens already (d0 > 0) or
+ * starts to (d >= 1: then n = its largest principal tension's normal, w = 0). p, S the
+ * end-of-step pressure and deviator (S updated), K and G the moduli, l the particle's
+ * spacing, n the normal, *w the opening strain. With σ_nn = −p + nᵀSn and the
+ * traction limit T = |σ_c|(1 − D) (D = w_max/w_u): σ_nn > T opens it (Δw > 0, w_max
+ * with it) to σ_nn − M Δw = |σ_c|(1 − (w_max + Δw)/w_u) on the softening line (M = K +
+ * 4G/3; all of w_u − w_max at once where the line is steeper than M); σ_nn < 0 closes it
+ * without traction (Δw = max(σ_nn/M, −w)), and a part so closed (w < w_max) reopens
+ * without traction before the opening goes on; S −= 2G Δw dev(nnᵀ), *dp = K Δw (the
+ * caller evaluates the EOS
+ * at ρ e^{w}); the shear on the plane is left to the yield stress. Returns the new damage:
+ * w_max/w_u (at least 10⁻¹²), or 1 when w_max reaches w_u (split: the caller drops S;
+ * n = 0, w = 0). */
+double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
+                                double K, double G, double l, double S[6], double n[3],
+                                double *w, double *dp);
 
 #endif

@@ -58,7 +58,7 @@ static int update_eos(struct sim *s, struct hv_error *err)
     const struct material *m = &s->mat[p->mat[i]];
     /* cracked (fracture.split: crack): the material's density, without the crack's
        opening, ρ e^{ε_c} (fracture.h) */
-    const int cracked = p->cracks && fracture_cracked(&m->frac, p->damage[i]);
+    const int cracked = p->cracks && fracture_opening(&m->frac, p->damage[i]);
     const double rho_m = cracked ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];
     if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) ||
         eos_evaluate(m, rho_m, p->e[i], &st) || !isfinite(st.p) || !isfinite(st.cs)) {
@@ -86,7 +86,7 @@ static int update_eos(struct sim *s, struct hv_error *err)
   char what[512];
   struct eos_state st;
   const struct material *mb = &s->mat[p->mat[i]];
-  const double rho_b = p->cracks && fracture_cracked(&mb->frac, p->damage[i])
+  const double rho_b = p->cracks && fracture_opening(&mb->frac, p->damage[i])
                            ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];   /* as above */
   eos_describe(mb, rho_b, p->e[i], eos_evaluate(mb, rho_b, p->e[i], &st), what, sizeof what);
   return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
@@ -221,7 +221,27 @@ static long end_stress(struct sim *s, double dt)
     const struct material *m = &s->mat[p->mat[i]];
     const double d0 = p->damage[i];
     p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
-    if (m->frac.split == SPLIT_CRACK && p->damage[i] >= 1.0) {
+    if (m->frac.energy > 0.0 && d0 < 1.0) {
+      /* a cohesive opening before the split (fracture.energy, fracture.h): starts where
+         the paper's rule would split, opens on under tension, splits when opened through;
+         the pressure then moves, so the EOS is evaluated again */
+      double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, w = p->eps_c[i], dp;
+      const double rho_m = p->rho[i] * exp(w), G = m->str.G;
+      const double M = rho_m * p->cs[i] * p->cs[i];   /* cs: the longitudinal speed */
+      const double K = fmax(M - 4.0 / 3.0 * G, 0.0);
+      const double l = cbrt(p->m[i] / m->rho0);
+      p->damage[i] = fracture_cohesive_return(&m->frac, d0, p->damage[i], p->p[i], K, G, l, S,
+                                              n, &w, &dp);
+      for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
+      p->eps_c[i] = w;
+      if (p->damage[i] >= 1.0) {
+        for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;   /* split: the paper's rule */
+        splits += 1;
+      } else {
+        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
+        splits += dp != 0.0;
+      }
+    } else if (m->frac.split == SPLIT_CRACK && p->damage[i] >= 1.0) {
       /* split along a crack (fracture.h): cracked now, the crack opened or closed to
          carry no normal stress, or split again (fluid, damage 2: S = 0, no tension);
          the pressure then moves, so the EOS is evaluated again */

@@ -243,6 +243,7 @@ void material_print(FILE *f, const struct material *m)
     pq(f, "eps_f", fr->eps_f, "");
     pq(f, "tau", fr->tau, "s");
   }
+  if (fr->kind == FRACTURE_TRESCA && fr->energy > 0.0) pq(f, "energy", fr->energy, "J/m2");
   if (fr->kind != FRACTURE_NONE && fr->friction > 0.0) pq(f, "friction", fr->friction, "");
   if (fr->kind != FRACTURE_NONE && fr->split != SPLIT_FLUID)
     fprintf(f, "  split: %s\n", fr->split == SPLIT_NO_TENSION ? "no-tension" : "crack");

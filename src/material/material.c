@@ -360,17 +360,27 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
     if (not_used_here(c, fp, "friction", "friction applies to split material: model tresca "
                       "or cumulative", err) ||
         not_used_here(c, fp, "split", "split applies to split material: model tresca or "
-                      "cumulative", err))
+                      "cumulative", err) ||
+        not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) applies "
+                      "to model: tresca", err))
       return -1;
     break;
   case FRACTURE_TRESCA:
     if (not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
         not_used_here(c, fp, "tau", "tau applies to model: cumulative only", err) ||
-        read_sigma_c(c, fp, NULL, 0, &f->sigma_c, err))
+        read_sigma_c(c, fp, NULL, 0, &f->sigma_c, err) ||
+        get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy, err))
       return -1;
+    if (f->energy > 0.0 && !m->str.enabled)
+      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
+                       "the cohesive opening (energy > 0) acts on the stress of a solid, but "
+                       "the material has no strength (give strength with shear modulus and "
+                       "yield > 0)");
     break;
   case FRACTURE_CUMULATIVE:
-    if (read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
+    if (not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) applies "
+                      "to model: tresca only", err) ||
+        read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
         get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
         get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))
       return -1;
@@ -398,6 +408,10 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
       return key_error(c, k, err, "split: %s keeps the deviatoric stress of split "
                        "material, but the material has no strength (give strength with "
                        "shear modulus and yield > 0)", sname);
+    if (f->split != SPLIT_FLUID && f->energy > 0.0)
+      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
+                       "energy (a cohesive opening before the split) ends in the paper's "
+                       "split (split: fluid); with split: %s leave it out", sname);
     if (f->split != SPLIT_FLUID && f->friction > 0.0)
       return key_error(c, k, err, "split: %s keeps the yield stress of split material; "
                        "friction (which limits it to min(Y, mu p)) applies to split: fluid only",

@@ -98,6 +98,9 @@ struct fracture_params {
      crack_eps_f_on is 0 */
   int crack_eps_f_on;
   double crack_d[3];   /* d1, d2 [-], d3 [-] */
+  /* fracture.energy (model tresca, split fluid): the fracture energy G_f [J/m2] of a
+     cohesive opening before the split (fracture.h); 0: split at once (the paper's rule) */
+  double energy;
 };
 
 struct material {

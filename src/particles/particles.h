@@ -54,7 +54,7 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split; 2: split again, fracture.split: crack)") \
   X(double,  alpha, "",       PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)") \
   X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step") \
-  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack)")
+  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack, fracture.energy)")
 
 /* Vectors (3 components: name[0..2]) */
 #define HV_PARTICLE_VECTORS(X)                                                        \
@@ -62,7 +62,7 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, v,  "m/s",  PF_OUT | PF_GHOST | PF_STATE, "velocity")                    \
   X(double, a,  "m/s2", PF_STATE,                     "acceleration (last step)")    \
   X(double, v0, "m/s",  0,                            "velocity at step start")      \
-  X(double, crack, "",  PF_OUT | PF_STATE | PF_CRACK,  "crack normal (fracture.split: crack; 0: none)")
+  X(double, crack, "",  PF_OUT | PF_STATE | PF_CRACK,  "crack normal (fracture.split: crack, fracture.energy; 0: none)")
 
 /* Symmetric tensors (6 components: name[0..5], order T_XX ... T_XZ) */
 #define HV_PARTICLE_TENSORS(X)                                                        \

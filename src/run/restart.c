@@ -322,8 +322,9 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
     goto out;
   }
   if (p->cracks && !ckpt_find(&c, "p.crack")) {
-    hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without fracture.split: crack, "
-                 "whose per-particle crack normals it does not hold: a run cannot take it up "
+    hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without fracture.split: crack "
+                 "or fracture.energy, whose per-particle crack normals it does not hold: a "
+                 "run cannot take it up "
                  "when continued (start it again, or continue it without it)", path);
     goto out;
   }

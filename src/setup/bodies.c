@@ -744,7 +744,8 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   if (!rc && s->sph.av_switch) particles_enable_av(&s->p);
   /* each particle's crack normal (fracture.split: crack) */
   for (int m = 0; m < s->nmat && !rc; m++)
-    if (s->mat[m].frac.kind != FRACTURE_NONE && s->mat[m].frac.split == SPLIT_CRACK)
+    if (s->mat[m].frac.kind != FRACTURE_NONE &&
+        (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
       particles_enable_crack(&s->p);
   if (!rc && s->sph.summation && s->p.solid) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "

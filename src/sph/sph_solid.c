@@ -70,7 +70,7 @@ static void update_stress(struct particles *p, size_t i, const struct material *
      density and energy, as step.c finds it after this pass — the same operations, the
      same bits), so the heating takes S':ε̇ (and the pressure force's pdV work p').
      Sm itself is kept. (If the EOS fails here, update_eos reports it.) */
-  if (fracture_cracked(&m->frac, p->damage[i])) {   /* the crack turns with the material */
+  if (p->cracks && fracture_opening(&m->frac, p->damage[i])) {   /* the crack turns with the material */
     double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]};
     fracture_crack_rotate(n, L, dt);
     for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];

@@ -333,6 +333,21 @@ static void test_errors(void)
                "failure of a cracked particle: it applies to split: crack only");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {model: none, crack_eps_f: "
                "0.2}}\n", "x", "materials.x.fracture.crack_eps_f: crack_eps_f applies to split: crack");
+  /* energy: a cohesive opening before the paper's split (model tresca, split fluid) */
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: 10 kJ/m2, split: crack}}\n",
+               "x", "materials.x.fracture.energy: energy (a cohesive opening before the split) ends "
+               "in the paper's split (split: fluid); with split: crack leave it out");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {model: cumulative, eps_f: 1, "
+               "energy: 10 kJ/m2}}\n", "x", "materials.x.fracture.energy: energy (a cohesive "
+               "opening before the split) applies to model: tresca only");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: 10 kJ}}\n", "x",
+               "materials.x.fracture.energy");
+  expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: -1 J/m2}}\n", "x",
+               "materials.x.fracture.energy");
+  expect_error("materials:\n  x: {eos: mie-gruneisen, rho0: 2.7 g/cm3, c0: 5.2 km/s, n: 4, "
+               "gamma: 2, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n", "x",
+               "materials.x.fracture.energy: the cohesive opening (energy > 0) acts on the stress "
+               "of a solid, but the material has no strength");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: 0}}\n",
                "x", "materials.x.fracture.crack_eps_f: the strain to failure must be > 0");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: "
@@ -358,6 +373,12 @@ static void test_errors(void)
     rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack}}\n",
                             "x", &m, NULL, &err);
     CHECK(rc == 0 && !m.frac.crack_eps_f_on, "split: crack without crack_eps_f: none");
+    if (!rc) material_free(&m);
+    rc = read_case_material("materials:\n  x: {library: steel-projectile, fracture: {energy: "
+                            "11 kJ/m2}}\n", "x", &m, NULL, &err);
+    CHECK(rc == 0 && fabs(m.frac.energy - 11e3) < 1e-9 && m.frac.sigma_c == -2.66e9,
+          "fracture.energy 11 kJ/m2 read as %g J/m2 over the library's sigma_c (%s)", m.frac.energy,
+          rc ? err.msg : "ok");
     if (!rc) material_free(&m);
   }
 }

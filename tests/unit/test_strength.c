@@ -306,6 +306,90 @@ static void test_crack(void)
   CHECK(d == 1.0, "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), D = %g", d);
 }
 
+/* fracture.energy: a material point in uniaxial strain along y, stretched in small steps
+ * (elastic: p = −K ε_e, S = 2G ε_e dev(e_y e_y), ε_e = ε − w), with the cohesive return at
+ * each step. The work σ_yy dε done on it until it splits is the triangle ½|σ_c| w_u: G_f
+ * per unit area of a particle of spacing l. */
+static double cohesive_state(double K, double G, double ee, double S[6])
+{
+  S[T_XX] = S[T_ZZ] = -2.0 * G * ee / 3.0;
+  S[T_YY] = 4.0 * G * ee / 3.0;
+  S[T_XY] = S[T_YZ] = S[T_XZ] = 0.0;
+  return -K * ee;
+}
+
+static void test_cohesive(void)
+{
+  const double K = 160e9, G = 80e9, M = K + 4.0 / 3.0 * G, sc = 2.66e9, Gf = 11e3, l = 0.2e-3;
+  struct fracture_params co = {.kind = FRACTURE_TRESCA, .sigma_c = -sc, .energy = Gf};
+  const double wu = fracture_open_strain(&co, l);
+  CHECK(fabs(wu - 2 * Gf / (sc * l)) < 1e-14 * wu, "cohesive: w_u = 2 G_f/(|σ_c| l) = %.5f", wu);
+  CHECK(!fracture_opening(&co, 0.0) && fracture_opening(&co, 0.5) && !fracture_opening(&co, 1.0),
+        "cohesive: opening for 0 < D < 1 only");
+  CHECK(fracture_keeps_stress(&co, 0.5) && fracture_yield(&co, 0.5, 1.55e9, 0.0) == 1.55e9,
+        "cohesive: an opening particle keeps its deviator and its yield stress");
+  /* monotonic stretching to the split */
+  double eps = 0.0, w = 0.0, D = 0.0, S[6], n[3] = {0, 0, 0}, work = 0.0, peak = 0.0;
+  double sig_old = 0.0, eps_at_split = -1.0, sig_at_01 = -1.0;
+  const double de = wu / 20000.0;
+  int steps = 0;
+  while (D < 1.0 && steps < 100000) {
+    eps += de;
+    steps++;
+    double p = cohesive_state(K, G, eps - w, S), dp = 0.0;
+    const double d = fracture_tension(&co, D, p, S, 1e-9);
+    D = fracture_cohesive_return(&co, D, d, p, K, G, l, S, n, &w, &dp);
+    const double sig = D >= 1.0 ? 0.0 : -(p + dp) + S[T_YY];
+    work += 0.5 * (sig + sig_old) * de;
+    sig_old = sig;
+    peak = fmax(peak, sig);
+    if (D >= 1.0) eps_at_split = eps;
+    if (sig_at_01 < 0 && D >= 0.1 && D < 1.0) sig_at_01 = sig;
+  }
+  CHECK(fabs(fabs(n[1]) - 0.0) < 1e-12 && w == 0.0, "cohesive: split clears the normal and w");
+  CHECK(fabs(peak - sc) < 1e-3 * sc, "cohesive: the stress peaks at |σ_c| (%.5g GPa)", peak * 1e-9);
+  CHECK(fabs(sig_at_01 - 0.9 * sc) < 2e-3 * sc, "cohesive: at D = 0.1 the plane carries 0.9|σ_c| "
+        "(%.5g GPa)", sig_at_01 * 1e-9);
+  CHECK(fabs(eps_at_split - wu) < 2e-4 * wu, "cohesive: it splits when the strain reaches w_u "
+        "(ε/w_u = %.6f)", eps_at_split / wu);
+  CHECK(fabs(work * l / Gf - 1.0) < 1e-3, "cohesive: the work to split it, times l, is G_f: "
+        "%.2f J/m2 (%.0f), %d steps", work * l, Gf, steps);
+  /* a short pulse: stretched to 0.3 w_u and back to compression — it does not split, the
+     opening closes, and on reloading the plane carries (1 − D)|σ_c| at most */
+  eps = w = D = 0.0;
+  n[0] = n[1] = n[2] = 0.0;
+  double Dpulse = 0.0, peak2 = 0.0;
+  for (int phase = 0; phase < 3; phase++) {
+    const double target = phase == 0 ? 0.3 * wu : phase == 1 ? -0.01 : 0.6 * wu;
+    const double step = (target - eps) / 20000.0;
+    for (int k = 0; k < 20000; k++) {
+      eps += step;
+      double p = cohesive_state(K, G, eps - w, S), dp = 0.0;
+      D = fracture_cohesive_return(&co, D, fracture_tension(&co, D, p, S, 1e-9), p, K, G, l, S,
+                                   n, &w, &dp);
+      if (phase == 2) peak2 = fmax(peak2, -(p + dp) + S[T_YY]);
+    }
+    if (phase == 0) Dpulse = D;
+    /* on the softening line ε = D w_u + (1 − D)|σ_c|/M: D = (ε/w_u − r)/(1 − r), r = |σ_c|/(M w_u) */
+    const double r = sc / (M * wu);
+    if (phase == 0) CHECK(fabs(D - (0.3 - r) / (1 - r)) < 1e-3, "cohesive: stretched to 0.3 w_u, "
+                          "D = %.4f ((0.3 − r)/(1 − r) = %.4f)", D, (0.3 - r) / (1 - r));
+    if (phase == 1) CHECK(w == 0.0 && D == Dpulse, "cohesive: compressed after the pulse, the "
+                          "opening has closed (w = %g) and D = %.4f stays", w, D);
+    if (phase == 2) CHECK(fabs(D - (0.6 - r) / (1 - r)) < 1e-3, "cohesive: reloaded to 0.6 w_u, "
+                          "the opening went on: D = %.4f (%.4f)", D, (0.6 - r) / (1 - r));
+  }
+  CHECK(fabs(peak2 - (1.0 - Dpulse) * sc) < 2e-3 * sc,
+        "cohesive: reloaded, the plane carries (1 − D)|σ_c| = %.4g GPa at most (%.4g)",
+        (1.0 - Dpulse) * sc * 1e-9, peak2 * 1e-9);
+  /* a tiny G_f: the paper's rule (split at once, where the softening line is steeper than M) */
+  struct fracture_params co0 = {.kind = FRACTURE_TRESCA, .sigma_c = -sc, .energy = 1e-9};
+  double p = cohesive_state(K, G, 1.01 * sc / M, S), dp, w0 = 0.0, n0[3];
+  D = fracture_cohesive_return(&co0, 0.0, fracture_tension(&co0, 0.0, p, S, 1e-9), p, K, G, l, S,
+                               n0, &w0, &dp);
+  CHECK(D == 1.0, "cohesive: G_f -> 0 splits at once (D = %g), as the paper's rule", D);
+}
+
 static void test_fracture(void)
 {
   const double S0[6] = {0};
@@ -332,6 +416,7 @@ static void test_fracture(void)
   CHECK(fracture_yield(&fr, 1.0, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
   test_no_tension();
   test_crack();
+  test_cohesive();
 }
 
 int main(void)
