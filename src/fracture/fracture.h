@@ -119,10 +119,9 @@ double fracture_open_strain(const struct fracture_params *fp, double l);
  * 4G/3; all of w_u − w_max at once where the line is steeper than M); σ_nn < 0 closes it
  * without traction (Δw = max(σ_nn/M, −w)), and a part so closed (w < w_max) reopens
  * without traction before the opening goes on; S −= 2G Δw dev(nnᵀ), *dp = K Δw (the
- * caller evaluates the EOS
- * at ρ e^{w}); the shear on the plane is left to the yield stress. Returns the new damage:
- * w_max/w_u (at least 10⁻¹²), or 1 when w_max reaches w_u (split: the caller drops S;
- * n = 0, w = 0). */
+ * caller evaluates the EOS at ρ e^{w}); the shear on the plane is left to the yield
+ * stress. Returns the new damage: w_max/w_u (at least 10⁻¹²), or 1 when w_max reaches
+ * w_u (split: the caller drops S; n = 0, w = 0). */
 double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
                                 double K, double G, double l, double S[6], double n[3],
                                 double *w, double *dp);

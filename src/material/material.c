@@ -376,6 +376,10 @@ static int read_fracture(struct cfg *c, const char *path, struct material *m,
                        "the cohesive opening (energy > 0) acts on the stress of a solid, but "
                        "the material has no strength (give strength with shear modulus and "
                        "yield > 0)");
+    if (f->energy > 0.0 && !(m->rho0 > 0.0))
+      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
+                       "the cohesive opening (energy > 0) takes each particle's spacing from "
+                       "its mass and the material's rho0, which this material does not give");
     break;
   case FRACTURE_CUMULATIVE:
     if (not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) applies "

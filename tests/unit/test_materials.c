@@ -340,6 +340,10 @@ static void test_errors(void)
   expect_error("materials:\n  x: {library: al-alloy, fracture: {model: cumulative, eps_f: 1, "
                "energy: 10 kJ/m2}}\n", "x", "materials.x.fracture.energy: energy (a cohesive "
                "opening before the split) applies to model: tresca only");
+  expect_error("materials:\n  x: {eos: ideal-gas, gamma: 1.4, strength: {shear_modulus: 10 GPa, "
+               "yield: 1 GPa}, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n", "x",
+               "materials.x.fracture.energy: the cohesive opening (energy > 0) takes each particle's "
+               "spacing from its mass and the material's rho0");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: 10 kJ}}\n", "x",
                "materials.x.fracture.energy");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: -1 J/m2}}\n", "x",

@@ -346,7 +346,8 @@ static void test_cohesive(void)
     if (D >= 1.0) eps_at_split = eps;
     if (sig_at_01 < 0 && D >= 0.1 && D < 1.0) sig_at_01 = sig;
   }
-  CHECK(fabs(fabs(n[1]) - 0.0) < 1e-12 && w == 0.0, "cohesive: split clears the normal and w");
+  CHECK(D == 1.0 && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0 && w == 0.0,
+        "cohesive: split (D = %g) clears the normal and w", D);
   CHECK(fabs(peak - sc) < 1e-3 * sc, "cohesive: the stress peaks at |σ_c| (%.5g GPa)", peak * 1e-9);
   CHECK(fabs(sig_at_01 - 0.9 * sc) < 2e-3 * sc, "cohesive: at D = 0.1 the plane carries 0.9|σ_c| "
         "(%.5g GPa)", sig_at_01 * 1e-9);
