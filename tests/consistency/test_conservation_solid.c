@@ -123,7 +123,8 @@ static void run_case(const char *al_more, const char *viscosity_more)
     opening += s.p.damage[i] > 0.0 && s.p.damage[i] < 1.0;
   }
   printf("after %d steps: %zu particles yielded (max plastic strain %.4f), %zu split (%zu "
-         "cracked once)\n", NSTEPS, plastic, epsmax, splits, cracked);
+         "at damage 1 to 2, cracked once with split: crack), %zu opening (fracture.energy)\n",
+         NSTEPS, plastic, epsmax, splits, cracked, opening);
   if (strstr(al_more, "crack"))
     CHECK(cracked > 0, "split: crack: particles are cracked (%zu of %zu split)", cracked, splits);
   if (strstr(al_more, "energy"))
