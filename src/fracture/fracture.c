@@ -119,6 +119,22 @@ double fracture_crack_eps_f(const struct fracture_params *fp, double p, const do
   return fp->crack_d[0] + fp->crack_d[1] * exp(fp->crack_d[2] * tri);
 }
 
+/* σ_nn = nᵀσn of σ = −pI + S: the normal stress on the plane of normal n */
+static double normal_stress(double p, const double S[6], const double n[3])
+{
+  double Sn[3];
+  sym3_apply(S, n, Sn);
+  return -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
+}
+
+/* The deviator's change when the plane of normal n opens by a strain dw (the pressure's,
+ * about K dw, follows from the EOS): S −= 2G dw dev(nnᵀ) */
+static void open_by(double S[6], const double n[3], double G, double dw)
+{
+  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
+  for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * dw * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
+}
+
 double fracture_crack_return(const struct fracture_params *fp, double d0, double d, double p,
                              double K, double G, double eps_p, double S[6], double n[3],
                              double *eps_c, double *dp)
@@ -129,17 +145,14 @@ double fracture_crack_return(const struct fracture_params *fp, double d0, double
     fracture_crack_normal(p, S, n);
     *eps_c = 0.0;
   }
-  /* nᵀSn, and the crack strain that returns σ_nn = −p + nᵀSn to 0 (not below ε_c = 0) */
-  double Sn[3];
-  sym3_apply(S, n, Sn);
-  const double snn = -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
+  /* the crack strain that returns σ_nn to 0 (not below ε_c = 0) */
+  const double snn = normal_stress(p, S, n);
   const double M = K + 4.0 / 3.0 * G;
   double de = M > 0.0 ? snn / M : 0.0;
   if (*eps_c + de < 0.0) de = -*eps_c;
   if (de != 0.0) {
     *eps_c += de;
-    const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
-    for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * de * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
+    open_by(S, n, G, de);
     *dp = K * de;
   }
   if (*eps_c > 0.0) {   /* open: no shear traction on the plane, t_s = Sn − (nᵀSn) n */
@@ -174,13 +187,6 @@ double fracture_open_strain(const struct fracture_params *fp, double l)
   return 2.0 * fp->energy / (-fp->sigma_c * l);
 }
 
-/* S −= 2G dw dev(nnᵀ) */
-static void open_by(double S[6], const double n[3], double G, double dw)
-{
-  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
-  for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * dw * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
-}
-
 double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
                                 double K, double G, double l, double S[6], double n[3],
                                 double *w, double *dp)
@@ -194,9 +200,7 @@ double fracture_cohesive_return(const struct fracture_params *fp, double d0, dou
   }
   const double sc = -fp->sigma_c, wu = fracture_open_strain(fp, l);
   double wmax = d0 * wu;
-  double Sn[3];
-  sym3_apply(S, n, Sn);
-  const double snn = -p + Sn[0] * n[0] + Sn[1] * n[1] + Sn[2] * n[2];
+  const double snn = normal_stress(p, S, n);
   const double M = K + 4.0 / 3.0 * G, T = sc * (1.0 - wmax / wu), soft = sc / wu;
   double dw = 0.0, s = snn;
   if (s > 0.0 && *w < wmax) {   /* a part closed before reopens without traction */

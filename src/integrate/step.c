@@ -207,6 +207,18 @@ static int check_state(const struct sim *s, struct hv_error *err)
                       p->rho[i], p->e[i], p->x[0][i], p->x[1][i], p->x[2][i]);
 }
 
+/* The moduli an opening plane (split: crack, fracture.energy) returns its normal stress
+ * with: M = ρ_m c² from the particle's longitudinal speed at its material's density
+ * ρ_m = ρ e^{ε_c}, *G the material's shear modulus, *K = max(M − 4G/3, 0). */
+static void opening_moduli(const struct particles *p, size_t i, const struct material *m,
+                           double *K, double *G)
+{
+  const double rho_m = p->rho[i] * exp(p->eps_c[i]);
+  const double M = rho_m * p->cs[i] * p->cs[i];
+  *G = m->str.G;
+  *K = fmax(M - 4.0 / 3.0 * *G, 0.0);
+}
+
 /* End of step for solids: S takes the end-of-step stress, fracture is tested on
  * σ = −pI + S; a particle that splits drops its deviatoric stress (and, without
  * fracture.friction, carries none from then on). */
@@ -225,10 +237,8 @@ static long end_stress(struct sim *s, double dt)
       /* a cohesive opening before the split (fracture.energy, fracture.h): starts where
          the paper's rule would split, opens on under tension, splits when opened through;
          the pressure then moves, so the EOS is evaluated again */
-      double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, w = p->eps_c[i], dp;
-      const double rho_m = p->rho[i] * exp(w), G = m->str.G;
-      const double M = rho_m * p->cs[i] * p->cs[i];   /* cs: the longitudinal speed */
-      const double K = fmax(M - 4.0 / 3.0 * G, 0.0);
+      double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, w = p->eps_c[i], dp, K, G;
+      opening_moduli(p, i, m, &K, &G);
       const double l = cbrt(p->m[i] / m->rho0);
       p->damage[i] = fracture_cohesive_return(&m->frac, d0, p->damage[i], p->p[i], K, G, l, S,
                                               n, &w, &dp);
@@ -246,10 +256,8 @@ static long end_stress(struct sim *s, double dt)
          carry no normal stress, or split again (fluid, damage 2: S = 0, no tension);
          the pressure then moves, so the EOS is evaluated again */
       if (p->damage[i] < 2.0) {
-        double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, ec = p->eps_c[i], dp;
-        const double rho_m = p->rho[i] * exp(ec), G = m->str.G;
-        const double M = rho_m * p->cs[i] * p->cs[i];   /* cs: the longitudinal speed */
-        const double K = fmax(M - 4.0 / 3.0 * G, 0.0);
+        double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, ec = p->eps_c[i], dp, K, G;
+        opening_moduli(p, i, m, &K, &G);
         p->damage[i] = fracture_crack_return(&m->frac, d0, p->damage[i], p->p[i], K, G,
                                              p->eps_p[i], S, n, &ec, &dp);
         for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
