@@ -600,18 +600,24 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
     for (int a = 0; a < nb; a++) {
       const double ma = s->p.m[first_of[a]];
       if (a == b || mb < MASS_RATIO_WARN * ma || !bodies_can_meet(s, first_of, a, b)) continue;
-      int w = snprintf(list + len, sizeof list - len, "%s'%s' (%.0f-fold, %.3g kg)",
-                       nlight ? ", " : "", s->body[a].name, mb / ma, ma);
+      int w = snprintf(list + len, sizeof list - len, "%s'%s' (%.*f-fold, %.3g kg)",
+                       nlight ? ", " : "", s->body[a].name, mb / ma < 100.0 ? 1 : 0, mb / ma, ma);
       if (w > 0) len = len + (size_t)w < sizeof list ? len + (size_t)w : sizeof list - 1;
       nlight++;
       worst = fmax(worst, mb / ma);
     }
     if (!nlight) continue;
+    /* the spacing factor that brings the worst ratio below the threshold (masses scale
+       as the spacing cubed), rounded down to two significant digits so that it does:
+       just above the threshold the exact factor is 0.999, which "%.2g" would print as 1 */
+    const double f = cbrt(MASS_RATIO_WARN / worst);
+    const double unit = pow(10.0, floor(log10(f)) - 1.0);
+    const double fdown = floor(f / unit) * unit;
     hv_warn("body '%s' (particles of %.3g kg) is much heavier than %s; where they meet, the "
             "light particles are over-compressed by their heavy neighbours and hold the time "
-            "step down (in impacts of a few km/s). A spacing for '%s' %.2g times its present one "
+            "step down (in impacts of a few km/s). A spacing for '%s' at most %.2g times its present one "
             "brings the ratio below %.0f", s->body[b].name, mb, list,
-            s->body[b].name, cbrt(MASS_RATIO_WARN / worst), MASS_RATIO_WARN);
+            s->body[b].name, fdown, MASS_RATIO_WARN);
   }
 }
 

@@ -296,7 +296,7 @@ static void test_commands(void)
                                                  "max: [0.05, 0.05, 0.05]}"));
     char *t = strstr(two, "time:\n");
     static const char *const spacing[] = {"1.5625 mm", "1.9 mm", "2.5 mm"};
-    static const char *const fold[] = {"'fine' (64-fold", "'fine' (34-fold", NULL};
+    static const char *const fold[] = {"'fine' (64.0-fold", "'fine' (34.3-fold", NULL};
     for (int k = 0; k < 3 && t; k++) {
       char body[512], whole[16384], name[32];
       snprintf(body, sizeof body, "  - name: fine\n    material: gas\n    shape: {type: box, "
@@ -310,9 +310,10 @@ static void test_commands(void)
       snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0", f, path_of(name));
       rc = hvsph(args, out, sizeof out);
       const char *w = strstr(out, "warning: body 'slab' (particles of ");
-      /* the remedy: (30/64)^(1/3) = 0.78, (30/34.3)^(1/3) = 0.96 of the slab's spacing */
-      static const char *const remedy[] = {"A spacing for 'slab' 0.78 times",
-                                           "A spacing for 'slab' 0.96 times", NULL};
+      /* the remedy: (30/64)^(1/3) = 0.7768, (30/34.3)^(1/3) = 0.9563 of the slab's
+         spacing, rounded down so that it does bring the ratio below 30 */
+      static const char *const remedy[] = {"A spacing for 'slab' at most 0.77 times",
+                                           "A spacing for 'slab' at most 0.95 times", NULL};
       if (fold[k])
         CHECK(rc == 0 && w && strstr(w, fold[k]) && strstr(w, remedy[k]) &&
               !strstr(w + 1, "warning: body"), "spacing 6.25 against %s: one warning naming "
@@ -622,6 +623,38 @@ static void test_mass_ratio_warning(void)
   CHECK(st == 0 && strstr(out, "'ring'") && strstr(out, "much heavier than 'disc'"),
         "a light disc in a heavy ring at rest (a seam): the ring's warning names the disc "
         "(exit %d): %s", st, out);
+
+  /* just above the threshold (a rod of 18.25 g/cm3 on a 0.242 mm lattice, 30.1 times
+     lighter than the block's particles) the offered spacing factor, cbrt(30/30.1) =
+     0.9989, is printed rounded down (0.99), so that it does bring the ratio below 30; it
+     was printed as "1" */
+  static const char *const near =
+      "name: near\n"
+      "domain: {min: [-8 mm, -18 mm, 0], max: [11 mm, 18 mm, 12 mm], half_model: true}\n"
+      "materials:\n"
+      "  heavy-w: {library: tungsten-alloy, rho0: 18.25 g/cm3}\n"
+      "bodies:\n"
+      "  - name: rod\n"
+      "    material: heavy-w\n"
+      "    shape: {type: cylinder, center: [-5 mm, 0, 0], axis: [1, 0, 0], radius: 2 mm, length: 4 mm}\n"
+      "    spacing: 0.242 mm\n"
+      "    velocity: [2 km/s, 0, 0]\n"
+      "  - name: block\n"
+      "    material: steel-target\n"
+      "    shape: {type: box, min: [0, -10 mm, -10 mm], max: [10 mm, 10 mm, 10 mm]}\n"
+      "    spacing: 1 mm\n"
+      "time: {end: 0}\n";
+  file = test_write_file("meet_near.yaml", near);
+  snprintf(args, sizeof args, "run '%s' -o '%s/meet_near'", file, test_tmpdir());
+  const int st2 = hvsph(args, out, sizeof out);
+  const char *r = strstr(out, "much heavier than 'rod' (");
+  const char *f = strstr(out, "A spacing for 'block' at most ");
+  double ratio = 0.0, factor = 0.0;
+  CHECK(st2 == 0 && r && f && sscanf(r, "much heavier than 'rod' (%lf-fold", &ratio) == 1 &&
+            sscanf(f, "A spacing for 'block' at most %lf times", &factor) == 1 && ratio > 30.0 &&
+            ratio < 30.3 && factor < 1.0 && ratio * factor * factor * factor < 30.0,
+        "a mass ratio just above 30 (read %.4g): the offered spacing factor %.4g brings it "
+        "below 30 (exit %d): %s", ratio, factor, st2, out);
 }
 
 /* A body whose lattice cells fill more than 1.02 of its exact volume is named in a
