@@ -123,6 +123,12 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
   if (cfg_has(c, key) && cfg_has(c, key2))
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give velocity or speed (with "
                         "impact_angle), not both", cfg_where(c, key2, where, sizeof where), name);
+  snprintf(key, sizeof key, "%s.impact_angle", path);
+  if (cfg_has(c, key) && !cfg_has(c, key2))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': impact_angle applies with speed "
+                        "(v = speed (sin a, -cos a, 0)); with velocity, the vector's components "
+                        "give the direction", cfg_where(c, key, where, sizeof where), name);
+  snprintf(key, sizeof key, "%s.velocity", path);
   if (cfg_has(c, key2)) {
     double speed, angle;
     if (cfg_get_quantity(c, key2, UNIT_VELOCITY, NULL, 0.0, HUGE_VAL, &speed, err)) return -1;

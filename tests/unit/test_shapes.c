@@ -265,6 +265,13 @@ static void test_errors(void)
                "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
                "time: {end: 1}\n",
                "outside (0, 90] deg");
+  expect_error("impact angle with velocity",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1, velocity: [1, 0, 0],\n"
+               "     impact_angle: 45 deg, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+               "time: {end: 1}\n",
+               "body 'a': impact_angle applies with speed");
   expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
   expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
