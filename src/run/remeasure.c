@@ -14,10 +14,14 @@
  */
 #include "run/remeasure.h"
 
+#include <dirent.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "config/config.h"
 #include "diag/measure_table.h"
@@ -33,6 +37,33 @@ static void usage(FILE *f)
              "  (RUNDIR/particles_NNNNN.csv, or its .vtu files when it has no CSV) and rewrites\n"
              "  RUNDIR/measurements.csv and fragments_NNNNN.csv; the case is\n"
              "  RUNDIR/used_parameters.yaml unless --case names another (docs/measurements.md)\n");
+}
+
+/* The files of folder `stage` moved into `dir` (each by a rename, so each whole), or
+ * with move = 0 deleted; then the folder itself. */
+static int unstage(const char *stage, const char *dir, int move, struct hv_error *err)
+{
+  DIR *d = opendir(stage);
+  int rc = 0;
+  if (d) {
+    struct dirent *e;
+    char from[4600], to[4600];
+    while ((e = readdir(d))) {
+      if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+      snprintf(from, sizeof from, "%s/%s", stage, e->d_name);
+      snprintf(to, sizeof to, "%s/%s", dir, e->d_name);
+      if (!move || rc) {
+        remove(from);
+      } else if (rename(from, to)) {
+        rc = hv_error_set(err, HV_EXIT_RUN, "cannot move '%s' to '%s': %s", from, to,
+                          strerror(errno));
+        remove(from);
+      }
+    }
+    closedir(d);
+  }
+  rmdir(stage);
+  return rc;
 }
 
 int remeasure_main(int argc, char **argv)
@@ -72,7 +103,7 @@ int remeasure_main(int argc, char **argv)
   meas_table_init(&old);
   struct cfg *c = NULL;
   int status = HV_EXIT_OK;
-  char path[4400];
+  char path[4400], stage[4400] = "";
   if (!casefile) {
     snprintf(path, sizeof path, "%s/used_parameters.yaml", dir);
     casefile = path;
@@ -100,6 +131,15 @@ int remeasure_main(int argc, char **argv)
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
   struct hv_error ignored;
   meas_table_read(&old, mpath, &ignored);   /* none: no earlier peak pressures */
+  /* the new files go to a hidden folder of their own and replace the run's only when
+     every snapshot has been measured: a snapshot that fails leaves the earlier
+     measurements.csv (and its peak pressures) and fragment files as they were */
+  snprintf(stage, sizeof stage, "%s/.measure.tmp.%ld", dir, (long)getpid());
+  if (mkdir(stage, 0777)) {
+    hv_error_set(&err, HV_EXIT_RUN, "cannot create folder '%s': %s", stage, strerror(errno));
+    stage[0] = 0;
+    goto fail;
+  }
   const char *matnames[HV_MAX_MATERIALS];
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
   /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
@@ -149,7 +189,7 @@ int remeasure_main(int argc, char **argv)
           fabs(r->time - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) && r->value > mr.peak_pressure)
         mr.peak_pressure = r->value;
     }
-    if (measure_run_output(&mr, &s, k, dir, matnames, &err)) goto fail;
+    if (measure_run_output(&mr, &s, k, stage, matnames, &err)) goto fail;
     if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
   }
   if (!measured) {
@@ -157,6 +197,9 @@ int remeasure_main(int argc, char **argv)
                  dir);
     goto fail;
   }
+  const int moved = unstage(stage, dir, 1, &err);
+  stage[0] = 0;
+  if (moved) goto fail;
   if (!quiet)
     hv_info("measurements of %d snapshot%s written to %s", measured, measured == 1 ? "" : "s",
             mpath);
@@ -165,6 +208,7 @@ fail:
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
 done:
+  if (stage[0]) unstage(stage, dir, 0, NULL);
   free(snaps);
   free(times);
   meas_table_free(&old);

@@ -327,12 +327,14 @@ int validate_main(int argc, char **argv)
     if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
       char *end;
       scale = strtod(argv[++i], &end);
-      if (*end || !(scale > 0)) return usage();
+      if (*end || !(scale > 0) || !isfinite(scale)) return usage();
     } else if ((!strcmp(argv[i], "-o") || !strcmp(argv[i], "--output")) && i + 1 < argc) {
       outdir = argv[++i];
     } else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
-      threads = atoi(argv[++i]);
-      if (threads <= 0) return usage();
+      char *end;   /* as hvsph run's: 1 to 4096, the whole argument a number */
+      const long v = strtol(argv[++i], &end, 10);
+      if (end == argv[i] || *end || v < 1 || v > 4096) return usage();
+      threads = (int)v;
     } else if (!strcmp(argv[i], "--cases") && i + 1 < argc) {
       cases = argv[++i];
     } else if (!strcmp(argv[i], "--no-run")) {
@@ -344,7 +346,9 @@ int validate_main(int argc, char **argv)
     } else if (!strcmp(argv[i], "--material") && i + 1 < argc && ov.nswaps < VAL_MAX_OVERRIDES) {
       ov.swaps[ov.nswaps++] = argv[++i];
     } else if (!strcmp(argv[i], "--only")) {
+      const int before = nonly;
       while (i + 1 < argc && argv[i + 1][0] != '-' && nonly < VAL_MAX_CASES) only[nonly++] = argv[++i];
+      if (nonly == before) return usage();   /* no name: not every case */
     } else {
       return usage();
     }
@@ -365,7 +369,7 @@ int validate_main(int argc, char **argv)
   snprintf(casedir, sizeof casedir, "%s", cases ? cases : "examples/paper");
   if (!cases && slash) snprintf(casedir, sizeof casedir, "%s/../examples/paper", lib);
   struct cfg *ref = cfg_load(refpath, &err);
-  if (!ref || io_mkdir_p(outdir, &err)) goto fail;
+  if (!ref) goto fail;
   const char *const *names;
   int nnames = cfg_keys(ref, NULL, &names);
   for (int k = 0; k < nonly; k++) {
@@ -415,6 +419,11 @@ int validate_main(int argc, char **argv)
         goto fail;
       }
   }
+  /* the folder only once the options are known to be good */
+  if (io_mkdir_p(outdir, &err)) {
+    cfg_free(ref);
+    goto fail;
+  }
   static struct val_row rows[VAL_MAX_ROWS];
   static struct val_case cs[VAL_MAX_CASES];
   int nrows = 0, ncase = 0, failed = 0, interrupted = 0;
@@ -434,12 +443,23 @@ int validate_main(int argc, char **argv)
     if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, &ov, vc) &&
         vc->status != HV_EXIT_INTERRUPTED)
       failed++;
+    /* bad input (a --set the case does not take, a missing case file, a checkpoint of
+       another case): its run has said what; the same would stop the later cases, and the
+       tables of an earlier validation in DIR are kept */
+    if (!norun && vc->status == HV_EXIT_INPUT) {
+      fprintf(stderr, "hvsph validate: %s: bad input (above): the later cases are not run, "
+                      "%s/validation.md and validation.csv are left as they were\n", names[j],
+              outdir);
+      meas_table_free(&mt);
+      cfg_free(ref);
+      return HV_EXIT_INPUT;
+    }
     /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
        too, also when writing that state failed: the tables are written for the cases
        so far */
     interrupted = !norun && (vc->status == HV_EXIT_INTERRUPTED || run_interrupted());
-    if (norun) vc->status = 0;
     vc->particles = particles_of(dir);
+    if (norun) vc->status = vc->particles >= 0 ? 0 : -1;   /* no summary.csv: no run */
     {   /* the run's wall time over all its segments (runs and restarts), when recorded */
       char spath[4300];
       snprintf(spath, sizeof spath, "%s/run_segments.csv", dir);
@@ -454,7 +474,9 @@ int validate_main(int argc, char **argv)
       free(wall);
     }
     snprintf(png, sizeof png, "%s/final.png", dir);
-    if (render_final(dir, png, &err)) hv_warn("%s: no radiograph: %s", names[j], err.msg);
+    struct hv_error rerr;   /* a warning only: not the validation's error */
+    hv_error_clear(&rerr);
+    if (render_final(dir, png, &rerr)) hv_warn("%s: no radiograph: %s", names[j], rerr.msg);
     snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
     meas_table_free(&mt);
     struct hv_error merr;

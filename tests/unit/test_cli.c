@@ -701,6 +701,172 @@ static void test_lattice_cover_warning(void)
   }
 }
 
+/* hvsph validate over tiny stand-ins for the paper's cases (--cases: the base case under
+ * two of paper_results.yaml's names), with nothing slow: no run gets past its set-up, or
+ * --no-run. An earlier validation's tables in the folder must survive bad input. */
+#define PREVIOUS_TABLE "previous table\n"
+static const char *prepare_valdir(const char *name)
+{
+  const char *dir = path_of(name);
+  char cmd[4400], p[4400];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", dir, dir);
+  if (test_run(cmd, NULL, 0) != 0) exit(1);
+  static const char *const files[] = {"validation.md", "validation.csv"};
+  for (int k = 0; k < 2; k++) {
+    snprintf(p, sizeof p, "%s/%s", dir, files[k]);
+    FILE *f = fopen(p, "w");
+    if (!f || fputs(PREVIOUS_TABLE, f) < 0 || fclose(f)) exit(1);
+  }
+  return dir;
+}
+
+static int tables_kept(const char *dir)
+{
+  char p[4400];
+  int ok = 1;
+  static const char *const files[] = {"validation.md", "validation.csv"};
+  for (int k = 0; k < 2; k++) {
+    snprintf(p, sizeof p, "%s/%s", dir, files[k]);
+    char *s = test_slurp(p, NULL);
+    ok = ok && s && !strcmp(s, PREVIOUS_TABLE);
+    free(s);
+  }
+  return ok;
+}
+
+static void test_validate(void)
+{
+  char out[16384], args[9000], cases[4400];
+  snprintf(cases, sizeof cases, "%s", path_of("vcases"));
+  char cmd[9000];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", cases, cases);
+  test_run(cmd, NULL, 0);
+  static const char *const names[] = {"bumper-1", "wp1"};
+  for (int k = 0; k < 2; k++) {
+    char f[4500];
+    snprintf(f, sizeof f, "%s/%s.yaml", cases, names[k]);
+    FILE *fp = fopen(f, "w");
+    if (!fp || fputs(variant(0, ""), fp) < 0 || fclose(fp)) exit(1);
+  }
+
+  /* a --set that the cases do not take: bad input (exit 2), reported once by the first
+     case's run; the later case is not run, the earlier tables are kept */
+  const char *dir = prepare_valdir("val_badset");
+  snprintf(args, sizeof args, "validate --only wp1 bumper-1 --cases '%s' --threads 1 --set "
+           "time.ennd=1 -o '%s'", cases, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "validate --set with an unknown key: exit status %d (want 2)", rc);
+  check_message("validate --set time.ennd", out,
+                (const char *const[]){"unknown key 'time.ennd'", NULL});
+  CHECK(tables_kept(dir), "validate with bad input: the earlier validation.md and "
+        "validation.csv are kept");
+  int ntmp, n = count_entries(dir, &ntmp, NULL, 0);
+  CHECK(ntmp == 0 && n == 2, "validate with bad input: nothing else in the folder (%d "
+        "entries, %d temporary)", n, ntmp);
+
+  /* a case file missing from --cases: bad input too */
+  dir = prepare_valdir("val_nocase");
+  snprintf(args, sizeof args, "validate --only wp1 --cases '%s/none' --threads 1 -o '%s'",
+           cases, dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2 && tables_kept(dir), "validate with a missing case file: exit status %d "
+        "(want 2), the earlier tables kept", rc);
+  check_message("validate, missing case file", out,
+                (const char *const[]){"cannot open case file", "none/wp1.yaml", NULL});
+
+  /* an unknown --only name: exit 2 naming it, and no output folder made */
+  const char *fresh = path_of("val_fresh");
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", fresh);
+  test_run(cmd, NULL, 0);
+  snprintf(args, sizeof args, "validate --no-run --only wp11 -o '%s'", fresh);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "validate --only wp11: exit status %d (want 2)", rc);
+  check_message("validate --only wp11", out, (const char *const[]){"no case 'wp11'", NULL});
+  struct stat st;
+  CHECK(stat(fresh, &st) != 0, "validate --only wp11 creates no output folder");
+
+  /* --only without a name, --scale inf: usage errors (not every case, not a scale no run
+     takes); --no-run keeps a regression from running anything */
+  static const char *const usage[] = {"--only", "--only --threads 1", "--scale inf --only wp1",
+                                      "--scale 0 --only wp1", "--scale -2 --only wp1",
+                                      "--threads 2x --only wp1", "--threads 5000 --only wp1"};
+  for (int k = 0; k < 7; k++) {
+    snprintf(args, sizeof args, "validate --no-run %s -o '%s'", usage[k], path_of("val_usage"));
+    rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 1, "validate %s: exit status %d (want 1)", usage[k], rc);
+  }
+
+  /* --no-run over a run whose last snapshot cannot be read: the radiograph is a warning,
+     the tables are written (exit 0); a case without any run is "not run", not "ok" */
+  dir = prepare_valdir("val_norun");
+  char p[4500];
+  snprintf(cmd, sizeof cmd, "mkdir -p '%s/wp1'", dir);
+  test_run(cmd, NULL, 0);
+  snprintf(p, sizeof p, "%s/wp1/particles_00000.csv", dir);
+  FILE *f = fopen(p, "w");
+  if (!f || fputs("garbage\n", f) < 0 || fclose(f)) exit(1);
+  snprintf(args, sizeof args, "validate --no-run --only wp1 bumper-1 -o '%s'", dir);
+  rc = hvsph(args, out, sizeof out);
+  snprintf(p, sizeof p, "%s/validation.md", dir);
+  char *md = test_slurp(p, NULL);
+  int nerr;
+  error_line(out, &nerr);
+  CHECK(rc == 0 && nerr == 0 && strstr(out, "wp1: no radiograph") && md &&
+        strstr(md, "| wp1 | hole_diameter (bumper) |"), "validate --no-run with an unreadable "
+        "snapshot: a warning, the tables written (exit %d): %s", rc, out);
+  CHECK(md && strstr(md, "| bumper-1 | -1 | (earlier run) | not run |"),
+        "validate --no-run: a case with no run in the folder is 'not run'");
+  free(md);
+}
+
+/* hvsph measure over a tiny run with measurements: it rewrites measurements.csv (the same
+ * rows, the definitions unchanged); a snapshot that cannot be read is bad input (exit 2)
+ * and leaves the run's measurements.csv and fragment files as they were */
+static void test_measure(void)
+{
+  char out[16384], args[9000], names[512];
+  const char *casefile =
+      test_write_file("measured.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
+                                                   "fragments: true}"));
+  const char *dir = path_of("measured");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the measured case runs (exit %d): %s", rc, out);
+  char mp[4400], fp[4400], sp[4400];
+  snprintf(mp, sizeof mp, "%s/measurements.csv", dir);
+  snprintf(fp, sizeof fp, "%s/fragments_00002.csv", dir);
+  snprintf(sp, sizeof sp, "%s/particles_00001.csv", dir);
+  char *m0 = test_slurp(mp, NULL), *f0 = test_slurp(fp, NULL);
+  snprintf(args, sizeof args, "measure '%s' --quiet", dir);
+  rc = hvsph(args, out, sizeof out);
+  char *m1 = test_slurp(mp, NULL);
+  CHECK(rc == 0 && m0 && m1 && !strcmp(m0, m1), "hvsph measure rewrites measurements.csv with "
+        "the run's own rows (exit %d): %s", rc, out);
+  free(m1);
+  /* the run's measurements.csv and fragments_00002.csv marked, to see that they stay */
+  FILE *f = fopen(mp, "a");
+  if (!f || fputs("# kept\n", f) < 0 || fclose(f)) exit(1);
+  f = fopen(fp, "a");
+  if (!f || fputs("# kept\n", f) < 0 || fclose(f)) exit(1);
+  f = fopen(sp, "w");
+  if (!f || fputs("garbage\n", f) < 0 || fclose(f)) exit(1);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "hvsph measure with an unreadable snapshot: exit status %d (want 2)", rc);
+  check_message("measure, unreadable snapshot", out,
+                (const char *const[]){"particles_00001.csv", NULL});
+  m1 = test_slurp(mp, NULL);
+  char *f1 = test_slurp(fp, NULL);
+  CHECK(m0 && f0 && m1 && f1 && strlen(m1) == strlen(m0) + 7 && !strncmp(m1, m0, strlen(m0)) &&
+            strlen(f1) == strlen(f0) + 7 && !strncmp(f1, f0, strlen(f0)),
+        "... and measurements.csv and fragments_00002.csv are left as they were");
+  int ntmp, n = count_entries(dir, &ntmp, names, sizeof names);
+  CHECK(ntmp == 0 && n > 0, "... and nothing temporary is left (has:%s)", names);
+  free(m0);
+  free(f0);
+  free(m1);
+  free(f1);
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -714,6 +880,8 @@ int main(void)
   test_late_input_error();
   test_mass_ratio_warning();
   test_lattice_cover_warning();
+  test_validate();
+  test_measure();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",
