@@ -222,8 +222,8 @@ static int check_params(const struct meas_geom *g, const struct meas_plate_param
                         g->spacing);
   if (!(par->tol > 0 && par->cell > 0 && par->footprint >= 0 && par->slab_front >= 0 &&
         par->slab_rear >= 0 && par->seed_radius >= 0 && par->r_max >= 0 && isfinite(par->tol) &&
-        isfinite(par->cell) && isfinite(par->slab_front) && isfinite(par->slab_rear) &&
-        isfinite(par->seed_radius) && isfinite(par->r_max)))
+        isfinite(par->cell) && isfinite(par->footprint) && isfinite(par->slab_front) &&
+        isfinite(par->slab_rear) && isfinite(par->seed_radius) && isfinite(par->r_max)))
     return hv_error_set(err, HV_EXIT_INPUT, "plate measurement: tol, cell (> 0), footprint, "
                         "slab margins, seed radius and r_max (>= 0) must be finite");
   if (!(g->thickness >= 0 && isfinite(g->thickness) && isfinite(g->x0) && isfinite(g->yc)))

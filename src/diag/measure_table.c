@@ -218,10 +218,26 @@ int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err
 {
   FILE *f = fopen(path, "r");
   if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s'", path);
-  char line[4096];
+  char *line = NULL, *more = NULL;
+  size_t cap = 0, mcap = 0;
   int header = 1;
-  while (fgets(line, sizeof line, f)) {
+  while (getline(&line, &cap, f) >= 0) {
     if (line[0] == '#') continue;
+    /* a quoted field may hold a line break (RFC 4180): the record goes on while a quote
+       is open (an odd count of '"' so far) */
+    size_t nq = 0;
+    for (const char *c = line; *c; c++) nq += *c == '"';
+    while (nq % 2) {
+      const ssize_t l = getline(&more, &mcap, f);
+      if (l < 0) break;
+      for (const char *c = more; *c; c++) nq += *c == '"';
+      const size_t len = strlen(line);
+      if (len + (size_t)l + 1 > cap) {
+        cap = len + (size_t)l + 1;
+        line = hv_realloc(line, cap, "measurement line");
+      }
+      memcpy(line + len, more, (size_t)l + 1);
+    }
     if (header) {   /* time,quantity,value,unit,object */
       header = 0;
       continue;
@@ -233,6 +249,8 @@ int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err
     if (k < 5) continue;
     meas_table_add(t, strtod(fld[0], NULL), fld[1], strtod(fld[2], NULL), fld[3], fld[4]);
   }
+  free(line);
+  free(more);
   fclose(f);
   return 0;
 }

@@ -48,7 +48,8 @@ int meas_table_write(const struct meas_table *t, const char *path, const char *c
 int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err);
 
 /* The rows of each measurement (quantity names and units in docs/measurements.md):
- * cavity:    penetration_depth m, cavity_diameter m, cavity_diameter_mean m, perforated
+ * cavity:    penetration_depth m, cavity_diameter m, cavity_diameter_mean m,
+ *            cavity_diameter_wall m, cavity_diameter_wall_mean m, perforated
  * plate:     perforated, hole_diameter m (largest circle), hole_diameter_equiv m,
  *            hole_diameter_at_impact m, hole_area m2, hole_open
  * debris:    cloud_particles, cloud_mass kg, cloud_velocity_mean m/s, cloud_velocity_lead

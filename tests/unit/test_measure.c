@@ -321,6 +321,11 @@ static void test_ellipse_and_open(void)
   hv_error_clear(&err);
   CHECK(measure_plate(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "negative tolerance: an error (%s)", err.msg);
+  par.tol = S;
+  par.footprint = INFINITY;   /* refused like the cavity's and the backwall's */
+  hv_error_clear(&err);
+  CHECK(measure_plate(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
+        "infinite footprint: an error, not d_equiv = %g (%s)", r.d_equiv, err.msg);
   particles_free(&p);
 }
 

@@ -71,6 +71,24 @@ static void test_rows_and_text(void)
   CHECK(same, "meas_table_read gives back the %zu rows written (object with a comma and "
         "quotes: '%s')", back.n, back.n > 3 ? back.rows[3].object : "");
   meas_table_free(&back);
+
+  /* a line break inside a quoted field (written as RFC 4180 asks) reads back too */
+  struct meas_table nl;
+  meas_table_init(&nl);
+  meas_table_add(&nl, 3e-5, "hole_diameter", 0.012, "m", "bumper\nfront, \"outer\"");
+  meas_table_add(&nl, 3e-5, "hole_area", 1e-4, "m2", "after");
+  char nlpath[4200];
+  snprintf(nlpath, sizeof nlpath, "%s/measurements_nl.csv", test_tmpdir());
+  CHECK(meas_table_write(&nl, nlpath, NULL, &err) == 0, "writes: %s", err.msg);
+  meas_table_init(&back);
+  CHECK(meas_table_read(&back, nlpath, &err) == 0 && back.n == 2 &&
+            !strcmp(back.rows[0].object, nl.rows[0].object) && back.rows[0].value == 0.012 &&
+            !strcmp(back.rows[1].quantity, "hole_area") && !strcmp(back.rows[1].object, "after"),
+        "a quoted field with a line break reads back (%zu rows, first object '%s')", back.n,
+        back.n ? back.rows[0].object : "");
+  meas_table_free(&back);
+  meas_table_free(&nl);
+
   CHECK(meas_table_read(&back, "/nonexistent/measurements.csv", &err) == -1 &&
             err.code == HV_EXIT_INPUT, "a missing file: an error");
 
