@@ -260,7 +260,10 @@ static int measure_target(struct measure_run *mr, const struct sim *s, double t,
   if (mask) cp.slice = g.spacing;
   const int rc = measure_cavity(&s->p, &g, &cp, &cav, err);
   free(mask);
-  if (rc) return -1;
+  if (rc) {
+    meas_cavity_free(&cav);   /* the profile, when the wall's step failed */
+    return -1;
+  }
   meas_table_add_cavity(&mr->table, t, s->body[mr->target[0]].name, &cav);
   meas_cavity_free(&cav);
   return 0;
