@@ -69,8 +69,19 @@ void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
                      struct eos_state *out)
 {
   const struct mg_cold cc = mg_cold_curve(g, rho);
-  const double Et = e - cc.Ec; /* thermal energy E_τ */
+  double Et = e - cc.Ec; /* thermal energy E_τ */
   out->p = cc.pc + g->Gamma * rho * Et;
+  if (!isfinite(cc.Ec) && rho < g->rho0) {
+    /* ρ → 0 (below ~1e-297 kg/m3): E_c ≈ c₀²ρ₀/(nρ) overflows, but ρE_c =
+     * c₀²/n·(ρP + ρ₀ − ρ), P = ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1), stays finite: p tends to
+     * −(1 + Γ)ρ₀c₀²/n, not −∞ (or NaN with Γ = 0). c² → −∞ (floored) for Γ > 0; with
+     * Γ = 0 it is c₀²(ρ/ρ₀)ⁿ⁻¹. */
+    const double k = g->n - 1.0;
+    const double P = k == 0.0 ? log(rho) - log(g->rho0) : (cc.xn1 - 1.0) / k;
+    const double rEc = g->c0 * g->c0 / g->n * (rho * P + (g->rho0 - rho));
+    out->p = cc.pc + g->Gamma * (rho * e - rEc);
+    if (g->Gamma == 0.0) Et = 0.0;
+  }
   double c2 = g->c0 * g->c0 * cc.xn1 + g->Gamma * (g->Gamma + 1.0) * Et;
   const double f2 = g->cs_floor * g->cs_floor;
   if (!(c2 > f2)) c2 = f2;

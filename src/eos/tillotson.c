@@ -34,9 +34,24 @@
  * - Tillotson's energy is measured from the reference state and its domain is E ≥ 0
  *   (ω → 0 at E = −E₀η²); a negative E (round-off) is evaluated as E = 0.
  */
+#include <float.h>
 #include <math.h>
 
 #include "eos/eos.h"
+
+/* ω = E/(E₀η²) + 1. At E = 0 it is 1, also where η² underflows to 0 (ρ below ~1e-160
+ * kg/m3), which would give 0/0. */
+static inline double till_omega(const struct eos_tillotson *t, double eta, double e)
+{
+  return e > 0.0 ? e / (t->E0 * eta * eta) + 1.0 : 1.0;
+}
+
+/* 2bE(ω − 1)/ω², the part of ∂(bρE/ω)/∂ρ from ω's dependence on ρ; it tends to 0 as
+ * ω → ∞ (where ω itself overflows, ∞/∞ would give NaN). */
+static inline double till_domega(double b, double e, double w)
+{
+  return w < HUGE_VAL ? 2.0 * b * e * (w - 1.0) / (w * w) : 0.0;
+}
 
 struct till_branch {
   double p;     /* [Pa] */
@@ -48,10 +63,10 @@ static void till_compressed(const struct eos_tillotson *t, double rho, double e,
                             struct till_branch *o)
 {
   const double eta = rho / t->rho0, mu = eta - 1.0;
-  const double w = e / (t->E0 * eta * eta) + 1.0;
+  const double w = till_omega(t, eta, e);
   o->p = (t->a + t->b / w) * rho * e + t->A * mu + t->B * mu * mu;
   o->dpde = rho * (t->a + t->b / (w * w));
-  o->dpdr = (t->a + t->b / w) * e + 2.0 * t->b * e * (w - 1.0) / (w * w) +
+  o->dpdr = (t->a + t->b / w) * e + till_domega(t->b, e, w) +
             (t->A + 2.0 * t->B * mu) / t->rho0;
   if (rho < t->rho_iv && o->p < 0.0) o->p = o->dpde = o->dpdr = 0.0;
 }
@@ -60,15 +75,17 @@ static void till_expanded(const struct eos_tillotson *t, double rho, double e,
                           struct till_branch *o)
 {
   const double eta = rho / t->rho0, mu = eta - 1.0, z = t->rho0 / rho - 1.0;
-  const double w = e / (t->E0 * eta * eta) + 1.0;
+  const double w = till_omega(t, eta, e);
   const double X = exp(-t->alpha * z * z), Y = exp(-t->beta * z);
   const double q = t->b * rho * e / w + t->A * mu * Y;
   const double r2 = t->rho0 / (rho * rho);
-  const double dq = t->b * e / w + 2.0 * t->b * e * (w - 1.0) / (w * w) + t->A * Y / t->rho0 +
-                    t->A * mu * Y * t->beta * r2;
+  /* the e^(−βz) and e^(−αz²) terms: 0 once the exponential is, also where z or ρ₀/ρ²
+     overflows (ρ below ~1e-150 kg/m3; 0·∞ would make c NaN) */
+  const double dq = t->b * e / w + till_domega(t->b, e, w) + t->A * Y / t->rho0 +
+                    (Y > 0.0 ? t->A * mu * Y * t->beta * r2 : 0.0);
   o->p = t->a * rho * e + q * X;
   o->dpde = rho * (t->a + t->b * X / (w * w));
-  o->dpdr = t->a * e + X * dq + q * X * 2.0 * t->alpha * z * r2;
+  o->dpdr = t->a * e + X * dq + (X > 0.0 ? q * X * 2.0 * t->alpha * z * r2 : 0.0);
 }
 
 /* p and its partial derivatives in the region (ρ, E) falls in. */
@@ -95,7 +112,9 @@ void eos_tillotson_evaluate(const struct eos_tillotson *t, double rho, double e,
 {
   struct till_branch b;
   till_state(t, rho, e, &b);
-  double c2 = b.dpdr + b.p / (rho * rho) * b.dpde;
+  const double r2 = rho * rho;
+  /* (p/ρ)(∂p/∂E/ρ) where ρ² underflows (ρ below ~1e-154 kg/m3): p/0 = ±∞ */
+  double c2 = b.dpdr + (r2 >= DBL_MIN ? b.p / r2 * b.dpde : b.p / rho * (b.dpde / rho));
   const double f2 = t->cs_floor * t->cs_floor;
   if (!(c2 > f2)) c2 = f2;
   out->p = b.p;

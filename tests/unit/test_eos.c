@@ -469,6 +469,65 @@ static void test_table_errors(void)
   if (!rc) eos_table_free(&t);
 }
 
+/* ---------------------------------------------------------------- extreme densities */
+
+/* ρ → 0: the pressure has a finite limit, and the code must return it, not −inf or NaN
+ * (a non-finite p ends the run; the state is a valid one of the EOS).
+ * Mie–Grüneisen: E_c ≈ c₀²ρ₀/(nρ) overflows below ρ ≈ 1e-297 kg/m3, while ρE_c stays
+ * finite: p → p_c(0) − Γρ₀c₀²/n·(1 + ρ/((n − 1)ρ₀) …) = −(1 + Γ)ρ₀c₀²/n (relative 1e-12;
+ * the neglected terms are below 1e-290), c → floor (c² → −∞). With Γ = 0 (rubber)
+ * p = c₀²(ρ − ρ₀) = −1 and c = c₀ = 1 (n = 1).
+ * Tillotson: η² = (ρ/ρ₀)² underflows to 0 below ρ ≈ 1e-165, where the cold state
+ * (E = 0, or E < 0 evaluated as 0) has ω = 0/0 + 1; its limit is p = Aμ + Bμ² = B − A.
+ * In the expanded branch (E ≥ E_cv) p → aρE and c² = ∂p/∂ρ + (p/ρ²)∂p/∂E → a(a + 1)E (the
+ * terms with e^(−αz²) and e^(−βz) vanish faster than any power of ρ), which the code gives
+ * down to ρ ≈ 1e-150; below, 0·∞ in the derivatives floored c at 1% of √(A/ρ₀). */
+static void test_low_density(void)
+{
+  for (int k = 0; k < NMG - 1; k++) {
+    const struct material *m = &mg_all[k];
+    const struct eos_mie_gruneisen *g = &m->eosp.mg;
+    const double want = -(1.0 + g->Gamma) * g->rho0 * g->c0 * g->c0 / g->n;
+    const double rhos[] = {1e-100, 1e-300, 1e-310};
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) {
+        const double e = j == 0 ? 0.0 : j == 1 ? -1e6 : 1e7;
+        struct eos_state st = {(double)NAN, (double)NAN};
+        const int rc = eos_evaluate(m, rhos[i], e, &st);
+        CHECK(rc == 0 && fabs(st.p - want) <= 1e-12 * fabs(want) && st.cs == g->cs_floor,
+              "%s: p(%g kg/m3, %g J/kg) = %.15g Pa, limit %.15g; c = %g (floor %g)", m->name,
+              rhos[i], e, st.p, want, st.cs, g->cs_floor);
+      }
+  }
+  {
+    struct eos_state st = {(double)NAN, (double)NAN};
+    const int rc = eos_evaluate(&mg_all[7], 1e-310, 0.0, &st);
+    CHECK(rc == 0 && st.p == -1.0 && st.cs == 1.0,
+          "rubber (Gamma = 0): p(1e-310) = %.17g, want c0^2 (rho - rho0) = -1; c = %g, want "
+          "c0 = 1", st.p, st.cs);
+  }
+  for (int k = 0; k < 2; k++) {
+    const struct material *m = &till_all[k];
+    const struct eos_tillotson *t = &m->eosp.til;
+    const double rhos[] = {1e-100, 1e-200, 1e-310};
+    for (int i = 0; i < 3; i++) {
+      const double want = t->B - t->A;
+      for (int j = 0; j < 2; j++) {
+        const double e = j ? -1e3 : 0.0;
+        const double p = pressure(m, rhos[i], e);
+        CHECK(fabs(p - want) <= 1e-12 * fabs(want), "%s: cold p(%g kg/m3, %g J/kg) = %.15g, "
+              "limit B - A = %.15g", m->name, rhos[i], e, p, want);
+      }
+      const double e = 2.0 * t->E_cv, c = sqrt(t->a * (t->a + 1.0) * e);
+      struct eos_state st = {(double)NAN, (double)NAN};
+      const int rc = eos_evaluate(m, rhos[i], e, &st);
+      CHECK(rc == 0 && isfinite(st.p) && fabs(st.p) <= 1e-12 && fabs(st.cs - c) <= 1e-9 * c,
+            "%s: expanded at %g kg/m3, e = %g: p = %g (a rho e), c = %.15g, want sqrt(a(a+1)e) = "
+            "%.15g", m->name, rhos[i], e, st.p, st.cs, c);
+    }
+  }
+}
+
 /* ---------------------------------------------------------------- inverse */
 
 static void test_energy_from_pressure(void)
@@ -549,5 +608,6 @@ int main(void)
   test_table_interpolation();
   test_table_errors();
   test_energy_from_pressure();
+  test_low_density();
   return test_finish();
 }
