@@ -88,7 +88,12 @@ static int update_eos(struct sim *s, struct hv_error *err)
   const struct material *mb = &s->mat[p->mat[i]];
   const double rho_b = p->cracks && fracture_opening(&mb->frac, p->damage[i])
                            ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];   /* as above */
-  eos_describe(mb, rho_b, p->e[i], eos_evaluate(mb, rho_b, p->e[i], &st), what, sizeof what);
+  const int est = eos_evaluate(mb, rho_b, p->e[i], &st);
+  if (est == EOS_OK)   /* the EOS took the state but gave no finite pressure or sound speed */
+    snprintf(what, sizeof what, "rho = %.9g kg/m3, e = %.9g J/kg gives p = %g Pa (sound speed "
+             "%g m/s): not finite", rho_b, p->e[i], st.p, st.cs);
+  else
+    eos_describe(mb, rho_b, p->e[i], est, what, sizeof what);
   return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
                       "material '%s'): field p: %s", s->step, s->t, (long long)p->id[i], bname,
                       mname, what);

@@ -888,5 +888,21 @@ int main(void)
                                     "field rho: ", "not a positive finite density", NULL});
   failed_run("not_finite", "--set bodies[0].pressure=1e306",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "nan", NULL});
+  /* an energy the EOS takes but whose pressure overflows (Γρe > DBL_MAX): the message
+     gives the state and the pressure; it said "is a valid state" */
+  {
+    char out[16384], args[9000];
+    const char *casefile = test_write_file("eos_inf.yaml", variant(14, "    energy: 1e305"));
+    const char *dir = prepare_outdir("eos_not_finite");
+    snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].density=2780 "
+             "--set bodies[0].material=al-alloy", casefile, dir);
+    const int rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 3, "eos_not_finite: exit status %d (want 3)", rc);
+    check_message("eos_not_finite", out,
+                  (const char *const[]){"t = 0 s", "particle 0", "material 'al-alloy'",
+                                        "field p: rho = 2780 kg/m3, e = 1e+305 J/kg gives p = inf",
+                                        NULL});
+    CHECK(!strstr(out, "valid state"), "eos_not_finite: not called a valid state: %s", out);
+  }
   return test_finish();
 }
