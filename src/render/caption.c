@@ -53,7 +53,12 @@ static void bar_ticks(struct canvas *c, int x0, int w, int y, int s, double lo, 
   double step = nice_step(hi - lo, w >= 200 * s ? 5 : 3);
   int dec = step >= 1.0 ? 0 : (int)ceil(-log10(step) - 1e-9);
   int last_right = -1000000;
-  for (double t = ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
+  /* ticks t0 + k step, counted: a span below the rounding of lo (a --range such as
+   * 1,1.0000000000000002) must not make t += step stand still */
+  const double t0 = ceil(lo / step - 1e-9) * step;
+  for (int k = 0; k <= 100; k++) {
+    const double t = t0 + k * step;
+    if (!(t <= hi + 1e-9 * step)) break;
     int x = x0 + (int)lround((t - lo) / (hi - lo) * (w - 1));
     canvas_rect(c, x, y, x + s, y + 2 * s, ink);
     char lab[32];

@@ -79,14 +79,16 @@ static void deposit(double *acc, int nu, int nv, const struct column_table *ct, 
     }
     return;
   }
-  int i0 = (int)floor(fu - R), i1 = (int)ceil(fu + R), j0 = (int)floor(fv - R),
-      j1 = (int)ceil(fv + R);
   if (R >= NARROW) { /* wide kernel: midpoint rule, normalised analytically */
+    /* the pixel range clipped to the picture before it becomes an int: a kernel may span
+     * more than INT_MAX pixels */
+    const int i0 = (int)fmax(floor(fu - R), 0.0), i1 = (int)fmin(ceil(fu + R), nu - 1.0),
+              j0 = (int)fmax(floor(fv - R), 0.0), j1 = (int)fmin(ceil(fv + R), nv - 1.0);
     double scale = m / (hp * hp), inv = 1.0 / hp, R2 = R * R;
-    for (int j = j0 < 0 ? 0 : j0; j <= j1 && j < nv; j++) {
+    for (int j = j0; j <= j1; j++) {
       double dv2 = (j - fv) * (j - fv);
       double *row = acc + (size_t)j * (size_t)nu;
-      for (int i = i0 < 0 ? 0 : i0; i <= i1 && i < nu; i++) {
+      for (int i = i0; i <= i1; i++) {
         double r2 = (i - fu) * (i - fu) + dv2;
         if (r2 < R2) row[i] += scale * column_at(ct, sqrt(r2) * inv);
       }
@@ -94,6 +96,8 @@ static void deposit(double *acc, int nu, int nv, const struct column_table *ct, 
     return;
   }
   /* narrow kernel: weights on a sub-sampled grid over the whole footprint, normalised */
+  const int i0 = (int)floor(fu - R), i1 = (int)ceil(fu + R), j0 = (int)floor(fv - R),
+            j1 = (int)ceil(fv + R);
   double w[(2 * NARROW + 4) * (2 * NARROW + 4)];
   int ns = R < 4.0 ? 4 : 2, wi = i1 - i0 + 1;
   double total = 0.0, inv = 1.0 / hp;

@@ -156,8 +156,10 @@ int render_main(int argc, char **argv)
   if (!in) return fail_usage("%s", "missing snapshot file");
   if (!out) return fail_usage("%s", "missing -o FILE.png");
   if (range) {
-    static const enum unit_dim dim[] = {UNIT_NONE, UNIT_NONE, UNIT_VELOCITY, UNIT_PRESSURE,
-                                        UNIT_DENSITY};
+    static const enum unit_dim dim[] = {
+        [RENDER_COLOR_MATERIAL] = UNIT_NONE,    [RENDER_COLOR_DAMAGE] = UNIT_NONE,
+        [RENDER_COLOR_VELOCITY] = UNIT_VELOCITY, [RENDER_COLOR_PRESSURE] = UNIT_PRESSURE,
+        [RENDER_COLOR_DENSITY] = UNIT_DENSITY,  [RENDER_COLOR_ALPHA] = UNIT_NONE};
     if (o.mode != RENDER_PARTICLES || o.color == RENDER_COLOR_MATERIAL)
       return fail_usage("%s", "--range needs --mode particles and a --color quantity");
     if (parse_list(range, 2, dim[o.color], o.range, msg, sizeof msg) || !(o.range[0] < o.range[1])) {

@@ -49,12 +49,12 @@ static void draw_disc(struct canvas *c, const struct render_view *v, const struc
   unsigned char rim[3] = {(unsigned char)(0.62 * rgb[0]), (unsigned char)(0.62 * rgb[1]),
                           (unsigned char)(0.62 * rgb[2])};
   int rimmed = d->r >= 3.0;
-  int i0 = (int)floor(d->fu - d->r - 1), i1 = (int)ceil(d->fu + d->r + 1);
-  int j0 = (int)floor(d->fv - d->r - 1), j1 = (int)ceil(d->fv + d->r + 1);
-  if (i0 < 0) i0 = 0;
-  if (j0 < 0) j0 = 0;
-  if (i1 >= v->nu) i1 = v->nu - 1;
-  if (j1 >= v->nv) j1 = v->nv - 1;
+  /* clipped to the plot area before the conversion to int (a disc may span more than
+   * INT_MAX pixels) */
+  const int i0 = (int)fmax(floor(d->fu - d->r - 1), 0.0),
+            i1 = (int)fmin(ceil(d->fu + d->r + 1), v->nu - 1.0);
+  const int j0 = (int)fmax(floor(d->fv - d->r - 1), 0.0),
+            j1 = (int)fmin(ceil(d->fv + d->r + 1), v->nv - 1.0);
   for (int j = j0; j <= j1; j++)
     for (int i = i0; i <= i1; i++) {
       double dist = hypot(i - d->fu, j - d->fv);

@@ -112,6 +112,15 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
     v.height = v.nv + v.band;
   }
   v.pix = fmax(du / v.nu, dv / v.nv);
+  if (!(v.pix > 0.0 && isfinite(0.5 * v.pix * v.nu) && isfinite(0.5 * v.pix * v.nv) &&
+        isfinite(ext[0] + ext[1]) && isfinite(ext[2] + ext[3])))
+    return o->have_box
+               ? hv_error_set(err, HV_EXIT_USAGE, "--box: %.6g..%.6g m by %.6g..%.6g m cannot be "
+                              "drawn with pixels of a finite, nonzero size", ext[0], ext[1],
+                              ext[2], ext[3])
+               : hv_error_set(err, HV_EXIT_INPUT, "the particles' extent (%.6g..%.6g m by "
+                              "%.6g..%.6g m) cannot be drawn with pixels of a finite, nonzero "
+                              "size", ext[0], ext[1], ext[2], ext[3]);
   double cu = 0.5 * (ext[0] + ext[1]), cv = 0.5 * (ext[2] + ext[3]);
   v.u0 = cu - 0.5 * v.pix * v.nu;
   v.u1 = cu + 0.5 * v.pix * v.nu;

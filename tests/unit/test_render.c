@@ -237,17 +237,54 @@ static void test_plate(void)
   particles_free(&p);
 }
 
+/* A kernel far wider than the picture (h of a billion pixels): it covers every pixel with
+ * m F(0)/h², it is not lost to an int overflow of its pixel range. A box whose pixel
+ * cannot be a finite positive length is refused, not drawn with NaN. */
+static void test_extremes(void)
+{
+  struct particles p;
+  particles_init(&p);
+  put(&p, 0.0, 0.0, 0.0, 1.0, 1e6, 7850, 0, 0);
+  struct render_options o;
+  render_options_default(&o);
+  o.mirror = 0;
+  o.have_box = 1;
+  double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
+  memcpy(o.box, box, sizeof box);
+  o.width = 400;
+  o.height = 436;
+  struct render_view v;
+  struct sig s = areal(&p, &o, 0.0, 0.0, &v);
+  double expect = 1.0 * 1.5 / PI / 1e12; /* m F(0) / h² [kg/m2] */
+  CHECK(2.0 * p.h[0] / v.pix > 2147483647.0, "the kernel spans %g pixels", 2.0 * p.h[0] / v.pix);
+  CHECK_CLOSE(s.at / expect, 1.0, 1e-3, "kernel wider than INT_MAX pixels: sigma at the centre / m F(0)/h^2");
+  CHECK_CLOSE(s.mass / (expect * 1e-4), 1.0, 1e-3, "kernel wider than INT_MAX pixels: mass in the picture");
+
+  struct hv_error err;
+  const double bad[2][6] = {{0, 5e-324, 0, 5e-324, -1, 1}, {-1e308, 1e308, -1, 1, -1, 1}};
+  for (int k = 0; k < 2; k++) {
+    memcpy(o.box, bad[k], sizeof o.box);
+    hv_error_clear(&err);
+    int rc = render_view_setup(&p, &o, &v, &err);
+    CHECK(rc != 0 && err.code == HV_EXIT_USAGE && strstr(err.msg, "--box"),
+          "box %g..%g: refused (%d, code %d): %s", bad[k][0], bad[k][1], rc, err.code, err.msg);
+  }
+  particles_free(&p);
+}
+
 /* ---- the command ------------------------------------------------------ */
 
 /* Sphere (13.5 mm steel, 3 km/s) behind a 2 mm steel plate with a 20 mm hole and a debris
  * cloud of small clusters; a half model z >= 0. Body 0 the projectile, body 1 the bumper
  * and its debris; material 0 projectile, 1 bumper, or with swap the other way round (as a
- * case whose materials are numbered in another order). */
+ * case whose materials are numbered in another order). solid: 1 with a damage column, 2
+ * with an alpha column (viscosity switch), 3 both. */
 static const char *write_scene(const char *name, int solid, int swap)
 {
   struct particles p;
   particles_init(&p);
-  if (solid) particles_enable_solid(&p);
+  if (solid & 1) particles_enable_solid(&p);
+  if (solid & 2) particles_enable_av(&p);
   const double c[3] = {25e-3, 0, 0};
   add_sphere(&p, c, 6.75e-3, 0.45e-3, 7700, 0, 1, 3000);
   add_plate(&p, 0.0, 2e-3, 60e-3, 0.0, 0.5e-3, 7850, 1, 10e-3);
@@ -265,7 +302,9 @@ static const char *write_scene(const char *name, int solid, int swap)
       put(&p, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4), 7850 * 1.25e-10,
           0.6e-3, 7850, 1, 2500 * cos(ang));
   }
-  if (solid)
+  if (solid & 2)
+    for (size_t i = 0; i < p.n; i++) p.alpha[i] = 0.1 + 0.9 * (double)(i % 7) / 6.0;
+  if (solid & 1)
     for (size_t i = 0; i < p.n; i++) p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
   for (size_t i = 0; i < p.n; i++) {
     p.body[i] = p.mat[i];
@@ -390,6 +429,58 @@ static void test_command(void)
   }
   CHECK(tmp_files_left() == 0, "no temporary files left behind");
 
+  /* one particle whose disc (0.6 h) is wider than INT_MAX pixels: it covers the picture */
+  {
+    struct particles big;
+    particles_init(&big);
+    put(&big, 0.0, 0.0, 0.0, 1.0, 1e6, 7850, 0, 0.0);
+    struct snapshot_meta meta = {.time = 0.0, .step = 0, .version = "test", .case_name = "big"};
+    char bigpath[4096];
+    snprintf(bigpath, sizeof bigpath, "%s/big.csv", dir);
+    struct hv_error e;
+    hv_error_clear(&e);
+    CHECK(io_write_particles_csv(bigpath, &big, &meta, &e) == 0, "big particle written %s", e.msg);
+    particles_free(&big);
+    snprintf(args, sizeof args, "'%s' -o '%s/big.png' --mode particles --axis y --no-mirror "
+             "--box -5mm,5mm,-1,1,-5mm,5mm --size 400x300", bigpath, dir);
+    st = run(args, out, sizeof out);
+    snprintf(args, sizeof args, "%s/big.png", dir);
+    img = read_png(args, &w, &h);
+    CHECK(st == 0 && img && w == 400 && h == 300, "a huge disc: exit %d %s", st, out);
+    if (img) {
+      unsigned char c[3];
+      render_palette(0, c);
+      const unsigned char *q = img + 3 * (100 * 400 + 200);
+      CHECK(q[0] == c[0] && q[1] == c[1] && q[2] == c[2], "a huge disc covers the picture: "
+            "centre pixel %d %d %d (%d %d %d)", q[0], q[1], q[2], c[0], c[1], c[2]);
+    }
+    free(img);
+  }
+
+  /* --range with --color alpha: alpha is dimensionless like damage (the range's units
+   * were looked up past the end of a table) */
+  const char *avscene = write_scene("scene_av.csv", 3, 0);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
+           "--range 0,1 --axis y --size 640x400", avscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 0, "particles by alpha with --range 0,1: exit %d (0) %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
+           "--range 0,1km/s", avscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 1 && strstr(out, "--range"), "alpha --range with a unit: exit %d (1) %s", st, out);
+
+  /* a --range narrower than the rounding of its ends: the colour bar's ticks must not
+   * loop for ever */
+  {
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "timeout 60 '%s' render '%s' -o '%s/particles_narrow.png' --mode "
+             "particles --color velocity --range 1,1.0000000000000002 --size 640x400",
+             test_bin(), scene, dir);
+    st = test_run(cmd, out, sizeof out);
+    CHECK(st == 0, "a --range 1,1.0000000000000002: exit %d (0, 124: hung) %s", st, out);
+  }
+  CHECK(tmp_files_left() == 0, "no temporary files left behind");
+
   /* failures: the previous picture stays as it was */
   snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color damage", gas, dir);
   st = run(args, out, sizeof out);
@@ -457,6 +548,7 @@ int main(void)
   test_single_particle();
   test_sphere();
   test_plate();
+  test_extremes();
   test_command();
   return test_finish();
 }
