@@ -3,9 +3,12 @@
  * The YAML event stream (libfyaml's parser) is turned into cfg_node trees:
  * mappings (ordered keys), sequences and scalars, each with the 1-based line that
  * names it (a mapping value carries its key's line) and a `used` flag. Aliases are
- * expanded by copying the anchored subtree. libfyaml's diagnostics are collected,
- * never printed: a syntax error becomes one message "case.yaml:3:7: YAML syntax
- * error: <reason>".
+ * expanded by copying the anchored subtree (not one inside the value it names, and at
+ * most CFG_ALIAS_MAX_NODES values in all), nested at most CFG_MAX_DEPTH deep. The
+ * text must be UTF-8: libfyaml let a stray Latin-1 byte in a comment end the document
+ * silently, so it is checked first. libfyaml's diagnostics are collected, never
+ * printed: a syntax error becomes one message "case.yaml:3:7: YAML syntax error:
+ * <reason>".
  *
  * Also here: the documents (load, free), key paths ("bodies[0].velocity") and the
  * structure queries, --set and cfg_graft. Values set with --set carry the line
@@ -112,7 +115,13 @@ const char *cfg_kind_name(enum cfg_kind k)
 struct anchor {
   char *name;
   const struct cfg_node *node;
+  int open; /* a mapping or sequence still being read: an alias to it is recursive */
 };
+
+/* Values that aliases may copy in one document, all together: a few aliases of aliases
+ * (each line ten aliases of the one before) would otherwise grow tenfold a line until
+ * memory runs out. Real case files copy a few hundred. */
+#define CFG_ALIAS_MAX_NODES 1000000L
 
 struct builder {
   struct fy_parser *fyp;
@@ -122,6 +131,8 @@ struct builder {
   struct hv_error *err;
   struct anchor *anchors;
   int nanchors, capanchors;
+  long alias_nodes; /* values copied by aliases so far (CFG_ALIAS_MAX_NODES) */
+  int depth;        /* mappings and sequences open (at most CFG_MAX_DEPTH) */
   char diagtext[512]; /* last diagnostic line (fallback if none collected) */
 };
 
@@ -184,6 +195,17 @@ static int syntax_error(struct builder *b)
                       b->diagtext[0] ? b->diagtext : "unexpected end of input");
 }
 
+/* ":12" to follow the name in a message about a line of the text read; "" for a --set
+ * value (its lines are not the file's: "--set a", not "--set a:1"). Returns buf. */
+static const char *bline(const struct builder *b, int line, char *buf, size_t len)
+{
+  if (b->positions && line > 0)
+    snprintf(buf, len, ":%d", line);
+  else if (len)
+    buf[0] = '\0';
+  return buf;
+}
+
 static struct fy_event *next_event(struct builder *b)
 {
   struct fy_event *e = fy_parser_parse(b->fyp);
@@ -204,14 +226,23 @@ static char *token_text(struct fy_token *t)
   return s ? cfg_strndup(s, len) : cfg_strdup("");
 }
 
-static void anchor_add(struct builder *b, struct fy_token *t, const struct cfg_node *n)
+/* Registers anchor t for node n; returns its index (-1 if t is NULL). */
+static int anchor_add(struct builder *b, struct fy_token *t, const struct cfg_node *n, int open)
 {
-  if (!t) return;
+  if (!t) return -1;
   if (b->nanchors == b->capanchors) {
     b->capanchors = b->capanchors ? 2 * b->capanchors : 8;
     b->anchors = hv_realloc(b->anchors, (size_t)b->capanchors * sizeof *b->anchors, "anchors");
   }
-  b->anchors[b->nanchors++] = (struct anchor){token_text(t), n};
+  b->anchors[b->nanchors] = (struct anchor){token_text(t), n, open};
+  return b->nanchors++;
+}
+
+static long node_count(const struct cfg_node *n)
+{
+  long k = 1;
+  for (int i = 0; i < n->n; i++) k += node_count(n->items[i]);
+  return k;
 }
 
 static struct cfg_node *build_node(struct builder *b, struct fy_event *e);
@@ -219,6 +250,7 @@ static struct cfg_node *build_node(struct builder *b, struct fy_event *e);
 /* Reads key/value pairs up to MAPPING_END into map m. */
 static int build_map_body(struct builder *b, struct cfg_node *m)
 {
+  char at[16];
   for (;;) {
     struct fy_event *e = next_event(b);
     if (!e) return -1;
@@ -229,15 +261,17 @@ static int build_map_body(struct builder *b, struct cfg_node *m)
     int kline = event_line(e);
     if (e->type != FYET_SCALAR) {
       fy_parser_event_free(b->fyp, e);
-      return hv_error_set(b->err, HV_EXIT_INPUT, "%s:%d: mapping keys must be plain names", b->name,
-                          kline);
+      return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: mapping keys must be plain names",
+                          b->name, bline(b, kline, at, sizeof at));
     }
     char *key = token_text(e->scalar.value);
     fy_parser_event_free(b->fyp, e);
     int dup = cfg_node_find(m, key, strlen(key));
     if (dup >= 0) {
-      hv_error_set(b->err, HV_EXIT_INPUT, "%s:%d: duplicate key '%s' (first at line %d)", b->name,
-                   kline, key, m->items[dup]->line);
+      char first[32] = "";
+      if (b->positions) snprintf(first, sizeof first, " (first at line %d)", m->items[dup]->line);
+      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: duplicate key '%s'%s",
+                   b->name, bline(b, kline, at, sizeof at), key, first);
       free(key);
       return -1;
     }
@@ -271,16 +305,34 @@ static int build_seq_body(struct builder *b, struct cfg_node *s)
 
 static struct cfg_node *build_alias(struct builder *b, struct fy_event *e, int line)
 {
+  char at[16];
   char *name = token_text(e->alias.anchor);
   fy_parser_event_free(b->fyp, e);
   for (int i = b->nanchors - 1; i >= 0; i--) {
     if (strcmp(b->anchors[i].name, name)) continue;
+    if (b->anchors[i].open) {
+      hv_error_set(b->err, HV_EXIT_INPUT,
+                   "%s%s: alias '*%s' inside the value it names (a recursive alias)",
+                   b->name, bline(b, line, at, sizeof at), name);
+      free(name);
+      return NULL;
+    }
+    b->alias_nodes += node_count(b->anchors[i].node);
+    if (b->alias_nodes > CFG_ALIAS_MAX_NODES) {
+      hv_error_set(b->err, HV_EXIT_INPUT,
+                   "%s%s: alias '*%s': aliases copy more than %ld values in all (aliases of "
+                   "aliases?)",
+                   b->name, bline(b, line, at, sizeof at), name, CFG_ALIAS_MAX_NODES);
+      free(name);
+      return NULL;
+    }
     free(name);
     struct cfg_node *n = node_copy(b->anchors[i].node);
     n->line = n->vline = line;
     return n;
   }
-  hv_error_set(b->err, HV_EXIT_INPUT, "%s:%d: unknown alias '*%s'", b->name, line, name);
+  hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unknown alias '*%s'",
+               b->name, bline(b, line, at, sizeof at), name);
   free(name);
   return NULL;
 }
@@ -291,32 +343,43 @@ static struct cfg_node *build_node(struct builder *b, struct fy_event *e)
   int line = event_line(e);
   struct cfg_node *n;
   int rc = 0;
+  char at[16];
   switch (e->type) {
   case FYET_SCALAR:
     n = cfg_node_new(CFG_SCALAR, line);
     n->text = token_text(e->scalar.value);
     n->plain = fy_token_scalar_style(e->scalar.value) == FYSS_PLAIN;
-    anchor_add(b, e->scalar.anchor, n);
+    anchor_add(b, e->scalar.anchor, n, 0);
     fy_parser_event_free(b->fyp, e);
     return n;
   case FYET_MAPPING_START:
   case FYET_SEQUENCE_START: {
     int map = e->type == FYET_MAPPING_START;
+    if (b->depth == CFG_MAX_DEPTH) { /* deeper than a key path reaches (and the stack) */
+      fy_parser_event_free(b->fyp, e);
+      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: values nested more than %d deep",
+                   b->name, bline(b, line, at, sizeof at), CFG_MAX_DEPTH);
+      return NULL;
+    }
     n = cfg_node_new(map ? CFG_MAP : CFG_SEQ, line);
-    anchor_add(b, map ? e->mapping_start.anchor : e->sequence_start.anchor, n);
+    int a = anchor_add(b, map ? e->mapping_start.anchor : e->sequence_start.anchor, n, 1);
     fy_parser_event_free(b->fyp, e);
+    b->depth++;
     rc = map ? build_map_body(b, n) : build_seq_body(b, n);
+    b->depth--;
     if (rc) {
       cfg_node_free(n); /* the anchor table may point into n: no more aliases are read */
       return NULL;
     }
+    if (a >= 0) b->anchors[a].open = 0;
     return n;
   }
   case FYET_ALIAS:
     return build_alias(b, e, line);
   default:
     fy_parser_event_free(b->fyp, e);
-    hv_error_set(b->err, HV_EXIT_INPUT, "%s:%d: unexpected YAML event", b->name, line);
+    hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unexpected YAML event",
+                 b->name, bline(b, line, at, sizeof at));
     return NULL;
   }
 }
@@ -324,14 +387,15 @@ static struct cfg_node *build_node(struct builder *b, struct fy_event *e)
 /* Expects one event of the given type (consumed). */
 static int expect_event(struct builder *b, enum fy_event_type type)
 {
+  char at[16];
   struct fy_event *e = next_event(b);
   if (!e) return -1;
   int ok = e->type == type;
   int line = event_line(e);
   fy_parser_event_free(b->fyp, e);
   if (!ok)
-    return hv_error_set(b->err, HV_EXIT_INPUT, "%s:%d: only one YAML document is allowed", b->name,
-                        line);
+    return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: only one YAML document is allowed",
+                        b->name, bline(b, line, at, sizeof at));
   return 0;
 }
 
@@ -362,9 +426,65 @@ static struct cfg_node *build_stream(struct builder *b, const char *text, size_t
   return root;
 }
 
+size_t cfg_utf8_invalid_at(const unsigned char *s, size_t len)
+{
+  size_t i = 0;
+  while (i < len) {
+    unsigned c = s[i];
+    size_t n;
+    unsigned lo = 0x80, hi = 0xbf; /* range of the second byte */
+    if (c < 0x80) {
+      i++;
+      continue;
+    } else if (c >= 0xc2 && c <= 0xdf) {
+      n = 1;
+    } else if (c >= 0xe0 && c <= 0xef) {
+      n = 2;
+      if (c == 0xe0) lo = 0xa0;
+      if (c == 0xed) hi = 0x9f;
+    } else if (c >= 0xf0 && c <= 0xf4) {
+      n = 3;
+      if (c == 0xf0) lo = 0x90;
+      if (c == 0xf4) hi = 0x8f;
+    } else {
+      return i;
+    }
+    if (len - i <= n || s[i + 1] < lo || s[i + 1] > hi) return i;
+    for (size_t k = 2; k <= n; k++)
+      if (s[i + k] < 0x80 || s[i + k] > 0xbf) return i;
+    i += n + 1;
+  }
+  return len;
+}
+
+/* Refuses text that is not UTF-8, naming the line and column (in characters) of the
+ * first bad byte. */
+static int check_utf8(const char *text, size_t len, const char *name, int positions,
+                      struct hv_error *err)
+{
+  const unsigned char *s = (const unsigned char *)text;
+  size_t bad = cfg_utf8_invalid_at(s, len);
+  if (bad == len) return 0;
+  if (!positions)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: not valid UTF-8 (byte 0x%02x)", name, s[bad]);
+  long line = 1, col = 1;
+  for (size_t i = 0; i < bad; i++) {
+    if (s[i] == '\n') {
+      line++;
+      col = 1;
+    } else if ((s[i] & 0xc0) != 0x80) {
+      col++;
+    }
+  }
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s:%ld:%ld: not valid UTF-8 (byte 0x%02x); save the file as UTF-8", name,
+                      line, col, s[bad]);
+}
+
 static struct cfg_node *parse_yaml(const char *text, size_t len, const char *name, int positions,
                                    struct hv_error *err)
 {
+  if (check_utf8(text, len, name, positions, err)) return NULL;
   struct builder b;
   if (builder_init(&b, name, err)) return NULL;
   b.positions = positions;

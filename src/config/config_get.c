@@ -275,9 +275,11 @@ static int parse_long(const char *t, long *v)
   }
   for (const char *p = t; *p; p++)
     if (!isdigit((unsigned char)*p) && !strchr(".+-eE \t", *p)) return -1;
-  double d = strtod(t, &end);
+  errno = 0;
+  double d = strtod(t, &end); /* ERANGE: 1e-400 is no integer 0 */
   while (isspace((unsigned char)*end)) end++;
-  if (end == t || *end || !isfinite(d) || d != floor(d) || fabs(d) >= 9.2e18) return -1;
+  if (end == t || *end || errno == ERANGE || !isfinite(d) || d != floor(d) || fabs(d) >= 9.2e18)
+    return -1;
   *v = (long)d;
   return 0;
 }

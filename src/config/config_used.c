@@ -268,7 +268,21 @@ static void write_header(struct writer *w, const struct cfg *c, const char *vers
   if (now != (time_t)-1 && gmtime_r(&now, &tm))
     strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &tm);
   wr(w, "# Parameters used by hvsph %s\n", version ? version : "(unknown version)");
-  wr(w, "# case file: %s\n# written: %s\n", c->name, date);
+  /* the name in a comment: control characters and bytes that are not UTF-8 as \xNN, so
+     that a line break or a Latin-1 file name cannot break the file */
+  wr(w, "# case file: ");
+  const unsigned char *s = (const unsigned char *)c->name;
+  size_t len = strlen(c->name);
+  for (size_t i = 0; i < len;) {
+    size_t ok = i + cfg_utf8_invalid_at(s + i, len - i);
+    for (; i < ok; i++)
+      if (s[i] < 0x20 || s[i] == 0x7f)
+        wr(w, "\\x%02x", s[i]);
+      else
+        wr(w, "%c", s[i]);
+    if (i < len) wr(w, "\\x%02x", s[i++]);
+  }
+  wr(w, "\n# written: %s\n", date);
   wr(w, "# Values are in SI units (the unit is in the comment); \"default\" marks values\n"
         "# the case file did not set. This file can be run as a case file.\n");
 }

@@ -290,7 +290,9 @@ static int parse_number(const char *text, double *x, const char **end, char *msg
   for (const char *c = p; c < q; c++) /* no hex floats, "inf" or "nan" */
     if (!isdigit((unsigned char)*c) && !strchr(".+-eE", *c))
       return fail(msg, msglen, "'%s' is not a finite decimal number", text);
-  if (errno == ERANGE && fabs(v) > 1.0) return fail(msg, msglen, "'%s' is out of range", text);
+  /* ERANGE: too large, or too small (a subnormal is kept; a number rounded to 0 is not) */
+  if (errno == ERANGE && (fabs(v) > 1.0 || v == 0.0))
+    return fail(msg, msglen, "'%s' is out of range", text);
   if (!isfinite(v)) return fail(msg, msglen, "'%s' is not a finite number", text);
   *x = v;
   *end = q;
@@ -322,7 +324,8 @@ int units_parse(const char *text, enum unit_dim dim, double *si, char *msg, size
   if (parse_unit_expr(unit, &u, msg, msglen)) return -1;
   if (memcmp(u.e, dims[dim].e, sizeof u.e)) return mismatch(unit, &u, dim, msg, msglen);
   double v = scale_decade(x * u.factor, u.decade);
-  if (!isfinite(v)) return fail(msg, msglen, "'%s' is out of range in SI", text);
+  if (!isfinite(v) || (v == 0.0 && x != 0.0))
+    return fail(msg, msglen, "'%s' is out of range in SI", text);
   *si = v;
   return 0;
 }

@@ -169,6 +169,14 @@ static void test_scalar_forms(void)
     CHECK(ok_i[i] ? rc == 0 && v == want_i[i] : rc == -1, "int %s", path);
   }
   double q;
+  {
+    /* a fraction too small for a double is not the integer 0 */
+    struct cfg *t = cfg_load_string("n: 1e-400\n", "forms.yaml", &err);
+    long v = -1;
+    int r = t ? cfg_get_int(t, "n", NULL, LONG_MIN, LONG_MAX, &v, &err) : 0;
+    check_msg(r, &err, "forms.yaml:1: n: '1e-400' is not an integer");
+    cfg_free(t);
+  }
   int rc = cfg_get_quantity(c, "null_key", UNIT_LENGTH, NULL, -HUGE_VAL, HUGE_VAL, &q, &err);
   check_msg(rc, &err, "forms.yaml:3: null_key: the key has no value");
   rc = cfg_get_quantity(c, "b[9]", UNIT_LENGTH, NULL, -HUGE_VAL, HUGE_VAL, &q, &err);
@@ -267,6 +275,116 @@ static void test_yaml_errors(void)
   cfg_free(c);
 }
 
+/* Bytes that are not UTF-8 (a Latin-1 degree sign in a comment, say) stop the reading
+ * with the file, line and column of the first one: libfyaml dropped the rest of the
+ * document silently after such a byte in a comment, or named the wrong line. */
+static void test_not_utf8(void)
+{
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string("time: {end: 1}  # 60\xb0\na: 2\n", "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err,
+            "case.yaml:1:21: not valid UTF-8 (byte 0xb0); save the file as UTF-8");
+  cfg_free(c);
+  c = cfg_load_string("# caf\xe9\ntime: {end: 1}\n", "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err, "case.yaml:1:6: not valid UTF-8 (byte 0xe9); save the file as UTF-8");
+  cfg_free(c);
+  c = cfg_load_string("x: 1\n\xff: 1\ny: 2\n", "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err, "case.yaml:2:1: not valid UTF-8 (byte 0xff); save the file as UTF-8");
+  cfg_free(c);
+  c = cfg_load_string("a: 1\nb: \xc3\n", "case.yaml", &err); /* cut sequence */
+  check_msg(c ? 0 : -1, &err, "case.yaml:2:4: not valid UTF-8 (byte 0xc3); save the file as UTF-8");
+  cfg_free(c);
+  c = cfg_load_string("a: \xed\xa0\x80\n", "case.yaml", &err); /* a UTF-16 surrogate */
+  CHECK(c == NULL && strstr(err.msg, "case.yaml:1:4: not valid UTF-8"), "surrogate: %s", err.msg);
+  cfg_free(c);
+  c = cfg_load_string("a: \xc0\xaf\n", "case.yaml", &err); /* overlong '/' */
+  CHECK(c == NULL && strstr(err.msg, "case.yaml:1:4: not valid UTF-8"), "overlong: %s", err.msg);
+  cfg_free(c);
+  /* UTF-8 itself is read: a BOM, a micro sign, a degree sign in a comment */
+  c = cfg_load_string("\xef\xbb\xbf"
+                      "a: 3 \xc2\xb5s  # 60\xc2\xb0\nb: \"\xe2\x82\xac\"\n",
+                      "case.yaml", &err);
+  double v = 0;
+  CHECK(c && cfg_get_quantity(c, "a", UNIT_TIME, NULL, 0, HUGE_VAL, &v, &err) == 0 && v == 3e-6,
+        "UTF-8 with a BOM loads (%s)", err.msg);
+  cfg_free(c);
+  /* --set values are checked too */
+  c = cfg_new_empty("case.yaml");
+  int rc = cfg_apply_set(c, "name=caf\xe9", &err);
+  check_msg(rc, &err, "--set name: not valid UTF-8 (byte 0xe9)");
+  cfg_free(c);
+}
+
+/* Aliases: one inside the value it names is refused (it was read as a cut copy), and
+ * so is a document whose aliases expand beyond reason (nested aliases of aliases grow
+ * tenfold a line: ran out of memory). */
+static void test_alias_limits(void)
+{
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string("a:\n  b: &x\n    c: 1\n    d: *x\n", "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err,
+            "case.yaml:4: alias '*x' inside the value it names (a recursive alias)");
+  cfg_free(c);
+  c = cfg_load_string("a: &s [1, *s]\n", "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err,
+            "case.yaml:1: alias '*s' inside the value it names (a recursive alias)");
+  cfg_free(c);
+  char y[4096];
+  int k = snprintf(y, sizeof y, "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n");
+  for (int i = 1; i <= 9; i++)
+    k += snprintf(y + k, sizeof y - (size_t)k,
+                  "a%d: &a%d [*a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d]\n", i,
+                  i, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1);
+  c = cfg_load_string(y, "case.yaml", &err);
+  CHECK(c == NULL && err.code == HV_EXIT_INPUT &&
+            !strncmp(err.msg, "case.yaml:6: alias '*a4'", 24) && strstr(err.msg, "aliases"),
+        "alias bomb refused: %s", c ? "(loaded)" : err.msg);
+  cfg_free(c);
+  /* an anchor used after its value is complete still works, also nested */
+  c = cfg_load_string("m: &m {rho: 1, e: &e {k: 2}}\nn: *m\no: *e\n", "case.yaml", &err);
+  double v = 0;
+  CHECK(c && cfg_get_quantity(c, "n.e.k", UNIT_NONE, NULL, 0, HUGE_VAL, &v, &err) == 0 && v == 2 &&
+            cfg_get_quantity(c, "o.k", UNIT_NONE, NULL, 0, HUGE_VAL, &v, &err) == 0 && v == 2,
+        "aliases of complete values (%s)", err.msg);
+  cfg_free(c);
+}
+
+/* Deep nesting: refused with a message (the reader recursed once a level, and a line of
+ * 100000 '[' overflowed the stack); as deep as a key path can reach is read. */
+static void test_deep_nesting(void)
+{
+  struct hv_error err = {0};
+  size_t d = 100000;
+  char *y = malloc(2 * d + 16);
+  if (!y) return;
+  size_t k = (size_t)sprintf(y, "x: 1\na: ");
+  for (size_t i = 0; i < d; i++) y[k++] = '[';
+  for (size_t i = 0; i < d; i++) y[k++] = ']';
+  y[k] = '\0';
+  struct cfg *c = cfg_load_string(y, "case.yaml", &err);
+  check_msg(c ? 0 : -1, &err, "case.yaml:2: values nested more than 64 deep");
+  cfg_free(c);
+  /* 63 lists in the root mapping: a[0][0]...[0] has 64 components */
+  k = (size_t)sprintf(y, "a: ");
+  for (size_t i = 0; i < 63; i++) y[k++] = '[';
+  y[k++] = '7';
+  for (size_t i = 0; i < 63; i++) y[k++] = ']';
+  y[k] = '\0';
+  c = cfg_load_string(y, "case.yaml", &err);
+  char path[256] = "a";
+  for (int i = 0; i < 62; i++) strcat(path, "[0]");
+  double v = 0, *list = NULL;
+  int n = 0;
+  CHECK(c && cfg_get_list(c, path, UNIT_NONE, &list, &n, &err) == 0 && n == 1,
+        "64 levels load and read (%s)", err.msg);
+  free(list);
+  strcat(path, "[0]");
+  CHECK(c && cfg_get_quantity(c, path, UNIT_NONE, NULL, 0, HUGE_VAL, &v, &err) == 0 && v == 7,
+        "the deepest value (%s)", err.msg);
+  cfg_free(c);
+  free(y);
+}
+
 static void test_set(void)
 {
   struct hv_error err = {0};
@@ -312,6 +430,14 @@ static void test_set(void)
         "--set into an empty 'time:' and 'output: ~' (%s)", err.msg);
   rc = cfg_apply_set(c, "a=[1, 2", &err);
   check_msg(rc, &err, "--set a: YAML syntax error: flow sequence without a closing bracket");
+  /* the reader's other messages about a --set value name no line either: its lines
+     are not the case file's ("--set a:1:" read as a key 'a:1') */
+  rc = cfg_apply_set(c, "a={x: 1, x: 2}", &err);
+  check_msg(rc, &err, "--set a: duplicate key 'x'");
+  rc = cfg_apply_set(c, "a=*q", &err);
+  check_msg(rc, &err, "--set a: unknown alias '*q'");
+  rc = cfg_apply_set(c, "a=1\n---\n2", &err);
+  check_msg(rc, &err, "--set a: only one YAML document is allowed");
   hv_log_level = lvl;
   cfg_free(c);
 }
@@ -402,6 +528,16 @@ static void test_write_used(void)
   CHECK(cfg_check_unused(c, &err) == 0, "nothing unknown in the written file (%s)", err.msg);
   cfg_free(c);
 
+  /* The header names the case file in a comment: a name with a line break or bytes that
+     are not UTF-8 (a Latin-1 file name) must not break the file or add keys to it. */
+  c = cfg_new_empty("caf\xe9\nb: 1.yaml");
+  CHECK(cfg_write_used(c, path, "1.2.3-test", &err) == 0, "write_used (%s)", err.msg);
+  cfg_free(c);
+  c = cfg_load(path, &err);
+  CHECK(c != NULL && cfg_keys(c, "", &(const char *const *){NULL}) == 0,
+        "odd case-file name: the file reads back with no keys (%s)", c ? "ok" : err.msg);
+  cfg_free(c);
+
   /* An unwritable folder: an error naming the path, no temp file left. */
   c = cfg_new_empty("bench");
   int rc = cfg_write_used(c, "/nonexistent-dir/used.yaml", "x", &err);
@@ -417,6 +553,9 @@ int main(void)
   test_scalar_forms();
   test_unknown_keys();
   test_yaml_errors();
+  test_not_utf8();
+  test_alias_limits();
+  test_deep_nesting();
   test_set();
   test_write_used();
   return test_finish();

@@ -132,6 +132,15 @@ static void test_junk(void)
   bad("-infinity m", UNIT_LENGTH, NULL, NULL);
   bad("0x10", UNIT_LENGTH, NULL, NULL);
   bad("1e999", UNIT_LENGTH, "range", NULL);
+  /* a number that is not zero must not become zero: too small for a double ... */
+  bad("1e-400 m", UNIT_LENGTH, "range", NULL);
+  bad("-2.5e-999", UNIT_PRESSURE, "range", NULL);
+  /* ... or after the unit's factor */
+  bad("1e-320 pm", UNIT_LENGTH, "range", NULL);
+  ok("0e-999 m", UNIT_LENGTH, 0.0);
+  ok("4.9406564584124654e-324", UNIT_LENGTH, 4.9406564584124654e-324); /* subnormal: kept */
+  double z = 1.0;
+  CHECK(units_parse("-0 mm", UNIT_LENGTH, &z, NULL, 0) == 0 && z == 0.0, "-0 mm is zero");
   bad("", UNIT_LENGTH, "empty", NULL);
   bad("   ", UNIT_LENGTH, "empty", NULL);
   bad("5 m s", UNIT_LENGTH, NULL, NULL);
