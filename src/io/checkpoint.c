@@ -9,7 +9,7 @@
 #include <zlib.h>
 
 static const char MAGIC[8] = {'H', 'V', 'S', 'P', 'H', 'C', 'K', 'P'};
-enum { FORMAT_VERSION = 1, BOM = 0x01020304 };
+enum { FORMAT_VERSION = 1, BOM = 0x01020304, BOM_SWAPPED = 0x04030201 };
 #define HEADER_BYTES 16
 #define RECORD_HEADER_BYTES (CKPT_NAME_LEN + 16)
 
@@ -138,6 +138,18 @@ int ckpt_open(struct ckpt_file *c, const char *path, struct hv_error *err)
   if (size < HEADER_BYTES + RECORD_HEADER_BYTES + 4) return bad(c, err, "too short");
   rewind(f);
 
+  /* what the file is, before its CRC: a file that is no checkpoint, or one from a
+     machine of the other byte order (whose CRC is stored in that order too), would
+     otherwise be reported as damaged */
+  unsigned char h[RECORD_HEADER_BYTES];
+  uint32_t v, bom;
+  if (fread(h, 1, HEADER_BYTES, f) != HEADER_BYTES || memcmp(h, MAGIC, 8))
+    return bad(c, err, "no HVSPHCKP header");
+  memcpy(&bom, h + 12, 4);
+  if (bom == BOM_SWAPPED)
+    return bad(c, err, "written on a machine of the other byte order");
+  rewind(f);
+
   /* the CRC of everything before the last 4 bytes */
   uint32_t crc = (uint32_t)crc32(0L, Z_NULL, 0), stored;
   enum { CHUNK = 1 << 22 };
@@ -158,8 +170,6 @@ int ckpt_open(struct ckpt_file *c, const char *path, struct hv_error *err)
     return bad(c, err, "its checksum does not match its contents (a damaged or incomplete file)");
 
   rewind(f);
-  unsigned char h[RECORD_HEADER_BYTES];
-  uint32_t v, bom;
   if (fread(h, 1, HEADER_BYTES, f) != HEADER_BYTES || memcmp(h, MAGIC, 8))
     return bad(c, err, "no HVSPHCKP header");
   memcpy(&v, h + 8, 4);

@@ -9,8 +9,9 @@
 #include "io/snapshot.h"
 
 /* Copies src (or fallback when src is NULL or empty) into dst for use inside a
- * one-line comment: control characters become '_', and when xml_comment is set
- * "--" (not allowed inside an XML comment) becomes "-_". Truncates to len - 1. */
+ * one-line comment: control characters and bytes that are not part of well-formed
+ * UTF-8 become '_', and when xml_comment is set "--" (not allowed inside an XML
+ * comment) becomes "-_". Truncates to len - 1, never inside a UTF-8 character. */
 void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment);
 
 /* Writes "<prefix>materials 0=name0 1=name1 ...<suffix>" when meta lists

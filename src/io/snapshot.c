@@ -8,6 +8,7 @@
 #include "io/snapshot.h"
 
 #include <dirent.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +17,20 @@
 #include "io/afile.h"
 #include "io/io_internal.h"
 
+/* Length of the well-formed UTF-8 sequence (2 to 4 bytes) starting at s, or 0 when
+ * there is none (a stray byte, an overlong form, a surrogate, beyond U+10FFFF, cut short). */
+static size_t utf8_seq(const unsigned char *s)
+{
+  const unsigned c = s[0];
+  size_t n = (c & 0xe0) == 0xc0 ? 2 : (c & 0xf0) == 0xe0 ? 3 : (c & 0xf8) == 0xf0 ? 4 : 0;
+  if (n == 0 || (n == 2 && c < 0xc2) || (n == 4 && c > 0xf4)) return 0;
+  for (size_t j = 1; j < n; j++)
+    if ((s[j] & 0xc0) != 0x80) return 0;   /* also stops at the terminating NUL */
+  if (n == 3 && ((c == 0xe0 && s[1] < 0xa0) || (c == 0xed && s[1] >= 0xa0))) return 0;
+  if (n == 4 && ((c == 0xf0 && s[1] < 0x90) || (c == 0xf4 && s[1] >= 0x90))) return 0;
+  return n;
+}
+
 void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment)
 {
   if (len == 0) return;
@@ -23,6 +38,17 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
   size_t k = 0;
   for (const char *s = src; *s && k + 1 < len; s++) {
     unsigned char c = (unsigned char)*s;
+    if (c >= 0x80) {   /* XML (and UTF-8 CSV readers) refuse malformed UTF-8: keep only */
+      const size_t n = utf8_seq((const unsigned char *)s);   /* whole, valid sequences */
+      if (n && k + n < len) {
+        memcpy(dst + k, s, n);
+        k += n;
+        s += n - 1;
+        continue;
+      }
+      if (n) break;    /* a valid character that does not fit: end here, not in its middle */
+      c = '_';
+    }
     if (c < 0x20 || c == 0x7f) c = '_';
     else if (xml_comment && c == '-' && k > 0 && dst[k - 1] == '-') c = '_';
     dst[k++] = (char)c;
@@ -158,9 +184,10 @@ int io_read_table_column(const char *path, const char *col, double **vals, struc
 {
   *vals = NULL;
   FILE *f = fopen(path, "r");
-  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s'", path);
+  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(errno));
   char line[8192];
   int which = -1, n = 0;
+  errno = 0;
   while (fgets(line, sizeof line, f)) {
     if (line[0] == '#') continue;
     line[strcspn(line, "\r\n")] = 0;
@@ -183,7 +210,14 @@ int io_read_table_column(const char *path, const char *col, double **vals, struc
     *vals = hv_realloc(*vals, (size_t)(n + 1) * sizeof **vals, "table column");
     (*vals)[n++] = strtod(s, NULL);
   }
+  const int e = ferror(f) ? (errno ? errno : EIO) : 0;
   fclose(f);
+  if (e || which < 0) {   /* unreadable, or no header line: not "no rows" */
+    free(*vals);
+    *vals = NULL;
+    if (e) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: no header line (no column '%s')", path, col);
+  }
   return n;
 }
 

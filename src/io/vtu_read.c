@@ -246,7 +246,10 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
                         strerror(errno ? errno : EIO));
       break;
     }
-    const char *app = strstr(h, "<AppendedData");
+    /* searched for after the root element's start: the comments before it hold the
+       case and material names, which may contain "<AppendedData" and '_' */
+    const char *root = strstr(h, "\n<VTKFile ");
+    const char *app = root ? strstr(root, "<AppendedData") : NULL;
     char *us = app ? strchr(app, '_') : NULL;
     if (us) {   /* the header ends here: parse nothing of the binary data after it */
       len = (size_t)(us + 1 - h);

@@ -5,7 +5,9 @@
  * the wrong length or a name that is not there; and files that must be refused with
  * a message naming the file: one byte changed anywhere (header, record header, data,
  * CRC), truncated at several lengths (down to empty), another byte order and an
- * unknown format version (with a valid CRC), a missing file. A failed write (its folder missing) leaves no file.
+ * unknown format version (with a valid CRC), a file written on a machine of the other byte
+ * order (its CRC in that order too), a file that is no checkpoint at all, a missing file.
+ * A failed write (its folder missing) leaves no file.
  */
 #include <math.h>
 #include <stdint.h>
@@ -144,6 +146,30 @@ int main(void)
     free(r2);
     refused(tmp, k == 0 ? "other byte order" : "format version",
             k == 0 ? "byte order reversed (CRC valid)" : "format version 2 (CRC valid)");
+  }
+  /* a checkpoint as a machine of the other byte order writes it: every number in its
+     own order, the CRC too; refused as such, not as a damaged file */
+  {
+    unsigned char *r2 = malloc(len);
+    memcpy(r2, raw, len);
+    for (int f = 8; f < 16; f += 4)   /* the version and the byte-order mark */
+      for (int q = 0; q < 2; q++) {
+        unsigned char t = r2[f + q];
+        r2[f + q] = r2[f + 3 - q];
+        r2[f + 3 - q] = t;
+      }
+    const uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), r2, (uInt)(len - 4));
+    for (int q = 0; q < 4; q++) r2[len - 4 + q] = (unsigned char)(crc >> (24 - 8 * q));
+    write_bytes(tmp, r2, len);
+    free(r2);
+    refused(tmp, "other byte order", "written on a machine of the other byte order");
+  }
+  /* a file that is not a checkpoint at all (long enough, no header) */
+  {
+    unsigned char junk[400];
+    for (size_t q = 0; q < sizeof junk; q++) junk[q] = (unsigned char)("id,x,y,z\n1,0,0,0\n"[q % 17]);
+    write_bytes(tmp, junk, sizeof junk);
+    refused(tmp, "no HVSPHCKP header", "a text file");
   }
   free(raw);
 

@@ -223,6 +223,51 @@ static void test_vtu(struct particles *p)
   free(text);
 }
 
+/* 1 when s[0, n) is well-formed UTF-8 (what an XML parser without an encoding
+ * declaration, e.g. ParaView's expat, requires of every byte of the markup). */
+static int utf8_ok(const unsigned char *s, size_t n)
+{
+  for (size_t i = 0; i < n;) {
+    const unsigned c = s[i];
+    size_t k = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 ? 1 : (c & 0xf0) == 0xe0 ? 2 : (c & 0xf8) == 0xf0 ? 3 : 9;
+    if (k == 9 || (k == 1 && c < 0xc2) || (k == 3 && c > 0xf4) || i + k >= n + (k ? 0 : 1)) return 0;
+    for (size_t j = 1; j <= k; j++)
+      if ((s[i + j] & 0xc0) != 0x80) return 0;
+    if (k == 2 && ((c == 0xe0 && s[i + 1] < 0xa0) || (c == 0xed && s[i + 1] >= 0xa0))) return 0;
+    if (k == 3 && ((c == 0xf0 && s[i + 1] < 0x90) || (c == 0xf4 && s[i + 1] >= 0x90))) return 0;
+    i += k + 1;
+  }
+  return 1;
+}
+
+/* Names that are not valid UTF-8 (a stray Latin-1 byte, a sequence cut short) must
+ * not make the VTU's XML ill-formed: ParaView would refuse the whole file. */
+static void test_vtu_utf8(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  const char *badm[2] = {"st\xe4hl", "w\xc3"};
+  struct snapshot_meta m = {.time = 1.0, .step = 1, .version = "v\xff" "1",
+                            .case_name = "caf\xc3\xa9 \xfc x\xe2\x82", .material_names = badm,
+                            .nmat = 2};
+  char path[4200];
+  snprintf(path, sizeof path, "%s/utf8.vtu", dir);
+  CHECK(io_write_vtu(path, p, &m, &err) == 0, "VTU with odd names written: %s", err.msg);
+  size_t len = 0;
+  char *text = test_slurp(path, &len);
+  const char *app = text ? strstr(text, "<AppendedData") : NULL;
+  const char *us = app ? strchr(app, '_') : NULL;
+  CHECK(us && utf8_ok((const unsigned char *)text, (size_t)(us - text)),
+        "the VTU's XML is valid UTF-8 whatever bytes the names hold");
+  CHECK(text && strstr(text, "caf\xc3\xa9"), "valid UTF-8 in a name is kept");
+  free(text);
+  struct particles q;
+  particles_init(&q);
+  CHECK(io_read_particles_vtu(path, &q, NULL, &err) == 0 && q.n == p->n, "and reads back: %s",
+        err.msg);
+  particles_free(&q);
+}
+
 /* Writes a copy of src with its first occurrence of `from` replaced by `to` (same
  * length, so offsets stay) or, with cut > 0, only its first cut bytes. */
 static const char *vtu_variant(const char *src, const char *name, const char *from,
@@ -292,6 +337,18 @@ static void test_vtu_read(struct particles *p)
         "solid fields read back into a solid store: %s", err.msg);
   particles_free(&q);
   particles_free(&ps);
+
+  /* a case name that looks like the appended block's start (comments come before the
+     root element and must not be taken for it) */
+  struct snapshot_meta odd = meta();
+  odd.case_name = "x<AppendedData encoding=\"raw\">_y";
+  char opath[4200];   /* not path_in: its few buffers hold the paths used below */
+  snprintf(opath, sizeof opath, "%s/oddname.vtu", dir);
+  particles_init(&q);
+  ok = io_write_vtu(opath, p, &odd, &err) == 0 && io_read_particles_vtu(opath, &q, &t, &err) == 0;
+  CHECK(ok && q.n == NP && same_out_fields(p, &q, &bad) && t == odd.time,
+        "a case named like the appended block reads back: %s", ok ? "" : err.msg);
+  particles_free(&q);
 
   /* bad files: one message naming the file (and the array), nothing appended */
   size_t len = 0;
@@ -371,6 +428,16 @@ static void test_table(void)
   free(col);
   CHECK(io_read_table_column(path, "mass", &col, &err) == -1 && strstr(err.msg, "mass"),
         "a missing column: %s", err.msg);
+  /* an empty file (no header) or one that cannot be read is an error, not zero rows */
+  const char *empty = test_write_file("io_empty_table.csv", "# only a comment\n");
+  err.msg[0] = '\0';
+  CHECK(io_read_table_column(empty, "time", &col, &err) == -1 && strstr(err.msg, "io_empty_table.csv"),
+        "a table without a header: %s", err.msg);
+  free(col);
+  err.msg[0] = '\0';
+  CHECK(io_read_table_column(dir, "time", &col, &err) == -1 && strstr(err.msg, dir),
+        "a folder read as a table: %s", err.msg);
+  free(col);
   const char *badc[1] = {"a,b"};
   CHECK(io_write_table_csv(path, badc, 1, rows, 1, NULL, &err) != 0, "comma in a column name");
   /* snapshot numbers, sorted, by extension only */
@@ -528,6 +595,7 @@ int main(void)
   test_csv_errors();
   test_vtu(&p);
   test_vtu_read(&p);
+  test_vtu_utf8(&p);
   test_pvd();
   test_table();
   test_atomic(&p);
