@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -101,11 +102,21 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
   return io_write_table_csv(path, summary_cols, RUN_SUMMARY_COLS, o->rows, o->nrows, comment, err);
 }
 
+/* on a terminal: the length of the status line on the screen, without its newline yet
+   (0: none); a message printed after it must begin on a line of its own */
+static size_t status_len = 0;
+
+static void end_status_line(void)
+{
+  if (status_len) fputc('\n', stderr);
+  status_len = 0;
+}
+
 static void progress(const struct sim *s, double t0, double wall0, int tty, int final)
 {
   double el = wall_time() - wall0, frac = (s->t - t0) / (s->tp.end - t0 > 0 ? s->tp.end - t0 : 1);
   double eta = frac > 0 ? el * (1 - frac) / frac : 0.0;
-  char line[448];
+  char line[448], head[96], mid[96], tail[96];
   char lim[160] = "";
   if (s->step > 0 && (s->dt_limit == DT_CFL || s->dt_limit == DT_ACCELERATION)) {
     const char *body = s->dt_limit_body >= 0 ? s->body[s->dt_limit_body].name : "?";
@@ -114,13 +125,28 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
   } else if (s->step > 0) {
     snprintf(lim, sizeof lim, "  [dt: %s]", step_limit_name(s->dt_limit));
   }
-  snprintf(line, sizeof line, "step %ld  t = %.4e / %.4e s  dt = %.3e s  n = %zu  "
-           "elapsed %.1f s  remaining %.1f s%s", s->step, s->t, s->tp.end, s->dt, s->p.n, el, eta,
-           lim);
-  if (tty)
-    fprintf(stderr, "\r%-160s%s", line, final ? "\n" : "");
-  else
+  snprintf(head, sizeof head, "step %ld  t = %.4e / %.4e s", s->step, s->t, s->tp.end);
+  snprintf(mid, sizeof mid, "  dt = %.3e s  n = %zu", s->dt, s->p.n);
+  snprintf(tail, sizeof tail, "  elapsed %.1f s  remaining %.1f s", el, eta);
+  snprintf(line, sizeof line, "%s%s%s%s", head, mid, tail, lim);
+  if (tty) {
+    /* one line rewritten in place: it must not wrap (a carriage return goes back to the
+       start of the last row only), so on a narrower terminal the limiter goes first,
+       then dt and n, then what does not fit */
+    struct winsize ws;
+    const size_t cols = ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 1
+                            ? (size_t)ws.ws_col - 1 : sizeof line - 1;
+    if (strlen(line) > cols) snprintf(line, sizeof line, "%s%s%s", head, mid, tail);
+    if (strlen(line) > cols) snprintf(line, sizeof line, "%s%s", head, tail);
+    if (strlen(line) > cols) line[cols] = '\0';
+    const size_t len = strlen(line);
+    /* blanks over the rest of the previous line (within the terminal's width) */
+    const int pad = status_len > len ? (int)((status_len < cols ? status_len : cols) - len) : 0;
+    fprintf(stderr, "\r%s%*s%s", line, pad, "", final ? "\n" : "");
+    status_len = final ? 0 : len > 0 ? len : 1;
+  } else {
     fprintf(stderr, "hvsph: %s\n", line);
+  }
   fflush(stderr);
 }
 
@@ -270,6 +296,16 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
     o->next_k++;
     next_out = o->t_start + (double)o->next_k * every;
   }
+  /* a restart with a longer output.every: the checkpoint's next_k counts the old
+     interval, so the multiples of the new one between the checkpoint's time and
+     next_k × every would be skipped; step back to the first one after the checkpoint.
+     The test is the negation of the one that counts an output time as reached (below),
+     so with an unchanged interval next_k is never moved. */
+  while (every > 0 && o->next_k > 1 &&
+         s->t < o->t_start + (double)(o->next_k - 1) * every - 1e-9 * every) {
+    o->next_k--;
+    next_out = o->t_start + (double)o->next_k * every;
+  }
   if (next_out > tend || tend - next_out < 1e-9 * every) next_out = tend;
   /* measurement times between outputs (measure.every): t_start + k × mevery; one within
      1e-9 mevery of an output time is that output's */
@@ -278,6 +314,9 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
   if (mevery > 0) {
     next_meas = o->t_start + (double)o->next_mk * mevery;
     while (next_meas <= s->t + mtol) next_meas = o->t_start + (double)++o->next_mk * mevery;
+    /* a restart with a longer measure.every: as for the outputs above */
+    while (o->next_mk > 1 && o->t_start + (double)(o->next_mk - 1) * mevery > s->t + mtol)
+      next_meas = o->t_start + (double)--o->next_mk * mevery;
   }
   while (s->t < tend && !interrupted) {
     if (s->tp.max_steps && s->step >= s->tp.max_steps) break;
@@ -397,6 +436,7 @@ int run_main(const struct run_options *ro)
   memset(&s, 0, sizeof s);
   int status = HV_EXIT_OK;
   interrupted = 0;
+  status_len = 0;
   if (ro->threads > 0) omp_set_num_threads(ro->threads);
   const char *restart = ro->restart_dir;
   char path[4200], ckpt[4200];
@@ -499,6 +539,7 @@ int run_main(const struct run_options *ro)
 fail:
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
+  end_status_line();   /* the message on a line of its own, not after the status line */
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
   if (seg_open) {   /* the row says how it ended; a second failure here is not reported */

@@ -13,10 +13,17 @@
  *   - the last particle .csv reads back with every particle, at that time;
  *   - there are as many .vtu and .csv snapshots as summary rows, and no temporary
  *     file (".tmp.") is left in the folder.
+ * Then the same on a terminal 80 columns wide (a pseudo-terminal): the status line,
+ * rewritten in place after a carriage return, must never be wider than 79 columns
+ * (a wider one wraps, and each rewrite then leaves a row behind: it was padded to 160
+ * columns), it still shows the time remaining, and the message after Ctrl-C begins a
+ * line of its own.
  */
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <poll.h>
+#include <pty.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -122,6 +129,82 @@ static int vtu_complete(const char *path, double *t, long *step, long *np)
   }
   free(b);
   return ok;
+}
+
+/* hvsph on a pseudo-terminal 80 columns wide, interrupted after its first status
+   line and 1 s more: checks its status lines and messages as a terminal shows them. */
+static void on_terminal(const char *casefile)
+{
+  char tdir[4400];
+  snprintf(tdir, sizeof tdir, "%s/tty", test_tmpdir());
+  struct winsize ws = {.ws_row = 24, .ws_col = 80};
+  int fd = -1;
+  pid_t pid = forkpty(&fd, NULL, NULL, &ws);
+  if (pid == 0) {
+    execl(test_bin(), "hvsph", "run", casefile, "-o", tdir, "--set", "time.end=1000",
+          "--set", "output.every=1000", (char *)NULL);
+    _exit(98);
+  }
+  CHECK(pid > 0, "started hvsph on a terminal (pid %ld)", (long)pid);
+  if (pid <= 0) return;
+  size_t len = 0, cap = 1 << 16;
+  char *out = malloc(cap + 1);
+  double t0 = now(), tsig = -1;
+  int status = 0, done = 0;
+  while (now() - t0 < 90) {
+    struct pollfd pf = {.fd = fd, .events = POLLIN};
+    if (poll(&pf, 1, 50) > 0) {
+      const ssize_t k = read(fd, out + len, cap - len);
+      if (k > 0) len += (size_t)k;
+      else if (k == 0 || errno != EINTR) break;   /* EIO: the terminal's other side closed */
+      if (len == cap) out = realloc(out, (cap *= 2) + 1);
+    }
+    out[len] = 0;
+    if (tsig < 0 && strstr(out, "step ") && strstr(out, "remaining")) tsig = now() + 1.0;
+    if (tsig > 0 && now() > tsig) {
+      kill(pid, SIGINT);
+      tsig = 1e300;
+    }
+  }
+  for (double tw = now(); !done && now() - tw < 20; sleep_s(0.01))
+    done = waitpid(pid, &status, WNOHANG) == pid;
+  if (!done) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  close(fd);
+  out[len] = 0;
+  CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130,
+        "on a terminal: exit status 130 after SIGINT (got %s %d)",
+        WIFEXITED(status) ? "exit" : "signal",
+        WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1);
+  /* the pieces between carriage returns and newlines, as the terminal's rows start */
+  int nstatus = 0, widest = 0, remaining = 0, msg_at_start = 0;
+  for (char *p = out; *p;) {
+    const size_t n = strcspn(p, "\r\n");
+    const char before = p > out ? p[-1] : '\n';
+    if (!strncmp(p, "step ", 5)) {
+      nstatus++;
+      int w = (int)n;
+      while (w > 0 && p[w - 1] == ' ') w--;   /* blanks over a longer previous line count */
+      if ((int)n > widest) widest = (int)n;
+      const char save = p[w];
+      p[w] = '\0';
+      remaining += strstr(p, "remaining") != NULL;
+      p[w] = save;
+    }
+    if (!strncmp(p, "hvsph: interrupted at t = ", 26) && before == '\n') msg_at_start = 1;
+    p += n;
+    if (*p) p++;
+  }
+  printf("  on a terminal 80 columns wide: %d status line writes, the widest %d columns, %d "
+         "showing the time remaining\n", nstatus, widest, remaining);
+  CHECK(nstatus > 0 && widest <= 79, "on a terminal 80 columns wide the status line fits (%d "
+        "writes, widest %d columns <= 79)", nstatus, widest);
+  CHECK(nstatus > 0 && remaining == nstatus, "and shows the time remaining (%d of %d)",
+        remaining, nstatus);
+  CHECK(msg_at_start, "'hvsph: interrupted at t = ...' begins a line of its own");
+  free(out);
 }
 
 int main(void)
@@ -244,5 +327,6 @@ int main(void)
   CHECK(cok && p.n == NPART && ct == t, "last .csv reads back: %zu particles at t = %.17g s "
         "(want %d at %.17g)%s%s", p.n, ct, NPART, t, cok ? "" : ": ", cok ? "" : err.msg);
   particles_free(&p);
+  on_terminal(casefile);
   return test_finish();
 }

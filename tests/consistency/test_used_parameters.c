@@ -6,7 +6,15 @@
  * summary.csv (same version, same case name). Its own used_parameters.yaml must hold
  * the same keys with the same values (only the header lines and the "default"
  * markers may differ, since every value is now given explicitly).
+ *
+ * A restart's --set output.every (recorded in its used_parameters.yaml) takes effect
+ * at the multiples of the new interval after the checkpoint's time (docs/cli.md,
+ * "hvsph restart"): tiny.yaml run to 0.01 s (outputs every 0.005 s), then continued to
+ * 0.04 s with output.every = 0.01 s, must have written outputs at 0, 0.005, 0.01, 0.02,
+ * 0.03 and 0.04 s (a longer interval once skipped 0.02 s: the output count of the old
+ * interval was kept), and with 0.0025 s outputs from 0.0125 s on.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,6 +65,85 @@ static int run(const char *casefile, const char *dir, char *out, size_t len)
   return test_run(cmd, out, len);
 }
 
+/* The time column of summary.csv; returns the number of rows (at most max) or -1. */
+static int summary_times(const char *dir, double *t, int max)
+{
+  char path[4400];
+  char *s = test_slurp(join(path, sizeof path, dir, "summary.csv"), NULL);
+  if (!s) return -1;
+  int n = 0, header = 0;
+  for (char *line = strtok(s, "\n"); line; line = strtok(NULL, "\n")) {
+    if (line[0] == '#') continue;
+    if (!header) {
+      header = 1;
+      continue;
+    }
+    const char *c = strchr(line, ',');
+    if (c && n < max) t[n++] = strtod(c + 1, NULL);
+  }
+  free(s);
+  return n;
+}
+
+/* Runs tiny.yaml to 0.01 s, restarts it to 0.04 s with output.every = every; checks
+   the summary's times are the nwant times of want. */
+static void restart_every(const char *casefile, const char *dir, const char *every,
+                          const double *want, int nwant)
+{
+  char cmd[9000], out[8192];
+  int rc = -1;
+  if ((size_t)snprintf(cmd, sizeof cmd, "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
+                       "time.end=0.01 && '%s' restart '%s' --quiet --set time.end=0.04 --set "
+                       "output.every=%s)", dir, test_bin(), casefile, dir, test_bin(), dir,
+                       every) < sizeof cmd)
+    rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "run to 0.01 s, restart to 0.04 s with output.every = %s s (exit %d)%s%s",
+        every, rc, rc ? ": " : "", rc ? out : "");
+  double t[64];
+  const int n = summary_times(dir, t, 64);
+  int same = n == nwant;
+  for (int k = 0; k < n && same; k++) same = fabs(t[k] - want[k]) < 1e-12;
+  printf("  output.every = %s s at the restart: outputs at", every);
+  for (int k = 0; k < n; k++) printf(" %g", t[k]);
+  printf(" s\n");
+  CHECK(same, "output.every = %s s at the restart: %d outputs, at the multiples of the "
+        "interval in force (want %d)", every, n, nwant);
+}
+
+/* The same for measure.every: measurements (the gas shock in 'right') every 0.002 s to
+   0.01 s, then every 0.004 s to 0.03 s; besides, at the output times (every 0.005 s). */
+static void restart_measure_every(const char *casefile, const char *dir)
+{
+  char cmd[9000], out[8192], path[4400];
+  int rc = -1;
+  if ((size_t)snprintf(cmd, sizeof cmd, "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
+                       "time.end=0.01 --set measure.gas=right --set measure.every=0.002 && '%s' "
+                       "restart '%s' --quiet --set time.end=0.03 --set measure.every=0.004)", dir,
+                       test_bin(), casefile, dir, test_bin(), dir) < sizeof cmd)
+    rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "run to 0.01 s with measure.every = 0.002 s, restart to 0.03 s with 0.004 s "
+        "(exit %d)%s%s", rc, rc ? ": " : "", rc ? out : "");
+  static const double want[] = {0,     0.002, 0.004, 0.005, 0.006, 0.008, 0.01,  0.012,
+                                0.015, 0.016, 0.02,  0.024, 0.025, 0.028, 0.03};
+  const int nwant = (int)(sizeof want / sizeof want[0]);
+  double t[64];
+  int n = 0;
+  char *s = test_slurp(join(path, sizeof path, dir, "measurements.csv"), NULL);
+  for (char *line = s ? strtok(s, "\n") : NULL; line; line = strtok(NULL, "\n")) {
+    const char *c = strchr(line, ',');
+    if (line[0] != '#' && c && !strncmp(c + 1, "shocked_particles,", 18) && n < 64)
+      t[n++] = strtod(line, NULL);
+  }
+  free(s);
+  int same = n == nwant;
+  for (int k = 0; k < n && same; k++) same = fabs(t[k] - want[k]) < 1e-12;
+  printf("  measure.every = 0.004 s at the restart: measurements at");
+  for (int k = 0; k < n; k++) printf(" %g", t[k]);
+  printf(" s\n");
+  CHECK(same, "measure.every = 0.004 s at the restart: %d measurement times, the multiples of "
+        "the interval in force and the output times (want %d)", n, nwant);
+}
+
 int main(void)
 {
   char casefile[4200], d1[4200], d2[4200], used1[4400], used2[4400], out[8192];
@@ -100,5 +187,15 @@ int main(void)
   }
   free(u1);
   free(u2);
+
+  char d3[4200];
+  static const double longer[] = {0, 0.005, 0.01, 0.02, 0.03, 0.04};
+  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-longer"), "0.01", longer,
+                6);
+  static const double shorter[] = {0,      0.005,  0.01,  0.0125, 0.015, 0.0175, 0.02,
+                                   0.0225, 0.025, 0.0275, 0.03,  0.0325, 0.035, 0.0375, 0.04};
+  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-shorter"), "0.0025",
+                shorter, 15);
+  restart_measure_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-measure"));
   return test_finish();
 }
