@@ -484,6 +484,21 @@ int run_main(const struct run_options *ro)
       hv_warn("%s already holds %d particle snapshot file%s of an earlier run: this run "
               "overwrites those with its own numbers and leaves the rest; summary.csv and "
               "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
+    /* an earlier run's checkpoint in the folder: this run replaces its
+       used_parameters.yaml and snapshots, so `hvsph restart` would continue the old
+       state under the new parameters if this run were killed before its own first
+       checkpoint */
+    char oldck[4200];
+    restart_path(o.dir, oldck, sizeof oldck);
+    if (access(oldck, F_OK) == 0) {
+      if (remove(oldck)) {
+        hv_error_set(&err, HV_EXIT_INPUT, "%s: cannot remove the checkpoint of an earlier run "
+                     "in the output folder: %s", oldck, strerror(errno));
+        goto fail;
+      }
+      hv_warn("removed %s, the checkpoint of an earlier run in this folder (a new run starts "
+              "here; it writes its own)", oldck);
+    }
     o.t_start = s.t;
     o.next_k = 1;
     o.next_mk = 1;

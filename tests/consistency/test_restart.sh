@@ -20,6 +20,7 @@
 #     byte changed), a truncated one, a missing one and one from another resolution
 #     end with exit status 2 and a message naming the file, and leave every file of
 #     the folder as it was;
+#     a new run in a folder holding an earlier run's checkpoint removes it;
 #  5. `hvsph validate --resume` continues a validation run stopped by SIGINT, and its
 #     validation.csv and measurements.csv equal those of a straight run;
 #  6. 1. again with split material without tension (fracture.split: no-tension);
@@ -133,6 +134,15 @@ bad_case damaged "python3 -c 'import sys; p=sys.argv[1]; d=bytearray(open(p,\"rb
 bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph checkpoint"
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
 bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
+
+# a new run in a folder that holds an earlier run's checkpoint removes it (it replaces
+# used_parameters.yaml: killed before its own first checkpoint, `hvsph restart` would
+# continue the old state under the new parameters)
+cp -r "$T/ref" "$T/reuse"
+"$BIN" run "$CASE" -o "$T/reuse" "${SETS[@]}" --set time.end=0 --threads 2 --quiet 2> "$T/reuse.log"
+st=$?
+[ $st -eq 0 ] && [ ! -e "$T/reuse/checkpoint.hvc" ] && grep -q "removed .*checkpoint.hvc" "$T/reuse.log"
+check $? "a new run (to t = 0) in a folder holding an earlier run's checkpoint removes it, with a warning (status $st)"
 
 # a checkpoint of another hvsph version: continued, with a warning (the version record
 # rewritten in place and the CRC-32 made good again)
