@@ -301,8 +301,13 @@ static int write_used_to(struct cfg *c, FILE *f, const char *version)
 
 int cfg_write_used(struct cfg *c, const char *path, const char *version, struct hv_error *err)
 {
+  /* ".<name>.tmp.<pid>" beside it, as every output file's temporary (src/io/afile.c):
+     hvsph restart removes such a file that a killed writer left */
   char tmp[4096];
-  if (snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid()) >= (int)sizeof tmp)
+  const char *slash = strrchr(path, '/');
+  const int dirlen = slash ? (int)(slash - path + 1) : 0;
+  if (snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld", dirlen, path, path + dirlen,
+               (long)getpid()) >= (int)sizeof tmp)
     return hv_error_set(err, HV_EXIT_INPUT, "cannot write '%s': path too long", path);
   FILE *f = fopen(tmp, "w");
   if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot write '%s': %s", path, strerror(errno));
