@@ -6,7 +6,9 @@
 #                                  and study tools (tools/*.py)
 #   tools/install-deps.sh --analyze   also clang-tools-14 (scan-build) for `make analyze`
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3)
+# git: the version baked into the binary and its outputs is `git describe` (cmake/version.cmake);
+# unit.test_cli fails on "unknown". python3: tests/consistency/test_restart.sh.
+pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3 git)
 for arg in "$@"; do
   case "$arg" in
     --docs) pkgs+=(python3-numpy python3-matplotlib python3-scipy) ;;
@@ -21,9 +23,12 @@ done
 [ ${#missing[@]} -eq 0 ] && exit 0
 echo "install-deps: installing ${missing[*]}"
 if [ "$(id -u)" -ne 0 ]; then
-  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
-    echo "install-deps: need root to install: ${missing[*]}" >&2; exit 1; fi
-else SUDO=""; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  if command -v sudo >/dev/null 2>&1; then
+    echo "install-deps: not root: using sudo" >&2; SUDO=(sudo)
+  else
+    echo "install-deps: not root and no sudo: run as root (or install ${missing[*]})" >&2; exit 1
+  fi
+else SUDO=(); fi
+# sudo drops the environment: DEBIAN_FRONTEND is passed on the command line
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
