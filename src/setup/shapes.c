@@ -89,6 +89,12 @@ int shape_read(struct shape *sh, struct cfg *c, const char *path, struct hv_erro
   if (rc) return -1;
   snprintf(key, sizeof key, "%s.minus", path);
   int nm = cfg_len(c, key);
+  if (cfg_has(c, key) && nm <= 0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: expected a list of one or more shapes "
+                        "(minus: [{type: ...}, ...])", cfg_where(c, key, where, sizeof where),
+                        key);
+  }
   if (nm > 0) {
     sh->minus = hv_calloc((size_t)nm, sizeof *sh->minus, "shape");
     sh->nminus = nm;

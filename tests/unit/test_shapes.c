@@ -265,6 +265,21 @@ static void test_errors(void)
                "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
                "time: {end: 1}\n",
                "outside (0, 90] deg");
+  expect_error("minus not a list",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1,\n"
+               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1],\n"
+               "             minus: {type: sphere, center: [0.5, 0.5, 0.5], radius: 0.2}}}\n"
+               "time: {end: 1}\n",
+               "bodies[0].shape.minus: expected a list of one or more shapes");
+  expect_error("minus empty",
+               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+               "bodies:\n"
+               "  - {name: a, material: gas, density: 1, spacing: 0.1,\n"
+               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1], minus: []}}\n"
+               "time: {end: 1}\n",
+               "bodies[0].shape.minus: expected a list of one or more shapes");
   expect_error("impact angle with velocity",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
                "bodies:\n"
