@@ -6,6 +6,9 @@
  *   - mass + absorbed_mass = initial mass to round-off (relative BALANCE_TOL);
  *   - x-momentum + absorbed x-momentum = initial x-momentum (relative MOMENTUM_TOL:
  *     the gas pushes on nothing, so momentum is conserved exactly by the pair forces);
+ *   - y- and z-momentum + absorbed = initial (zero: the block expands sideways through
+ *     the y and z faces, and what leaves through one face of a pair balances the other
+ *     and what is left), to MOMENTUM_TOL of the initial x-momentum;
  *   - total energy + absorbed energy = initial energy within ENERGY_TOL (the
  *     predictor-corrector's drift; measured value printed).
  */
@@ -22,7 +25,7 @@
 
 #define BALANCE_TOL 1e-13
 #define MOMENTUM_TOL 1e-12
-#define ENERGY_TOL 1e-3
+#define ENERGY_TOL 2e-4   /* measured 5.23e-5 (was 1e-3) */
 
 static const char *case_text =
     "domain: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0.1],\n"
@@ -53,10 +56,19 @@ int main(void)
   CHECK(s.p.n + (size_t)a->n == n0, "n + absorbed_n = initial n (%zu + %ld = %zu)", s.p.n, a->n, n0);
   CHECK_CLOSE(t1.mass + a->mass, t0.mass, BALANCE_TOL * t0.mass, "mass + absorbed mass");
   CHECK_CLOSE(t1.mom[0] + a->mom[0], t0.mom[0], MOMENTUM_TOL * t0.mom[0], "x-momentum + absorbed");
+  for (int k = 0; k < 3; k++) {
+    const double pk = t1.mom[k] + a->mom[k];
+    printf("  %c-momentum: remaining %.4g + absorbed %.4g - initial %.4g = %.3e of |p_x0|\n",
+           'x' + k, t1.mom[k], a->mom[k], t0.mom[k], (pk - t0.mom[k]) / fabs(t0.mom[0]));
+    if (k > 0)   /* x: CHECK_CLOSE above */
+      CHECK(fabs(pk - t0.mom[k]) <= MOMENTUM_TOL * fabs(t0.mom[0]),
+            "%c-momentum + absorbed = initial within %.0e of |p_x0|", 'x' + k, MOMENTUM_TOL);
+  }
   const double e1 = t1.e_total + a->e_kin + a->e_int;
   printf("  energy: relative change %.3e (kinetic absorbed %.4g J, internal %.4g J)\n",
          (e1 - t0.e_total) / t0.e_total, a->e_kin, a->e_int);
-  CHECK(fabs(e1 - t0.e_total) < ENERGY_TOL * t0.e_total, "energy + absorbed energy within %g", ENERGY_TOL);
+  CHECK(fabs(e1 - t0.e_total) < ENERGY_TOL * t0.e_total, "energy + absorbed energy within %g: %.3e",
+        ENERGY_TOL, fabs(e1 - t0.e_total) / t0.e_total);
   sim_free(&s);
   cfg_free(c);
   return test_finish();

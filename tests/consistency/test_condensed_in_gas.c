@@ -9,7 +9,8 @@
  * rule before session 12), whose volumes mⱼ/ρⱼ are a thousand times its own, it was
  * compressed to 2.4 ρ₀ (350 GPa) and its step fell to half. The gas still acts on it
  * through the pressure and viscous forces: it must slow down, and the total energy
- * (kinetic + internal, rigid walls all round) must stay within 1e-3 of its start. The
+ * (kinetic + internal, rigid walls all round) must stay within 1e-8 of its start
+ * (measured −6.77e-10 over the 830 steps; the bound was 1e-3 before). The
  * work of a gas–condensed pair goes to the gas particle (the condensed one's density
  * does not see the gas, so neither does its energy): the particle's internal energy
  * stays exactly 0, where the even split before session 13 gave it 3.2·10⁵ J/kg (1 GPa).
@@ -185,8 +186,9 @@ static void test_plate_in_plane(void)
  * density must stay below SPRAY_RHO_MAX ρ₀ at every step. With the spray's own volume
  * mⱼ/ρⱼ (25 times the cap; before session 29) it was compressed to 2.53 ρ₀ (with the
  * cap: 1.038 ρ₀) — the mechanism that held §2.4's step at 0.5 ns (a bumper particle at
- * 4.05 ρ₀ among spray at 37-73 times its reference volume). */
-#define SPRAY_RHO_MAX 1.2
+ * 4.05 ρ₀ among spray at 37-73 times its reference volume). SPRAY_RHO_MAX = 1.08: twice
+ * the measured 3.8 % swing (1.0382 ρ₀; the bound was 1.2 before). */
+#define SPRAY_RHO_MAX 1.08
 static const char *const SPRAY =
     "name: spray\n"
     "domain:\n"
@@ -283,7 +285,8 @@ int main(void)
   CHECK(s.p.v[0][bit] < 4000.0 - 1.0, "the gas slows it: vx = %.1f m/s", s.p.v[0][bit]);
   CHECK(s.p.e[bit] == 0.0, "the drag's heat goes to the gas: the particle's e = %.3g J/kg "
         "(it took half, 3.2e5 J/kg, before session 13)", s.p.e[bit]);
-  CHECK(fabs(t1.e_total / t0.e_total - 1.0) < 1e-3, "total energy within 1e-3: %.3g",
+  /* measured -6.77e-10 (was 1e-3) */
+  CHECK(fabs(t1.e_total / t0.e_total - 1.0) < 1e-8, "total energy within 1e-8: %.3g",
         t1.e_total / t0.e_total - 1.0);
   sim_free(&s);
   cfg_free(c);

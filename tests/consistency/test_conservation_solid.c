@@ -13,7 +13,10 @@
  *     contact between the slabs (max(pᵢ,0)/ρᵢ² + max(pⱼ,0)/ρⱼ²);
  *   - total energy E = Σ m (v²/2 + e) (plastic work and viscosity heat the material):
  *     the drift |E − E0|/E0 is reported every tenth step and must stay below
- *     ENERGY_DRIFT_MAX = 1e-2. Measured (2026-11-22, session 5): 9.2e-4 (max over the
+ *     ENERGY_DRIFT_MAX = 2e-3 (1e-2 before; the five runs below measured 9.05e-4 to
+ *     9.88e-4 when it was set, the largest with fracture.energy; 2e-3 rather than 3e-3
+ *     so that the 2.8e-3 of the artificial stress before session 4, below, would fail).
+ *     Measured (2026-11-22, session 5): 9.2e-4 (max over the
  *     100 steps; the gas test's is 7e-5), 9.1e-4 with the reconstructed viscosity,
  *     9.2e-4 with sph.artificial_stress.epsilon = 0, 9.9e-4 without fracture and 9.3e-4
  *     with al-alloy's fracture.split: no-tension (session 18) and 9.7e-4 with split: crack
@@ -63,7 +66,8 @@
 
 #define NSTEPS 100
 #define MOMENTUM_MAX 1e-12      /* round-off: the brief's "relative 1e-12" */
-#define ENERGY_DRIFT_MAX 1e-2   /* reported; generous (see the header) */
+#define ENERGY_DRIFT_MAX 2e-3   /* measured 9.20e-4, 9.05e-4, 9.28e-4, 9.69e-4, 9.88e-4 in the
+                                   five runs (was 1e-2; see the header) */
 #define VMAX 200.0              /* [m/s] largest random velocity component */
 
 /* 12 x 12 x 6 + 10 x 10 x 5 lattice points in a 3 mm box */

@@ -21,7 +21,7 @@
  *     C_CFL h per step as a lone particle (docs/models.md, "Time step"). Checked for
  *     every particle and step (worst 1.001 of the bound: the step's end velocity differs
  *     from its start's), and the total energy until the block has rebounded (101
- *     steps: 7.5e-4; the mirror conserves it, the check allows 1e-2).
+ *     steps: 7.48e-4; the mirror conserves it, the check allows 2e-3, 1e-2 before).
  */
 #include <math.h>
 #include <stdint.h>
@@ -150,7 +150,8 @@ static void wall_approach(void)
   /* 1 % slack: the velocity at the step's end is not the one the step was chosen with */
   CHECK(worst <= 1.01, "wall: no particle moved more than max(d - h, C_CFL h) towards the "
         "wall in one step (worst %.4g of it)", worst);
-  CHECK(de < 1e-2, "wall: total energy kept within 1e-2 (%.2e)", de);
+  /* measured 7.48e-4 (was 1e-2) */
+  CHECK(de < 2e-3, "wall: total energy kept within 2e-3 (%.2e)", de);
   free(d0);
   free(h0);
   free(id0);

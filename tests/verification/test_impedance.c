@@ -19,18 +19,20 @@
  * velocity crosses half way, fitted by a line from T_FIT_START on, the plateau over 30–80 %
  * of the way from the contact to the front at the last output):
  *   - the plateau's velocity, which is the error of the interface speed: within
- *     INTERFACE_TOL = 1 % of u. A wrong mismatch shows here: the exact solution with the
- *     steel's n = 3.5 instead of 4.5 moves u by +1.8 %, with its Γ = 0 by +1.4 % (this
- *     test sees Γ: at 200 GPa the thermal pressure is large), with the tungsten's density
- *     set to the steel's by −23 %; a contact that transmitted the pressure wrongly
- *     between unequal densities would too;
+ *     INTERFACE_TOL = 0.5 % of u (1 % before; measured 0.028 % tungsten, 0.158 %
+ *     steel, i.e. +0.79 and −4.39 m/s). A wrong mismatch shows here: the exact
+ *     solution with the steel's n = 3.5 instead of 4.5 moves u by +1.8 %, with its
+ *     Γ = 0 by +1.4 % (this test sees Γ: at 200 GPa the thermal pressure is large),
+ *     with the tungsten's density set to the steel's by −23 %; a contact that
+ *     transmitted the pressure wrongly between unequal densities would too;
  *   - the shock speeds relative to the material ahead and the plateau pressures: within
  *     3 % (SHOCK_SPEED_TOL, PRESSURE_TOL: issue 3's criterion, as for the one-material
  *     Hugoniot test).
  * Measured at the time of writing (hvsph 4fe3785, the CI resolution, 0.1 mm): plateau
  * velocities below 1 m/s, pressures 200.5 GPa (tungsten, −0.3 %) and 201.7 GPa (steel,
- * +0.3 %). The steel's layer at the contact holds 5.4 MJ/kg where the plateau holds
- * 3.9 (= ½u²): the wall heating of SPH at a contact, reported, not tested.
+ * +0.3 %); when INTERFACE_TOL was tightened: +0.79 m/s and −4.39 m/s, 200.5 GPa (−0.27 %)
+ * and 202.2 GPa (+0.58 %). The steel's layer at the contact holds 5.4 MJ/kg where the
+ * plateau holds 3.9 (= ½u²): the wall heating of SPH at a contact, reported, not tested.
  */
 #include <math.h>
 #include <stdio.h>
@@ -45,7 +47,8 @@ static const double MS[4] = {7810.0, 4900.0, 4.5, 1.8};      /* steel (target) *
 #define V_IMPACT 4460.0        /* [m/s] rod-5844 */
 #define U_CASE 2785.3471275    /* [m/s] the interface speed the case file is set in */
 
-#define INTERFACE_TOL 0.01     /* plateau velocity / u */
+#define INTERFACE_TOL 0.005    /* plateau velocity / u; measured 2.8e-4 (tungsten) and 1.58e-3
+                                  (steel) (was 0.01) */
 #define SHOCK_SPEED_TOL 0.03   /* issue 3: shock speed within 3% */
 #define PRESSURE_TOL 0.03      /* issue 3: post-shock pressure within 3% */
 #define T_FIT_START 0.15e-6    /* [s] fit the fronts from here on */
@@ -135,7 +138,7 @@ int main(void)
            name, slope, rms, nfit[b], Us, Usx[b], 100 * (Us / Usx[b] - 1), plat_p[b] * 1e-9,
            pref[b] * 1e-9, 100 * (plat_p[b] / pref[b] - 1), plat_v[b], 100 * fabs(plat_v[b]) / u);
     CHECK(fabs(plat_v[b]) < INTERFACE_TOL * u, "%s: the shocked plateau is at rest, %+.2f m/s "
-          "(within %.0f%% of u = %.1f m/s): the interface speed is the impedance match's", name,
+          "(within %.1f%% of u = %.1f m/s): the interface speed is the impedance match's", name,
           plat_v[b], 100 * INTERFACE_TOL, u);
     CHECK(fabs(Us / Usx[b] - 1) < SHOCK_SPEED_TOL, "%s: shock speed %.1f m/s within %.0f%% of "
           "%.1f m/s", name, Us, 100 * SHOCK_SPEED_TOL, Usx[b]);

@@ -35,9 +35,9 @@
  * at ln(ρ₁/ρ₀) = Y₀/(2G); there σ_xx = −(p₁ + ⅔Y₀), p₁ = p_EOS(ρ₁, E₁) with
  * E₁ = ½|σ_xx|(1/ρ₀ − 1/ρ₁), and the jump gives U_H² = |σ_xx| / (ρ₀ (1 − ρ₀/ρ₁)) =
  * 6.70 km/s against the fluid's 5.67. Checked: the front speed within 3 % of U_H and
- * the plateau's −S_xx within 3 % of ⅔Y₀ (the split fluid has 0, friction 0.3 has
- * 0.13 GPa). Measured at the time of writing: front −2.1 % (6 559 m/s; the fluid's
- * −1.8 %), −S_xx = 0.2549 GPa (−0.2 %).
+ * the plateau's −S_xx within NT_STRESS_TOL = 1 % of ⅔Y₀ (3 % before; the split fluid
+ * has 0, friction 0.3 has 0.13 GPa). Measured at the time of writing: front −2.1 %
+ * (6 559 m/s; the fluid's −1.8 %), −S_xx = 0.2549 GPa (−0.16 %).
  * In tension the same material carries nothing: both plates at rest, stretched to
  * ρ = 2750 kg/m³ (EOS tension −0.94 GPa), stay at rest (largest |v_x| below STRETCH_VMAX
  * = 1 mm/s at 0.8 µs; measured 0). Without the projection (checked by removing it)
@@ -63,6 +63,7 @@
 #define SPEED_TOL 0.03     /* wave speed within 3 % */
 #define PRESSURE_TOL 0.03  /* plateau pressure within 3 % */
 #define RATIO_TOL 0.03     /* −S_xx/p within 3 % of ⅔μ */
+#define NT_STRESS_TOL 0.01 /* no-tension: −S_xx within 1 % of ⅔Y₀ (measured −0.16 %; was 3 %) */
 #define RATIO_US_TOL 0.01  /* the ratio of the two runs' wave speeds within 1 % */
 #define T_FIT_START 0.25e-6
 #define STRETCH_VMAX 1e-3  /* [m/s] stretched split plates stay at rest */
@@ -190,9 +191,10 @@ static void check_case(double mu, int no_tension, const char *outname, double *u
           "%.0f%% of %.1f m/s (%+.2f%%)", label, name, us, 100 * SPEED_TOL, Us,
           100 * (us / Us - 1));
     if (no_tension) {
-      CHECK(fabs(plateau_r[b] - 1) < RATIO_TOL, "split: no-tension, %s plate: -S_xx = %.4f GPa "
-            "within %.0f%% of 2Y0/3 = %.4f GPa (%+.2f%%)", name, plateau_r[b] * 2 * Y0 / 3e9,
-            100 * RATIO_TOL, 2 * Y0 / 3e9, 100 * (plateau_r[b] - 1));
+      CHECK(fabs(plateau_r[b] - 1) < NT_STRESS_TOL, "split: no-tension, %s plate: -S_xx = "
+            "%.4f GPa within %.0f%% of 2Y0/3 = %.4f GPa (%+.2f%%)", name,
+            plateau_r[b] * 2 * Y0 / 3e9, 100 * NT_STRESS_TOL, 2 * Y0 / 3e9,
+            100 * (plateau_r[b] - 1));
       continue;
     }
     CHECK(fabs(plateau_p[b] / p1 - 1) < PRESSURE_TOL, "friction %g, %s plate: pressure %.4f "
