@@ -74,6 +74,14 @@ static void test_return(void)
   CHECK_CLOSE(yjc, 90e6 + 292e6 * pow(0.1, 0.31), 1.0, "Johnson-Cook at reference rate and T");
   CHECK_CLOSE(strength_yield(&sp, 0.1, 1e3, 0.0) / yjc, 1 + 0.025 * log(1e3), 1e-12, "JC rate factor");
   CHECK(strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) + 1) == 0.0, "JC: no strength above melt");
+  /* thermal softening below melt: e = c_v (T_melt − T_ref)/2 gives T = 825 K, T* = 531/1062
+     = 0.5 exactly; at the reference rate (rate factor 1) and ε_p = 0.1 the reference yield
+     is yjc (checked above), so Y = yjc (1 − 0.5^M) exactly (today: equal to round-off; a
+     linear softening, M = 1, would be off by 6 %, T* taken as T/T_melt by 21 %) */
+  const double yhalf = strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) / 2);
+  const double yhalf_want = yjc * (1 - pow(0.5, 1.09));
+  CHECK_CLOSE(yhalf, yhalf_want, 1e-12 * yhalf_want, "JC thermal softening at T* = 0.5: "
+              "Y = Y_ref (1 - 0.5^M)");
 }
 
 /* split: no-tension — σ = Q diag(2, −1, −3)·10⁸ Qᵀ (Pa, Q a rotation about (1, 2, 2)/3

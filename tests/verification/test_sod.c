@@ -24,6 +24,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "exact.h"
 #include "profile.h"
@@ -45,9 +46,10 @@
 #define L1_VX_MAX 0.0146
 #define L1_P_MAX 0.0097
 /* Star plateau: measured p = 0.30740 (+1.41 %), vx = 0.92472 (−0.29 %); allowed 2.5 %
- * each (γ = 5/3: exact u* = 0.8412, −9.3 %, measured −9.6 %). */
+ * on p and 1 % on vx (γ = 5/3: exact u* = 0.8412, −9.3 %, measured −9.6 %; with the
+ * viscosity switch u* is −0.44 %). */
 #define PSTAR_RTOL 0.025
-#define USTAR_RTOL 0.025
+#define USTAR_RTOL 0.01
 
 /* With sph.viscosity.switch: cullen-dehnen (ctest verification.test_sod_switch runs this
  * test with --set sph.viscosity.switch=cullen-dehnen; the thresholds above hold as they
@@ -173,13 +175,22 @@ int main(int argc, char **argv)
   printf("  MEASURED sod n=%zu wall=%.1f L1_rho=%.5f L1_vx=%.5f L1_p=%.5f pstar=%.5f "
          "ustar=%.5f\n", p.n, wall, l1[0], l1[1], l1[2], pm, um);
 
-  CHECK(l1[0] <= L1_RHO_MAX, "L1(rho) = %.5f <= %.3f", l1[0], L1_RHO_MAX);
-  CHECK(l1[1] <= L1_VX_MAX, "L1(vx) = %.5f <= %.3f", l1[1], L1_VX_MAX);
-  CHECK(l1[2] <= L1_P_MAX, "L1(p) = %.5f <= %.3f", l1[2], L1_P_MAX);
+  CHECK(l1[0] <= L1_RHO_MAX, "L1(rho) = %.5f <= %.4f", l1[0], L1_RHO_MAX);
+  CHECK(l1[1] <= L1_VX_MAX, "L1(vx) = %.5f <= %.4f", l1[1], L1_VX_MAX);
+  CHECK(l1[2] <= L1_P_MAX, "L1(p) = %.5f <= %.4f", l1[2], L1_P_MAX);
   CHECK(fabs(pm / ps - 1.0) <= PSTAR_RTOL, "star pressure %.5f within %.1f %% of p* = %.5f", pm,
         100 * PSTAR_RTOL, ps);
   CHECK(fabs(um / us - 1.0) <= USTAR_RTOL, "star velocity %.5f within %.1f %% of u* = %.5f", um,
         100 * USTAR_RTOL, us);
+  /* run with the switch (ctest verification.test_sod_switch passes --set
+     sph.viscosity.switch=cullen-dehnen): the snapshot must carry each particle's alpha,
+     or the switch checks below would be skipped silently and the test pass with nothing
+     checked */
+  int want_switch = 0;
+  for (int a = 1; a < argc; a++)
+    if (strstr(argv[a], "switch=cullen-dehnen")) want_switch = 1;
+  if (want_switch)
+    CHECK(p.av != 0, "run with the viscosity switch: the snapshot has the alpha column");
   if (p.av) sod_switch(&p);
   particles_free(&p);
   return test_finish();
