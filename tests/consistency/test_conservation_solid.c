@@ -29,7 +29,7 @@
  *   - the test means something: plastic strain, splits and contact pairs occur, and
  *     the kinetic energy changes (below 99 % of the initial; above 0.1 %, so some motion
  *     is left: 1.0–1.7 % is).
- * Run three times: with the standard viscosity; with sph.viscosity.reconstruct (the pair's
+ * Run five times: with the standard viscosity; with sph.viscosity.reconstruct (the pair's
  * velocity difference reconstructed to its midpoint; symmetric in i and j, so the
  * momentum must still be conserved to round-off); and with al-alloy's split particles
  * without tension (fracture.split: no-tension: the forces and the heating use σ with

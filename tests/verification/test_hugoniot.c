@@ -22,7 +22,8 @@
  *     way from the contact plane to the front at the last output (away from the
  *     wall-heating layer at the contact and from the front's smeared width).
  * Thresholds: 3% each (SHOCK_SPEED_TOL, PRESSURE_TOL: issue 3's criterion). Measured
- * at the time of writing: Us within −0.6%, p₁ within −0.5% at the CI resolution.
+ * at the time of writing: Us within −0.6%, p₁ within −0.5% at the CI resolution
+ * (2026-12-07: −0.50 % and −0.40 %).
  * What a wrong model does: a wrong c₀ or n moves the solution by more than 3% (the
  * reference itself, solved with n = 4.54 instead of 3.54, gives Us +3.6%, p₁ +3.6%);
  * the Grüneisen term alone moves them by only 0.6% at this strength (Γ = 0 gives

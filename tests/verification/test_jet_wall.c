@@ -16,9 +16,10 @@
  * Thresholds: flux within FLUX_TOL (15 %: the shell holds 2–6 layers of particles and a
  * snapshot's flux scatters by ±10 %); speed at least SPEED_MIN (0.90) of v — the
  * viscosity's dissipation in the turn is what this measures. Measured (0.32 mm, 8.2
- * particles per radius): with the reconstruction 0.948 v at 2 r₀ and 3 r₀, flux 0.954
- * and 0.929; with the standard viscosity (`--set sph.viscosity.reconstruct=false`, what
- * split material sees in the paper's cases) 0.791 v and 0.770 v, which fails.
+ * particles per radius, 2026-12-07): with the reconstruction 0.945 v at 2 r₀ and 0.968 v
+ * at 3 r₀, flux 0.964 and 0.924; with the standard viscosity (`--set
+ * sph.viscosity.reconstruct=false`, what split material sees in the paper's cases)
+ * 0.792 v and 0.768 v, which fails.
  * SPEED_MAX (1.03) guards the other side.
  */
 #include <math.h>

@@ -46,8 +46,8 @@
 /* Thresholds. Measured (sph.continuity: mass, cubic spline, η = 1.5; 1 thread,
  * docs/verification.md §3.2):
  *   spacing  particles  plateau          shock radius      inflow   consistency
- *   0.025    33 512     42.50 (−33.6 %)  0.2263 (+13.1 %)  1.0045   1.011
- *   0.02     65 498     48.09 (−24.9 %)  0.2194 (+9.7 %)   1.0036   1.01
+ *   0.025    33 512     42.50 (−33.6 %)  0.2263 (+13.1 %)  1.0045   1.015
+ *   0.02     65 498     48.09 (−24.9 %)  0.2194 (+9.7 %)   1.0036   1.020
  *   0.0167   113 120    see the docs
  * The plateau is low and the shock ahead because the viscosity heats the converging
  * inflow before the shock (Πᵢⱼ acts on every approaching pair, and in the inflow every
