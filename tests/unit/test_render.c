@@ -138,19 +138,25 @@ static void test_colormap(void)
   CHECK(lo < 20.0 && hi > 85.0, "colour map spans L* %.1f to %.1f", lo, hi);
 }
 
+/* No mirror; a 10 mm square box around the origin, 400 px wide (25 µm pixels). */
+static void single_view(struct render_options *o)
+{
+  render_options_default(o);
+  o->mirror = 0;
+  o->have_box = 1;
+  const double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
+  memcpy(o->box, box, sizeof box);
+  o->width = 400;
+  o->height = 436;
+}
+
 static void test_single_particle(void)
 {
   struct particles p;
   particles_init(&p);
   put(&p, 0.0, 0.0, 0.0, 2e-3, 1e-3, 7850, 0, 0);
   struct render_options o;
-  render_options_default(&o);
-  o.mirror = 0;
-  o.have_box = 1;
-  double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
-  memcpy(o.box, box, sizeof box);
-  o.width = 400; /* pix = 25 µm: h = 40 px */
-  o.height = 436;
+  single_view(&o); /* pix = 25 µm: h = 40 px */
   struct render_view v;
   struct sig s = areal(&p, &o, 0.0, 0.0, &v);
   CHECK_CLOSE(s.mass, 2e-3, 2e-3 * 1e-3, "wide kernel: mass in the picture [kg]");
@@ -246,13 +252,7 @@ static void test_extremes(void)
   particles_init(&p);
   put(&p, 0.0, 0.0, 0.0, 1.0, 1e6, 7850, 0, 0);
   struct render_options o;
-  render_options_default(&o);
-  o.mirror = 0;
-  o.have_box = 1;
-  double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
-  memcpy(o.box, box, sizeof box);
-  o.width = 400;
-  o.height = 436;
+  single_view(&o);
   struct render_view v;
   struct sig s = areal(&p, &o, 0.0, 0.0, &v);
   double expect = 1.0 * 1.5 / PI / 1e12; /* m F(0) / h² [kg/m2] */
