@@ -25,6 +25,7 @@
 #include <libfyaml.h>
 
 #include "config/config_internal.h"
+#include "core/utf8.h"
 
 /* ---------------------------------------------------------------- nodes */
 
@@ -426,44 +427,13 @@ static struct cfg_node *build_stream(struct builder *b, const char *text, size_t
   return root;
 }
 
-size_t cfg_utf8_invalid_at(const unsigned char *s, size_t len)
-{
-  size_t i = 0;
-  while (i < len) {
-    unsigned c = s[i];
-    size_t n;
-    unsigned lo = 0x80, hi = 0xbf; /* range of the second byte */
-    if (c < 0x80) {
-      i++;
-      continue;
-    } else if (c >= 0xc2 && c <= 0xdf) {
-      n = 1;
-    } else if (c >= 0xe0 && c <= 0xef) {
-      n = 2;
-      if (c == 0xe0) lo = 0xa0;
-      if (c == 0xed) hi = 0x9f;
-    } else if (c >= 0xf0 && c <= 0xf4) {
-      n = 3;
-      if (c == 0xf0) lo = 0x90;
-      if (c == 0xf4) hi = 0x8f;
-    } else {
-      return i;
-    }
-    if (len - i <= n || s[i + 1] < lo || s[i + 1] > hi) return i;
-    for (size_t k = 2; k <= n; k++)
-      if (s[i + k] < 0x80 || s[i + k] > 0xbf) return i;
-    i += n + 1;
-  }
-  return len;
-}
-
 /* Refuses text that is not UTF-8, naming the line and column (in characters) of the
  * first bad byte. */
 static int check_utf8(const char *text, size_t len, const char *name, int positions,
                       struct hv_error *err)
 {
   const unsigned char *s = (const unsigned char *)text;
-  size_t bad = cfg_utf8_invalid_at(s, len);
+  size_t bad = hv_utf8_valid_prefix(s, len);
   if (bad == len) return 0;
   if (!positions)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: not valid UTF-8 (byte 0x%02x)", name, s[bad]);

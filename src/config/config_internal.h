@@ -81,9 +81,6 @@ struct cfg_node *cfg_lookup(struct cfg *c, const char *path, struct cfg_node **d
 const char *cfg_where_line(const struct cfg *c, const char *file, int line, char *buf, size_t len);
 /* A scalar written without a value: empty, `~` or `null`, unquoted (YAML's null). */
 int cfg_scalar_is_null(const struct cfg_node *n);
-/* Offset of the first byte of s that does not begin a well-formed UTF-8 character
- * (no overlong forms, no surrogates, nothing above U+10FFFF); len if all are. */
-size_t cfg_utf8_invalid_at(const unsigned char *s, size_t len);
 
 /* config_get.c: a YAML double-quoted string (escapes ", \ and control characters);
  * malloc'ed. */

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "config/config_internal.h"
+#include "core/utf8.h"
 
 /* ---------------------------------------------------------------- unknown keys */
 
@@ -274,7 +275,7 @@ static void write_header(struct writer *w, const struct cfg *c, const char *vers
   const unsigned char *s = (const unsigned char *)c->name;
   size_t len = strlen(c->name);
   for (size_t i = 0; i < len;) {
-    size_t ok = i + cfg_utf8_invalid_at(s + i, len - i);
+    size_t ok = i + hv_utf8_valid_prefix(s + i, len - i);
     for (; i < ok; i++)
       if (s[i] < 0x20 || s[i] == 0x7f)
         wr(w, "\\x%02x", s[i]);

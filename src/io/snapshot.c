@@ -14,32 +14,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/utf8.h"
 #include "io/afile.h"
 #include "io/io_internal.h"
-
-/* Length of the well-formed UTF-8 sequence (2 to 4 bytes) starting at s, or 0 when
- * there is none (a stray byte, an overlong form, a surrogate, beyond U+10FFFF, cut short). */
-static size_t utf8_seq(const unsigned char *s)
-{
-  const unsigned c = s[0];
-  size_t n = (c & 0xe0) == 0xc0 ? 2 : (c & 0xf0) == 0xe0 ? 3 : (c & 0xf8) == 0xf0 ? 4 : 0;
-  if (n == 0 || (n == 2 && c < 0xc2) || (n == 4 && c > 0xf4)) return 0;
-  for (size_t j = 1; j < n; j++)
-    if ((s[j] & 0xc0) != 0x80) return 0;   /* also stops at the terminating NUL */
-  if (n == 3 && ((c == 0xe0 && s[1] < 0xa0) || (c == 0xed && s[1] >= 0xa0))) return 0;
-  if (n == 4 && ((c == 0xf0 && s[1] < 0x90) || (c == 0xf4 && s[1] >= 0x90))) return 0;
-  return n;
-}
 
 void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment)
 {
   if (len == 0) return;
   if (!src || !*src) src = fallback ? fallback : "";
   size_t k = 0;
+  const char *const src_end = src + strlen(src);
   for (const char *s = src; *s && k + 1 < len; s++) {
     unsigned char c = (unsigned char)*s;
     if (c >= 0x80) {   /* XML (and UTF-8 CSV readers) refuse malformed UTF-8: keep only */
-      const size_t n = utf8_seq((const unsigned char *)s);   /* whole, valid sequences */
+      /* whole, valid characters */
+      const size_t n = hv_utf8_char((const unsigned char *)s, (size_t)(src_end - s));
       if (n && k + n < len) {
         memcpy(dst + k, s, n);
         k += n;
