@@ -57,7 +57,9 @@ void eos_describe(const struct material *m, double rho, double e, int status, ch
   size_t rl = len - (size_t)k;
   switch (status) {
   case EOS_OK:
-    snprintf(r, rl, "): rho = %.9g kg/m3, e = %.9g J/kg is a valid state", rho, e);
+    /* taken, but its result is not finite (the caller found it so) */
+    snprintf(r, rl, "): rho = %.9g kg/m3, e = %.9g J/kg gives no finite pressure or sound "
+             "speed", rho, e);
     break;
   case EOS_ERR_INPUT:
     snprintf(r, rl, "): cannot evaluate rho = %.9g kg/m3, e = %.9g J/kg (density must be a "

@@ -28,7 +28,8 @@ enum eos_status {
 
 /* p and c at density rho [kg/m3] and specific internal energy e [J/kg].
  * Returns EOS_OK, or a negative enum eos_status (out is then left unchanged);
- * eos_describe() turns a failure into a message naming the material and the state. */
+ * eos_describe() turns a failure (or, with EOS_OK, a result the caller found not finite)
+ * into a message naming the material and the state. */
 int eos_evaluate(const struct material *m, double rho, double e, struct eos_state *out);
 /* Specific internal energy [J/kg] giving pressure p [Pa] at density rho (initial
  * conditions). Ideal gas and Mie–Grüneisen: exact; Tillotson: bracketing + bisection on

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "eos/eos.h"
 #include "fracture/fracture.h"
@@ -89,11 +90,11 @@ static int update_eos(struct sim *s, struct hv_error *err)
   const double rho_b = p->cracks && fracture_opening(&mb->frac, p->damage[i])
                            ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];   /* as above */
   const int est = eos_evaluate(mb, rho_b, p->e[i], &st);
-  if (est == EOS_OK)   /* the EOS took the state but gave no finite pressure or sound speed */
-    snprintf(what, sizeof what, "rho = %.9g kg/m3, e = %.9g J/kg gives p = %g Pa (sound speed "
-             "%g m/s): not finite", rho_b, p->e[i], st.p, st.cs);
-  else
-    eos_describe(mb, rho_b, p->e[i], est, what, sizeof what);
+  eos_describe(mb, rho_b, p->e[i], est, what, sizeof what);
+  if (est == EOS_OK) {   /* taken, but not finite: say what came out */
+    const size_t k = strlen(what);
+    snprintf(what + k, sizeof what - k, " (p = %g Pa, c = %g m/s)", st.p, st.cs);
+  }
   return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
                       "material '%s'): field p: %s", s->step, s->t, (long long)p->id[i], bname,
                       mname, what);
