@@ -1,15 +1,42 @@
-# Writes the version header from `git describe` at every build (cmake -P, called by
-# the hvsph_version target): configure_file rewrites it only when the text changes, so
-# an unchanged version rebuilds nothing, and a new commit or an edit (-dirty) is never
-# missed by a build directory configured earlier.
-# In: SRC_DIR (the source tree), IN (version.h.in), OUT (the generated header).
-# safe.directory: a checkout owned by another user (a mounted volume, a clone made as
-# another user, built as root) is read too; git refuses it otherwise ("unknown").
-execute_process(COMMAND git -c safe.directory=* describe --always --dirty --tags
-                WORKING_DIRECTORY ${SRC_DIR}
-                OUTPUT_VARIABLE HVSPH_GIT_VERSION OUTPUT_STRIP_TRAILING_WHITESPACE
-                ERROR_QUIET)
+# Writes the version header at every build (cmake -P, called by the hvsph_version
+# target): configure_file rewrites it only when the text changes, so an unchanged
+# version rebuilds nothing, and a new commit or an edit (-dirty) is never missed by a
+# build directory configured earlier.
+# In: SRC_DIR (the source tree), IN (version.h.in), OUT (the generated header),
+#     VERSION_OPTION (the HVSPH_VERSION cache option, may be empty).
+# Where the version comes from, first found:
+#  1. -DHVSPH_VERSION=... given to cmake (a packager's own name for the build);
+#  2. `git describe` of the checkout. safe.directory: a checkout owned by another user
+#     (a mounted volume, a clone made as another user, built as root) is read too; git
+#     refuses it otherwise;
+#  3. cmake/archive-version.txt as `git archive` writes it (.gitattributes marks it
+#     export-subst, so a tarball made by `git archive` carries its commit's hash);
+#  4. "unknown" (a copy of the tree without its history).
+# HVSPH_VERSION_SOURCE names which one it was (option, git, archive, none).
+set(HVSPH_VERSION_SOURCE none)
+set(HVSPH_GIT_VERSION "")
+if(VERSION_OPTION)
+  set(HVSPH_GIT_VERSION "${VERSION_OPTION}")
+  set(HVSPH_VERSION_SOURCE option)
+else()
+  execute_process(COMMAND git -c safe.directory=* describe --always --dirty --tags
+                  WORKING_DIRECTORY ${SRC_DIR}
+                  OUTPUT_VARIABLE HVSPH_GIT_VERSION OUTPUT_STRIP_TRAILING_WHITESPACE
+                  ERROR_QUIET)
+  if(HVSPH_GIT_VERSION)
+    set(HVSPH_VERSION_SOURCE git)
+  elseif(EXISTS ${SRC_DIR}/cmake/archive-version.txt)
+    file(STRINGS ${SRC_DIR}/cmake/archive-version.txt HVSPH_ARCHIVE_VERSION LIMIT_COUNT 1)
+    # unsubstituted (a checkout's own copy) it still reads "$Format:...$"
+    if(HVSPH_ARCHIVE_VERSION MATCHES "^[0-9a-f]+$")
+      set(HVSPH_GIT_VERSION "${HVSPH_ARCHIVE_VERSION}")
+      set(HVSPH_VERSION_SOURCE archive)
+    endif()
+  endif()
+endif()
 if(NOT HVSPH_GIT_VERSION)
   set(HVSPH_GIT_VERSION "unknown")
 endif()
+# the version goes into C string literals and file headers: one printable line
+string(REGEX REPLACE "[^A-Za-z0-9._+~:-]" "_" HVSPH_GIT_VERSION "${HVSPH_GIT_VERSION}")
 configure_file(${IN} ${OUT} @ONLY)

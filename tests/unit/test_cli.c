@@ -28,6 +28,7 @@
 #include <sys/stat.h>
 
 #include "testlib.h"
+#include "version.h"
 
 static const char *base_lines[] = {
     "name: cli",                                                      /* 1 */
@@ -254,10 +255,14 @@ static void test_commands(void)
   snprintf(cmd, sizeof cmd, "'%s' --version 2>/dev/null", test_bin());
   rc = test_run(cmd, out, sizeof out);
   char version[256] = "";
-  int got = sscanf(out, "hvsph %255s", version) == 1 && strlen(version) > 0 &&
-            strcmp(version, "unknown") && strchr(out, '\n') == out + strlen(out) - 1;
-  CHECK(rc == 0 && got, "--version exits 0 (%d) and prints one line 'hvsph <version>': '%s'",
-        rc, version);
+  int got = sscanf(out, "hvsph %255s", version) == 1 && !strcmp(version, HVSPH_VERSION) &&
+            strchr(out, '\n') == out + strlen(out) - 1;
+  CHECK(rc == 0 && got, "--version exits 0 (%d) and prints one line 'hvsph %s': '%s'", rc,
+        HVSPH_VERSION, version);
+  /* "unknown" only where the build had nothing to take a version from: a copy of the
+   * tree without its history, not a `git archive` tarball, no -DHVSPH_VERSION */
+  CHECK(strcmp(version, "unknown") || !strcmp(HVSPH_VERSION_SOURCE, "none"),
+        "the version is known (from %s): '%s'", HVSPH_VERSION_SOURCE, version);
 
   /* the version is the one written into the outputs */
   const char *casefile = test_write_file("base.yaml", variant(0, ""));
