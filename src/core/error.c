@@ -8,6 +8,18 @@
 
 int hv_log_level = 2;
 
+static size_t status_len = 0;   /* see hv_status_line() */
+
+void hv_status_line(size_t len) { status_len = len; }
+
+size_t hv_status_len(void) { return status_len; }
+
+void hv_status_end(void)
+{
+  if (status_len) fputc('\n', stderr);
+  status_len = 0;
+}
+
 void hv_error_clear(struct hv_error *err)
 {
   if (!err) return;
@@ -46,6 +58,7 @@ void hv_error_prefix_(struct hv_error *err, const char *fmt, ...)
 void hv_log(int level, const char *fmt, ...)
 {
   if (level > hv_log_level) return;
+  hv_status_end();
   static const char *tag[] = {"error: ", "warning: ", "", ""};
   fputs("hvsph: ", stderr);
   fputs(tag[level < 0 ? 0 : (level > 3 ? 3 : level)], stderr);
@@ -58,6 +71,7 @@ void hv_log(int level, const char *fmt, ...)
 
 void hv_fatal(const char *file, int line, const char *func, const char *fmt, ...)
 {
+  hv_status_end();
   fprintf(stderr, "hvsph: internal error at %s:%d %s(): ", file, line, func);
   va_list ap;
   va_start(ap, fmt);
@@ -71,6 +85,7 @@ void *hv_malloc(size_t bytes, const char *what)
 {
   void *p = malloc(bytes ? bytes : 1);
   if (!p) {
+    hv_status_end();
     fprintf(stderr, "hvsph: out of memory allocating %zu bytes for %s\n", bytes, what);
     exit(HV_EXIT_RUN);
   }
@@ -81,6 +96,7 @@ void *hv_calloc(size_t n, size_t size, const char *what)
 {
   void *p = calloc(n ? n : 1, size ? size : 1);
   if (!p) {
+    hv_status_end();
     fprintf(stderr, "hvsph: out of memory allocating %zu x %zu bytes for %s\n", n, size, what);
     exit(HV_EXIT_RUN);
   }
@@ -91,6 +107,7 @@ void *hv_realloc(void *p, size_t bytes, const char *what)
 {
   void *q = realloc(p, bytes ? bytes : 1);
   if (!q) {
+    hv_status_end();
     fprintf(stderr, "hvsph: out of memory growing %s to %zu bytes\n", what, bytes);
     exit(HV_EXIT_RUN);
   }

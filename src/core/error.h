@@ -44,6 +44,14 @@ void hv_log(int level, const char *fmt, ...) __attribute__((format(printf, 2, 3)
 #define hv_info(...) hv_log(2, __VA_ARGS__)
 #define hv_warn(...) hv_log(1, __VA_ARGS__)
 
+/* A status line on a terminal (hvsph run's progress, rewritten in place with a carriage
+ * return and no newline): hv_status_line(len) records that one of len characters is on
+ * the screen (0: none). Every message of hv_log, hv_fatal and the allocators first ends
+ * it with a newline, so that the message starts a line of its own. */
+void hv_status_line(size_t len);
+size_t hv_status_len(void);
+void hv_status_end(void);
+
 _Noreturn void hv_fatal(const char *file, int line, const char *func, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 #define HV_FATAL(...) hv_fatal(__FILE__, __LINE__, __func__, __VA_ARGS__)

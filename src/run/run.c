@@ -102,16 +102,6 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
   return io_write_table_csv(path, summary_cols, RUN_SUMMARY_COLS, o->rows, o->nrows, comment, err);
 }
 
-/* on a terminal: the length of the status line on the screen, without its newline yet
-   (0: none); a message printed after it must begin on a line of its own */
-static size_t status_len = 0;
-
-static void end_status_line(void)
-{
-  if (status_len) fputc('\n', stderr);
-  status_len = 0;
-}
-
 static void progress(const struct sim *s, double t0, double wall0, int tty, int final)
 {
   double el = wall_time() - wall0, frac = (s->t - t0) / (s->tp.end - t0 > 0 ? s->tp.end - t0 : 1);
@@ -141,9 +131,10 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
     if (strlen(line) > cols) line[cols] = '\0';
     const size_t len = strlen(line);
     /* blanks over the rest of the previous line (within the terminal's width) */
-    const int pad = status_len > len ? (int)((status_len < cols ? status_len : cols) - len) : 0;
+    const size_t was = hv_status_len();
+    const int pad = was > len ? (int)((was < cols ? was : cols) - len) : 0;
     fprintf(stderr, "\r%s%*s%s", line, pad, "", final ? "\n" : "");
-    status_len = final ? 0 : len > 0 ? len : 1;
+    hv_status_line(final ? 0 : len > 0 ? len : 1);
   } else {
     fprintf(stderr, "hvsph: %s\n", line);
   }
@@ -436,7 +427,7 @@ int run_main(const struct run_options *ro)
   memset(&s, 0, sizeof s);
   int status = HV_EXIT_OK;
   interrupted = 0;
-  status_len = 0;
+  hv_status_line(0);
   if (ro->threads > 0) omp_set_num_threads(ro->threads);
   const char *restart = ro->restart_dir;
   char path[4200], ckpt[4200];
@@ -554,7 +545,6 @@ int run_main(const struct run_options *ro)
 fail:
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
-  end_status_line();   /* the message on a line of its own, not after the status line */
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
   if (seg_open) {   /* the row says how it ended; a second failure here is not reported */

@@ -579,6 +579,42 @@ static void test_empty_and_ghosts(struct particles *p)
   particles_free(&q);
 }
 
+/* A message during a run on a terminal: the status line is rewritten in place without a
+ * newline, so a warning (a temporary file that cannot be removed, an allocation that
+ * fails) must end it first, or it is printed after the status on the same row. */
+static void test_status_line(void)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/stderr.txt", dir);
+  fflush(stderr);
+  const int saved = dup(STDERR_FILENO);
+  FILE *f = fopen(path, "w");
+  CHECK(f && saved >= 0, "redirect stderr to %s", path);
+  if (!f || saved < 0) return;
+  dup2(fileno(f), STDERR_FILENO);
+  const int lvl = hv_log_level;
+  hv_log_level = 1;
+  fputs("\rstep 1", stderr);
+  hv_status_line(6);
+  hv_info("not shown");           /* below the level: prints nothing, so ends nothing */
+  fputs("\rstep 2", stderr);
+  hv_warn("a warning");           /* ends the status line first */
+  hv_warn("another");             /* no status line now: no empty line */
+  hv_log_level = lvl;
+  fflush(stderr);
+  dup2(saved, STDERR_FILENO);
+  close(saved);
+  fclose(f);
+  char got[256] = "";
+  f = fopen(path, "r");
+  const size_t n = f ? fread(got, 1, sizeof got - 1, f) : 0;
+  got[n] = '\0';
+  if (f) fclose(f);
+  const char *want = "\rstep 1\rstep 2\nhvsph: warning: a warning\nhvsph: warning: another\n";
+  CHECK(!strcmp(got, want) && hv_status_len() == 0,
+        "a warning after the status line starts a line of its own: %zu bytes '%s'", n, got);
+}
+
 int main(void)
 {
   snprintf(dir, sizeof dir, "%s/io.%ld", test_tmpdir(), (long)getpid());
@@ -603,6 +639,7 @@ int main(void)
   test_full_disk(1);
   test_mkdir();
   test_empty_and_ghosts(&p);
+  test_status_line();
   particles_free(&p);
   char cmd[4200];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
