@@ -314,6 +314,7 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
       if ((rc = measure_plate(&s->p, &g, &pp, &hole, err))) break;
       meas_table_add(&mr->table, t, "hole_diameter_intact", hole.d_circle, "m", name);
       meas_table_add(&mr->table, t, "hole_diameter_intact_equiv", hole.d_equiv, "m", name);
+      meas_table_add(&mr->table, t, "hole_intact_open", hole.hole_open, "", name);
     }
   }
   free(intact);

@@ -50,6 +50,10 @@ int main(void)
   const double di = measured(path, "hole_diameter_intact");
   CHECK(di >= d - 1e-9, "hole_diameter_intact %.2f mm >= hole_diameter %.2f mm", 1e3 * di,
         1e3 * d);
+  /* ... and so can open it to the window's edge, never close it */
+  const double open = measured(path, "hole_open"), iopen = measured(path, "hole_intact_open");
+  CHECK((open == 0.0 || open == 1.0) && (iopen == 0.0 || iopen == 1.0) && iopen >= open,
+        "hole_intact_open %g >= hole_open %g, both flags", iopen, open);
   /* measurements taken again from the snapshots: the same file, row for row */
   char *before = test_slurp(path, NULL);
   /* ... with a stale snapshot of an earlier, longer run left in the folder */
