@@ -253,12 +253,14 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
             1e3 * t, layers, n);
 }
 
-/* The shape (with everything it subtracts) is mirror-symmetric about z = 0. */
+/* The shape (with everything it subtracts) is mirror-symmetric about z = 0: a box
+ * spanning it evenly, a sphere centred on it, a cylinder centred on it whose axis lies in
+ * it or is its normal. */
 static int symmetric_z(const struct shape *sh)
 {
+  const int axis_ok = sh->axis[2] == 0.0 || (sh->axis[0] == 0.0 && sh->axis[1] == 0.0);
   int sym = sh->kind == SHAPE_BOX ? sh->min[2] == -sh->max[2]
-                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE ||
-                                                             sh->axis[2] == 0.0);
+                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE || axis_ok);
   for (int k = 0; k < sh->nminus; k++) sym = sym && symmetric_z(&sh->minus[k]);
   return sym;
 }

@@ -212,6 +212,30 @@ static void test_half_model(void)
   CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - (16.0 - PI)) < 1e-9 &&
         fabs(h.mass - 0.5 * (16.0 - PI)) < 1e-9, "plate minus a disc, full and half: mass %.6f "
         "and %.6f (exact %.6f and half) (%s%s)", f.mass, h.mass, 16.0 - PI, f.msg, h.msg);
+  /* a cylinder whose axis is the symmetry plane's normal, centred on it (a rod cut across
+     its length): symmetric too, so half the exact mass, and `particles:` is taken */
+  static const char *const zc =
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n%s"
+      "bodies:\n  - {name: b, material: gas, density: 1.0, pressure: 1.0, %s,\n"
+      "     shape: {type: cylinder, center: [0, 0, 0], axis: [0, 0, %s], radius: 1, length: 2}}\n"
+      "time: {end: 1}\n";
+  const char *hdom = "domain: {min: [-2, -2, 0], max: [2, 2, 2], half_model: true}\n";
+  for (int k = 0; k < 2; k++) {
+    const char *ax = k ? "-1" : "1";
+    snprintf(a, sizeof a, zc, "", "spacing: 0.1", ax);
+    snprintf(b, sizeof b, zc, hdom, "spacing: 0.1", ax);
+    f = setup_case(a);
+    h = setup_case(b);
+    CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - 2.0 * PI) < 1e-9 &&
+          fabs(h.mass - PI) < 1e-9 && 2 * h.n == f.n, "cylinder along z (axis %s) centred "
+          "on z = 0, full and half: mass %.6f and %.6f (exact %.6f and half), %zu and %zu "
+          "particles (%s%s)", ax, f.mass, h.mass, 2.0 * PI, f.n, h.n, f.msg, h.msg);
+    snprintf(b, sizeof b, zc, hdom, "particles: 3000", ax);
+    h = setup_case(b);
+    CHECK(h.rc == 0 && fabs(h.mass - PI) < 1e-9 && fabs((double)h.n - 3000.0) < 0.05 * 3000,
+          "... and by a particle count: %zu particles (asked 3000), mass %.6f (%s)", h.n,
+          h.mass, h.msg);
+  }
 }
 
 static void expect_error(const char *what, const char *yaml, const char *needle)
