@@ -60,6 +60,16 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
                         "the reconstruction to pairs of different bodies, and needs "
                         "sph.viscosity.reconstruct: true",
                         cfg_where(c, "sph.viscosity.reconstruct_contact", where, sizeof where));
+  /* the switch's own settings, given a value of their own without it, do nothing: said
+     once (not refused: used_parameters.yaml lists them with their defaults, and a case
+     may keep them while the switch is tried on and off) */
+  if (!sp->av_switch && ((cfg_has(c, "sph.viscosity.alpha_min") && sp->av_min != zero) ||
+                         (cfg_has(c, "sph.viscosity.decay") && sp->av_decay != decay)))
+    hv_warn("%s: sph.viscosity.%s has no effect without sph.viscosity.switch: cullen-dehnen "
+            "(the viscosity's alpha is sph.viscosity.alpha = %g everywhere)",
+            cfg_where(c, sp->av_min != zero ? "sph.viscosity.alpha_min" : "sph.viscosity.decay",
+                      where, sizeof where),
+            sp->av_min != zero ? "alpha_min" : "decay", sp->alpha);
   if (sp->h_max > 0 && sp->h_min > sp->h_max)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.h_min (%g m) exceeds sph.h_max (%g m)",
                         cfg_where(c, "sph.h_min", where, sizeof where), sp->h_min, sp->h_max);

@@ -330,6 +330,29 @@ static void test_commands(void)
     }
   }
 
+  /* the viscosity switch's own keys without the switch: one warning naming the key and
+     where it was given; their defaults (as used_parameters.yaml lists them) say nothing */
+  {
+    const char *f = test_write_file("base.yaml", variant(0, ""));
+    static const char *const sets[] = {"sph.viscosity.alpha_min=0.1", "sph.viscosity.decay=0.2",
+                                       "sph.viscosity.alpha_min=0", "sph.viscosity.decay=0.05"};
+    for (int k = 0; k < 4; k++) {
+      char name[16];
+      snprintf(name, sizeof name, "inert_%d", k);
+      snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --set %s", f,
+               path_of(name), sets[k]);
+      rc = hvsph(args, out, sizeof out);
+      char msg[160];
+      snprintf(msg, sizeof msg, "warning: --set: %.*s has no effect without "
+               "sph.viscosity.switch: cullen-dehnen", (int)strcspn(sets[k], "="), sets[k]);
+      const char *w = strstr(out, "warning: ");
+      CHECK(rc == 0 && (k < 2 ? w && strstr(out, msg) && !strstr(w + 1, "warning: ") : !w),
+            "--set %s without the switch: %s (exit %d): %.*s", sets[k],
+            k < 2 ? "one warning" : "no warning", rc, w ? (int)strcspn(w, "\n") : 4,
+            w ? w : "none");
+    }
+  }
+
   /* bench --set: its case changed like a run's, a bad key is bad input (exit 2) */
   rc = hvsph("bench --particles 512 --steps 1 --threads 1 --solid --set "
              "sph.viscosity.reconstruct=true", out, sizeof out);
