@@ -13,41 +13,59 @@
 #include "run/validate.h"
 #include "version.h"
 
-static void usage(FILE *f)
+/* Each command's lines of the usage: `hvsph --help` prints them all, `hvsph CMD --help`
+ * its own (render, measure and materials print their own longer help). */
+static const struct {
+  const char *cmd, *text;
+} usage_lines[] = {
+    {"run", "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
+            "            [--threads N] [--quiet]\n"
+            "      run a case file; results in OUTDIR (default out/<case name>)\n"
+            "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
+            "      --material gives the bodies of material OLD the material NEW instead\n"},
+    {"restart", "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
+                "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
+                "      --set time.end=\"60 us\" carries a finished run further\n"},
+    {"bench", "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
+              "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
+              "      elastic-plastic aluminium): particle-steps per second, bytes per particle;\n"
+              "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"},
+    {"materials", "  hvsph materials [NAME]\n"
+                  "      the material library: every entry, or one entry's parameters with units\n"},
+    {"render", "  hvsph render SNAPSHOT.vtu|csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
+               "  hvsph render RUNDIR -o FRAMEDIR [options]\n"
+               "      simulated flash radiograph or particle picture; of a run folder, one\n"
+               "      frame per snapshot for a movie (hvsph render --help)\n"},
+    {"measure", "  hvsph measure RUNDIR [--case FILE] [--quiet]\n"
+                "      take a run's measurements again from its particle snapshots\n"
+                "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"},
+    {"validate", "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
+                 "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
+                 "      run the paper's cases (examples/paper, or --cases DIR; particle counts x S)\n"
+                 "      and compare with its experiments and simulations: DIR/validation.md and .csv\n"},
+};
+
+static const char usage_tail[] =
+    "exit status: 0 done, 1 bad command line, 2 bad input (case file, units,\n"
+    "materials, output folder), 3 failed run, 130 interrupted (state written)\n"
+    "documentation: README.md, docs/cli.md, docs/case-files.md\n";
+
+/* cmd NULL: every command */
+static void usage(FILE *f, const char *cmd)
 {
-  fprintf(f,
-          "hvsph %s — 3D SPH for hypervelocity impact\n"
-          "\n"
-          "usage:\n"
-          "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
-          "            [--threads N] [--quiet]\n"
-          "      run a case file; results in OUTDIR (default out/<case name>)\n"
-          "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
-          "      --material gives the bodies of material OLD the material NEW instead\n"
-          "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
-          "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
-          "      --set time.end=\"60 us\" carries a finished run further\n"
-          "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
-          "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
-          "      elastic-plastic aluminium): particle-steps per second, bytes per particle;\n"
-          "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"
-          "  hvsph materials [NAME]\n"
-          "      the material library: every entry, or one entry's parameters with units\n"
-          "  hvsph render SNAPSHOT.vtu|csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
-          "      simulated flash radiograph or particle picture (hvsph render --help)\n"
-          "  hvsph measure RUNDIR [--case FILE]\n"
-          "      take a run's measurements again from its particle snapshots\n"
-          "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"
-          "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--no-run]\n"
-          "                 [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
-          "      run the paper's cases (examples/paper, particle counts x S) and compare\n"
-          "      with its experiments and simulations: DIR/validation.md and .csv\n"
-          "  hvsph --version | --help\n"
-          "\n"
-          "exit status: 0 done, 1 bad command line, 2 bad input (case file, units,\n"
-          "materials, output folder), 3 failed run, 130 interrupted (state written)\n"
-          "documentation: README.md, docs/case-files.md\n",
-          HVSPH_VERSION);
+  fprintf(f, "hvsph %s — 3D SPH for hypervelocity impact\n\nusage:\n", HVSPH_VERSION);
+  for (size_t k = 0; k < sizeof usage_lines / sizeof usage_lines[0]; k++)
+    if (!cmd || !strcmp(cmd, usage_lines[k].cmd)) fputs(usage_lines[k].text, f);
+  if (!cmd) fputs("  hvsph --version | --help\n", f);
+  fprintf(f, "\n%s", usage_tail);
+}
+
+/* `hvsph CMD ... --help` (or -h) for the commands that have no help of their own */
+static int asks_help(int argc, char **argv)
+{
+  for (int i = 0; i < argc; i++)
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
+  return 0;
 }
 
 static int parse_long(const char *s, long lo, long hi, long *out)
@@ -163,16 +181,21 @@ int main(int argc, char **argv)
 {
   wait_policy(argv);
   if (argc < 2) {
-    usage(stderr);
+    usage(stderr, NULL);
     return HV_EXIT_USAGE;
   }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
-    usage(stdout);
+    usage(stdout, NULL);
     return 0;
   }
   if (!strcmp(cmd, "--version") || !strcmp(cmd, "version")) {
     printf("hvsph %s\n", HVSPH_VERSION);
+    return 0;
+  }
+  if ((!strcmp(cmd, "run") || !strcmp(cmd, "restart") || !strcmp(cmd, "bench") ||
+       !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
+    usage(stdout, cmd);
     return 0;
   }
   if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2, 0);

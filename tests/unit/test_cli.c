@@ -252,6 +252,23 @@ static void test_commands(void)
   CHECK(rc == 0 && strstr(out, "hvsph run CASE.yaml") && strstr(out, "hvsph bench") &&
             strstr(out, "--set") && strstr(out, "--threads") && strstr(out, "exit status"),
         "--help on stdout mentions run, bench, --set, --threads and the exit statuses");
+  /* each command's --help: exit 0, its own synopsis on stdout, not the others' */
+  static const char *const cmds[] = {"run", "restart", "bench", "validate", "render", "measure"};
+  for (int k = 0; k < 6; k++) {
+    snprintf(cmd, sizeof cmd, "'%s' %s --help 2>&1", test_bin(), cmds[k]);
+    rc = test_run(cmd, out, sizeof out);
+    char own[64];
+    snprintf(own, sizeof own, "hvsph %s ", cmds[k]);
+    int others = 0;
+    for (int j = 0; j < 6; j++) {
+      char other[64];
+      snprintf(other, sizeof other, "hvsph %s ", cmds[j]);
+      others += j != k && strstr(out, other) != NULL;
+    }
+    CHECK(rc == 0 && strstr(out, own) && !others && !strstr(out, "hvsph: "),
+          "hvsph %s --help: exit %d (want 0), its synopsis and no other's, no message: %.200s",
+          cmds[k], rc, out);
+  }
   snprintf(cmd, sizeof cmd, "'%s' --version 2>/dev/null", test_bin());
   rc = test_run(cmd, out, sizeof out);
   char version[256] = "";
@@ -339,6 +356,9 @@ static void test_commands(void)
     for (int k = 0; k < 4; k++) {
       char name[16];
       snprintf(name, sizeof name, "inert_%d", k);
+      char rm[4200];   /* a fresh folder: an earlier test run's snapshots warn too */
+      snprintf(rm, sizeof rm, "rm -rf '%s'", path_of(name));
+      test_run(rm, NULL, 0);
       snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --set %s", f,
                path_of(name), sets[k]);
       rc = hvsph(args, out, sizeof out);
