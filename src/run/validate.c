@@ -392,9 +392,9 @@ int validate_main(int argc, char **argv)
       char cf[8400];
       snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
       struct cfg *cc = cfg_load(cf, &err);
-      if (!cc) {
-        hv_error_clear(&err);   /* reported by its run */
-        continue;
+      if (!cc) {   /* a case that cannot be read: said here, not as a swap that took nothing */
+        cfg_free(ref);
+        goto fail;
       }
       struct hv_error serr;
       const int level = hv_log_level;

@@ -821,6 +821,15 @@ static void test_validate(void)
         "(want 2), the earlier tables kept", rc);
   check_message("validate, missing case file", out,
                 (const char *const[]){"cannot open case file", "none/wp1.yaml", NULL});
+  /* ... also with --material, whose swaps are checked on the case files first: the
+     missing file named, not a swap that no body took */
+  snprintf(args, sizeof args, "validate --only wp1 --cases '%s/none' --threads 1 --material "
+           "gas=nitrogen -o '%s'", cases, dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2 && tables_kept(dir), "validate --material with a missing case file: exit "
+        "status %d (want 2), the earlier tables kept", rc);
+  check_message("validate --material, missing case file", out,
+                (const char *const[]){"cannot open case file", "none/wp1.yaml", NULL});
 
   /* an unknown --only name: exit 2 naming it, and no output folder made */
   const char *fresh = path_of("val_fresh");
