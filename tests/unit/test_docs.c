@@ -20,8 +20,10 @@
  *      particles for one step) does not end in exit status 1, a bad command line, as the
  *      same call with an unknown option does.
  *   3. The columns of the Sod run's summary.csv are in docs/output-files.md's section
- *      summary.csv, and every quantity of the paper cases' measurements.csv, with its
- *      unit, in docs/measurements.md's table of quantities.
+ *      summary.csv; every column of a particle snapshot (CSV) and every array of its VTU,
+ *      of a case that writes every field, in its sections on the two formats; and every
+ *      quantity of the paper cases' measurements.csv, with its unit, in
+ *      docs/measurements.md's table of quantities.
  *
  * Every check is exact, and reports everything missing in one failure that names the
  * page. HVSPH_DOCS_DIR points the test at another copy of docs/ (to see it fail on a
@@ -807,6 +809,77 @@ static void test_summary_columns(const struct example *sod)
   free(md);
 }
 
+/* Every column of a particle snapshot (CSV) and every array of its VTU, of a case that
+ * writes all of them (strength, the crack's fields, the viscosity switch), in
+ * output-files.md's sections on the two formats. */
+static void test_particle_columns(void)
+{
+  const char *yaml =
+      "name: columns\n"
+      "materials:\n"
+      "  al: {library: al-alloy, fracture: {split: crack}}\n"
+      "bodies:\n"
+      "  - {name: b, material: al, spacing: 1 mm, shape: {type: box, min: [0, 0, 0], "
+      "max: [3 mm, 3 mm, 3 mm]}}\n"
+      "sph: {viscosity: {switch: cullen-dehnen}}\n"
+      "time: {end: 0}\n"
+      "output: {csv: true}\n";
+  const char *path = test_write_file("columns.yaml", yaml);
+  char dir[4400], args[9000], out[16384], file[4500];
+  snprintf(dir, sizeof dir, "%.4000s/runs/columns", test_tmpdir());
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", path, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "a case writing every particle field runs (exit %d): %.*s", rc, first_len(out),
+        out);
+  char *md = read_doc("output-files.md");
+  static const char *const sections[2] = {"Particle snapshots as CSV",
+                                          "Particle snapshots: VTU and PVD (ParaView)"};
+  for (int f = 0; f < 2 && md; f++) {
+    size_t slen = 0;
+    const char *sec = md_section(md, sections[f], &slen);
+    CHECK(sec != NULL, "docs/output-files.md has a section \"## %s\"", sections[f]);
+    snprintf(file, sizeof file, "%s/particles_00000.%s", dir, f ? "vtu" : "csv");
+    size_t size = 0;
+    char *text = test_slurp(file, &size);
+    CHECK(text != NULL, "the run wrote %s", file);
+    if (!sec || !text) {
+      free(text);
+      continue;
+    }
+    struct text code = {0}, names = {0}, missing = {0};
+    md_code(sec, slen, &code);
+    if (f == 0) {   /* the header line */
+      char *header = csv_header(text);
+      for (char *col = header ? strtok(header, ",") : NULL; col; col = strtok(NULL, ","))
+        text_add(&names, "%s\n", col);
+      free(header);
+    } else {        /* Name="..." of each DataArray, before the appended data */
+      const char *end = strstr(text, "<AppendedData");
+      for (const char *p = strstr(text, "Name=\""); p && (!end || p < end);
+           p = strstr(p + 1, "Name=\""))
+        text_add(&names, "%.*s\n", (int)strcspn(p + 6, "\""), p + 6);
+    }
+    int n = 0, nmissing = 0;
+    for (const char *p = text_str(&names); *p; p = next_line(p)) {
+      char w[128];
+      snprintf(w, sizeof w, "%.*s", (int)line_len(p), p);
+      n++;
+      if (!has_word(text_str(&code), code.n, w)) {
+        nmissing++;
+        text_add(&missing, " `%s`", w);
+      }
+    }
+    CHECK(n >= (f ? 17 : 28) && nmissing == 0, "docs/output-files.md, section %s, has every "
+          "%s of %s (%d); %d missing:%s", sections[f], f ? "array" : "column", file, n,
+          nmissing, text_str(&missing));
+    text_free(&code);
+    text_free(&names);
+    text_free(&missing);
+    free(text);
+  }
+  free(md);
+}
+
 /* The quantities of measurements.md's table in its section measurements.csv: "name\tunit". */
 static void doc_quantities(const char *sec, size_t slen, struct text *q)
 {
@@ -923,6 +996,7 @@ int main(void)
     if (!strcmp(ex[i].folder, "verification") && !strcmp(ex[i].name, "sod")) sod = &ex[i];
   CHECK(sod != NULL, "examples/verification/sod.yaml is among the cases");
   if (sod) test_summary_columns(sod);
+  test_particle_columns();
   test_measurement_quantities(ex, n);
   return test_finish();
 }
