@@ -374,7 +374,20 @@ static void snap_rest(struct sim *s, double dt)
 int step_init(struct sim *s, struct hv_error *err)
 {
   struct particles *p = &s->p;
-  if (update_eos(s, err) || build_neighbours(s, err)) return -1;
+  if (update_eos(s, err)) return -1;
+  if (build_neighbours(s, err)) {
+    /* before the first step the set-up is at fault (a body far out, a periodic domain
+       of 1e308 m whose ghosts span it): bad input, said against the domain */
+    if (err->code == HV_EXIT_RUN) {
+      const char *key = s->cfg && cfg_has(s->cfg, "domain") ? "domain" : "bodies";
+      char where[256] = "";
+      if (s->cfg) cfg_where(s->cfg, key, where, sizeof where);
+      hv_error_prefix(err, "%s%s%s: the bodies with their boundary ghosts do not fit the "
+                      "neighbour grid: ", where, *where ? ": " : "", key);
+      err->code = HV_EXIT_INPUT;
+    }
+    return -1;
+  }
   sph_artificial_stress(p, &s->sph, s->mat);
   boundary_refresh_ghosts(&s->bnd, p);
   for (size_t i = 0; i < p->n; i++) p->de[i] = 0.0;

@@ -455,6 +455,9 @@ int run_main(const struct run_options *ro)
   if (run_setup(&s, c, &err) || measure_run_read(&o.mr, &s, c, &err) ||
       cfg_check_unused(c, &err))
     goto fail;
+  /* a new run's first rates and time step, before anything is written: a set-up that
+     the neighbour grid cannot hold is bad input and leaves the output folder as it was */
+  if (!restart && step_init(&s, &err)) goto fail;
 
   char nbuf[256];
   if (restart) snprintf(o.dir, sizeof o.dir, "%s", restart);
@@ -520,7 +523,7 @@ int run_main(const struct run_options *ro)
   signal(SIGTERM, on_sigint);
   segment_begin(&seg, o.dir, restart != NULL, &s);
   seg_open = 1;
-  if ((!restart && (step_init(&s, &err) || write_outputs(&s, &o, &err))) ||
+  if ((!restart && write_outputs(&s, &o, &err)) ||
       run_loop(&s, &o, &seg, ro->quiet, &err))
     goto fail;
   signal(SIGINT, SIG_DFL);

@@ -527,6 +527,11 @@ static void test_bad_input(void)
             NULL, (const char *const[]){"recon_contact_alone.yaml:4: "
                                         "sph.viscosity.reconstruct_contact: ",
                                         "needs sph.viscosity.reconstruct: true", NULL});
+  /* a periodic domain far longer than the neighbour grid can hold (1e308 m: its ghosts
+     span it), found when the first grid is built: bad input naming the domain */
+  bad_input("periodic_huge", variant(5, "  min: [0, 0, -1e308]"), NULL,
+            (const char *const[]){"periodic_huge.yaml:4: domain: ", "do not fit the neighbour "
+                                  "grid", "span 1e+308 m in direction z", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
