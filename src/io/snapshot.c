@@ -7,12 +7,14 @@
  */
 #include "io/snapshot.h"
 
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/utf8.h"
 #include "io/afile.h"
@@ -245,4 +247,164 @@ const char *io_list_readable_snapshots(const char *dir, int **nums, int *n)
   free(*nums);
   *n = io_list_snapshots(dir, "vtu", nums);
   return "vtu";
+}
+
+/* The value of the attribute `name` in the XML tag [s, end), the five character entities
+ * decoded, into buf; -1 when the tag has no such attribute, its value is not closed or
+ * does not fit, or holds another entity (io_write_pvd writes none). */
+static int xml_attr(const char *s, const char *end, const char *name, char *buf, size_t len)
+{
+  static const struct {
+    const char *ent;
+    char c;
+  } ents[] = {{"amp;", '&'}, {"lt;", '<'}, {"gt;", '>'}, {"quot;", '"'}, {"apos;", '\''}};
+  const size_t nl = strlen(name);
+  for (const char *q = s + 1; q + nl + 2 <= end; q++) {
+    if (!isspace((unsigned char)q[-1]) || strncmp(q, name, nl) || q[nl] != '=' ||
+        (q[nl + 1] != '"' && q[nl + 1] != '\''))
+      continue;
+    const char quote = q[nl + 1];
+    const char *v = q + nl + 2;
+    size_t k = 0;
+    while (v < end && *v != quote) {
+      char c = *v++;
+      if (c == '&') {
+        size_t e = 0;
+        while (e < sizeof ents / sizeof ents[0] &&
+               ((size_t)(end - v) < strlen(ents[e].ent) || strncmp(v, ents[e].ent, strlen(ents[e].ent))))
+          e++;
+        if (e == sizeof ents / sizeof ents[0]) return -1;
+        c = ents[e].c;
+        v += strlen(ents[e].ent);
+      }
+      if (k + 1 >= len) return -1;
+      buf[k++] = c;
+    }
+    if (v >= end) return -1;
+    buf[k] = '\0';
+    return 0;
+  }
+  return -1;
+}
+
+int io_read_pvd(const char *path, double **times, char ***files, struct hv_error *err)
+{
+  *times = NULL;
+  *files = NULL;
+  FILE *f = fopen(path, "rb");
+  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(errno));
+  char *text = NULL;
+  size_t len = 0, cap = 0, got;
+  errno = 0;
+  do {
+    if (cap - len < 4096) {
+      cap = 2 * cap + 65536;
+      text = hv_realloc(text, cap, "run.pvd");
+    }
+    got = fread(text + len, 1, cap - len - 1, f);
+    len += got;
+  } while (got > 0);
+  const int e = ferror(f) ? (errno ? errno : EIO) : 0;
+  fclose(f);
+  text[len] = '\0';
+  int n = 0, rc = 0;
+  if (e) rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
+  else if (memchr(text, '\0', len) || !strstr(text, "<Collection"))
+    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: not a ParaView collection (no <Collection> "
+                      "element)", path);
+  for (const char *q = text; !rc && (q = strstr(q, "<DataSet")) != NULL; n++) {
+    const char *end = strchr(q, '>');
+    char name[4096], ts[128], *tend;
+    if (!end || xml_attr(q, end, "file", name, sizeof name) ||
+        xml_attr(q, end, "timestep", ts, sizeof ts)) {
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: DataSet entry %d has no readable file and "
+                        "timestep", path, n + 1);
+      break;
+    }
+    const double t = strtod(ts, &tend);
+    if (tend == ts || *tend) {
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: DataSet entry %d: timestep '%s' is not a "
+                        "number", path, n + 1, ts);
+      break;
+    }
+    *times = hv_realloc(*times, (size_t)(n + 1) * sizeof **times, "run.pvd");
+    *files = hv_realloc(*files, (size_t)(n + 1) * sizeof **files, "run.pvd");
+    (*times)[n] = t;
+    (*files)[n] = hv_malloc(strlen(name) + 1, "run.pvd");
+    memcpy((*files)[n], name, strlen(name) + 1);
+    q = end;
+  }
+  free(text);
+  if (rc) {
+    for (int k = 0; k < n; k++) free((*files)[k]);
+    free(*files);
+    free(*times);
+    *files = NULL;
+    *times = NULL;
+    return -1;
+  }
+  return n;
+}
+
+int io_snapshot_in_run(int k, double t, const double *times, int nt)
+{
+  return nt < 0 || (k >= 0 && k < nt && fabs(t - times[k]) <= 1e-9 * fmax(fabs(t), 1e-30));
+}
+
+int io_run_snapshots(const char *dir, const char *prefer, struct io_run_snapshot **list,
+                     struct hv_error *err)
+{
+  *list = NULL;
+  const char *other = strcmp(prefer, "vtu") ? "vtu" : "csv";
+  prefer = strcmp(prefer, "vtu") ? "csv" : "vtu";
+  char path[4400];
+  int *nums = NULL, n;
+  snprintf(path, sizeof path, "%s/run.pvd", dir);
+  if (access(path, F_OK) == 0) {
+    double *times;
+    char **files;
+    n = io_read_pvd(path, &times, &files, err);
+    if (n < 0) return -1;
+    nums = hv_malloc((size_t)(n ? n : 1) * sizeof *nums, "snapshot list");
+    int bad = -1;
+    for (int k = 0; k < n; k++) {   /* particles_NNNNN.vtu exactly, as the run writes it */
+      char again[64];
+      int len = 0;
+      nums[k] = -1;
+      if (sscanf(files[k], "particles_%d%n", &nums[k], &len) == 1 && nums[k] >= 0)
+        snprintf(again, sizeof again, "particles_%05d.vtu", nums[k]);
+      else again[0] = '\0';
+      if (strcmp(again, files[k]) && bad < 0) bad = k;
+    }
+    if (bad >= 0)
+      hv_error_set(err, HV_EXIT_INPUT, "%s: entry %d names '%s', not a particles_NNNNN.vtu "
+                   "snapshot of the folder", path, bad + 1, files[bad]);
+    for (int k = 0; k < n; k++) free(files[k]);
+    free(files);
+    free(times);
+    if (bad >= 0) {
+      free(nums);
+      return -1;
+    }
+  } else {
+    n = io_list_snapshots(dir, prefer, &nums);
+    if (n == 0) {
+      free(nums);
+      n = io_list_snapshots(dir, other, &nums);
+    }
+    if (n < 0)
+      return hv_error_set(err, HV_EXIT_INPUT, "cannot open the run folder '%s': %s", dir,
+                          strerror(errno));
+  }
+  *list = hv_malloc((size_t)(n ? n : 1) * sizeof **list, "snapshot list");
+  for (int k = 0; k < n; k++) {
+    (*list)[k].num = nums[k];
+    (*list)[k].ext = prefer;
+    snprintf(path, sizeof path, "%s/particles_%05d.%s", dir, nums[k], prefer);
+    if (access(path, F_OK) == 0) continue;
+    snprintf(path, sizeof path, "%s/particles_%05d.%s", dir, nums[k], other);
+    if (access(path, F_OK) == 0) (*list)[k].ext = other;
+  }
+  free(nums);
+  return n;
 }

@@ -87,4 +87,36 @@ int io_list_snapshots(const char *dir, const char *ext, int **nums);
  * ("csv" or "vtu"). */
 const char *io_list_readable_snapshots(const char *dir, int **nums, int *n);
 
+/* The (timestep [s], file) entries of a ParaView collection written by io_write_pvd, in
+ * the file's order, into new arrays (the caller frees each files[k] and both arrays);
+ * XML character entities in the names are decoded. Returns the count, or -1 (err,
+ * HV_EXIT_INPUT, naming the file) when it cannot be read or is not a collection. */
+int io_read_pvd(const char *path, double **times, char ***files, struct hv_error *err);
+
+/* Whether snapshot number k, whose file gives the time t [s], is one of the outputs of
+ * the run whose summary.csv lists the times times[0..nt): a run numbers its outputs 0, 1,
+ * ... as the rows of its summary.csv, so k must be a row and t that row's time (to 1e-9,
+ * relative). A folder reused by a shorter run keeps the earlier run's later snapshots;
+ * they fail here. nt < 0 (no summary.csv): every snapshot is taken as the run's. */
+int io_snapshot_in_run(int k, double t, const double *times, int nt);
+
+/* A snapshot of a run folder: the file particles_NNNNN.<ext>. */
+struct io_run_snapshot {
+  int num;           /* NNNNN */
+  const char *ext;   /* "vtu" or "csv" (a string constant) */
+};
+
+/* The snapshots of the run whose output folder is dir, in the run's order, into a new
+ * array (the caller frees): the entries of its run.pvd when it has one (the run rewrites
+ * it at every output, so it lists this run's snapshots only, not those an earlier run
+ * left in the folder), otherwise every particles_NNNNN.<prefer> of the folder, or when
+ * there is none every one of the other kind, by number (a run with output.vtu: false;
+ * an earlier run's are told from the run's own by io_snapshot_in_run once read). Each
+ * entry's ext is `prefer` ("vtu" or "csv") where that file exists, else the other kind
+ * where that one does, else `prefer` (reading it then says it is missing). Returns the
+ * count (0: none), or -1 (err, HV_EXIT_INPUT) when the folder or its run.pvd cannot be
+ * read, or run.pvd names a file that is not a particles_NNNNN.vtu of the folder. */
+int io_run_snapshots(const char *dir, const char *prefer, struct io_run_snapshot **list,
+                     struct hv_error *err);
+
 #endif

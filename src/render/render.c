@@ -103,10 +103,13 @@ int render_png(const char *path, const struct particles *p, const struct render_
   } else {
     int nmat = 1;
     for (size_t i = 0; i < p->n; i++)
-      if (p->mat[i] >= nmat && p->mat[i] < 1024) nmat = p->mat[i] + 1;
+      if (p->mat[i] >= nmat && p->mat[i] < RENDER_MATERIAL_CAP) nmat = p->mat[i] + 1;
+    const int given = info && info->material_slot && info->nslot >= nmat;
+    if (given) nmat = info->nslot; /* a series' ranking, over all its pictures */
     present = hv_calloc((size_t)nmat, 1, "material flags");
     slot = hv_malloc((size_t)nmat * sizeof *slot, "material slots");
-    render_material_slots(p, nmat, slot);
+    if (given) memcpy(slot, info->material_slot, (size_t)nmat * sizeof *slot);
+    else render_material_slots(p, nmat, slot);
     double lo, hi;
     size_t nd = render_discs(&c, p, &v, o, &lo, &hi, present, slot, nmat);
     key.kind = o->color == RENDER_COLOR_MATERIAL ? 2 : 1;

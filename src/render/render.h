@@ -21,6 +21,9 @@
  * Particles: discs of radius 0.6 h, far ones first (painter's algorithm; the viewer sits on
  * the negative side of the view axis), coloured by material or by a quantity through a
  * sequential colour map with monotonic lightness (render_colormap).
+ *
+ * A series (render_series, series.c): every snapshot of a run folder as a frame of a movie,
+ * all with one extent, mirroring, size and colour scale, so that the picture does not jump.
  */
 #ifndef HV_RENDER_H
 #define HV_RENDER_H
@@ -69,6 +72,9 @@ struct render_view {
   int axis, iu, iv;          /* line of sight; coordinates shown right (iu) and up (iv) */
   int mirror;                /* particles are reflected across z = 0 (copies at -z) */
   double u0, u1, v0, v1;     /* [m] extent of the plot area (square pixels) */
+  double ext[4];             /* [m] the extent asked for, u0, u1, v0, v1 before it was grown to
+                                the plot area's aspect: the box's, or the particles' with their
+                                supports and the margin */
   double d0, d1;             /* [m] slab along the line of sight (particle centres), ±inf by default */
   double pix;                /* [m] pixel edge */
   int nu, nv;                /* [px] plot area, at the top of the picture */
@@ -83,6 +89,9 @@ struct render_view {
 int render_view_setup(const struct particles *p, const struct render_options *o,
                       struct render_view *view, struct hv_error *err);
 
+/* 1 when p is a half model (every particle at z >= -h/2): mirroring's automatic choice. */
+int render_half_model(const struct particles *p);
+
 /* F(s) of the header: the M4 cubic spline integrated along a line at distance s·h from the
  * particle, times h²; F(0) = 3/(2π), zero for s >= 2. */
 double render_kernel_column(double s);
@@ -91,6 +100,15 @@ double render_kernel_column(double s);
  * sigma[j * nu + i]. Σ sigma · pix² equals the mass in the view (mirror copies included). */
 void render_areal_density(const struct particles *p, const struct render_view *view,
                           double *sigma);
+
+/* Particles mode, a quantity: widens [*lo, *hi] to the values (SI) of the particles drawn
+ * in the view (start from HUGE_VAL, -HUGE_VAL); non-finite values are left out. */
+void render_color_extend(const struct particles *p, const struct render_view *view,
+                         const struct render_options *o, double *lo, double *hi);
+/* The colour range drawn, from the data's range [*lo, *hi] (render_color_extend): the
+ * --range when given, 0 to 1 for damage or when nothing was drawn, a band of ±5 % about a
+ * single value; otherwise the data's. */
+void render_color_limits(const struct render_options *o, double *lo, double *hi);
 
 /* The sequential colour map, t in [0, 1] (clamped) -> sRGB; lightness rises with t. */
 void render_colormap(double t, unsigned char rgb[3]);
@@ -103,6 +121,10 @@ struct render_info {
   const char *const *material_names;  /* index -> name; may be NULL */
   int nmat;
   const char *source;                 /* snapshot file name, for the PNG's text chunk; may be NULL */
+  const int *material_slot;           /* palette slot of each material index < nslot, kept the
+                                         same over a series of pictures; NULL: ranked from p's
+                                         bodies (render.c) */
+  int nslot;
 };
 
 /* Renders p as the options say and writes the PNG (8-bit RGB) to path, whole or not at all.
@@ -111,8 +133,19 @@ struct render_info {
 int render_png(const char *path, const struct particles *p, const struct render_options *o,
                const struct render_info *info, struct hv_error *err);
 
-/* `hvsph render SNAPSHOT.csv -o FILE.png [options]`: argv holds the arguments after
- * "render". Returns the exit status (0, 1 usage, 2 input, 3 write failure). */
+/* Every snapshot of the run whose output folder is rundir (io_run_snapshots, .vtu
+ * preferred; those not among the outputs of its summary.csv skipped) as the frames
+ * framedir/frame_NNNNN.png of a movie, NNNNN = 0, 1, ... in the run's order, all with the
+ * same mirroring, extent, picture size, colour range and material colours (series.c).
+ * framedir is created when missing; one line per frame on stderr, and a last one with an
+ * ffmpeg command. Fails (err) for a folder without snapshots or a snapshot that cannot be
+ * read, naming it (HV_EXIT_INPUT), or as render_png; frames written before stay, whole. */
+int render_series(const char *rundir, const char *framedir, const struct render_options *o,
+                  struct hv_error *err);
+
+/* `hvsph render SNAPSHOT.csv -o FILE.png [options]`, or `hvsph render RUNDIR -o FRAMEDIR
+ * [options]` (render_series): argv holds the arguments after "render". Returns the exit
+ * status (0, 1 usage, 2 input, 3 write failure). */
 int render_main(int argc, char **argv);
 
 #endif

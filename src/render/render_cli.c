@@ -1,8 +1,11 @@
-/* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`.
+/* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`, and
+ * `hvsph render RUNDIR -o FRAMEDIR [options]`.
  *
  * Reads a particle snapshot, CSV or VTU (io_read_particles; the time from its comment
  * line or FieldData, the material names from its "materials" comment), renders it
- * (render_png) and writes the PNG whole or not at all. Lengths and colour ranges may carry units
+ * (render_png) and writes the PNG whole or not at all. A folder instead of a snapshot is
+ * a run's output folder: every snapshot of the run becomes a frame of a movie, all framed
+ * and coloured alike (render_series, series.c). Lengths and colour ranges may carry units
  * ("-50mm", "6.2km/s"); bare numbers are SI. Exit status: 0 written, 1 bad command line,
  * 2 bad or missing input (or an output folder that cannot take the file), 3 write failure.
  */
@@ -11,17 +14,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "core/units.h"
 #include "io/snapshot.h"
-#include "render/render.h"
-
-#define RENDER_MAX_MATERIALS 64
+#include "render/render_internal.h"
 
 static void render_usage(FILE *f)
 {
   fprintf(f,
           "usage: hvsph render SNAPSHOT.vtu|SNAPSHOT.csv -o FILE.png [options]\n"
+          "       hvsph render RUNDIR -o FRAMEDIR [options]\n"
+          "  RUNDIR                        a run's output folder: each of its snapshots becomes\n"
+          "                                FRAMEDIR/frame_NNNNN.png, all framed and coloured alike\n"
           "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
           "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
           "                                and y up (along z), x and z (along y), y and z (along x)\n"
@@ -154,7 +159,13 @@ int render_main(int argc, char **argv)
     else in = a;
   }
   if (!in) return fail_usage("%s", "missing snapshot file");
-  if (!out) return fail_usage("%s", "missing -o FILE.png");
+  struct stat st;
+  const int series = stat(in, &st) == 0 && S_ISDIR(st.st_mode);
+  if (!out) return fail_usage("%s", series ? "missing -o FRAMEDIR" : "missing -o FILE.png");
+  const size_t olen = strlen(out);
+  if (series && olen >= 4 && !strcmp(out + olen - 4, ".png"))
+    return fail_usage("'%s' is a run folder: -o names the folder of its frames, not a .png "
+                      "file", in);
   if (range) {
     static const enum unit_dim dim[] = {
         [RENDER_COLOR_MATERIAL] = UNIT_NONE,    [RENDER_COLOR_DAMAGE] = UNIT_NONE,
@@ -175,6 +186,18 @@ int render_main(int argc, char **argv)
                     "shows the cut at z = 0)\n");
   struct hv_error err;
   hv_error_clear(&err);
+  if (series) {
+    if (stat(out, &st) == 0 && !S_ISDIR(st.st_mode)) {
+      fprintf(stderr, "hvsph render: -o '%s' is a file: the frames of run folder '%s' go into a "
+              "folder\n", out, in);
+      return HV_EXIT_INPUT;
+    }
+    if (render_series(in, out, &o, &err)) {
+      fprintf(stderr, "hvsph render: %s\n", err.msg);
+      return err.code ? err.code : HV_EXIT_RUN;
+    }
+    return HV_EXIT_OK;
+  }
   struct particles p;
   particles_init(&p);
   double t = NAN;

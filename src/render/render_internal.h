@@ -53,6 +53,15 @@ void render_film(struct canvas *c, const struct render_view *view, const double 
  * were numbered in (a `materials:` block, or one made by --set, numbers them otherwise),
  * so the same material of the same case gets the same colour in every run. */
 void render_material_slots(const struct particles *p, int nmat, int *slot);
+/* Its two steps, so that a series of pictures can rank over all of them: first[m] lowered
+ * to the lowest body index of p's particles of material m (start from INT_MAX), and the
+ * slots ranked from first[]. */
+void render_material_first_body(const struct particles *p, int nmat, int *first);
+void render_material_rank(const int *first, int nmat, int *slot);
+/* Material indices at or above this are drawn but get no legend entry. */
+#define RENDER_MATERIAL_CAP 1024
+/* Material names read from a snapshot's "materials" comment. */
+#define RENDER_MAX_MATERIALS 64
 
 /* Particles mode: draws the discs into the plot area; *lo, *hi get the colour range used
  * (SI); present[k] is set for every material index drawn (k < nmat_present), whose

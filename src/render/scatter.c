@@ -64,20 +64,76 @@ static void draw_disc(struct canvas *c, const struct render_view *v, const struc
     }
 }
 
-void render_material_slots(const struct particles *p, int nmat, int *slot)
+void render_material_first_body(const struct particles *p, int nmat, int *first)
 {
-  int *first = hv_malloc((size_t)nmat * sizeof *first, "material slots");
-  for (int m = 0; m < nmat; m++) first[m] = INT_MAX;
   for (size_t i = 0; i < p->n; i++) {
     const int m = p->mat[i], b = p->body[i];
     if (m >= 0 && m < nmat && b >= 0 && b < first[m]) first[m] = b;
   }
+}
+
+void render_material_rank(const int *first, int nmat, int *slot)
+{
   for (int m = 0; m < nmat; m++) {   /* rank: materials ahead of m by (first body, index) */
     slot[m] = 0;
     for (int k = 0; k < nmat; k++)
       if (first[k] < first[m] || (first[k] == first[m] && k < m)) slot[m]++;
   }
+}
+
+void render_material_slots(const struct particles *p, int nmat, int *slot)
+{
+  int *first = hv_malloc((size_t)nmat * sizeof *first, "material slots");
+  for (int m = 0; m < nmat; m++) first[m] = INT_MAX;
+  render_material_first_body(p, nmat, first);
+  render_material_rank(first, nmat, slot);
   free(first);
+}
+
+/* The disc of particle i (copy 1: its mirror image across z = 0) in view v; 0 when it is
+ * not drawn (outside the slab, off the picture, or not finite). */
+static int make_disc(const struct particles *p, size_t i, int copy, const struct render_view *v,
+                     enum render_color color, struct disc *q)
+{
+  double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+  double depth = x[v->axis];
+  if (!(depth >= v->d0 && depth <= v->d1)) return 0;
+  q->depth = depth;
+  q->fu = (x[v->iu] - v->u0) / v->pix - 0.5;
+  q->fv = (v->v1 - x[v->iv]) / v->pix - 0.5;
+  q->r = fmax(0.6 * fabs(p->h[i]) / v->pix, 0.7);
+  if (!(q->fu > -q->r - 1 && q->fv > -q->r - 1 && q->fu < v->nu + q->r + 1 &&
+        q->fv < v->nv + q->r + 1))
+    return 0; /* off the picture, or not finite */
+  q->value = particle_value(p, i, color);
+  return 1;
+}
+
+void render_color_extend(const struct particles *p, const struct render_view *v,
+                         const struct render_options *o, double *lo, double *hi)
+{
+  struct disc q;
+  for (size_t i = 0; i < p->n; i++)
+    for (int copy = 0; copy <= v->mirror; copy++)
+      if (make_disc(p, i, copy, v, o->color, &q) && isfinite(q.value)) {
+        *lo = fmin(*lo, q.value);
+        *hi = fmax(*hi, q.value);
+      }
+}
+
+void render_color_limits(const struct render_options *o, double *lo, double *hi)
+{
+  if (o->have_range) {
+    *lo = o->range[0];
+    *hi = o->range[1];
+  } else if (o->color == RENDER_COLOR_DAMAGE || !(*lo <= *hi)) {
+    *lo = 0.0;
+    *hi = 1.0;
+  } else if (*hi - *lo <= 1e-12 * fmax(fabs(*lo), fabs(*hi))) {
+    double pad = *lo != 0.0 ? 0.05 * fabs(*lo) : 1.0; /* one value: a band around it */
+    *lo -= pad;
+    *hi += pad;
+  }
 }
 
 size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *v,
@@ -89,18 +145,8 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
   double vmin = HUGE_VAL, vmax = -HUGE_VAL;
   for (size_t i = 0; i < p->n; i++)
     for (int copy = 0; copy <= v->mirror; copy++) {
-      double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
-      double depth = x[v->axis];
-      if (!(depth >= v->d0 && depth <= v->d1)) continue;
       struct disc *q = &d[n];
-      q->depth = depth;
-      q->fu = (x[v->iu] - v->u0) / v->pix - 0.5;
-      q->fv = (v->v1 - x[v->iv]) / v->pix - 0.5;
-      q->r = fmax(0.6 * fabs(p->h[i]) / v->pix, 0.7);
-      if (!(q->fu > -q->r - 1 && q->fv > -q->r - 1 && q->fu < v->nu + q->r + 1 &&
-            q->fv < v->nv + q->r + 1))
-        continue; /* off the picture, or not finite */
-      q->value = particle_value(p, i, o->color);
+      if (!make_disc(p, i, copy, v, o->color, q)) continue;
       q->order = n;
       if (o->color == RENDER_COLOR_MATERIAL) {
         if (p->mat[i] >= 0 && p->mat[i] < nmat_present) present[p->mat[i]] = 1;
@@ -110,20 +156,7 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
       }
       n++;
     }
-  if (o->have_range) {
-    vmin = o->range[0];
-    vmax = o->range[1];
-  } else if (o->color == RENDER_COLOR_DAMAGE) {
-    vmin = 0.0;
-    vmax = 1.0;
-  } else if (!(vmin <= vmax)) {
-    vmin = 0.0;
-    vmax = 1.0;
-  } else if (vmax - vmin <= 1e-12 * fmax(fabs(vmin), fabs(vmax))) {
-    double pad = vmin != 0.0 ? 0.05 * fabs(vmin) : 1.0; /* one value: a band around it */
-    vmin -= pad;
-    vmax += pad;
-  }
+  render_color_limits(o, &vmin, &vmax);
   qsort(d, n, sizeof *d, disc_cmp);
   for (size_t k = 0; k < n; k++) {
     unsigned char rgb[3];

@@ -21,7 +21,7 @@ void render_options_default(struct render_options *o)
   o->mu = RENDER_MU_DEFAULT;
 }
 
-static int half_model(const struct particles *p)
+int render_half_model(const struct particles *p)
 {
   for (size_t i = 0; i < p->n; i++)
     if (p->x[2][i] < -0.5 * p->h[i]) return 0;
@@ -57,7 +57,7 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
   v.axis = o->axis;
   v.iu = o->axis == 0 ? 1 : 0;
   v.iv = o->axis == 2 ? 1 : 2;
-  v.mirror = o->mirror < 0 ? half_model(p) : o->mirror;
+  v.mirror = o->mirror < 0 ? render_half_model(p) : o->mirror;
   if (o->mode == RENDER_PARTICLES && o->axis == 2) v.mirror = 0;
   v.d0 = -HUGE_VAL;
   v.d1 = HUGE_VAL;
@@ -83,6 +83,7 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
     ext[2] -= 0.04 * span;
     ext[3] += 0.04 * span;
   }
+  for (int k = 0; k < 4; k++) v.ext[k] = ext[k];
   double du = ext[1] - ext[0], dv = ext[3] - ext[2];
 
   if (o->width > 0 && o->height > 0) {

@@ -155,7 +155,7 @@ int remeasure_main(int argc, char **argv)
     s.p.n = 0;
     double t = NAN;
     if ((nt < 0 || k < nt) && io_read_particles(spath, &s.p, &t, &err)) goto fail;
-    if (nt >= 0 && (k >= nt || !(fabs(t - times[k]) <= 1e-9 * fmax(fabs(t), 1e-30)))) {
+    if (!io_snapshot_in_run(k, t, times, nt)) {
       hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
               "folder): skipped", spath);
       continue;

@@ -1,7 +1,11 @@
 /* test_render.c — pictures checked by their numbers: the column-integrated kernel, mass
  * conservation of the areal density picture (mirrored: twice), the peak areal density of
  * a uniform sphere (2Rρ) and of a plate (ρt), the colour map's lightness order, the PNG
- * written by `hvsph render` (size, background, atomic replacement) and its errors.
+ * written by `hvsph render` (size, background, atomic replacement) and its errors, and
+ * `hvsph render RUNDIR -o FRAMEDIR` on a tiny run: one frame per snapshot of its run.pvd
+ * (or summary.csv), none for an earlier run's left in the folder, frames numbered
+ * contiguously, one size, and each frame exactly the picture of its snapshot alone with
+ * the union of the frames' extents and colour ranges given as --box and --range.
  */
 #include <math.h>
 #include <png.h>
@@ -541,6 +545,322 @@ static void test_command(void)
   }
 }
 
+/* ---- a run's snapshots as movie frames --------------------------------- */
+
+/* A gas blob on the move and expanding (a half model, z >= 0), four outputs: each
+ * snapshot alone would be framed and coloured differently. */
+static const char *blob_case =
+    "name: blob\n"
+    "materials:\n"
+    "  gas: {eos: ideal-gas, gamma: 1.4}\n"
+    "bodies:\n"
+    "  - name: blob\n"
+    "    material: gas\n"
+    "    shape: {type: box, min: [0, 0, 0], max: [0.05, 0.025, 0.025]}\n"
+    "    spacing: 6.25 mm\n"
+    "    density: 1.0\n"
+    "    pressure: 1.0\n"
+    "    velocity: [5, 0, 0]\n"
+    "    radial_velocity: 1\n"
+    "time:\n"
+    "  end: 0.03\n"
+    "output:\n"
+    "  every: 0.01\n"
+    "  csv: true\n";
+
+/* The frame_NNNNN.png files in dir and their largest number (-1: none). */
+static int count_frames(const char *dir, int *last)
+{
+  DIR *d = opendir(dir);
+  int n = 0, k, len;
+  *last = -1;
+  struct dirent *e;
+  while (d && (e = readdir(d)))
+    if (sscanf(e->d_name, "frame_%d%n", &k, &len) == 1 && !strcmp(e->d_name + len, ".png")) {
+      n++;
+      if (k > *last) *last = k;
+    }
+  if (d) closedir(d);
+  return n;
+}
+
+static int count_lines(const char *out, const char *what)
+{
+  int n = 0;
+  for (const char *q = out; (q = strstr(q, what)) != NULL; q += strlen(what)) n++;
+  return n;
+}
+
+/* Pixels of two PNG files: -1 when either cannot be read or the sizes differ, else the
+ * count of differing bytes. */
+static long png_differ(const char *a, const char *b)
+{
+  int wa = 0, ha = 0, wb = 0, hb = 0;
+  unsigned char *x = read_png(a, &wa, &ha), *y = read_png(b, &wb, &hb);
+  long d = -1;
+  if (x && y && wa == wb && ha == hb) {
+    d = 0;
+    for (long k = 0; k < 3L * wa * ha; k++) d += x[k] != y[k];
+  }
+  free(x);
+  free(y);
+  return d;
+}
+
+/* The one line of out holding `what` contains `also`. */
+static int line_has(const char *out, const char *what, const char *also)
+{
+  const char *q = strstr(out, what);
+  if (!q) return 0;
+  while (q > out && q[-1] != '\n') q--;
+  const char *end = strchr(q, '\n');
+  const char *hit = strstr(q, also);
+  return hit && (!end || hit < end);
+}
+
+static void test_series(void)
+{
+  const char *dir = test_tmpdir();
+  char run_dir[4200], cmd[32768], args[8192], path[4400], path2[4400];
+  static char out[65536];
+  snprintf(run_dir, sizeof run_dir, "%s/blobrun", dir);
+  const char *casefile = test_write_file("blob.yaml", blob_case);
+  snprintf(cmd, sizeof cmd, "cd '%s' && rm -rf blobrun frames_* csvrun mixrun slotrun emptyrun badrun && "
+           "'%s' run '%s' -o '%s' --quiet", dir, test_bin(), casefile, run_dir);
+  int st = test_run(cmd, out, sizeof out);
+  CHECK(st == 0, "the tiny run: exit %d %s", st, out);
+  /* run.pvd lists the run's snapshots; an earlier run's, left in the folder, is not in it */
+  snprintf(path, sizeof path, "%s/run.pvd", run_dir);
+  char *pvd = test_slurp(path, NULL);
+  const int nsnap = pvd ? count_lines(pvd, "<DataSet") : -1;
+  free(pvd);
+  CHECK(nsnap == 4, "run.pvd lists %d snapshots (4)", nsnap);
+  snprintf(cmd, sizeof cmd, "cp '%s/particles_00001.vtu' '%s/particles_00007.vtu'", run_dir, run_dir);
+  CHECK(system(cmd) == 0, "%s", cmd);
+
+  /* radiographs: one frame per snapshot of run.pvd, from the .vtu files, all one size */
+  snprintf(args, sizeof args, "'%s' -o '%s/frames_xray' --size 400", run_dir, dir);
+  st = run(args, out, sizeof out);
+  int last, n;
+  snprintf(path, sizeof path, "%s/frames_xray", dir);
+  n = count_frames(path, &last);
+  CHECK(st == 0 && n == nsnap && last == nsnap - 1,
+        "series of radiographs: exit %d, %d frames up to %d (%d, numbered 0..%d) %s", st, n,
+        last, nsnap, nsnap - 1, out);
+  CHECK(count_lines(out, "hvsph: wrote ") == nsnap && !strstr(out, "particles_00007") &&
+            count_lines(out, ".vtu, t = ") == nsnap,
+        "one line per frame, from the .vtu snapshots, none from particles_00007.vtu: %s", out);
+  snprintf(args, sizeof args, "%s/frames_xray/frame_%%05d.png -pix_fmt yuv420p", dir);
+  CHECK(strstr(out, "ffmpeg -framerate 10 -i ") && strstr(out, args),
+        "the last line names the folder and an ffmpeg command: %s", out);
+  int w0 = 0, h0 = 0, same = 1;
+  for (int k = 0; k < nsnap; k++) {
+    int w = 0, h = 0;
+    snprintf(path, sizeof path, "%s/frames_xray/frame_%05d.png", dir, k);
+    unsigned char *img = read_png(path, &w, &h);
+    if (k == 0) {
+      w0 = w;
+      h0 = h;
+    }
+    same = same && img && w == w0 && h == h0;
+    free(img);
+  }
+  CHECK(same && w0 == 400 && h0 > 0 && h0 % 2 == 0,
+        "every frame %dx%d (400 wide, an even height for video)", w0, h0);
+
+  /* particles by velocity: the union of the frames' own extents and ranges */
+  struct render_options o;
+  render_options_default(&o);
+  o.mode = RENDER_PARTICLES;
+  o.color = RENDER_COLOR_VELOCITY;
+  o.width = 640;
+  double ext[4] = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL}, lo = HUGE_VAL, hi = -HUGE_VAL;
+  double own_ext[2][4] = {{0}}, own_lo[2] = {0}, own_hi[2] = {0};
+  for (int k = 0; k < nsnap; k++) {
+    struct particles p;
+    particles_init(&p);
+    struct hv_error err;
+    hv_error_clear(&err);
+    struct render_view v;
+    double t;
+    snprintf(path, sizeof path, "%s/particles_%05d.vtu", run_dir, k);
+    if (io_read_particles(path, &p, &t, &err) || render_view_setup(&p, &o, &v, &err)) {
+      CHECK(0, "%s: %s", path, err.msg);
+      particles_free(&p);
+      continue;
+    }
+    double flo = HUGE_VAL, fhi = -HUGE_VAL;
+    for (size_t i = 0; i < p.n; i++) {
+      const double s = sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
+      flo = fmin(flo, s);
+      fhi = fmax(fhi, s);
+    }
+    for (int q = 0; q < 4; q++) ext[q] = q % 2 ? fmax(ext[q], v.ext[q]) : fmin(ext[q], v.ext[q]);
+    lo = fmin(lo, flo);
+    hi = fmax(hi, fhi);
+    const int f = k == 0 ? 0 : k == nsnap - 1 ? 1 : -1;
+    if (f >= 0) {
+      memcpy(own_ext[f], v.ext, sizeof v.ext);
+      own_lo[f] = flo;
+      own_hi[f] = fhi;
+    }
+    particles_free(&p);
+  }
+  for (int f = 0; f < 2; f++) /* else the check below could not tell */
+    CHECK(own_ext[f][0] > ext[0] + 0.01 * (ext[1] - ext[0]) || own_ext[f][1] < ext[1] - 0.01 * (ext[1] - ext[0]),
+          "snapshot %d alone is framed otherwise: x %g..%g m of %g..%g m", f ? nsnap - 1 : 0,
+          own_ext[f][0], own_ext[f][1], ext[0], ext[1]);
+  CHECK(own_lo[0] > lo + 0.01 * (hi - lo) || own_hi[0] < hi - 0.01 * (hi - lo),
+        "snapshot 0 alone has another range: |v| %g..%g of %g..%g m/s", own_lo[0], own_hi[0], lo, hi);
+  snprintf(args, sizeof args, "'%s' -o '%s/frames_v' --mode particles --color velocity --size 640",
+           run_dir, dir);
+  st = run(args, out, sizeof out);
+  snprintf(path, sizeof path, "%s/frames_v", dir);
+  n = count_frames(path, &last);
+  CHECK(st == 0 && n == nsnap, "series of particles by velocity: exit %d, %d frames %s", st, n, out);
+  int w = 0, h = 0;
+  snprintf(path, sizeof path, "%s/frames_v/frame_00000.png", dir);
+  unsigned char *img = read_png(path, &w, &h);
+  free(img);
+  for (int f = 0; f < 2; f++) {
+    const int k = f ? nsnap - 1 : 0;
+    snprintf(args, sizeof args, "'%s/particles_%05d.vtu' -o '%s/alone_%d.png' --mode particles "
+             "--color velocity --box %.17g,%.17g,%.17g,%.17g,-1000,1000 --range %.17g,%.17g "
+             "--size %dx%d", run_dir, k, dir, k, ext[0], ext[1], ext[2], ext[3], lo, hi, w, h);
+    st = run(args, out, sizeof out);
+    snprintf(path, sizeof path, "%s/frames_v/frame_%05d.png", dir, k);
+    snprintf(path2, sizeof path2, "%s/alone_%d.png", dir, k);
+    const long d = st == 0 ? png_differ(path, path2) : -2;
+    CHECK(d == 0, "frame %d is snapshot %d alone with the union box and range: %ld bytes "
+          "differ (0; -1 unreadable or sizes differ) %s", k, k, d, out);
+  }
+
+  /* a run without .vtu files (no run.pvd): the .csv files that match summary.csv; an
+   * earlier run's beyond its outputs (00009) and one at another time (00001) left out,
+   * and the frames numbered 0, 1, 2 all the same */
+  char csv_dir[4200];
+  snprintf(csv_dir, sizeof csv_dir, "%s/csvrun", dir);
+  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --quiet --set output.vtu=false && "
+           "cp '%s/particles_00001.csv' '%s/particles_00009.csv' && "
+           "cp '%s/particles_00000.csv' '%s/particles_00001.csv'",
+           test_bin(), casefile, csv_dir, csv_dir, csv_dir, csv_dir, csv_dir);
+  st = test_run(cmd, out, sizeof out);
+  CHECK(st == 0, "the run without .vtu: exit %d %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/frames_csv' --size 400", csv_dir, dir);
+  st = run(args, out, sizeof out);
+  snprintf(path, sizeof path, "%s/frames_csv", dir);
+  n = count_frames(path, &last);
+  CHECK(st == 0 && n == 3 && last == 2 && line_has(out, "frame_00001.png", "particles_00002.csv") &&
+            line_has(out, "particles_00001.csv is not one of the outputs", "skipped") &&
+            line_has(out, "particles_00009.csv is not one of the outputs", "skipped"),
+        "csv run: exit %d, %d frames up to %d (3, 0..2), frame 1 from snapshot 2: %s", st, n,
+        last, out);
+
+  /* run.pvd lists a snapshot whose .vtu is gone: its .csv is read instead */
+  snprintf(cmd, sizeof cmd, "cp -r '%s' '%s/mixrun' && rm '%s/mixrun/particles_00002.vtu'",
+           run_dir, dir, dir);
+  CHECK(system(cmd) == 0, "%s", cmd);
+  snprintf(args, sizeof args, "'%s/mixrun' -o '%s/frames_mix' --size 400", dir, dir);
+  st = run(args, out, sizeof out);
+  snprintf(path, sizeof path, "%s/frames_mix", dir);
+  n = count_frames(path, &last);
+  CHECK(st == 0 && n == nsnap && line_has(out, "frame_00002.png", "particles_00002.csv") &&
+            line_has(out, "frame_00003.png", "particles_00003.vtu"),
+        "a .vtu missing, its .csv there: exit %d, %d frames (%d), frame 2 from the .csv: %s", st,
+        n, nsnap, out);
+
+  /* material colours over the whole series: the plate (body 1) keeps the second colour
+   * after the projectile (body 0) has left; snapshot 1 alone would give it the first */
+  {
+    struct particles a, b;
+    particles_init(&a);
+    particles_init(&b);
+    put(&a, -0.02, 0, 0, 1e-3, 0.01, 1000, 1, 0);
+    a.body[0] = 0;
+    for (int i = 0; i < 10; i++) {
+      put(&a, 0.01 * i, 0, 0, 1e-3, 0.01, 1000, 0, 0);
+      put(&b, 0.01 * i, 0, 0, 1e-3, 0.01, 1000, 0, 0);
+      a.body[i + 1] = b.body[i] = 1;
+    }
+    const char *names[2] = {"plate", "projectile"};
+    struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "slots",
+                                 .material_names = names, .nmat = 2};
+    struct hv_error err;
+    hv_error_clear(&err);
+    snprintf(cmd, sizeof cmd, "mkdir -p '%s/slotrun'", dir);
+    CHECK(system(cmd) == 0, "%s", cmd);
+    snprintf(path, sizeof path, "%s/slotrun/particles_00000.csv", dir);
+    int wr = io_write_particles_csv(path, &a, &meta, &err);
+    meta.time = 1e-6;
+    snprintf(path, sizeof path, "%s/slotrun/particles_00001.csv", dir);
+    wr = wr || io_write_particles_csv(path, &b, &meta, &err);
+    CHECK(wr == 0, "two snapshots written: %s", err.msg);
+    particles_free(&a);
+    particles_free(&b);
+    snprintf(args, sizeof args, "'%s/slotrun' -o '%s/frames_slots' --mode particles --size 400x200",
+             dir, dir);
+    st = run(args, out, sizeof out);
+    snprintf(path, sizeof path, "%s/frames_slots/frame_00001.png", dir);
+    img = read_png(path, &w, &h);
+    long second = 0, first = 0;
+    unsigned char c0[3], c1[3];
+    render_palette(0, c0);
+    render_palette(1, c1);
+    for (long k = 0; img && k < (long)w * (h - 36); k++) {
+      first += !memcmp(img + 3 * k, c0, 3);
+      second += !memcmp(img + 3 * k, c1, 3);
+    }
+    free(img);
+    CHECK(st == 0 && second > 50 && first == 0, "the plate in frame 1 keeps the second colour: "
+          "exit %d, %ld pixels of it (> 50), %ld of the first (0) %s", st, second, first, out);
+  }
+
+  /* the folder of an earlier, longer series: its frames beyond are named */
+  snprintf(args, sizeof args, "'%s' -o '%s/frames_xray' --size 400", csv_dir, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 0 && strstr(out, "also holds 1 frame_NNNNN.png of an earlier, longer series (from frame_00003.png on)"),
+        "frames of an earlier series beyond this one's: exit %d %s", st, out);
+
+  /* errors: one line naming the folder or file, exit 2; frames already there stay */
+  snprintf(cmd, sizeof cmd, "mkdir -p '%s/emptyrun' && cp -r '%s' '%s/badrun' && "
+           "head -c 600 '%s/particles_00002.vtu' > '%s/badrun/particles_00002.vtu'",
+           dir, run_dir, dir, run_dir, dir);
+  CHECK(system(cmd) == 0, "%s", cmd);
+  snprintf(path, sizeof path, "%s/frames_xray/frame_00000.png", dir);
+  size_t before_len = 0, after_len = 0;
+  char *before = test_slurp(path, &before_len);
+  static const struct {
+    const char *in, *o;
+    int status;
+    const char *says;
+  } bad[] = {
+      {"emptyrun", "frames_empty", 2, "emptyrun: no particle snapshots"},
+      {"badrun", "frames_xray", 2, "badrun/particles_00002.vtu"},
+      {"blobrun", "blob.yaml", 2, "blob.yaml' is a file"},
+      {"blobrun", "movie.png", 1, "not a .png"},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    snprintf(args, sizeof args, "'%s/%s' -o '%s/%s' --size 400", dir, bad[k].in, dir, bad[k].o);
+    st = run(args, out, sizeof out);
+    char *nl = strchr(out, '\n');
+    CHECK(st == bad[k].status && strstr(out, bad[k].says) && nl && nl[1] == '\0',
+          "render %s -o %s: exit %d (%d), one line saying '%s': %s", bad[k].in, bad[k].o, st,
+          bad[k].status, bad[k].says, out);
+  }
+  char *after = test_slurp(path, &after_len);
+  CHECK(before && after && before_len == after_len && !memcmp(before, after, before_len),
+        "a failed series leaves the frames already there as they were");
+  free(before);
+  free(after);
+  snprintf(path, sizeof path, "%s/frames_xray", dir);
+  DIR *d = opendir(path);
+  int tmp = 0;
+  struct dirent *e;
+  while (d && (e = readdir(d))) tmp += strstr(e->d_name, ".tmp.") != NULL;
+  if (d) closedir(d);
+  CHECK(tmp == 0, "no temporary files left in the frames' folder (%d)", tmp);
+}
+
 int main(void)
 {
   test_kernel_column();
@@ -550,5 +870,6 @@ int main(void)
   test_plate();
   test_extremes();
   test_command();
+  test_series();
   return test_finish();
 }
