@@ -880,6 +880,56 @@ static void test_particle_columns(void)
   free(md);
 }
 
+/* Every complete case among the pages' examples (a ```yaml block with `bodies:` and
+ * `time:`) sets up: an example a reader copies must run. */
+static void test_example_blocks(void)
+{
+  static const char *const pages[] = {"../README.md", "case-files.md", "units.md",
+                                      "verification.md", "validation.md", "models.md"};
+  struct text failed = {0};
+  int nblocks = 0, nfailed = 0;
+  for (size_t k = 0; k < sizeof pages / sizeof pages[0]; k++) {
+    char *md = NULL;
+    if (!strncmp(pages[k], "../", 3)) {   /* the README of this source tree */
+      char path[4400];
+      snprintf(path, sizeof path, "%s/%s", test_source_dir(), pages[k] + 3);
+      md = test_slurp(path, NULL);
+      CHECK(md != NULL, "%s can be read", path);
+    } else {
+      md = read_doc(pages[k]);
+    }
+    int line = 1;
+    for (const char *p = md; p && *p; p = next_line(p), line++) {
+      if (strncmp(p, "```yaml", 7) || p[7] != '\n') continue;
+      const int start = line;
+      struct text block = {0};
+      for (p = next_line(p), line++; *p && !is_fence(p); p = next_line(p), line++)
+        text_add(&block, "%.*s\n", (int)line_len(p), p);
+      const char *b = text_str(&block);
+      if (strstr(b, "\nbodies:") && (strstr(b, "\ntime:") || !strncmp(b, "time:", 5))) {
+        char name[64], dir[4400], args[9000], out[16384];
+        snprintf(name, sizeof name, "example_%d.yaml", nblocks);
+        const char *path = test_write_file(name, b);
+        snprintf(dir, sizeof dir, "%.4000s/runs/example_%d", test_tmpdir(), nblocks);
+        snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set time.end=0", path, dir);
+        const int rc = hvsph(args, out, sizeof out);
+        nblocks++;
+        if (rc != 0) {
+          nfailed++;
+          text_add(&failed, "\n      %s:%d: exit %d: %.*s", pages[k], start, rc,
+                   first_len(out), out);
+        }
+      }
+      text_free(&block);
+      if (!*p) break;
+    }
+    free(md);
+  }
+  CHECK(nblocks >= 6 && nfailed == 0, "the %d complete example cases of README.md and docs/ "
+        "set up with time.end=0%s%s", nblocks, nfailed ? "; failed:" : "", text_str(&failed));
+  text_free(&failed);
+}
+
 /* The quantities of measurements.md's table in its section measurements.csv: "name\tunit". */
 static void doc_quantities(const char *sec, size_t slen, struct text *q)
 {
@@ -997,6 +1047,7 @@ int main(void)
   CHECK(sod != NULL, "examples/verification/sod.yaml is among the cases");
   if (sod) test_summary_columns(sod);
   test_particle_columns();
+  test_example_blocks();
   test_measurement_quantities(ex, n);
   return test_finish();
 }
