@@ -37,6 +37,7 @@ static void render_usage(FILE *f)
           "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
           "  --mu M                        film mass attenuation [m2/kg] (default %g)\n"
           "  --range LO,HI                 colour range of the quantity (units allowed)\n"
+          "  --quiet, -q                   no line per picture written (warnings and errors only)\n"
           "see docs/rendering.md\n",
           RENDER_MU_DEFAULT);
 }
@@ -146,7 +147,8 @@ int render_main(int argc, char **argv)
         return HV_EXIT_USAGE;
       }
       o.have_box = 1;
-    } else if (!strcmp(opt, "--mirror")) o.mirror = 1;
+    } else if (!strcmp(opt, "--quiet") || !strcmp(opt, "-q")) hv_log_level = 1;
+    else if (!strcmp(opt, "--mirror")) o.mirror = 1;
     else if (!strcmp(opt, "--no-mirror")) o.mirror = 0;
     else if (!strcmp(opt, "--mu")) {
       char *end;

@@ -653,6 +653,13 @@ static void test_series(void)
   snprintf(args, sizeof args, "%s/frames_xray/frame_%%05d.png -pix_fmt yuv420p", dir);
   CHECK(strstr(out, "ffmpeg -framerate 10 -i ") && strstr(out, args),
         "the last line names the folder and an ffmpeg command: %s", out);
+  /* --quiet: the same frames, not a line said */
+  snprintf(args, sizeof args, "'%s' -o '%s/frames_quiet' --size 400 --quiet", run_dir, dir);
+  st = run(args, out, sizeof out);
+  snprintf(path, sizeof path, "%s/frames_quiet", dir);
+  n = count_frames(path, &last);
+  CHECK(st == 0 && n == nsnap && out[0] == '\0', "--quiet: exit %d, %d frames (%d), nothing "
+        "said: '%s'", st, n, nsnap, out);
   int w0 = 0, h0 = 0, same = 1;
   for (int k = 0; k < nsnap; k++) {
     int w = 0, h = 0;
