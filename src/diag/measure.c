@@ -658,14 +658,21 @@ int measure_gas_front(const struct particles *p, const struct meas_gas_params *p
     return hv_error_set(err, HV_EXIT_INPUT, "gas front measurement: rho_ref and factor must be "
                         "positive, r_axis >= 0 and the origin finite");
   const double rho_s = par->factor * par->rho_ref;
+  size_t on_axis = 0;
   for (size_t i = 0; i < p->n; i++) {
     if (!taken(p, i, par->body, par->mask) || !(p->rho[i] > rho_s)) continue;
     const double dx = p->x[0][i] - par->origin[0];
     const double ra = hypot(p->x[1][i] - par->origin[1], p->x[2][i] - par->origin[2]);
     out->n_shocked++;
-    if (ra <= par->r_axis && dx > out->x_axial) out->x_axial = dx;
+    if (ra <= par->r_axis) {
+      on_axis++;
+      if (dx > out->x_axial) out->x_axial = dx;
+    }
     out->r_radial = fmax(out->r_radial, ra);
     out->r_max = fmax(out->r_max, hypot(dx, ra));
   }
+  /* shocked gas, but none on the axis (debris has pushed the gas off it): the front on
+     the axis is not at the origin, it is not there to be read */
+  if (out->n_shocked && !on_axis) out->x_axial = NAN;
   return 0;
 }

@@ -330,7 +330,8 @@ double measure_center_pressure(const struct particles *p, const struct meas_geom
  * inner face), with the axis through it along +x:
  * x_axial: the largest x − origin_x among shocked particles within r_axis of the axis;
  * r_radial: the largest distance from the axis among shocked particles;
- * r_max: the largest distance from the origin. 0 when nothing is shocked. */
+ * r_max: the largest distance from the origin. 0 when nothing is shocked; x_axial NaN
+ * when gas is shocked but none within r_axis of the axis. */
 struct meas_gas_params {
   int body;          /* gas body (< 0: any) */
   double rho_ref;    /* [kg/m3] initial (undisturbed) gas density */

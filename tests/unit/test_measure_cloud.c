@@ -175,9 +175,17 @@ static void test_gas(void)
   CHECK(fabs(r.x_axial - R) <= S, "axial front %.3fΔ at R = %.1fΔ within Δ", r.x_axial / S, R / S);
   CHECK(fabs(r.r_radial - R) <= S, "radial front %.3fΔ within Δ", r.r_radial / S);
   CHECK(fabs(r.r_max - R) <= S, "front distance %.3fΔ within Δ", r.r_max / S);
+  /* the shocked hemisphere with its core on the axis at rest: shocked gas, none within
+     r_axis (2Δ) of the axis — the axial front is undefined, not 0 */
+  for (size_t q = 0; q + 1 < p.n; q++)
+    if (hypot(p.x[1][q], p.x[2][q]) <= 3.0 * S) p.rho[q] = rho0;
+  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked > 1000 &&
+            isnan(r.x_axial) && fabs(r.r_radial - R) <= S,
+        "nothing shocked on the axis: axial front NaN (%g), radial %.3fΔ, %zu shocked",
+        r.x_axial, r.r_radial / S, r.n_shocked);
   par.factor = 2.5;
-  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked == 0 && r.r_max == 0,
-        "factor 2.5: nothing shocked");
+  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked == 0 && r.r_max == 0 &&
+            r.x_axial == 0, "factor 2.5: nothing shocked, all 0");
   par.factor = 1.1;
   par.rho_ref = 0;
   hv_error_clear(&err);
