@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make demo`: a Whipple-shield impact (the paper's W.P.1: a 5 mm aluminium sphere at
 # 6.5 km/s through a 1.5 mm aluminium bumper), coarse enough to finish in a few minutes
-# on 2 cores; ends by writing a simulated flash radiograph and the measurements.
+# on 2 cores; ends by writing a simulated flash radiograph, movie frames and the
+# measurements.
 set -euo pipefail
 build=${1:-build}
 case=examples/paper/wp1.yaml
@@ -12,15 +13,20 @@ echo "hvsph demo: $case at resolution $res (particle counts x $res), to t = 30 u
 # the backwall by 30 us, so at the demo's resolution the disc is as coarse as the plate
 # around it (at least three layers otherwise: 30 000 of the demo's 43 000 particles)
 "$build/hvsph" run "$case" -o "$out" --threads "${HVSPH_THREADS:-2}" \
-  --set resolution="$res" --set time.end="30 us" --set output.every="10 us" --set output.csv=true \
+  --set resolution="$res" --set time.end="30 us" --set output.every="2 us" --set output.csv=true \
   --set bodies[4].particles=1000
 last=$(ls "$out"/particles_*.csv | sort | tail -n 1)
 "$build/hvsph" render "$last" -o "$out/radiograph.png" --mode radiograph --axis z --mu 1
 "$build/hvsph" render "$last" -o "$out/side_velocity.png" --mode particles --axis z --color velocity
+# every snapshot as a frame of a movie, framed and coloured alike
+"$build/hvsph" render "$out" -o "$out/frames" --mode particles --axis z --color velocity \
+  --size 960 --quiet
 echo
 echo "Results in $out/:"
 echo "  radiograph.png        simulated flash x-ray of the debris cloud (side view, mirrored)"
 echo "  side_velocity.png     particles coloured by speed"
+echo "  frames/               every snapshot (2 us apart) coloured by speed, for a movie:"
+echo "                        ffmpeg -framerate 5 -i $out/frames/frame_%05d.png -pix_fmt yuv420p demo.mp4"
 echo "  measurements.csv      hole diameter, debris-cloud velocities and spray angle, fragments"
 echo "  summary.csv           totals (mass, momentum, energies) at each output time"
 echo "  run.pvd               open in ParaView (particles_*.vtu, one per output time)"
