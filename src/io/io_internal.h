@@ -19,4 +19,10 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
 int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
                      const char *suffix, int xml_comment, struct hv_error *err);
 
+/* The value of the attribute `name` in the XML tag [s, end) (the tag's text from its
+ * '<'), the five character entities decoded, into buf (len bytes); -1 when the tag has no
+ * such attribute, its value is not closed or does not fit, or holds another entity
+ * (hvsph's writers write none). Reads the VTU and PVD files back. */
+int io_xml_attr(const char *s, const char *end, const char *name, char *buf, size_t len);
+
 #endif

@@ -249,10 +249,7 @@ const char *io_list_readable_snapshots(const char *dir, int **nums, int *n)
   return "vtu";
 }
 
-/* The value of the attribute `name` in the XML tag [s, end), the five character entities
- * decoded, into buf; -1 when the tag has no such attribute, its value is not closed or
- * does not fit, or holds another entity (io_write_pvd writes none). */
-static int xml_attr(const char *s, const char *end, const char *name, char *buf, size_t len)
+int io_xml_attr(const char *s, const char *end, const char *name, char *buf, size_t len)
 {
   static const struct {
     const char *ent;
@@ -270,8 +267,8 @@ static int xml_attr(const char *s, const char *end, const char *name, char *buf,
       char c = *v++;
       if (c == '&') {
         size_t e = 0;
-        while (e < sizeof ents / sizeof ents[0] &&
-               ((size_t)(end - v) < strlen(ents[e].ent) || strncmp(v, ents[e].ent, strlen(ents[e].ent))))
+        while (e < sizeof ents / sizeof ents[0] && ((size_t)(end - v) < strlen(ents[e].ent) ||
+                                                    strncmp(v, ents[e].ent, strlen(ents[e].ent))))
           e++;
         if (e == sizeof ents / sizeof ents[0]) return -1;
         c = ents[e].c;
@@ -315,8 +312,8 @@ int io_read_pvd(const char *path, double **times, char ***files, struct hv_error
   for (const char *q = text; !rc && (q = strstr(q, "<DataSet")) != NULL; n++) {
     const char *end = strchr(q, '>');
     char name[4096], ts[128], *tend;
-    if (!end || xml_attr(q, end, "file", name, sizeof name) ||
-        xml_attr(q, end, "timestep", ts, sizeof ts)) {
+    if (!end || io_xml_attr(q, end, "file", name, sizeof name) ||
+        io_xml_attr(q, end, "timestep", ts, sizeof ts)) {
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: DataSet entry %d has no readable file and "
                         "timestep", path, n + 1);
       break;

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "io/io_internal.h"
 #include "io/snapshot.h"
 
 #define VTU_HEADER_MAX (16u << 20) /* the XML before the data: a few kB in practice */
@@ -29,26 +30,6 @@ struct vtu_array {
   int ncomp;
   long long offset;   /* from the byte after '_' */
 };
-
-/* The value of attribute `attr` inside the element text [s, end): copied into out
- * (len bytes); 0 found, -1 absent. */
-static int attr(const char *s, const char *end, const char *attr, char *out, size_t len)
-{
-  char key[64];
-  snprintf(key, sizeof key, " %s=\"", attr);
-  const size_t kl = strlen(key);
-  for (const char *q = s; q + kl < end; q++) {
-    if (memcmp(q, key, kl) != 0) continue;
-    const char *v = q + kl, *close = memchr(v, '"', (size_t)(end - v));
-    if (!close) return -1;
-    size_t n = (size_t)(close - v);
-    if (n >= len) n = len - 1;
-    memcpy(out, v, n);
-    out[n] = '\0';
-    return 0;
-  }
-  return -1;
-}
 
 static size_t vtk_size(const char *type)
 {
@@ -89,14 +70,14 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   const char *fe = strchr(file, '>');
   if (!fe) return bad(err, path, "unterminated <VTKFile> element");
   char v[64];
-  if (attr(file, fe, "type", v, sizeof v) || strcmp(v, "UnstructuredGrid"))
+  if (io_xml_attr(file, fe, "type", v, sizeof v) || strcmp(v, "UnstructuredGrid"))
     return bad(err, path, "not an UnstructuredGrid");
-  if (attr(file, fe, "header_type", v, sizeof v) || strcmp(v, "UInt64"))
+  if (io_xml_attr(file, fe, "header_type", v, sizeof v) || strcmp(v, "UInt64"))
     return bad(err, path, "block headers are not UInt64");
   const unsigned short one = 1;
   unsigned char little;
   memcpy(&little, &one, 1);
-  if (attr(file, fe, "byte_order", v, sizeof v) ||
+  if (io_xml_attr(file, fe, "byte_order", v, sizeof v) ||
       strcmp(v, little ? "LittleEndian" : "BigEndian"))
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': written in the other byte order (%s); "
                         "this machine reads only its own", path, v);
@@ -104,7 +85,8 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   if (!piece) return bad(err, path, "no <Piece> element");
   const char *pe = strchr(piece, '>');
   char *stop;
-  if (!pe || attr(piece, pe, "NumberOfPoints", v, sizeof v)) return bad(err, path, "no NumberOfPoints");
+  if (!pe || io_xml_attr(piece, pe, "NumberOfPoints", v, sizeof v))
+    return bad(err, path, "no NumberOfPoints");
   errno = 0;
   long long np = strtoll(v, &stop, 10);
   if (stop == v || *stop || np < 0 || errno) return bad(err, path, "NumberOfPoints is not a count");
@@ -126,7 +108,7 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   const char *piece2 = strstr(pe, "<Piece");
   if (piece2 && piece2 < app) return bad(err, path, "more than one <Piece>");
   const char *ae = strchr(app, '>');
-  if (!ae || attr(app, ae, "encoding", v, sizeof v) || strcmp(v, "raw"))
+  if (!ae || io_xml_attr(app, ae, "encoding", v, sizeof v) || strcmp(v, "raw"))
     return bad(err, path, "appended data not raw");
   const char *us = memchr(ae, '_', (size_t)(end - ae));
   if (!us) return bad(err, path, "no '_' before the appended data");
@@ -141,11 +123,12 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
     if (vh->narr == VTU_MAX_ARRAYS) return bad(err, path, "too many arrays");
     struct vtu_array *a = &vh->arr[vh->narr];
     char fmt[16] = "", nc[16] = "1", off[32];
-    if (attr(d, de, "Name", a->name, sizeof a->name) || attr(d, de, "type", a->type, sizeof a->type))
+    if (io_xml_attr(d, de, "Name", a->name, sizeof a->name) ||
+        io_xml_attr(d, de, "type", a->type, sizeof a->type))
       return bad(err, path, "a DataArray without Name or type");
-    attr(d, de, "NumberOfComponents", nc, sizeof nc);
-    if (attr(d, de, "format", fmt, sizeof fmt) || strcmp(fmt, "appended") ||
-        attr(d, de, "offset", off, sizeof off))
+    io_xml_attr(d, de, "NumberOfComponents", nc, sizeof nc);
+    if (io_xml_attr(d, de, "format", fmt, sizeof fmt) || strcmp(fmt, "appended") ||
+        io_xml_attr(d, de, "offset", off, sizeof off))
       return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is not in the appended block",
                           path, a->name);
     for (int k = 0; k < vh->narr; k++)
