@@ -109,9 +109,13 @@ int remeasure_main(int argc, char **argv)
     casefile = path;
   }
   c = cfg_load(casefile, &err);
-  if (!c || run_setup(&s, c, &err) || measure_run_read(&mr, &s, c, &err) ||
-      cfg_check_unused(c, &err))
-    goto fail;
+  /* the set-up's notes and warnings (spacings fitted to a plate, a lattice that overfills
+     its shape) are the run's, which said them: not again (errors come back in err) */
+  const int level = hv_log_level;
+  hv_log_level = 0;
+  const int bad = !c || run_setup(&s, c, &err);
+  hv_log_level = level;
+  if (bad || measure_run_read(&mr, &s, c, &err) || cfg_check_unused(c, &err)) goto fail;
   if (!mr.any) {
     hv_error_set(&err, HV_EXIT_INPUT, "%s: the case has no 'measure' section: nothing to "
                  "measure (docs/case-files.md)", casefile);

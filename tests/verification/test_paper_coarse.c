@@ -67,6 +67,7 @@ int main(void)
         "hvsph measure reproduces the run's measurements.csv (exit %d): %s", st, out);
   CHECK(strstr(out, "particles_00007.csv") && strstr(out, "skipped"),
         "... skipping the stale particles_00007.csv: %s", out);
+  CHECK(!strstr(out, "so that its"), "... without the run's set-up notes again: %s", out);
   /* ... and from a folder that has only the VTU snapshots (a run's default output) */
   snprintf(cmd, sizeof cmd, "rm -rf %s/vtuonly && mkdir %s/vtuonly && cd %s/validation/bumper-1 "
            "&& cp used_parameters.yaml summary.csv particles_0000[0-2].vtu %s/vtuonly/ && "
