@@ -778,6 +778,27 @@ static char *csv_header(const char *text)
   return NULL;
 }
 
+/* Each of the names (separated by any of `sep`, in a string that is cut up) is set as
+ * code in the page section [sec, sec + slen): the count, with those missing listed in
+ * *missing and counted in *nmissing. */
+static int names_in_code(const char *sec, size_t slen, char *names, const char *sep,
+                         struct text *missing, int *nmissing)
+{
+  struct text code = {0};
+  md_code(sec, slen, &code);
+  int n = 0;
+  char *save = NULL;
+  for (char *w = strtok_r(names, sep, &save); w; w = strtok_r(NULL, sep, &save)) {
+    n++;
+    if (!has_word(text_str(&code), code.n, w)) {
+      (*nmissing)++;
+      text_add(missing, " `%s`", w);
+    }
+  }
+  text_free(&code);
+  return n;
+}
+
 static void test_summary_columns(const struct example *sod)
 {
   char *md = read_doc("output-files.md");
@@ -789,19 +810,11 @@ static void test_summary_columns(const struct example *sod)
   const char *sec = md ? md_section(md, "summary.csv", &slen) : NULL;
   CHECK(sec != NULL, "docs/output-files.md has a section \"## summary.csv\"");
   if (header && sec) {
-    struct text code = {0}, missing = {0};
-    md_code(sec, slen, &code);
-    int n = 0, nmissing = 0;
-    for (char *col = strtok(header, ","); col; col = strtok(NULL, ",")) {
-      n++;
-      if (!has_word(text_str(&code), code.n, col)) {
-        nmissing++;
-        text_add(&missing, " `%s`", col);
-      }
-    }
+    struct text missing = {0};
+    int nmissing = 0;
+    const int n = names_in_code(sec, slen, header, ",", &missing, &nmissing);
     CHECK(n >= 11 && nmissing == 0, "docs/output-files.md, section summary.csv, has every "
           "column of summary.csv (%d); %d missing:%s", n, nmissing, text_str(&missing));
-    text_free(&code);
     text_free(&missing);
   }
   free(header);
@@ -846,12 +859,10 @@ static void test_particle_columns(void)
       free(text);
       continue;
     }
-    struct text code = {0}, names = {0}, missing = {0};
-    md_code(sec, slen, &code);
+    struct text names = {0}, missing = {0};
     if (f == 0) {   /* the header line */
       char *header = csv_header(text);
-      for (char *col = header ? strtok(header, ",") : NULL; col; col = strtok(NULL, ","))
-        text_add(&names, "%s\n", col);
+      text_add(&names, "%s", header ? header : "");
       free(header);
     } else {        /* Name="..." of each DataArray, before the appended data */
       const char *end = strstr(text, "<AppendedData");
@@ -859,20 +870,11 @@ static void test_particle_columns(void)
            p = strstr(p + 1, "Name=\""))
         text_add(&names, "%.*s\n", (int)strcspn(p + 6, "\""), p + 6);
     }
-    int n = 0, nmissing = 0;
-    for (const char *p = text_str(&names); *p; p = next_line(p)) {
-      char w[128];
-      snprintf(w, sizeof w, "%.*s", (int)line_len(p), p);
-      n++;
-      if (!has_word(text_str(&code), code.n, w)) {
-        nmissing++;
-        text_add(&missing, " `%s`", w);
-      }
-    }
+    int nmissing = 0;
+    const int n = names.s ? names_in_code(sec, slen, names.s, ",\n", &missing, &nmissing) : 0;
     CHECK(n >= (f ? 17 : 28) && nmissing == 0, "docs/output-files.md, section %s, has every "
           "%s of %s (%d); %d missing:%s", sections[f], f ? "array" : "column", file, n,
           nmissing, text_str(&missing));
-    text_free(&code);
     text_free(&names);
     text_free(&missing);
     free(text);
