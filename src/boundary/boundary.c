@@ -25,6 +25,7 @@ void boundary_free(struct boundary *b)
 {
   free(b->src);
   free(b->flip);
+  free(b->side);
   boundary_init(b);
 }
 
@@ -134,27 +135,26 @@ static void apply_flip(struct particles *p, size_t g, uint8_t flip)
     }
 }
 
-/* A ghost of slot src (a real or an earlier ghost), with extra mirror flips. */
-static size_t add_ghost(struct boundary *b, struct particles *p, size_t src, uint8_t flip)
+/* Room for `count` more ghosts: particle slots and the ghost tables. */
+static void reserve_ghosts(struct boundary *b, struct particles *p, size_t count)
 {
-  size_t g = p->n + p->n_ghost;
-  particles_reserve(p, g + 1);
-  particles_touch(p, g);
-  if (p->n_ghost + 1 > b->cap) {
-    b->cap = 2 * (p->n_ghost + 1) + 1024;
+  const size_t total = p->n + p->n_ghost + count;
+  particles_reserve(p, total);
+  particles_touch(p, total - 1);
+  if (p->n_ghost + count > b->cap) {
+    b->cap = 2 * (p->n_ghost + count) + 1024;
     b->src = hv_realloc(b->src, b->cap * sizeof *b->src, "ghost sources");
     b->flip = hv_realloc(b->flip, b->cap * sizeof *b->flip, "ghost flips");
+    b->side = hv_realloc(b->side, b->cap * sizeof *b->side, "ghost faces");
   }
-  particles_copy(p, g, src, PF_GHOST);
-  uint8_t total = flip ^ (src >= p->n ? b->flip[src - p->n] : 0);
-  /* the copy carries the source's (already flipped) values: flip only the new mirror */
-  apply_flip(p, g, flip);
-  b->src[p->n_ghost] = (uint32_t)src;
-  b->flip[p->n_ghost] = total;
-  p->n_ghost++;
-  return g;
 }
 
+/* The ghosts are made one dimension after the other, so that the ghosts of a corner are
+ * ghosts of ghosts. Within a dimension the sources are reals and the earlier dimensions'
+ * ghosts only: the dimension's ghosts are listed (source and face, in the order of the
+ * sources and faces), then copied from their sources in parallel, then mirrored or
+ * shifted. b->gstart[d]: the ghost count before dimension d, b->gstart[3] the total
+ * (boundary_refresh_ghosts copies one dimension's ghosts at a time for the same reason). */
 int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, char *msg,
                          size_t msglen)
 {
@@ -162,29 +162,53 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
   for (int d = 0; d < 3; d++) {
     const double lo = b->lo[d], hi = b->hi[d], L = hi - lo;
     const size_t nsrc = p->n + p->n_ghost;
+    b->gstart[d] = p->n_ghost;
     if (b->kind[d][0] == BND_PERIODIC && L < 2.0 * width) {
       snprintf(msg, msglen, "the periodic domain is %.6g m long in %c, less than two "
                "interaction radii (2 x %.6g m)", L, "xyz"[d], width);
       return -1;
     }
-    for (size_t i = 0; i < nsrc; i++) {
-      const double xi = p->x[d][i];
+    int make[2];
+    for (int s = 0; s < 2; s++)
+      make[s] = b->kind[d][s] != BND_OPEN && b->kind[d][s] != BND_ABSORBING;
+    if (!make[0] && !make[1]) continue;
+    size_t count = 0;
+    for (size_t i = 0; i < nsrc; i++)
+      count += (make[0] && p->x[d][i] < lo + width) + (make[1] && p->x[d][i] > hi - width);
+    if (count == 0) continue;
+    reserve_ghosts(b, p, count);   /* may move the particle arrays */
+    const double *x = p->x[d];
+    const size_t k0 = p->n_ghost, g0 = nsrc;
+    size_t k = k0;
+    for (size_t i = 0; i < nsrc; i++)
       for (int s = 0; s < 2; s++) {
-        const int kind = b->kind[d][s];
-        const double face = s ? hi : lo;
-        const int near = s ? (xi > hi - width) : (xi < lo + width);
-        if (kind == BND_OPEN || kind == BND_ABSORBING || !near) continue;
-        if (kind == BND_PERIODIC) {
-          size_t g = add_ghost(b, p, i, 0);
-          p->x[d][g] = xi + (s ? -L : L);
-        } else { /* wall or symmetry plane: mirror */
-          size_t g = add_ghost(b, p, i, mirror_flip(d));
-          p->x[d][g] = 2.0 * face - xi;
-          p->v[d][g] = -p->v[d][i];
-        }
+        if (!make[s] || !(s ? (x[i] > hi - width) : (x[i] < lo + width))) continue;
+        b->src[k] = (uint32_t)i;
+        b->side[k] = (uint8_t)s;
+        k++;
+      }
+    particles_copy_many(p, g0, b->src + k0, count, PF_GHOST);
+    const uint8_t mflip = mirror_flip(d);
+    double *xd = p->x[d], *vd = p->v[d];
+#pragma omp parallel for schedule(static)
+    for (size_t q = 0; q < count; q++) {
+      const size_t kk = k0 + q, g = g0 + q, src = b->src[kk];
+      const int s = b->side[kk];
+      const uint8_t prev = src >= p->n ? b->flip[src - p->n] : 0;
+      if (b->kind[d][s] == BND_PERIODIC) {
+        b->flip[kk] = prev;
+        xd[g] = xd[src] + (s ? -L : L);
+      } else {   /* wall or symmetry plane: mirror; the copy carries the source's
+                    (already flipped) values, so flip only the new mirror */
+        b->flip[kk] = mflip ^ prev;
+        apply_flip(p, g, mflip);
+        xd[g] = 2.0 * (s ? hi : lo) - xd[src];
+        vd[g] = -vd[src];
       }
     }
+    p->n_ghost += count;
   }
+  b->gstart[3] = p->n_ghost;
   return 0;
 }
 
@@ -223,38 +247,48 @@ size_t boundary_absorb(struct boundary *b, struct particles *p)
 
 void boundary_refresh_gradv(const struct boundary *b, size_t n, size_t n_ghost, double *G)
 {
-  for (size_t k = 0; k < n_ghost; k++) {
-    const size_t g = n + k, s = b->src[k];
-    const uint8_t flip = b->flip[k] ^ (s >= n ? b->flip[s - n] : 0);
-    double *Gg = G + 9 * g;
-    for (int t = 0; t < 9; t++) Gg[t] = G[9 * s + t];
-    /* a mirror normal to axis d reverses v_d and x_d, so ∂v_a/∂x_b changes sign when
-       exactly one of a, b is d: the off-diagonal pairs whose shear bits the mirrors set
-       (bit 0: xy, 1: yz, 2: xz); the diagonal never does */
-    if (flip & 1u) { Gg[1] = -Gg[1]; Gg[3] = -Gg[3]; }
-    if (flip & 2u) { Gg[5] = -Gg[5]; Gg[7] = -Gg[7]; }
-    if (flip & 4u) { Gg[2] = -Gg[2]; Gg[6] = -Gg[6]; }
+  for (int d = 0; d < 3; d++) {   /* one dimension's ghosts at a time: see refresh_ghosts */
+    const size_t k0 = b->gstart[d], k1 = b->gstart[d + 1] < n_ghost ? b->gstart[d + 1] : n_ghost;
+#pragma omp parallel for schedule(static)
+    for (size_t k = k0; k < k1; k++) {
+      const size_t g = n + k, s = b->src[k];
+      const uint8_t flip = b->flip[k] ^ (s >= n ? b->flip[s - n] : 0);
+      double *Gg = G + 9 * g;
+      for (int t = 0; t < 9; t++) Gg[t] = G[9 * s + t];
+      /* a mirror normal to axis d reverses v_d and x_d, so ∂v_a/∂x_b changes sign when
+         exactly one of a, b is d: the off-diagonal pairs whose shear bits the mirrors set
+         (bit 0: xy, 1: yz, 2: xz); the diagonal never does */
+      if (flip & 1u) { Gg[1] = -Gg[1]; Gg[3] = -Gg[3]; }
+      if (flip & 2u) { Gg[5] = -Gg[5]; Gg[7] = -Gg[7]; }
+      if (flip & 4u) { Gg[2] = -Gg[2]; Gg[6] = -Gg[6]; }
+    }
   }
 }
 
 void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
 {
-  /* in creation order, so a ghost made from a ghost copies an already refreshed,
-   * already mirrored source, and adds only its own mirror */
-  for (size_t k = 0; k < p->n_ghost; k++) {
-    const size_t g = p->n + k, s = b->src[k];
-    p->rho[g] = p->rho[s];
-    p->p[g] = p->p[s];
-    p->cs[g] = p->cs[s];
-    p->e[g] = p->e[s];
-    if (p->av) p->alpha[g] = p->alpha[s];
-    if (p->solid) {
-      for (int c = 0; c < 6; c++) {
-        p->S[c][g] = p->S[c][s];
-        p->R[c][g] = p->R[c][s];
+  /* a ghost made from a ghost (a corner's) copies an already refreshed, already
+   * mirrored source of an earlier dimension, and adds only its own mirror: the ghosts of
+   * one dimension at a time, in parallel within it */
+  const size_t n = p->n;
+  for (int d = 0; d < 3; d++) {
+    const size_t k0 = b->gstart[d], k1 = b->gstart[d + 1] < p->n_ghost ? b->gstart[d + 1] : p->n_ghost;
+#pragma omp parallel for schedule(static)
+    for (size_t k = k0; k < k1; k++) {
+      const size_t g = n + k, s = b->src[k];
+      p->rho[g] = p->rho[s];
+      p->p[g] = p->p[s];
+      p->cs[g] = p->cs[s];
+      p->e[g] = p->e[s];
+      if (p->av) p->alpha[g] = p->alpha[s];
+      if (p->solid) {
+        for (int c = 0; c < 6; c++) {
+          p->S[c][g] = p->S[c][s];
+          p->R[c][g] = p->R[c][s];
+        }
+        p->damage[g] = p->damage[s];
+        apply_flip(p, g, b->flip[k] ^ (s >= n ? b->flip[s - n] : 0));
       }
-      p->damage[g] = p->damage[s];
-      apply_flip(p, g, b->flip[k] ^ (s >= p->n ? b->flip[s - p->n] : 0));
     }
   }
 }

@@ -42,6 +42,8 @@ struct boundary {
   uint32_t *src;         /* [ghost] source slot of each ghost */
   uint8_t *flip;         /* [ghost] shear components reversed by mirrors: bit k for
                             tensor component T_XY + k (xy, yz, xz) */
+  uint8_t *side;         /* [ghost] the face (0 min, 1 max) it was made for */
+  size_t gstart[4];      /* ghosts made before dimension d's; [3] all of them */
 };
 
 void boundary_init(struct boundary *b);

@@ -202,6 +202,33 @@ void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_
 #undef HV_X
 }
 
+void particles_copy_many(struct particles *p, size_t dst, const uint32_t *src, size_t count,
+                         unsigned flags_mask)
+{
+  if (count == 0) return;
+  struct pfield f[HV_MAX_FIELDS];
+  const int nf = particles_fields(p, f);
+#pragma omp parallel
+  for (int i = 0; i < nf; i++) {
+    if (!(f[i].flags & flags_mask)) continue;
+    for (int c = 0; c < f[i].ncomp; c++) {
+      if (f[i].type == PF_INT32) {
+        int32_t *a = f[i].comp[c];
+#pragma omp for schedule(static)
+        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
+      } else if (f[i].type == PF_INT64) {
+        int64_t *a = f[i].comp[c];
+#pragma omp for schedule(static)
+        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
+      } else {
+        double *a = f[i].comp[c];
+#pragma omp for schedule(static)
+        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
+      }
+    }
+  }
+}
+
 void particles_permute(struct particles *p, const uint32_t *order)
 {
   size_t n = p->n;

@@ -131,6 +131,11 @@ void particles_touch(struct particles *p, size_t slot);
 size_t particles_add(struct particles *p, size_t count);
 /* Copies every field of slot src into slot dst (either may be a ghost slot). */
 void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask);
+/* Copies the fields with a flag in flags_mask of slots src[0..count) into dst, dst + 1,
+ * …, in parallel: no src[k] may lie in [dst, dst + count), and those slots must be
+ * reserved and touched. */
+void particles_copy_many(struct particles *p, size_t dst, const uint32_t *src, size_t count,
+                         unsigned flags_mask);
 /* Reorders the reals: new slot k takes old slot order[k]. `order` is a permutation of [0, n). */
 void particles_permute(struct particles *p, const uint32_t *order);
 /* Removes the reals with remove[i] != 0, keeping the others' order; returns the count removed. */

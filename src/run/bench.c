@@ -89,7 +89,8 @@ int bench_main(const struct bench_options *o)
   for (size_t i = 0; i < n; i += n / 64 + 1) nb += sph_count_neighbours(&s.p, &s.grid, i);
   nb /= (double)((n - 1) / (n / 64 + 1) + 1);
   size_t arrays = s.p.touched * particles_bytes_per_particle(&s.p) + nbr_grid_bytes(&s.grid) +
-                  s.bnd.cap * sizeof *s.bnd.src + sph_cache_bytes(&s.cache);
+                  s.bnd.cap * (sizeof *s.bnd.src + sizeof *s.bnd.flip + sizeof *s.bnd.side) +
+                  sph_cache_bytes(&s.cache);
   long rss = peak_rss_kib();
   printf("particles            %zu (%ld^3 lattice, periodic, %s)\n", n, side,
          o->solid ? "al-alloy with strength and fracture" : "ideal gas");

@@ -182,11 +182,20 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
   return k;
 }
 
+/* Whether particle i of cell c has any neighbour: the answer only, so the cells are
+ * searched in any order, c itself first (in a lattice at rest, where the resting cells
+ * ask this every step, it holds one within reach nearly always). */
 int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i)
 {
   const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
+  for (uint32_t jj = g->cell_start[c]; jj < g->cell_start[c + 1]; jj++) {
+    const uint32_t j = g->order[jj];
+    const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
+    if (cand_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
+  }
   for (uint32_t k = g->nbr_start[c]; k < g->nbr_start[c + 1]; k++) {
     const int32_t nb = g->nbr_list[k];
+    if ((size_t)nb == c) continue;
     for (uint32_t jj = g->cell_start[nb]; jj < g->cell_start[nb + 1]; jj++) {
       const uint32_t j = g->order[jj];
       const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
