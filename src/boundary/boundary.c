@@ -107,13 +107,20 @@ void boundary_apply(const struct boundary *b, struct particles *p)
       }
       continue;
     }
+    /* v0, the step's start velocity, is mirrored too: a particle that crosses the face
+       in the predictor (step.c) takes its corrector's velocity v0 + Δt a from it, and
+       with v0 unmirrored it ran back into the face for the step's second half, ending
+       it where it began (test_timestep, part 5); at the step's end v0 is spent */
+    double *v0 = p->v0[d];
     for (size_t i = 0; i < p->n; i++) {
       if (is_mirror(b->kind[d][0]) && x[i] < lo) {
         x[i] = 2.0 * lo - x[i];
         if (v[i] < 0.0) v[i] = -v[i];
+        if (v0[i] < 0.0) v0[i] = -v0[i];
       } else if (is_mirror(b->kind[d][1]) && x[i] > hi) {
         x[i] = 2.0 * hi - x[i];
         if (v[i] > 0.0) v[i] = -v[i];
+        if (v0[i] > 0.0) v0[i] = -v0[i];
       }
     }
   }
