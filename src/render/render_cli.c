@@ -182,20 +182,19 @@ int render_main(int argc, char **argv)
     o.have_range = 1;
   }
   if (o.mode == RENDER_RADIOGRAPH && o.color != RENDER_COLOR_MATERIAL)
-    fprintf(stderr, "hvsph render: note: --color applies to --mode particles only\n");
+    hv_info("note: --color applies to --mode particles only");
   if (o.mode == RENDER_PARTICLES && o.axis == 2 && o.mirror == 1)
-    fprintf(stderr, "hvsph render: note: particles seen along z are not mirrored (the view "
-                    "shows the cut at z = 0)\n");
+    hv_info("note: particles seen along z are not mirrored (the view shows the cut at "
+            "z = 0)");
   struct hv_error err;
   hv_error_clear(&err);
   if (series) {
     if (stat(out, &st) == 0 && !S_ISDIR(st.st_mode)) {
-      fprintf(stderr, "hvsph render: -o '%s' is a file: the frames of run folder '%s' go into a "
-              "folder\n", out, in);
+      hv_log(0, "-o '%s' is a file: the frames of run folder '%s' go into a folder", out, in);
       return HV_EXIT_INPUT;
     }
     if (render_series(in, out, &o, &err)) {
-      fprintf(stderr, "hvsph render: %s\n", err.msg);
+      hv_log(0, "%s", err.msg);
       return err.code ? err.code : HV_EXIT_RUN;
     }
     return HV_EXIT_OK;
@@ -216,7 +215,7 @@ int render_main(int argc, char **argv)
   }
   particles_free(&p);
   if (rc) {
-    fprintf(stderr, "hvsph render: %s\n", err.msg);
+    hv_log(0, "%s", err.msg);
     return err.code ? err.code : HV_EXIT_RUN;
   }
   return HV_EXIT_OK;

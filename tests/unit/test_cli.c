@@ -243,7 +243,7 @@ static void failed_run(const char *name, const char *extra, const char *const *w
 
 static void test_commands(void)
 {
-  char out[16384];
+  char out[16384], args0[9000];
   int rc = hvsph("--help", out, sizeof out); /* stderr only: must be empty */
   CHECK(rc == 0 && out[0] == '\0', "--help exits 0 (%d) and writes nothing to stderr", rc);
   char cmd[4400];
@@ -280,6 +280,15 @@ static void test_commands(void)
    * tree without its history, not a `git archive` tarball, no -DHVSPH_VERSION */
   CHECK(strcmp(version, "unknown") || !strcmp(HVSPH_VERSION_SOURCE, "none"),
         "the version is known (from %s): '%s'", HVSPH_VERSION_SOURCE, version);
+
+  /* render's errors read as every command's: one "hvsph: error: " line (they read
+   * "hvsph render: " before session 58) */
+  snprintf(args0, sizeof args0, "render '%s' -o '%s'", path_of("missing.vtu"), path_of("missing.png"));
+  rc = hvsph(args0, out, sizeof out);
+  CHECK(rc == 2 && !strncmp(out, "hvsph: error: cannot open '", 27) &&
+            strchr(out, '\n') == out + strlen(out) - 1,
+        "render of a missing snapshot: exit %d (want 2), one line 'hvsph: error: cannot open "
+        "...': %.200s", rc, out);
 
   /* the version is the one written into the outputs */
   const char *casefile = test_write_file("base.yaml", variant(0, ""));
