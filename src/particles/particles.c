@@ -202,6 +202,28 @@ void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_
 #undef HV_X
 }
 
+/* out[k] = in[idx[k]] for k < count, elements of type t: a work-sharing loop inside a
+ * parallel region, a plain one outside. */
+static void gather(enum pf_type t, void *out, const void *in, const uint32_t *idx, size_t count)
+{
+  if (t == PF_INT32) {
+    int32_t *o = out;
+    const int32_t *a = in;
+#pragma omp for schedule(static)
+    for (size_t k = 0; k < count; k++) o[k] = a[idx[k]];
+  } else if (t == PF_INT64) {
+    int64_t *o = out;
+    const int64_t *a = in;
+#pragma omp for schedule(static)
+    for (size_t k = 0; k < count; k++) o[k] = a[idx[k]];
+  } else {
+    double *o = out;
+    const double *a = in;
+#pragma omp for schedule(static)
+    for (size_t k = 0; k < count; k++) o[k] = a[idx[k]];
+  }
+}
+
 void particles_copy_many(struct particles *p, size_t dst, const uint32_t *src, size_t count,
                          unsigned flags_mask)
 {
@@ -211,21 +233,9 @@ void particles_copy_many(struct particles *p, size_t dst, const uint32_t *src, s
 #pragma omp parallel
   for (int i = 0; i < nf; i++) {
     if (!(f[i].flags & flags_mask)) continue;
-    for (int c = 0; c < f[i].ncomp; c++) {
-      if (f[i].type == PF_INT32) {
-        int32_t *a = f[i].comp[c];
-#pragma omp for schedule(static)
-        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
-      } else if (f[i].type == PF_INT64) {
-        int64_t *a = f[i].comp[c];
-#pragma omp for schedule(static)
-        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
-      } else {
-        double *a = f[i].comp[c];
-#pragma omp for schedule(static)
-        for (size_t k = 0; k < count; k++) a[dst + k] = a[src[k]];
-      }
-    }
+    const size_t size = pf_type_size(f[i].type);
+    for (int c = 0; c < f[i].ncomp; c++)
+      gather(f[i].type, (char *)f[i].comp[c] + dst * size, f[i].comp[c], src, count);
   }
 }
 
@@ -236,23 +246,11 @@ void particles_permute(struct particles *p, const uint32_t *order)
   void *tmp = hv_malloc(n * 8, "permutation buffer");
   struct pfield f[HV_MAX_FIELDS];
   int nf = particles_fields(p, f);
-  for (int i = 0; i < nf; i++) {
+  for (int i = 0; i < nf; i++)
     for (int c = 0; c < f[i].ncomp; c++) {
-      if (f[i].type == PF_INT32) {
-        int32_t *a = f[i].comp[c], *t = tmp;
-        for (size_t k = 0; k < n; k++) t[k] = a[order[k]];
-        memcpy(a, t, n * sizeof *a);
-      } else if (f[i].type == PF_INT64) {
-        int64_t *a = f[i].comp[c], *t = tmp;
-        for (size_t k = 0; k < n; k++) t[k] = a[order[k]];
-        memcpy(a, t, n * sizeof *a);
-      } else {
-        double *a = f[i].comp[c], *t = tmp;
-        for (size_t k = 0; k < n; k++) t[k] = a[order[k]];
-        memcpy(a, t, n * sizeof *a);
-      }
+      gather(f[i].type, tmp, f[i].comp[c], order, n);
+      memcpy(f[i].comp[c], tmp, n * pf_type_size(f[i].type));
     }
-  }
   free(tmp);
   p->n_ghost = 0;
 }
