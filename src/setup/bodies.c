@@ -311,6 +311,17 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   if (shape_read(&bs->shape, c, key, err)) return -1;
   snprintf(key, sizeof key, "%s.lattice", path);
   if (cfg_get_choice(c, key, "cubic", lattice_names, &bs->lattice, err)) return -1;
+  /* The hcp lattice has no mirror plane between two of its layers: in a half model the
+     layer next to z = 0 would meet its own mirror ghosts stacked straight below it,
+     √(2/3) Δ = 0.82 Δ away, where a full model has the next layer's three neighbours at
+     Δ. A body the symmetry plane cuts must take the cubic lattice. */
+  if (bs->lattice == LATTICE_HCP && s->bnd.half_model && bs->shape.min[2] <= 0.0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': lattice hcp cannot be cut by the "
+                        "symmetry plane of a half model (its layer next to z = 0 would meet its "
+                        "mirror images 0.82 spacings away, not 1): use lattice: cubic, or a full "
+                        "model", cfg_where(c, key, where, sizeof where), key, name);
+  }
   /* A box's lattice starts Δ/2 inside its min face and ends wherever its length
      leaves it — anywhere from 0 to Δ from its max face. Next to a wall or symmetry face
      the gap matters: the mirror ghosts stand twice the gap from the last layer, not Δ,

@@ -327,6 +327,24 @@ static void test_errors(void)
                "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
                "time: {end: 1}\n",
                "bodies[0].damage: 1.5 is out of range");
+  /* hcp has no mirror plane between its layers: refused where the symmetry plane cuts the
+     body, taken where the body lies clear of it */
+  static const char *const hcp =
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "domain: {min: [-2, -2, 0], max: [2, 2, 2], half_model: true}\n"
+      "bodies:\n"
+      "  - {name: a, material: gas, density: 1, spacing: 0.1,\n"
+      "     lattice: hcp, shape: {type: sphere, center: [0, 0, %s], radius: 0.5}}\n"
+      "time: {end: 1}\n";
+  char y2[512];
+  snprintf(y2, sizeof y2, hcp, "0");
+  expect_error("hcp cut by the symmetry plane", y2,
+               "shape.yaml:5: bodies[0].lattice: body 'a': lattice hcp cannot be cut by the "
+               "symmetry plane");
+  snprintf(y2, sizeof y2, hcp, "1");
+  struct setup_result r = setup_case(y2);
+  CHECK(r.rc == 0 && r.n > 0, "hcp body clear of the symmetry plane in a half model: set up "
+        "(%zu particles) %s", r.n, r.msg);
 }
 
 int main(void)
