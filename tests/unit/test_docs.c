@@ -24,12 +24,18 @@
  *      of a case that writes every field, in its sections on the two formats; and every
  *      quantity of the paper cases' measurements.csv, with its unit, in
  *      docs/measurements.md's table of quantities.
+ *   4. README's validation table against docs/validation.md's Status: every value of
+ *      README's hvsph column ("173.5 mm (−10.4 %)", or two joined by " / ") is, at the
+ *      digits README gives, the hvsph value and error of a row of the Status tables with
+ *      the same unit; and README's mean hole errors are the Status's. (README's table is
+ *      what a user reads first; it once kept sessions 7–16's runs for weeks.)
  *
  * Every check is exact, and reports everything missing in one failure that names the
  * page. HVSPH_DOCS_DIR points the test at another copy of docs/ (to see it fail on a
  * doctored page). About 5 s on 2 cores, most of it setting up the 30 cases.
  */
 #include <dirent.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -932,6 +938,174 @@ static void test_example_blocks(void)
   text_free(&failed);
 }
 
+/* ------------------------------------------------- README's validation table (part 4) */
+
+/* A value as a page prints it: "173.5 mm (−10.4 %)" → 173.5, 1 decimal, unit "mm",
+ * error −10.4 with 1 decimal. "−" (U+2212) is a minus. Returns 0 when the text does not
+ * start with a number. */
+struct shown {
+  double v, err;
+  int dv, derr, has_err;
+  char unit[16];
+};
+
+static int parse_number(const char *s, size_t len, size_t *used, double *v, int *dec)
+{
+  char buf[64];
+  size_t i = 0, k = 0;
+  while (i < len && s[i] == ' ') i++;
+  if (i < len && s[i] == '+') i++;
+  else if (i + 2 < len && !strncmp(s + i, "\xe2\x88\x92", 3)) buf[k++] = '-', i += 3;
+  else if (i < len && s[i] == '-') buf[k++] = '-', i++;
+  const size_t d0 = i;
+  int dot = -1;
+  while (i < len && k < sizeof buf - 1 && ((s[i] >= '0' && s[i] <= '9') || (s[i] == '.' && dot < 0))) {
+    if (s[i] == '.') dot = (int)(i - d0);
+    buf[k++] = s[i++];
+  }
+  if (i == d0) return 0;
+  buf[k] = 0;
+  *v = strtod(buf, NULL);
+  *dec = dot < 0 ? 0 : (int)(i - d0) - dot - 1;
+  *used = i;
+  return 1;
+}
+
+static int parse_shown(const char *s, size_t len, struct shown *o)
+{
+  memset(o, 0, sizeof *o);
+  size_t i;
+  if (!parse_number(s, len, &i, &o->v, &o->dv)) return 0;
+  while (i < len && s[i] == ' ') i++;
+  size_t u = 0;
+  while (i < len && s[i] != ' ' && s[i] != '(' && s[i] != ',' && u < sizeof o->unit - 1)
+    o->unit[u++] = s[i++];
+  o->unit[u] = 0;
+  const char *par = memchr(s + i, '(', len - i);
+  if (par) {
+    size_t used;
+    const size_t rest = len - (size_t)(par + 1 - s);
+    if (parse_number(par + 1, rest, &used, &o->err, &o->derr) && used < rest &&
+        memchr(par + 1 + used, '%', rest - used))
+      o->has_err = 1;
+  }
+  return 1;
+}
+
+/* x printed with d decimals reads y (printed with d decimals). */
+static int same_at(double x, double y, int d)
+{
+  char a[64], b[64];
+  snprintf(a, sizeof a, "%.*f", d, x);
+  snprintf(b, sizeof b, "%.*f", d, y);
+  if (!strcmp(a, "-0") || !strncmp(a, "-0.", 3)) {   /* −0.0 prints as 0.0 */
+    int zero = 1;
+    for (const char *c = a + 1; *c; c++) zero &= *c == '0' || *c == '.';
+    if (zero) memmove(a, a + 1, strlen(a));
+  }
+  return !strcmp(a, b);
+}
+
+/* "X %" after `lead` in s: X, or NAN. */
+static double number_after(const char *s, const char *lead)
+{
+  const char *p = s ? strstr(s, lead) : NULL;
+  double v;
+  int d;
+  size_t used;
+  if (!p || !parse_number(p + strlen(lead), strlen(p + strlen(lead)), &used, &v, &d)) return NAN;
+  return v;
+}
+
+static void test_readme_validation(void)
+{
+  char path[4400];
+  snprintf(path, sizeof path, "%s/README.md", test_source_dir());
+  char *readme = test_slurp(path, NULL);
+  char *val = read_doc("validation.md");
+  CHECK(readme && val, "README.md and docs/validation.md can be read");
+  if (!readme || !val) {
+    free(readme);
+    free(val);
+    return;
+  }
+  size_t rlen = 0, slen = 0;
+  const char *rs = md_section(readme, "Status", &rlen);
+  const char *ss = NULL;
+  for (const char *p = val; *p && !ss; p = next_line(p))   /* "## Status (date, session)" */
+    if (!strncmp(p, "## Status", 9)) ss = p;
+  CHECK(rs != NULL && ss != NULL, "README.md and docs/validation.md have a Status section");
+  if (!rs || !ss) {
+    free(readme);
+    free(val);
+    return;
+  }
+  slen = line_len(ss) + 1;
+  for (const char *p = next_line(ss); *p && strncmp(p, "## ", 3); p = next_line(p))
+    slen = (size_t)(next_line(p) - ss);
+  /* the Status rows: hvsph value (cell 2) and its error against the experiment (cell 5) */
+  struct shown st[256];
+  int nst = 0;
+  for (const char *p = ss; p < ss + slen && nst < 256; p = next_line(p)) {
+    const char *c;
+    size_t n;
+    if (md_cell(p, 2, &c, &n) || !parse_shown(c, n, &st[nst])) continue;
+    const char *e;
+    size_t en;
+    struct shown err;
+    st[nst].has_err = 0;
+    if (!md_cell(p, 5, &e, &en) && parse_shown(e, en, &err) && !strcmp(err.unit, "%")) {
+      st[nst].has_err = 1;
+      st[nst].err = err.v;
+      st[nst].derr = err.dv;
+    }
+    nst++;
+  }
+  struct text bad = {0};
+  int nvals = 0;
+  for (const char *p = rs; p < rs + rlen; p = next_line(p)) {
+    const char *c;
+    size_t n;
+    if (md_cell(p, 2, &c, &n)) continue;
+    trim(&c, &n);
+    while (n) {   /* the parts of "a (e) / b (e)" */
+      const char *sl = NULL;
+      for (size_t i = 0; i + 3 <= n && !sl; i++)
+        if (!strncmp(c + i, " / ", 3)) sl = c + i;
+      const size_t pn = sl ? (size_t)(sl - c) : n;
+      struct shown r;
+      if (parse_shown(c, pn, &r)) {
+        nvals++;
+        int found = 0;
+        for (int k = 0; k < nst && !found; k++)
+          found = !strcmp(st[k].unit, r.unit) && same_at(st[k].v, r.v, r.dv) &&
+                  (!r.has_err || (st[k].has_err && same_at(st[k].err, r.err, r.derr)));
+        if (!found) text_add(&bad, "\n      README: %.*s", (int)pn, c);
+      }
+      if (!sl) break;
+      n -= pn + 3;
+      c = sl + 3;
+    }
+  }
+  CHECK(nvals >= 20 && !bad.n, "the %d values of README's validation table are the Status "
+        "table's of docs/validation.md (value and error at README's digits)%s%s", nvals,
+        bad.n ? "; not found there:" : "", text_str(&bad));
+  text_free(&bad);
+  /* the mean hole errors, hvsph's and KERNEL's */
+  char ssec[65536];
+  snprintf(ssec, sizeof ssec, "%.*s", (int)(slen < sizeof ssec ? slen : sizeof ssec - 1), ss);
+  char rsec[65536];
+  snprintf(rsec, sizeof rsec, "%.*s", (int)(rlen < sizeof rsec ? rlen : sizeof rsec - 1), rs);
+  const double sh = number_after(ssec, "mean absolute error is ");
+  const double sk = number_after(ssec, "% against KERNEL's ");
+  const double rh = number_after(rsec, "over the five hvsph is ");
+  const double rk = number_after(rsec, "on average, the paper's code ");
+  CHECK(!isnan(sh) && !isnan(sk) && sh == rh && sk == rk, "README's mean hole errors (%g %%, "
+        "KERNEL %g %%) are the Status's (%g %%, %g %%)", rh, rk, sh, sk);
+  free(readme);
+  free(val);
+}
+
 /* The quantities of measurements.md's table in its section measurements.csv: "name\tunit". */
 static void doc_quantities(const char *sec, size_t slen, struct text *q)
 {
@@ -1051,5 +1225,6 @@ int main(void)
   test_particle_columns();
   test_example_blocks();
   test_measurement_quantities(ex, n);
+  test_readme_validation();
   return test_finish();
 }
