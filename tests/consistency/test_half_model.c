@@ -127,7 +127,7 @@ static void test_quarter(void)
   const double dt = 2e-9;
   for (int along_y = 0; along_y < 2; along_y++) {
     char full[1024], quarter[1024];
-    struct body_sums f[2], q[2];
+    struct body_sums f[2] = {0}, q[2] = {0};   /* read below even when a run failed */
     size_t nf = 0, nq = 0;
     quarter_case(full, sizeof full, along_y, 0);
     quarter_case(quarter, sizeof quarter, along_y, 1);
@@ -150,7 +150,7 @@ static void test_quarter(void)
 
 int main(void)
 {
-  struct body_sums f[2], h[2];
+  struct body_sums f[2] = {0}, h[2] = {0};
   size_t nf = 0, nh = 0;
   const double dt = 2e-9;   /* [s] below the CFL step of 0.5 mm aluminium (~1e-8 s) */
   CHECK(run(full_case, dt, f, &nf) == 0, "full model ran %d steps", NSTEPS);
