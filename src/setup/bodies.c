@@ -218,8 +218,9 @@ static double box_thickness(const struct sim *s, const struct body_spec *bs)
  * the volume suggests); a box's thinnest side gets a whole number of layers, rounded
  * up (rounding to the nearest gave §2.4's 1 mm bumper one layer of 7 200 particles
  * where 20 000 were asked). */
-static void spacing_for_count(const struct sim *s, struct body_spec *bs, const char *name,
-                              double n)
+static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key,
+                             struct body_spec *bs, const char *name, double n,
+                             struct hv_error *err)
 {
   const double d0 = bs->spacing, t = box_thickness(s, bs);
   const int half = s->bnd.half_model;
@@ -227,6 +228,19 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
   if (t > 0) {   /* whole layers, rounded up, then a layer more while short */
     layers = fmax(1.0, ceil(t / d0 * (1.0 - 1e-9)));
     bs->spacing = t / layers;
+    /* a plate or disc far wider than it is thick for its count (a radius in metres
+       where millimetres were meant): even one layer fills it with more particles than
+       memory holds, and counting them would take hours */
+    const double est = bs->vol / cell_volume(bs->lattice, bs->spacing);
+    if (!particles_fit(est, 0)) {
+      char where[256];
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %.0f particles asked, but its "
+                          "thinnest side, %g mm, in whole layers needs a spacing of at most "
+                          "%g mm, which fills its %g m3 with about %.3g particles, more than "
+                          "this machine's memory holds; check the shape's size and units",
+                          cfg_where(c, key, where, sizeof where), name, n, 1e3 * t,
+                          1e3 * bs->spacing, bs->vol, est);
+    }
     for (int it = 0; it < 60 && (double)lattice_points(bs, half, NULL, 0) < n; it++) {
       layers += 1.0;
       bs->spacing = t / layers;
@@ -251,6 +265,7 @@ static void spacing_for_count(const struct sim *s, struct body_spec *bs, const c
     hv_info("body '%s': spacing %.4g mm -> %.4g mm so that its %.4g mm thickness holds %.0f "
             "whole layer(s) and at least %.0f particles", name, 1e3 * d0, 1e3 * bs->spacing,
             1e3 * t, layers, n);
+  return 0;
 }
 
 /* The shape (with everything it subtracts) is mirror-symmetric about z = 0: a box
@@ -289,7 +304,7 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
   /* counted only where it could fit (as gas, the least): check_memory refuses the rest
      before anything is allocated, without minutes of counting first */
-  if (particles_fit(n, 0)) spacing_for_count(s, bs, name, n);
+  if (particles_fit(n, 0)) return spacing_for_count(s, c, key2, bs, name, n, err);
   return 0;
 }
 

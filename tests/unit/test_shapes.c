@@ -313,6 +313,13 @@ static void test_errors(void)
                "body 'a': impact_angle applies with speed");
   expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
+  /* a disc given by its count, a radius in metres where millimetres were meant: one
+     whole layer of its thickness would need 1e17 particles; refused at once (it was
+     counted point by point, for hours: tools/fuzz-input.py, session 60) */
+  expect_error("count-given disc far too wide",
+               body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
+                         "particles: 5000"),
+               "whole layers needs a spacing of at most 100 mm");
   expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
   expect_error("damage without fracture",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
