@@ -61,9 +61,38 @@ static int cylinder_axis(const struct shape *sh)
   return -1;
 }
 
+/* Physical memory of this machine [bytes] (1e18 when unknown). */
+static double machine_bytes(void)
+{
+  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+  return pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
+}
+
+/* Bytes n particles need (ghosts and grid included) and whether that fits: 80 % of
+ * the machine's memory. */
+static double particles_need(double n, int solid) { return n * (solid ? 900.0 : 600.0); }
+static int particles_fit(double n, int solid)
+{
+  return particles_need(n, solid) <= 0.8 * machine_bytes();
+}
+
+/* The most lattice points lattice_points scans (its shape's bounding box in lattice
+ * steps): 64 times the gas particles this machine's memory holds, at least 1e9 (about
+ * 10 s a scan here). A long body lying across the axes scans more points than it
+ * holds (a rod of aspect 20 along a diagonal, 100 times); a scan beyond this is a
+ * shape far larger than meant (a length in metres where millimetres were meant), and
+ * would take hours. */
+static double lattice_scan_max(void)
+{
+  return fmax(1e9, 64.0 * 0.8 * machine_bytes() / particles_need(1.0, 0));
+}
+
 /* Visits the lattice points of a body inside its shape (and z > 0 in a half model):
- * counts them, and stores them at p->x[.][first + k] when p is not NULL. */
-static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p, size_t first)
+ * counts them, and stores them at p->x[.][first + k] when p is not NULL. SIZE_MAX,
+ * without scanning, when its bounding box holds more than lattice_scan_max() points
+ * (*scan, when not NULL, gets their number). */
+static size_t lattice_points_scan(const struct body_spec *bs, int half, struct particles *p,
+                                  size_t first, double *scan)
 {
   const struct shape *sh = &bs->shape;
   const double d = bs->spacing;
@@ -85,12 +114,20 @@ static size_t lattice_points(const struct body_spec *bs, int half, struct partic
   const int ax = cylinder_axis(sh);
   if (ax >= 0 && bs->lattice == LATTICE_CUBIC) anchor[ax] = sh->center[ax] - 0.5 * sh->length;
   if (half) anchor[2] = 0.0;
+  double dlo[3], dhi[3], npts = 1.0;   /* as doubles first: a huge box overflows a long */
+  for (int k = 0; k < 3; k++) {
+    dlo[k] = floor((sh->min[k] - anchor[k]) / step[k]) - 2.0;
+    dhi[k] = ceil((sh->max[k] - anchor[k]) / step[k]) + 1.0;
+    if (half && k == 2 && dlo[2] < 0.0) dlo[2] = 0.0;
+    npts *= dhi[k] - dlo[k] + 1.0;
+  }
+  if (scan) *scan = npts;
+  if (!(npts <= lattice_scan_max())) return SIZE_MAX;
   long lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
-    lo[k] = (long)floor((sh->min[k] - anchor[k]) / step[k]) - 2;
-    hi[k] = (long)ceil((sh->max[k] - anchor[k]) / step[k]) + 1;
+    lo[k] = (long)dlo[k];
+    hi[k] = (long)dhi[k];
   }
-  if (half && lo[2] < 0) lo[2] = 0;
   size_t count = 0;
   for (long k = lo[2]; k <= hi[2]; k++)
     for (long j = lo[1]; j <= hi[1]; j++)
@@ -111,6 +148,11 @@ static size_t lattice_points(const struct body_spec *bs, int half, struct partic
         count++;
       }
   return count;
+}
+
+static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p, size_t first)
+{
+  return lattice_points_scan(bs, half, p, first, NULL);
 }
 
 static int read_velocity(struct cfg *c, const char *path, const char *name, struct body_spec *bs,
@@ -175,20 +217,6 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
 }
 
-/* Physical memory of this machine [bytes] (1e18 when unknown). */
-static double machine_bytes(void)
-{
-  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-  return pages > 0 && psize > 0 ? (double)pages * (double)psize : 1e18;
-}
-
-/* Bytes n particles need (ghosts and grid included) and whether that fits: 80 % of
- * the machine's memory. */
-static double particles_need(double n, int solid) { return n * (solid ? 900.0 : 600.0); }
-static int particles_fit(double n, int solid)
-{
-  return particles_need(n, solid) <= 0.8 * machine_bytes();
-}
 
 /* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
  * longer than its diameter), filled on a cubic lattice (0 for other shapes and
@@ -814,7 +842,17 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
     const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
     if (est > 1e8 && check_memory(s, c, b, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
-    size_t cnt = lattice_points(&bs[b], s->bnd.half_model, NULL, 0);
+    double scan;
+    size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
+    if (cnt == SIZE_MAX) {
+      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
+                        "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
+                        "particles this machine's memory holds); check the shape's size and units",
+                        cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        sh->max[0] - sh->min[0], sh->max[1] - sh->min[1], sh->max[2] - sh->min[2],
+                        scan, 1e3 * bs[b].spacing, lattice_scan_max());
+      break;
+    }
     if (cnt == 0) {
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
                         "the shape", cfg_where(c, key, where, sizeof where), s->body[b].name,

@@ -320,6 +320,13 @@ static void test_errors(void)
                body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
                          "particles: 5000"),
                "whole layers needs a spacing of at most 100 mm");
+  /* a rod along a diagonal 1000 m long (metres where millimetres were meant): 5 000
+     particles, but its bounding box holds 3e14 lattice points to scan, hours; refused
+     at once */
+  expect_error("diagonal rod of 1000 m",
+               body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
+                         "length: 1000}", "particles: 5000"),
+               "body 'b': its bounding box, 577.352 x 577.352 x 577.352 m, spans 3.06e+14 lattice points");
   expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
   expect_error("damage without fracture",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
