@@ -782,10 +782,19 @@ int cfg_apply_set(struct cfg *c, const char *assignment, struct hv_error *err)
   }
   if (!p || set_last(p, &comp[nc - 1], v, &why)) {
     cfg_node_free(v);
-    /* name the node that could not take the component k_fail */
+    /* name the node that could not take the component k_fail, and where it is written */
     int plen = (int)(comp[k_fail].start - key) - (comp[k_fail].key ? 1 : 0);
-    if (plen <= 0) return hv_error_set(err, HV_EXIT_INPUT, "--set %s: the top level %s", key, why);
-    return hv_error_set(err, HV_EXIT_INPUT, "--set %s: '%.*s' %s", key, plen, key, why);
+    char where[1300];
+    if (plen <= 0)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: --set %s: the top level %s",
+                          cfg_where_line(c, NULL, 0, where, sizeof where), key, why);
+    char parent[1024];
+    snprintf(parent, sizeof parent, "%.*s", plen, key);
+    const struct cfg_node *pn = cfg_lookup(c, parent, NULL);
+    if (!pn || pn->line == CFG_LINE_SET)   /* itself from an earlier --set */
+      return hv_error_set(err, HV_EXIT_INPUT, "--set %s: '%s' %s", key, parent, why);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: --set %s: '%s' %s",
+                        cfg_where(c, parent, where, sizeof where), key, parent, why);
   }
   hv_info("override: %s = %.*s", key, (int)vlen, val);
   return 0;

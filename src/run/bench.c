@@ -64,9 +64,11 @@ int bench_main(const struct bench_options *o)
       return err.code ? err.code : HV_EXIT_INPUT;
     }
   struct sim s;
+  memset(&s, 0, sizeof s);
+  int status = HV_EXIT_OK;
   if (!c || run_setup(&s, c, &err) || cfg_check_unused(c, &err)) {
-    fprintf(stderr, "hvsph bench: %s\n", err.msg);
-    return err.code ? err.code : HV_EXIT_RUN;   /* a bad --set: 2 */
+    status = err.code ? err.code : HV_EXIT_RUN;   /* a bad --set: 2 */
+    goto fail;
   }
   /* small random velocities (deterministic) so that the viscosity branch runs */
   const double vscale = o->solid ? 1.0 : 0.01;   /* [m/s]: elastic for the solid */
@@ -74,14 +76,14 @@ int bench_main(const struct bench_options *o)
   for (size_t i = 0; i < s.p.n; i++)
     for (int k = 0; k < 3; k++) s.p.v[k][i] = vscale * ((double)rand() / RAND_MAX - 0.5);
   if (step_init(&s, &err) || step_advance(&s, &err)) {   /* warm-up step */
-    fprintf(stderr, "hvsph bench: %s\n", err.msg);
-    return HV_EXIT_RUN;
+    status = HV_EXIT_RUN;
+    goto fail;
   }
   double t0 = omp_get_wtime();
   for (long k = 0; k < o->steps; k++)
     if (step_advance(&s, &err)) {
-      fprintf(stderr, "hvsph bench: %s\n", err.msg);
-      return HV_EXIT_RUN;
+      status = HV_EXIT_RUN;
+      goto fail;
     }
   double el = omp_get_wtime() - t0;
   size_t n = s.p.n;
@@ -107,4 +109,9 @@ int bench_main(const struct bench_options *o)
   sim_free(&s);
   cfg_free(c);
   return 0;
+fail:
+  fprintf(stderr, "hvsph bench: %s\n", err.msg);
+  sim_free(&s);
+  if (c) cfg_free(c);
+  return status;
 }

@@ -421,6 +421,16 @@ static void test_set(void)
   rc = cfg_apply_set(c, "time.end.x=1", &err);
   check_msg(rc, &err, "--set time.end.x: 'time.end' is not a mapping");
   cfg_free(c);
+  /* a --set below a key the file gives a value: the message names where it is written
+     (tools/fuzz-input.py, session 60: a case file cut short after 'time:\n  e') */
+  c = cfg_load_string("output: {every: 1 us}\ntime:\n  e\n", "case.yaml", &err);
+  rc = c ? cfg_apply_set(c, "time.end=1 us", &err) : 0;
+  check_msg(rc, &err, "case.yaml:2: --set time.end: 'time' is not a mapping");
+  cfg_free(c);
+  c = cfg_load_string("time: {end: 1 us}\n", "case.yaml", &err);
+  rc = c ? cfg_apply_set(c, "[0].x=1", &err) : 0;
+  check_msg(rc, &err, "case.yaml: --set [0].x: the top level is not a sequence");
+  cfg_free(c);
   /* a key written with no value takes --set's keys as an empty mapping would */
   c = cfg_load_string("time:\noutput: ~\n", "case.yaml", &err);
   CHECK(c && cfg_apply_set(c, "time.end=2 us", &err) == 0 &&
