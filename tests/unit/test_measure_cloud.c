@@ -460,9 +460,9 @@ static double gauge_pressure(const char *keys, int *rc, char *msg, size_t nmsg)
       s.p.p[i] = s.p.x[0][i] < 0.5e-3 && hypot(s.p.x[1][i], s.p.x[2][i]) < 1.6e-3 ? 1e9 : 0.0;
     measure_run_step(&mr, &s);
     pc = mr.peak_pressure;
-    measure_run_free(&mr);
-    sim_free(&s);
   }
+  measure_run_free(&mr);   /* a set-up that failed half way holds memory too */
+  sim_free(&s);
   if (c) cfg_free(c);
   return pc;
 }
