@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo check bench analyze clean
+.PHONY: all deps build demo check bench analyze sanitize clean
 
 all: build
 
@@ -36,5 +36,15 @@ analyze:
 	@scan-build-14 -o $(BUILD)-analyze/report --status-bugs \
 	  cmake --build $(BUILD)-analyze -j $(JOBS)
 
+# The tests on a build with the address and undefined-behaviour sanitizers (gcc's
+# ASan and UBSan, optimised with debug information, in $(BUILD)-sanitize): a memory
+# error, a leak or undefined behaviour fails the test it happens in. Not part of check
+# (docs/design.md, "Sanitizers").
+sanitize: deps
+	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHVSPH_SANITIZE=ON \
+	  $(CMAKE_FLAGS) >/dev/null
+	@cmake --build $(BUILD)-sanitize -j $(JOBS)
+	@cd $(BUILD)-sanitize && ctest --output-on-failure -j $(JOBS) --timeout 3600
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-analyze
+	rm -rf $(BUILD) $(BUILD)-analyze $(BUILD)-sanitize

@@ -217,7 +217,6 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
 }
 
-
 /* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
  * longer than its diameter), filled on a cubic lattice (0 for other shapes and
  * lattices; a shape's `minus` does not change it): a count-given plate's spacing is set
