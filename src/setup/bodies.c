@@ -77,11 +77,11 @@ static int particles_fit(double n, int solid)
 }
 
 /* The most lattice points lattice_points scans (its shape's bounding box in lattice
- * steps): 64 times the gas particles this machine's memory holds, at least 1e9 (about
- * 10 s a scan here). A long body lying across the axes scans more points than it
- * holds (a rod of aspect 20 along a diagonal, 100 times); a scan beyond this is a
- * shape far larger than meant (a length in metres where millimetres were meant), and
- * would take hours. */
+ * steps): 64 times the gas particles this machine's memory holds, at least 1e9 (a scan
+ * of 1e9 points takes about 4 s here). A long body lying across the axes scans more
+ * points than it holds (a rod 20 diameters long along a diagonal, about 120 times); a
+ * scan beyond this is a shape far larger than meant (a length in metres where
+ * millimetres were meant), and would take hours. */
 static double lattice_scan_max(void)
 {
   return fmax(1e9, 64.0 * 0.8 * machine_bytes() / particles_need(1.0, 0));
