@@ -90,7 +90,8 @@ static double lattice_scan_max(void)
 /* Visits the lattice points of a body inside its shape (and z > 0 in a half model):
  * counts them, and stores them at p->x[.][first + k] when p is not NULL. SIZE_MAX,
  * without scanning, when its bounding box holds more than lattice_scan_max() points
- * (*scan, when not NULL, gets their number). */
+ * (*scan, when not NULL, gets their number): spacing_for_count's searches take it as
+ * "enough" and stop, and setup_bodies reports it. */
 static size_t lattice_points_scan(const struct body_spec *bs, int half, struct particles *p,
                                   size_t first, double *scan)
 {

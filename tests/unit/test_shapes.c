@@ -314,7 +314,7 @@ static void test_errors(void)
   expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
   /* a disc given by its count, a radius in metres where millimetres were meant: one
-     whole layer of its thickness would need 1e17 particles; refused at once (it was
+     whole layer of its thickness would need 3e20 particles; refused at once (it was
      counted point by point, for hours: tools/fuzz-input.py, session 60) */
   expect_error("count-given disc far too wide",
                body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
