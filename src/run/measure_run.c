@@ -403,7 +403,10 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
   char path[4200], comment[512];
   snprintf(comment, sizeof comment, "hvsph %s case %s: measurements (docs/measurements.md)",
            HVSPH_VERSION, s->case_name);
-  if (measure_all(mr, s, err)) return hv_error_prefix(err, "measurements at t = %g s: ", s->t);
+  if (measure_all(mr, s, err)) {
+    hv_error_prefix(err, "measurements at t = %g s: ", s->t);
+    return MEASURE_FAILED_DATA;
+  }
   if (mr->fragments) {
     /* solid material only (gases are not fragments); linking length 1.5 × the
        particle's own body spacing */
@@ -424,7 +427,8 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
     free(b);
     if (frc) {
       fof_result_free(&fr);
-      return hv_error_prefix(err, "fragments: ");
+      hv_error_prefix(err, "fragments: ");
+      return MEASURE_FAILED_DATA;
     }
     meas_table_add_fragments(&mr->table, s->t, "all", &fr);
     int rc = 0;

@@ -57,7 +57,11 @@ void measure_run_free(struct measure_run *mr);
 /* Every step: cheap running quantities (the backwall's peak centre pressure). */
 void measure_run_step(struct measure_run *mr, const struct sim *s);
 /* At output k: every measurement, appended to the table and written; k < 0: a
- * measurement time between outputs (measure.every): the same rows, no fragments file. */
+ * measurement time between outputs (measure.every): the same rows, no fragments file.
+ * Returns 0, MEASURE_FAILED_DATA when a measurement cannot be taken of these particles
+ * (err says why: a fragment search over particles spread past 2e6 linking lengths, say),
+ * or -1 when a file cannot be written. */
+enum { MEASURE_FAILED_DATA = -2 };
 int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const char *outdir,
                        const char *const *matnames, struct hv_error *err);
 

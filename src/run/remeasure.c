@@ -193,7 +193,12 @@ int remeasure_main(int argc, char **argv)
           fabs(r->time - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) && r->value > mr.peak_pressure)
         mr.peak_pressure = r->value;
     }
-    if (measure_run_output(&mr, &s, k, stage, matnames, &err)) goto fail;
+    const int mrc = measure_run_output(&mr, &s, k, stage, matnames, &err);
+    if (mrc == MEASURE_FAILED_DATA) {   /* the snapshot's particles, not the run: bad input */
+      err.code = HV_EXIT_INPUT;
+      hv_error_prefix(&err, "%s: ", spath);
+    }
+    if (mrc) goto fail;
     if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
   }
   if (!measured) {

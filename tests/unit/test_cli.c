@@ -938,6 +938,41 @@ static void test_measure(void)
   free(f1);
 }
 
+/* A snapshot that reads but cannot be measured is bad input of that file: an aluminium
+ * slab's run with fragments, one particle's x in particles_00001.csv damaged to 1e129 m
+ * (beyond the fragment search's 2e6 linking lengths). It was exit status 3, a failed
+ * run, with a message that did not name the file (found by fuzzing the snapshots). */
+static void test_measure_damaged(void)
+{
+  char out[16384], args[9000];
+  const char *casefile =
+      test_write_file("measured_solid.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
+                                                         "fragments: true}"));
+  const char *dir = path_of("measured_solid");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].material=al-alloy "
+           "--set bodies[0].density=2780 --set time.end=2e-6 --set output.every=1e-6",
+           casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the aluminium slab runs (exit %d): %s", rc, out);
+  char sp[4400];
+  snprintf(sp, sizeof sp, "%s/particles_00001.csv", dir);
+  char *s0 = test_slurp(sp, NULL);
+  const char *row = s0 ? strstr(s0, "\nid,") : NULL;
+  row = row ? strchr(row + 1, '\n') : NULL;
+  const char *c1 = row ? strchr(row, ',') : NULL, *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+  CHECK(c2 != NULL, "particles_00001.csv has a header and a first row");
+  if (c2) {
+    FILE *f = fopen(sp, "w");
+    if (!f || fprintf(f, "%.*s1e129%s", (int)(c1 + 1 - s0), s0, c2) < 0 || fclose(f)) exit(1);
+    snprintf(args, sizeof args, "measure '%s' --quiet", dir);
+    rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 2, "hvsph measure with a particle at x = 1e129 m: exit status %d (want 2)", rc);
+    check_message("measure, a particle far away", out,
+                  (const char *const[]){"particles_00001.csv", "friends-of-friends", NULL});
+  }
+  free(s0);
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -953,6 +988,7 @@ int main(void)
   test_lattice_cover_warning();
   test_validate();
   test_measure();
+  test_measure_damaged();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",
