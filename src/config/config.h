@@ -56,6 +56,13 @@ const char *cfg_node_file(struct cfg *c, const char *path);
  * conversion; use -HUGE_VAL/HUGE_VAL for none. Return 0 or -1 with err set. */
 int cfg_get_quantity(struct cfg *c, const char *path, enum unit_dim dim, const double *def,
                      double lo, double hi, double *out, struct hv_error *err);
+/* Wrong units: a value at path written as a bare number (no unit, so SI) whose
+ * magnitude lies outside [lo, hi], the range `what` spans in real materials ("bulk sound
+ * speeds of condensed materials"), is an error naming the file, line and key, with the
+ * likely unit when one brings it into the range ("5.35 ... was it 5.35 km/s?"). A value
+ * written with its unit, 0, and an absent key pass: a unit says the value is meant. */
+int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double lo, double hi,
+                      const char *what, struct hv_error *err);
 /* A sequence of three quantities ("[0, 1.5 mm, 0]"). */
 int cfg_get_vec3(struct cfg *c, const char *path, enum unit_dim dim, const double *def,
                  double out[3], struct hv_error *err);

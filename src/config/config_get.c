@@ -209,6 +209,53 @@ int cfg_get_quantity(struct cfg *c, const char *path, enum unit_dim dim, const d
   return 0;
 }
 
+/* Units that a bare number of this dimension is most often meant in, and whose value
+ * a message suggests when it falls in the typical range (the first that does). */
+static const char *const *likely_units(enum unit_dim dim)
+{
+  static const char *const density[] = {"g/cm3", NULL}, *const velocity[] = {"km/s", NULL},
+                           *const pressure[] = {"GPa", "MPa", "kbar", "bar", NULL},
+                           *const senergy[] = {"MJ/kg", "kJ/kg", NULL}, *const none[] = {NULL};
+  switch (dim) {
+  case UNIT_DENSITY: return density;
+  case UNIT_VELOCITY: return velocity;
+  case UNIT_PRESSURE: return pressure;
+  case UNIT_SPECIFIC_ENERGY: return senergy;
+  default: return none;
+  }
+}
+
+int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double lo, double hi,
+                      const char *what, struct hv_error *err)
+{
+  struct cfg_node *deepest, *n = cfg_lookup(c, path, &deepest);
+  if (!n || n->kind != CFG_SCALAR || !n->text) return 0;
+  char *end;
+  errno = 0;
+  const double v = strtod(n->text, &end);
+  while (isspace((unsigned char)*end)) end++;
+  if (end == n->text || *end || !isfinite(v) || v == 0.0) return 0;   /* a unit, or no number */
+  if (fabs(v) >= lo && fabs(v) <= hi) return 0;
+  const char *si = units_si_symbol(dim);
+  char guess[160] = "";
+  for (const char *const *u = likely_units(dim); *u; u++) {
+    char text[96], msg[160];
+    double w;
+    snprintf(text, sizeof text, "%s %s", n->text, *u);
+    if (!units_parse(text, dim, &w, msg, sizeof msg) && fabs(w) >= lo && fabs(w) <= hi) {
+      snprintf(guess, sizeof guess, "; was it %s %s?", n->text, *u);
+      break;
+    }
+  }
+  char a[40], b[40];
+  fmt_double(a, sizeof a, lo);
+  fmt_double(b, sizeof b, hi);
+  return value_error(c, n, path, err, "the bare number %s is read as %s %s (a number without a "
+                     "unit is SI), outside the %s, %s to %s %s%s%s the value with its unit "
+                     "('%s %s' keeps this one)", n->text, n->text, si, what, a, b, si, guess,
+                     guess[0] ? " Write" : "; write", n->text, si);
+}
+
 /* Reads every entry of a sequence node as a quantity (n entries into v). */
 static int read_seq(struct cfg *c, struct cfg_node *s, const char *path, enum unit_dim dim,
                     double *v, struct hv_error *err)

@@ -183,7 +183,7 @@ static int tab_axis(struct tab_reader *r, const char *name, double *x, long n, d
 
 /* Reads nrow rows of ncol values, one row per line; `first` = a line is already loaded. */
 static int tab_rows(struct tab_reader *r, const char *name, const double *rho, double *v,
-                    long nrow, long ncol, int first, double lo)
+                    long nrow, long ncol, int first, double lo, double hi)
 {
   for (long i = 0; i < nrow; i++) {
     if (!(first && i == 0) && !tab_next_nonblank(r))
@@ -201,6 +201,9 @@ static int tab_rows(struct tab_reader *r, const char *name, const double *rho, d
       if (x <= lo)
         return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g must be > %g", r->path,
                             r->line, what, x, lo);
+      if (x > hi)   /* a sound speed past the speed of light: not SI (the file is in m/s) */
+        return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g m/s is faster than light "
+                            "(%g m/s): the table is in SI units", r->path, r->line, what, x, hi);
       k++;
     }
     if (k != ncol)
@@ -256,10 +259,10 @@ int eos_table_load(const char *path, struct eos_table *t, struct hv_error *err)
                         "of the last e value (each pressure row starts on a new line)", path,
                         r.line, ne);
   }
-  if (!rc) rc = tab_rows(&r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL);
+  if (!rc) rc = tab_rows(&r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL, HUGE_VAL);
   if (!rc && tab_next_nonblank(&r)) {
     t->cs = hv_malloc((size_t)(nrho * ne) * sizeof *t->cs, "EOS table");
-    rc = tab_rows(&r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0);
+    rc = tab_rows(&r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0, 299792458.0);
     if (!rc && tab_next_nonblank(&r))
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: unexpected values after the %ld sound-speed "
                         "rows", path, r.line, nrho);

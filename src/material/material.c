@@ -466,6 +466,44 @@ static int graft_library(struct cfg *c, const char *path, const char *key, const
   return rc;
 }
 
+/* Wrong units: a parameter of a condensed material that the case writes as a bare
+ * number far outside what real materials span (a density in g/cm3, a sound speed in
+ * km/s or a strength in GPa written without its unit) is an error (cfg_check_typical).
+ * Only values the case writes: the library's are ours. A gas is left alone (its tests
+ * are often in scaled units), and so is 0, which switches a strength or a criterion off. */
+static int check_units(struct cfg *c, const char *path, const struct material *m,
+                       struct hv_error *err)
+{
+  static const struct {
+    const char *key;
+    enum unit_dim dim;
+    double lo, hi;
+    const char *what;
+  } typical[] = {
+      {"rho0", UNIT_DENSITY, 50.0, 1e5, "densities of condensed materials"},
+      {"c0", UNIT_VELOCITY, 100.0, 5e4, "bulk sound speeds of condensed materials"},
+      {"A", UNIT_PRESSURE, 1e6, 1e13, "bulk moduli of condensed materials (Tillotson A)"},
+      {"E0", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "Tillotson E0 of real materials"},
+      {"E_iv", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "vaporisation energies of real materials"},
+      {"E_cv", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "vaporisation energies of real materials"},
+      {"strength.shear_modulus", UNIT_PRESSURE, 1e5, 1e13, "elastic moduli of solids"},
+      {"strength.youngs_modulus", UNIT_PRESSURE, 1e5, 1e13, "elastic moduli of solids"},
+      {"strength.yield", UNIT_PRESSURE, 1e4, 1e11, "strengths of solids"},
+      {"strength.A", UNIT_PRESSURE, 1e4, 1e11, "strengths of solids"},
+      {"strength.B", UNIT_PRESSURE, 1e4, 1e11, "strengths of solids"},
+      {"fracture.sigma_c", UNIT_PRESSURE, 1e4, 1e11, "tensile strengths of solids"},
+  };
+  if (m->eos == EOS_IDEAL_GAS) return 0;
+  for (size_t i = 0; i < sizeof typical / sizeof typical[0]; i++) {
+    char k[340];
+    key_of(k, sizeof k, path, typical[i].key);
+    if (from_case(c, k) && cfg_check_typical(c, k, typical[i].dim, typical[i].lo, typical[i].hi,
+                                             typical[i].what, err))
+      return -1;
+  }
+  return 0;
+}
+
 int material_read(struct cfg *c, const char *path, const char *name, struct material *m,
                   struct hv_error *err)
 {
@@ -502,7 +540,8 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
   case EOS_TABLE: rc = read_table(c, path, m, err); break;
   case EOS_KIND_COUNT: break;
   }
-  if (rc || read_strength(c, path, m, err) || read_fracture(c, path, m, err)) {
+  if (rc || read_strength(c, path, m, err) || read_fracture(c, path, m, err) ||
+      check_units(c, path, m, err)) {
     material_free(m);
     return -1;
   }

@@ -198,6 +198,10 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   snprintf(key, sizeof key, "%s.density", path);
   const double *rdef = m->rho0 > 0 ? &m->rho0 : NULL;
   if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, DBL_MIN, HUGE_VAL, &bs->rho, err)) return -1;
+  /* wrong units: a bare density far from any condensed material's (2.78, in g/cm3) */
+  if (m->eos != EOS_IDEAL_GAS &&
+      cfg_check_typical(c, key, UNIT_DENSITY, 50.0, 1e5, "densities of condensed materials", err))
+    return -1;
   snprintf(key, sizeof key, "%s.pressure", path);
   snprintf(key2, sizeof key2, "%s.energy", path);
   if (cfg_has(c, key) && cfg_has(c, key2))

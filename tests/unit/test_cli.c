@@ -476,6 +476,11 @@ static void test_bad_input(void)
   bad_input("neg_density", variant(13, "    density: -5"), NULL,
             (const char *const[]){"neg_density.yaml:13: bodies[0].density: ", "-5",
                                   "out of range", NULL});
+  /* wrong units: a condensed body's density in g/cm3 written bare (SI, so 2.7 kg/m3) */
+  bad_input("bare_density", variant(13, "    density: 2.7"), "--set bodies[0].material=al-alloy",
+            (const char *const[]){"bare_density.yaml:13: bodies[0].density: ",
+                                  "the bare number 2.7 is read as 2.7 kg/m3",
+                                  "was it 2.7 g/cm3?", NULL});
   bad_input("kg_velocity", variant(15, "    velocity: [5 kg, 0, 0]"), NULL,
             (const char *const[]){"kg_velocity.yaml:15: bodies[0].velocity[0]: ",
                                   "unit 'kg' is a mass, expected a velocity", NULL});
@@ -507,7 +512,8 @@ static void test_bad_input(void)
                                   "unobtainium", NULL});
   /* summation density with strength: refused, naming the key */
   bad_input("summation_solid",
-            variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"), NULL,
+            variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"),
+            "--set bodies[0].density=2780",
             (const char *const[]){"summation_solid.yaml:4: sph.density: ",
                                   "summation is for cases without strength", NULL});
   bad_input("reconstruct_gas", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
@@ -528,7 +534,8 @@ static void test_bad_input(void)
             (const char *const[]){"switch_name.yaml:4: sph.viscosity.switch: ",
                                   "'balsara' is not one of", NULL});
   bad_input("mass_form_solid",
-            variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"), NULL,
+            variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"),
+            "--set bodies[0].density=2780",
             (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
                                   "mass is for cases without strength", NULL});
   bad_input("recon_contact_alone",

@@ -388,6 +388,64 @@ static void test_errors(void)
 }
 
 /* An error in a library value names the library file and line. */
+/* ---------------------------------------------------------------- wrong units */
+
+/* A condensed material's parameter written as a bare number (SI) far outside what real
+ * materials span is refused, naming the file, line and key, with the unit it was likely
+ * written in; with its unit, 0, a library's value or a gas's, it is taken. */
+static void test_wrong_units(void)
+{
+#define MG "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: %s\n    c0: %s\n    n: 4\n" \
+           "    gamma: 2\n"
+  char y[512];
+  snprintf(y, sizeof y, MG, "2780", "5.35");
+  expect_error(y, "x", "case.yaml:5: materials.x.c0: the bare number 5.35 is read as 5.35 m/s "
+               "(a number without a unit is SI), outside the bulk sound speeds of condensed "
+               "materials, 100 to 50000 m/s; was it 5.35 km/s? Write the value with its unit "
+               "('5.35 m/s' keeps this one)");
+  snprintf(y, sizeof y, MG, "2.78", "5350");
+  expect_error(y, "x", "case.yaml:4: materials.x.rho0: the bare number 2.78 is read as 2.78 "
+               "kg/m3 (a number without a unit is SI), outside the densities of condensed "
+               "materials, 50 to 100000 kg/m3; was it 2.78 g/cm3?");
+  snprintf(y, sizeof y, MG, "2780", "1e6");   /* no likely unit: the range and the way out */
+  expect_error(y, "x", "50000 m/s; write the value with its unit ('1e6 m/s' keeps this one)");
+  expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0.39}}\n", "x",
+               "case.yaml:2: materials.x.strength.yield: the bare number 0.39 is read as 0.39 Pa");
+  expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0.39}}\n", "x",
+               "was it 0.39 GPa?");
+  expect_error("materials:\n  x: {library: steel-target, strength: {yield: 300}}\n", "x",
+               "was it 300 MPa?");
+  expect_error("materials:\n  x: {library: steel-target, strength: {shear_modulus: 95}}\n", "x",
+               "materials.x.strength.shear_modulus: the bare number 95 is read as 95 Pa");
+  expect_error("materials:\n  x: {library: steel-target, fracture: {sigma_c: -0.39}}\n", "x",
+               "materials.x.fracture.sigma_c: the bare number -0.39 is read as -0.39 Pa");
+  expect_error("materials:\n  x: {library: steel-target-jc, strength: {B: 510}}\n", "x",
+               "materials.x.strength.B: the bare number 510 is read as 510 Pa");
+  expect_error("materials:\n  x: {library: aluminium-tillotson, E0: 5}\n", "x",
+               "materials.x.E0: the bare number 5 is read as 5 J/kg");
+  expect_error("materials:\n  x: {library: aluminium-tillotson, E0: 5}\n", "x",
+               "was it 5 MJ/kg?");
+  /* taken: the same values with their units, in range, 0, a gas in scaled units */
+  static const char *const ok[] = {
+      "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 2780\n    c0: 5.35 m/s\n"
+      "    n: 4\n    gamma: 2\n",
+      "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 2.78 kg/m3\n    c0: 5350\n"
+      "    n: 4\n    gamma: 2\n",
+      "materials:\n  x: {library: steel-target, strength: {yield: 0.39 Pa}}\n",
+      "materials:\n  x: {library: steel-target, strength: {yield: 390e6}}\n",
+      "materials:\n  x: {library: steel-target, strength: {yield: 0}}\n",
+      "materials:\n  x: {eos: ideal-gas, gamma: 1.4, rho0: 1}\n",
+  };
+  for (size_t k = 0; k < sizeof ok / sizeof ok[0]; k++) {
+    struct material m;
+    struct hv_error err = {0};
+    const int rc = read_case_material(ok[k], "x", &m, NULL, &err);
+    CHECK(rc == 0, "taken (%s): %s", rc ? err.msg : "ok", ok[k]);
+    if (!rc) material_free(&m);
+  }
+#undef MG
+}
+
 static void test_library_errors(void)
 {
   char dir[4200];
@@ -566,6 +624,7 @@ int main(void)
   test_overrides();
   test_sigma_c_off();
   test_errors();
+  test_wrong_units();
   test_library_errors();
   test_table_material();
   test_graft();

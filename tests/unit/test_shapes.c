@@ -250,7 +250,7 @@ static void test_errors(void)
   static const char *const pf =
       "materials: {st: {library: steel-bumper}, gas: {eos: ideal-gas, gamma: 1.4}}\n"
       "bodies:\n"
-      "  - {name: a, material: %s, density: 1, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}%s}\n"
+      "  - {name: a, material: %s, density: 1 kg/m3, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}%s}\n"
       "  - {name: b, material: st, spacing: 0.1, shape: {type: box, min: [2, 0, 0], max: [3, 1, 1]}%s}\n"
       "time: {end: 1}\n";
   char y[1024];
