@@ -1,24 +1,37 @@
 #!/usr/bin/env python3
 """Bad-input fuzzing of `hvsph run` (not part of `make check`; docs/design.md, "Bad input").
 
-Two modes, each N tries from a seed:
-  cases  mutates the example case files (a line deleted, doubled or indented, a value
-         replaced by a wrong one, a key renamed, the file cut short) and sets each up;
-  sets   runs example cases with 1 to 3 random `--set KEY=VALUE` of keys that runs read
-         (taken from the used_parameters.yaml files given) and wrong or odd values, for
-         two outputs (so the steps run too).
-A try passes when hvsph exits 0, or 2 (bad input; 3 in `sets`, a failed run) with exactly
-one "hvsph: error:" line, which in `cases` names the case file. Anything else (a crash, a
-signal, a hang past 60 s, several errors, a message without the file) is printed as BAD
-with the input kept in the work folder.
+Four modes, each N tries from a seed:
+  cases      mutates the example case files (a line deleted, doubled or indented, a value
+             replaced by a wrong one, a key renamed, the file cut short) and sets each up;
+  sets       runs example cases with 1 to 3 random `--set KEY=VALUE` of keys that runs
+             read (taken from the used_parameters.yaml files given) and wrong or odd
+             values, for two outputs (so the steps run too);
+  snapshots  damages one particle snapshot (.csv: a line deleted, doubled or swapped, a
+             field replaced, the header changed, the file cut short; .vtu: an attribute of
+             its XML changed, a tag removed, bytes of the header or the data overwritten,
+             the file cut short) of a copy of RUNDIR, a run with `output.csv: true`, and
+             renders it (radiograph or particles), renders the folder, or measures it;
+  tables     damages a tabulated EOS (the docs/models.md example: a token replaced or
+             added, a line deleted, doubled or joined, the file cut short) and runs a small
+             block of it for two outputs.
+A try passes when hvsph exits 0, or 2 (bad input; 3 in `sets` and `tables`, a failed run)
+with exactly one "hvsph: error:" line, which in `cases` names the case file and in
+`snapshots` the snapshot rendered alone. Anything else (a crash, a signal, a hang past 60 s,
+several errors, a message without the file) is printed as BAD with the input kept in the
+work folder. On a build with the sanitizers (`-DHVSPH_SANITIZE=ON`), run with
+UBSAN_OPTIONS=halt_on_error=1 so that undefined behaviour fails the try.
 
 usage: tools/fuzz-input.py BIN cases SEED N [WORKDIR]
        tools/fuzz-input.py BIN sets SEED N WORKDIR USED_PARAMETERS.yaml...
+       tools/fuzz-input.py BIN snapshots SEED N WORKDIR RUNDIR
+       tools/fuzz-input.py BIN tables SEED N WORKDIR
 """
 import glob
 import os
 import random
 import re
+import shutil
 import subprocess
 import sys
 
@@ -120,15 +133,179 @@ def fuzz_sets(binary, n, work, used):
     return bad
 
 
+ODD = ['nan', 'inf', '-inf', '1e308', '-1', 'abc', '', '2147483648', '-2147483649', '99999',
+       '1e-320', '0', '-0', '9223372036854775807', '1e400', ' ', '0x10', '"', '1e8', '2']
+
+
+def damage_csv(text):
+    lines = text.split('\n')
+    op = random.choice(['del', 'dup', 'field', 'field', 'field', 'trunc', 'header', 'swap'])
+    i = random.randrange(len(lines))
+    if op == 'del':
+        del lines[i]
+    elif op == 'dup':
+        lines.insert(i, lines[i])
+    elif op in ('field', 'header'):
+        if op == 'header':
+            i = random.randrange(min(3, len(lines)))
+        f = lines[i].split(',')
+        k = random.randrange(len(f))
+        f[k] = random.choice(ODD + ['id', 'x', 'mat', 'body'])
+        if random.random() < 0.2:
+            del f[k]
+        lines[i] = ','.join(f)
+    elif op == 'swap':
+        j = random.randrange(len(lines))
+        lines[i], lines[j] = lines[j], lines[i]
+    else:
+        text = '\n'.join(lines)
+        return text[:random.randrange(len(text))]
+    return '\n'.join(lines)
+
+
+def damage_vtu(data):
+    head = data.find(b'<AppendedData')
+    head = head if head > 0 else len(data)
+    op = random.choice(['trunc', 'attr', 'attr', 'attr', 'bytes', 'tag', 'head'])
+    if op == 'trunc':
+        return data[:random.randrange(len(data))]
+    if op == 'attr':
+        m = random.choice(list(re.finditer(rb'="([^"]*)"', data[:head])))
+        v = random.choice([x.encode() for x in ODD] +
+                          [b'Float32', b'Int64', b'UInt8', b'ascii', b'binary', b'-5'])
+        return data[:m.start(1)] + v + data[m.end(1):]
+    if op == 'tag':
+        m = random.choice(list(re.finditer(rb'<[^>]*>', data[:head])))
+        return data[:m.start()] + data[m.end():]
+    out = bytearray(data)
+    lo, hi = (0, head) if op == 'head' else (head, len(out))
+    for _ in range(random.randint(1, 4 if op == 'head' else 50)):
+        out[random.randrange(lo, hi)] = random.randrange(256)
+    return bytes(out)
+
+
+def fuzz_snapshots(binary, n, work, rundir):
+    snaps = sorted(glob.glob(os.path.join(rundir, 'particles_*.csv')))
+    if not snaps:
+        sys.exit('%s has no particles_*.csv: run a case with --set output.csv=true' % rundir)
+    bad = 0
+    for it in range(n):
+        d = os.path.join(work, 'run')
+        shutil.rmtree(d, ignore_errors=True)
+        shutil.copytree(rundir, d, ignore=shutil.ignore_patterns('checkpoint.hvc', 'frames'))
+        ext = random.choice(['csv', 'vtu'])
+        name = os.path.basename(random.choice(snaps))[:-3] + ext
+        path = os.path.join(d, name)
+        with open(path, 'rb') as f:   # read before the write truncates it
+            data = f.read()
+        if ext == 'csv':
+            data = damage_csv(data.decode()).encode()
+        else:
+            data = damage_vtu(data)
+        with open(path, 'wb') as f:
+            f.write(data)
+        if ext == 'vtu':
+            for c in glob.glob(os.path.join(d, 'particles_*.csv')):   # measure reads .vtu
+                os.remove(c)                                           # only without .csv
+        mode = random.choice(['radiograph', 'particles', 'folder', 'measure'])
+        if mode == 'measure':
+            cmd = [binary, 'measure', d, '--quiet']
+        elif mode == 'folder':
+            cmd = [binary, 'render', d, '-o', os.path.join(d, 'frames'), '--size', '200',
+                   '--quiet']
+        else:
+            cmd = [binary, 'render', path, '-o', os.path.join(d, 'pic.png'), '--size', '200',
+                   '--mode', mode, '--color',
+                   random.choice(['material', 'damage', 'velocity', 'pressure', 'density'])]
+        rc, err = run(cmd)
+        alone = mode in ('radiograph', 'particles')
+        if not (rc == 0 or (rc == 2 and errors(err) == 1 and (not alone or name in err))):
+            bad += 1
+            keep = os.path.join(work, 'bad_%d' % it)
+            shutil.rmtree(keep, ignore_errors=True)
+            os.rename(d, keep)
+            print('BAD', it, mode, name, rc, err.strip()[-400:], '->', keep, flush=True)
+    return bad
+
+
+TABLE = """# the docs/models.md example
+rho_count 3 e_count 4
+2000 2700 3500
+0 1e5 1e6 1e7
+-1e9  -9e8  0     9e9
+ 0     2e8  2e9   2e10
+ 2e10  2e10 2.3e10 4e10
+5000 5010 5100 6000
+5300 5310 5400 6300
+5600 5610 5700 6600
+"""
+TABLE_CASE = """name: table
+materials:
+  tab: {eos: table, file: eos.txt, rho0: 2700}
+domain: {min: [0, 0, 0], max: [0.02, 0.02, 0.02], boundary: {x: wall, y: periodic, z: periodic}}
+bodies:
+  - {name: block, material: tab, shape: {type: box, min: [0, 0, 0], max: [0.02, 0.02, 0.02]},
+     spacing: 2 mm, energy: 2e5, velocity: [100, 0, 0]}
+time: {end: 0.2 us}
+output: {every: 0.1 us}
+"""
+
+
+def fuzz_tables(binary, n, work):
+    open(os.path.join(work, 'case.yaml'), 'w').write(TABLE_CASE)
+    bad = 0
+    for it in range(n):
+        lines = TABLE.split('\n')
+        for _ in range(random.randint(1, 3)):
+            op = random.choice(['del', 'dup', 'tok', 'tok', 'tok', 'trunc', 'join', 'add'])
+            i = random.randrange(len(lines))
+            if op == 'del':
+                del lines[i]
+            elif op == 'dup':
+                lines.insert(i, lines[i])
+            elif op in ('tok', 'add'):
+                toks = lines[i].split()
+                if toks:
+                    k = random.randrange(len(toks))
+                    if op == 'tok':
+                        toks[k] = random.choice(ODD + ['3', '1.5', '#', '1,2'])
+                    else:
+                        toks.insert(k, random.choice(ODD))
+                lines[i] = ' '.join(toks)
+            elif op == 'join' and i + 1 < len(lines):
+                lines[i] = lines[i] + ' ' + lines.pop(i + 1)
+            elif op == 'trunc':
+                text = '\n'.join(lines)
+                lines = text[:random.randrange(len(text) + 1)].split('\n')
+        table = '\n'.join(lines)
+        open(os.path.join(work, 'eos.txt'), 'w').write(table)
+        rc, err = run([binary, 'run', os.path.join(work, 'case.yaml'), '-o',
+                       os.path.join(work, 'out'), '--threads', '1', '--quiet'])
+        if not (rc == 0 or (rc in (2, 3) and errors(err) == 1)):
+            bad += 1
+            keep = os.path.join(work, 'bad_%d.txt' % it)
+            open(keep, 'w').write(table)
+            print('BAD', it, rc, err.strip()[-400:], '->', keep, flush=True)
+    return bad
+
+
 def main():
-    if len(sys.argv) < 5 or sys.argv[2] not in ('cases', 'sets'):
+    modes = ('cases', 'sets', 'snapshots', 'tables')
+    if len(sys.argv) < 5 or sys.argv[2] not in modes or \
+            (sys.argv[2] == 'snapshots' and len(sys.argv) != 7):
         sys.exit(__doc__)
     binary, mode, seed, n = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
     work = sys.argv[5] if len(sys.argv) > 5 else '/tmp/hvsph-fuzz'
     os.makedirs(work, exist_ok=True)
     random.seed(seed)
-    bad = fuzz_cases(binary, n, work) if mode == 'cases' else fuzz_sets(binary, n, work,
-                                                                        sys.argv[6:])
+    if mode == 'cases':
+        bad = fuzz_cases(binary, n, work)
+    elif mode == 'sets':
+        bad = fuzz_sets(binary, n, work, sys.argv[6:])
+    elif mode == 'snapshots':
+        bad = fuzz_snapshots(binary, n, work, sys.argv[6])
+    else:
+        bad = fuzz_tables(binary, n, work)
     print('done', n, 'tries,', bad, 'bad')
     sys.exit(1 if bad else 0)
 

@@ -602,7 +602,7 @@ struct cfg_node *cfg_lookup(struct cfg *c, const char *path, struct cfg_node **d
   int nc = cfg_path_parse(path, comp, CFG_MAX_DEPTH);
   struct cfg_node *n = c->root;
   if (deepest) *deepest = n;
-  if (nc < 0) return NULL;
+  if (nc < 0 || !n) return NULL;
   for (int k = 0; k < nc; k++) {
     int i = comp[k].key ? cfg_node_find(n, comp[k].key, comp[k].klen)
                         : (n->kind == CFG_SEQ && comp[k].index < n->n ? comp[k].index : -1);
