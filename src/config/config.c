@@ -491,7 +491,9 @@ struct cfg *cfg_load_string(const char *yaml, const char *name, struct hv_error 
     return NULL;
   }
   root->line = root->vline = 0; /* messages about the root name just the file */
-  return cfg_alloc(name, root);
+  struct cfg *c = cfg_alloc(name, root);
+  c->si_record = yaml && !strncmp(yaml, CFG_USED_HEADER, strlen(CFG_USED_HEADER));
+  return c;
 }
 
 /* Reads a whole file into a malloc'ed, NUL-terminated buffer. */

@@ -60,7 +60,9 @@ int cfg_get_quantity(struct cfg *c, const char *path, enum unit_dim dim, const d
  * magnitude lies outside [lo, hi], the range `what` spans in real materials ("bulk sound
  * speeds of condensed materials"), is an error naming the file, line and key, with the
  * likely unit when one brings it into the range ("5.35 ... was it 5.35 km/s?"). A value
- * written with its unit, 0, and an absent key pass: a unit says the value is meant. */
+ * written with its unit, 0, and an absent key pass: a unit says the value is meant; so
+ * does a value of a run's used_parameters.yaml, whose numbers hvsph wrote in SI (unless
+ * a --set gives it anew). */
 int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double lo, double hi,
                       const char *what, struct hv_error *err);
 /* A sequence of three quantities ("[0, 1.5 mm, 0]"). */

@@ -230,6 +230,9 @@ int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double
 {
   struct cfg_node *deepest, *n = cfg_lookup(c, path, &deepest);
   if (!n || n->kind != CFG_SCALAR || !n->text) return 0;
+  /* a run's used_parameters.yaml (a restart, hvsph measure, or run as a case) holds SI
+     numbers by construction, each checked when its case was read; a --set is new input */
+  if (c->si_record && !n->file && n->line != CFG_LINE_SET) return 0;
   char *end;
   errno = 0;
   const double v = strtod(n->text, &end);

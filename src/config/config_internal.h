@@ -49,7 +49,13 @@ struct cfg {
   int nstrs, capstrs;
   char **files; /* names of the files grafted nodes came from (cfg_graft) */
   int nfiles, capfiles;
+  int si_record; /* the document is a used_parameters.yaml (it starts with CFG_USED_HEADER):
+                    every number in it is SI, written so by hvsph (cfg_check_typical) */
 };
+
+/* The first words of used_parameters.yaml (cfg_write_used). */
+#define CFG_USED_HEADER "# Parameters used by hvsph "
+
 
 /* One path component: a key (key != NULL) or a sequence index. */
 struct path_comp {

@@ -268,7 +268,7 @@ static void write_header(struct writer *w, const struct cfg *c, const char *vers
   struct tm tm;
   if (now != (time_t)-1 && gmtime_r(&now, &tm))
     strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  wr(w, "# Parameters used by hvsph %s\n", version ? version : "(unknown version)");
+  wr(w, CFG_USED_HEADER "%s\n", version ? version : "(unknown version)");
   /* the name in a comment: control characters and bytes that are not UTF-8 as \xNN, so
      that a line break or a Latin-1 file name cannot break the file */
   wr(w, "# case file: ");

@@ -980,6 +980,34 @@ static void test_measure_damaged(void)
   free(s0);
 }
 
+/* A material in scaled units, written with its units (the library's rubber-ring: rho0
+ * 1 kg/m3, c0 1 m/s), passes the wrong-units check; the run's used_parameters.yaml holds
+ * those numbers bare (SI by construction), and `hvsph restart` and a run of that file as
+ * a case take them (a first cut of the check refused both). */
+static void test_scaled_units_restart(void)
+{
+  char out[16384], args[9000];
+  const char *casefile = test_write_file("scaled.yaml", variant(13, "    density: 1 kg/m3"));
+  const char *dir = path_of("scaled"), *dir2 = path_of("scaled_again");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].material=rubber-ring "
+           "--set bodies[0].pressure=0 --set time.max_steps=3", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "scaled units: the run (exit %d): %s", rc, out);
+  snprintf(args, sizeof args, "restart '%s' --quiet --set time.max_steps=6", dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "scaled units: hvsph restart takes used_parameters.yaml (exit %d): %s", rc, out);
+  snprintf(args, sizeof args, "run '%s/used_parameters.yaml' -o '%s' --quiet "
+           "--set time.max_steps=2", dir, dir2);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "scaled units: used_parameters.yaml runs as a case (exit %d): %s", rc, out);
+  snprintf(args, sizeof args, "restart '%s' --quiet --set time.max_steps=7 "
+           "--set materials.rubber-ring.c0=2", dir);
+  rc = hvsph(args, out, sizeof out);
+  check_message("scaled units: a bare --set on restart", out,
+                (const char *const[]){"--set: materials.rubber-ring.c0: the bare number 2", NULL});
+  CHECK(rc == 2, "scaled units: ... is still checked (exit %d)", rc);
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -996,6 +1024,7 @@ int main(void)
   test_validate();
   test_measure();
   test_measure_damaged();
+  test_scaled_units_restart();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",

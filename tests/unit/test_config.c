@@ -556,6 +556,41 @@ static void test_write_used(void)
   cfg_free(c);
 }
 
+/* cfg_check_typical: a bare number outside the range is an error naming the file, line
+ * and key, with the likely unit; with a unit, 0 or in the range it passes; in a run's
+ * used_parameters.yaml (its header) the numbers are SI as written, except a --set's. */
+static void test_typical(void)
+{
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string("a: 2.78\nb: 2.78 kg/m3\nc: 0\nd: 2780\ne: 1e9\n",
+                                  "case.yaml", &err);
+  CHECK(c != NULL, "typical: the document loads");
+  if (!c) return;
+  const char *w = "densities of condensed materials";
+  int rc = cfg_check_typical(c, "a", UNIT_DENSITY, 50.0, 1e5, w, &err);
+  CHECK(rc == -1 && err.code == HV_EXIT_INPUT &&
+            strstr(err.msg, "case.yaml:1: a: the bare number 2.78 is read as 2.78 kg/m3") &&
+            strstr(err.msg, "was it 2.78 g/cm3?"),
+        "typical: a bare 2.78 is refused: %s", err.msg);
+  rc = cfg_check_typical(c, "e", UNIT_DENSITY, 50.0, 1e5, w, &err);   /* no unit fits */
+  CHECK(rc == -1 && strstr(err.msg, "case.yaml:5: e:") && !strstr(err.msg, "was it"),
+        "typical: a bare 1e9 is refused without a guess: %s", err.msg);
+  CHECK(!cfg_check_typical(c, "b", UNIT_DENSITY, 50.0, 1e5, w, &err) &&
+            !cfg_check_typical(c, "c", UNIT_DENSITY, 50.0, 1e5, w, &err) &&
+            !cfg_check_typical(c, "d", UNIT_DENSITY, 50.0, 1e5, w, &err) &&
+            !cfg_check_typical(c, "nokey", UNIT_DENSITY, 50.0, 1e5, w, &err),
+        "typical: with a unit, 0, in range or absent it passes");
+  cfg_free(c);
+  c = cfg_load_string("# Parameters used by hvsph test\na: 2.78  # kg/m3\n", "used.yaml", &err);
+  CHECK(c && !cfg_check_typical(c, "a", UNIT_DENSITY, 50.0, 1e5, w, &err),
+        "typical: a used_parameters.yaml's SI numbers pass");
+  rc = c ? cfg_apply_set(c, "a=2.78", &err) : -1;
+  CHECK(rc == 0 && cfg_check_typical(c, "a", UNIT_DENSITY, 50.0, 1e5, w, &err) == -1 &&
+            strstr(err.msg, "--set: a: the bare number 2.78"),
+        "typical: ... but not a --set on it: %s", err.msg);
+  cfg_free(c);
+}
+
 int main(void)
 {
   test_getters();
@@ -568,5 +603,6 @@ int main(void)
   test_deep_nesting();
   test_set();
   test_write_used();
+  test_typical();
   return test_finish();
 }
