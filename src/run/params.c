@@ -140,6 +140,13 @@ int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
       cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err))
     return -1;
   s->reorder_every = (int)reorder;
+  /* an interval longer than the run (often a bare number meant in us: `every: 5`) */
+  if (s->out.every > s->tp.end && s->tp.end > 0.0) {
+    char where[256];
+    hv_warn("%s: output.every = %g s is longer than time.end = %g s: outputs at the start and "
+            "the end only (a number without a unit is seconds; 0 says 'start and end' outright)",
+            cfg_where(c, "output.every", where, sizeof where), s->out.every, s->tp.end);
+  }
   return 0;
 }
 

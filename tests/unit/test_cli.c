@@ -1008,6 +1008,24 @@ static void test_scaled_units_restart(void)
   CHECK(rc == 2, "scaled units: ... is still checked (exit %d)", rc);
 }
 
+/* output.every longer than time.end (a bare 5 meant in us) is said: outputs at the
+ * start and the end only; the run goes on */
+static void test_every_warning(void)
+{
+  char out[16384], args[9000];
+  const char *casefile = test_write_file("every.yaml", variant(20, "  every: 5"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every"));
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "every.yaml:20: output.every = 5 s is longer than time.end = "
+                               "0.01 s: outputs at the start and the end only"),
+        "output.every past time.end: warned, run (exit %d): %s", rc, out);
+  casefile = test_write_file("every0.yaml", variant(20, "  every: 0"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every0"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 0: no warning (exit %d): %s", rc,
+        out);
+}
+
 int main(void)
 {
   /* the material library of this source tree, also for builds outside it (the binary
@@ -1025,6 +1043,7 @@ int main(void)
   test_measure();
   test_measure_damaged();
   test_scaled_units_restart();
+  test_every_warning();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",
