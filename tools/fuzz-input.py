@@ -137,15 +137,35 @@ ODD = ['nan', 'inf', '-inf', '1e308', '-1', 'abc', '', '2147483648', '-214748364
        '1e-320', '0', '-0', '9223372036854775807', '1e400', ' ', '0x10', '"', '1e8', '2']
 
 
+def edit_lines(lines, op, i):
+    """The whole-line damages both text formats share: 'del', 'dup', 'swap' (line i with
+    another), 'join' (line i with the next), 'trunc' (the text cut anywhere). Returns the
+    new lines, or None for another op."""
+    if op == 'del':
+        return lines[:i] + lines[i + 1:]
+    if op == 'dup':
+        return lines[:i + 1] + lines[i:]
+    if op == 'swap':
+        j = random.randrange(len(lines))
+        lines = list(lines)
+        lines[i], lines[j] = lines[j], lines[i]
+        return lines
+    if op == 'join':
+        return lines[:i] + [' '.join(lines[i:i + 2])] + lines[i + 2:]
+    if op == 'trunc':
+        text = '\n'.join(lines)
+        return text[:random.randrange(len(text) + 1)].split('\n')
+    return None
+
+
 def damage_csv(text):
     lines = text.split('\n')
     op = random.choice(['del', 'dup', 'field', 'field', 'field', 'trunc', 'header', 'swap'])
     i = random.randrange(len(lines))
-    if op == 'del':
-        del lines[i]
-    elif op == 'dup':
-        lines.insert(i, lines[i])
-    elif op in ('field', 'header'):
+    edited = edit_lines(lines, op, i)
+    if edited is not None:
+        return '\n'.join(edited)
+    if op in ('field', 'header'):
         if op == 'header':
             i = random.randrange(min(3, len(lines)))
         f = lines[i].split(',')
@@ -154,12 +174,6 @@ def damage_csv(text):
         if random.random() < 0.2:
             del f[k]
         lines[i] = ','.join(f)
-    elif op == 'swap':
-        j = random.randrange(len(lines))
-        lines[i], lines[j] = lines[j], lines[i]
-    else:
-        text = '\n'.join(lines)
-        return text[:random.randrange(len(text))]
     return '\n'.join(lines)
 
 
@@ -259,11 +273,10 @@ def fuzz_tables(binary, n, work):
         for _ in range(random.randint(1, 3)):
             op = random.choice(['del', 'dup', 'tok', 'tok', 'tok', 'trunc', 'join', 'add'])
             i = random.randrange(len(lines))
-            if op == 'del':
-                del lines[i]
-            elif op == 'dup':
-                lines.insert(i, lines[i])
-            elif op in ('tok', 'add'):
+            edited = edit_lines(lines, op, i)
+            if edited is not None:
+                lines = edited
+            else:
                 toks = lines[i].split()
                 if toks:
                     k = random.randrange(len(toks))
@@ -272,11 +285,6 @@ def fuzz_tables(binary, n, work):
                     else:
                         toks.insert(k, random.choice(ODD))
                 lines[i] = ' '.join(toks)
-            elif op == 'join' and i + 1 < len(lines):
-                lines[i] = lines[i] + ' ' + lines.pop(i + 1)
-            elif op == 'trunc':
-                text = '\n'.join(lines)
-                lines = text[:random.randrange(len(text) + 1)].split('\n')
         table = '\n'.join(lines)
         open(os.path.join(work, 'eos.txt'), 'w').write(table)
         rc, err = run([binary, 'run', os.path.join(work, 'case.yaml'), '-o',
