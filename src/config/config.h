@@ -65,6 +65,9 @@ int cfg_get_quantity(struct cfg *c, const char *path, enum unit_dim dim, const d
  * a --set gives it anew). */
 int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double lo, double hi,
                       const char *what, struct hv_error *err);
+/* Whether the value at path is a number written without a unit in input (as for
+ * cfg_check_typical: not one of a used_parameters.yaml's SI numbers, unless a --set's). */
+int cfg_is_bare(struct cfg *c, const char *path);
 /* A sequence of three quantities ("[0, 1.5 mm, 0]"). */
 int cfg_get_vec3(struct cfg *c, const char *path, enum unit_dim dim, const double *def,
                  double out[3], struct hv_error *err);

@@ -225,20 +225,33 @@ static const char *const *likely_units(enum unit_dim dim)
   }
 }
 
+/* The node at path when its value is a finite number written without a unit in input
+ * (not a number hvsph wrote to a used_parameters.yaml, see struct cfg), else NULL. */
+static struct cfg_node *bare_number(struct cfg *c, const char *path, double *v)
+{
+  struct cfg_node *deepest, *n = cfg_lookup(c, path, &deepest);
+  if (!n || n->kind != CFG_SCALAR || !n->text) return NULL;
+  /* a run's used_parameters.yaml (a restart, hvsph measure, or run as a case) holds SI
+     numbers by construction, each checked when its case was read; a --set is new input */
+  if (c->si_record && !n->file && n->line != CFG_LINE_SET) return NULL;
+  char *end;
+  *v = strtod(n->text, &end);
+  while (isspace((unsigned char)*end)) end++;
+  return end == n->text || *end || !isfinite(*v) ? NULL : n;   /* a unit, or no number */
+}
+
+int cfg_is_bare(struct cfg *c, const char *path)
+{
+  double v;
+  return bare_number(c, path, &v) != NULL;
+}
+
 int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double lo, double hi,
                       const char *what, struct hv_error *err)
 {
-  struct cfg_node *deepest, *n = cfg_lookup(c, path, &deepest);
-  if (!n || n->kind != CFG_SCALAR || !n->text) return 0;
-  /* a run's used_parameters.yaml (a restart, hvsph measure, or run as a case) holds SI
-     numbers by construction, each checked when its case was read; a --set is new input */
-  if (c->si_record && !n->file && n->line != CFG_LINE_SET) return 0;
-  char *end;
-  errno = 0;
-  const double v = strtod(n->text, &end);
-  while (isspace((unsigned char)*end)) end++;
-  if (end == n->text || *end || !isfinite(v) || v == 0.0) return 0;   /* a unit, or no number */
-  if (fabs(v) >= lo && fabs(v) <= hi) return 0;
+  double v;
+  struct cfg_node *n = bare_number(c, path, &v);
+  if (!n || v == 0.0 || (fabs(v) >= lo && fabs(v) <= hi)) return 0;
   const char *si = units_si_symbol(dim);
   char guess[160] = "";
   for (const char *const *u = likely_units(dim); *u; u++) {

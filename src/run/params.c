@@ -140,8 +140,9 @@ int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
       cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err))
     return -1;
   s->reorder_every = (int)reorder;
-  /* an interval longer than the run (often a bare number meant in us: `every: 5`) */
-  if (s->out.every > s->tp.end && s->tp.end > 0.0) {
+  /* a bare interval longer than the run: a number meant in us (`every: 5`); not one
+     written with its unit (a --set time.end shorter than it, for a quick look) */
+  if (s->out.every > s->tp.end && s->tp.end > 0.0 && cfg_is_bare(c, "output.every")) {
     char where[256];
     hv_warn("%s: output.every = %g s is longer than time.end = %g s: outputs at the start and "
             "the end only (a number without a unit is seconds; 0 says 'start and end' outright)",

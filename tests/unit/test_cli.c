@@ -1008,8 +1008,8 @@ static void test_scaled_units_restart(void)
   CHECK(rc == 2, "scaled units: ... is still checked (exit %d)", rc);
 }
 
-/* output.every longer than time.end (a bare 5 meant in us) is said: outputs at the
- * start and the end only; the run goes on */
+/* output.every written bare and longer than time.end (a 5 meant in us) is said: outputs
+ * at the start and the end only; the run goes on */
 static void test_every_warning(void)
 {
   char out[16384], args[9000];
@@ -1024,6 +1024,12 @@ static void test_every_warning(void)
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 0: no warning (exit %d): %s", rc,
         out);
+  /* with its unit it is meant (a --set time.end shorter than it, for a quick look) */
+  casefile = test_write_file("every_unit.yaml", variant(20, "  every: 5 s"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every_unit"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 5 s: no warning (exit %d): %s",
+        rc, out);
 }
 
 int main(void)
