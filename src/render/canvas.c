@@ -1,6 +1,7 @@
 /* canvas.c — an 8-bit RGB picture in memory, a few drawing primitives (blend, rectangle,
  * bitmap text) and its PNG writer (libpng, written whole or not at all through afile).
  */
+#include <errno.h>
 #include <png.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,8 +102,12 @@ struct png_err {
 
 static void png_on_error(png_structp png, png_const_charp msg)
 {
+  /* libpng's "Write Error" is a failed fwrite: errno says why (a full disk) */
+  const int e = errno;
   struct png_err *pe = png_get_error_ptr(png);
-  if (pe) snprintf(pe->msg, sizeof pe->msg, "%s", msg);
+  if (pe)
+    snprintf(pe->msg, sizeof pe->msg, "%s%s%s%s", msg, e ? " (" : "", e ? strerror(e) : "",
+             e ? ")" : "");
   png_longjmp(png, 1);
 }
 
@@ -157,6 +162,7 @@ int canvas_write_png(const struct canvas *c, const char *path, const char *descr
   png_bytep *rows = hv_malloc((size_t)c->h * sizeof *rows, "PNG rows");
   for (int y = 0; y < c->h; y++) rows[y] = c->rgb + 3 * (size_t)y * (size_t)c->w;
   struct png_err pe = {{0}};
+  errno = 0;
   int rc = png_encode(af.f, c, description, rows, &pe);
   free(rows);
   if (rc) {
