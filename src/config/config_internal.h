@@ -56,7 +56,6 @@ struct cfg {
 /* The first words of used_parameters.yaml (cfg_write_used). */
 #define CFG_USED_HEADER "# Parameters used by hvsph "
 
-
 /* One path component: a key (key != NULL) or a sequence index. */
 struct path_comp {
   const char *start; /* where the component starts in the path text */
