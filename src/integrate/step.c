@@ -149,7 +149,7 @@ static void update_h(struct sim *s)
  * limit (docs/models.md, "Time step"). */
 static double next_dt(struct sim *s)
 {
-  const struct particles *p = &s->p;
+  struct particles *p = &s->p;
   const struct boundary *b = &s->bnd;
   double dt = HUGE_VAL;
   size_t who = SIZE_MAX;
@@ -195,6 +195,7 @@ static double next_dt(struct sim *s)
           k = DT_CFL;
         }
       }
+      p->dt[i] = d;   /* its own limit, for the snapshots (output-files.md) */
       if (d < tdt) {
         tdt = d;
         twho = i;
@@ -393,7 +394,8 @@ int step_init(struct sim *s, struct hv_error *err)
   for (size_t i = 0; i < p->n; i++) p->de[i] = 0.0;
   sph_forces(p, &s->grid, &s->sph, NULL, s->mat);
   s->dt_prop = 0.0;
-  s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : next_dt(s);
+  const double dt = next_dt(s);   /* with time.dt_init too: each particle's own limit */
+  s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : dt;
   if (s->tp.dt_init > 0) s->dt_limit = DT_INIT;
   return 0;
 }

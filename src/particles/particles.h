@@ -54,7 +54,8 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split; 2: split again, fracture.split: crack; 0-1: opening, fracture.energy)") \
   X(double,  alpha, "",       PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)") \
   X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step") \
-  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack, fracture.energy)")
+  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack, fracture.energy)") \
+  X(double,  dt,    "s",      PF_OUT,                      "time step the particle allows (CFL, acceleration, wall approach)")
 
 /* Vectors (3 components: name[0..2]) */
 #define HV_PARTICLE_VECTORS(X)                                                        \

@@ -29,6 +29,10 @@ static void color_unit(enum render_color c, double lo, double hi, double *unit, 
     *unit = 1.0;
     *label = "viscosity alpha";
     return;
+  case RENDER_COLOR_DT:
+    *unit = 1.0;
+    *label = "log10 of the time step the particle allows [s]";
+    return;
   case RENDER_COLOR_DAMAGE:
   case RENDER_COLOR_MATERIAL: break;
   }
@@ -38,7 +42,8 @@ static void color_unit(enum render_color c, double lo, double hi, double *unit, 
 
 static const char *color_name(enum render_color c)
 {
-  static const char *n[] = {"material", "damage", "velocity", "pressure", "density", "alpha"};
+  static const char *n[] = {"material", "damage", "velocity", "pressure", "density", "alpha",
+                            "dt"};
   return n[c];
 }
 
@@ -78,6 +83,14 @@ int render_png(const char *path, const struct particles *p, const struct render_
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_ALPHA && !p->alpha)
     return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no alpha column (a run without "
                         "sph.viscosity.switch): colour by another quantity");
+  if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DT) {
+    size_t k = 0;
+    while (k < p->n && !(p->dt[k] > 0.0)) k++;
+    if (k == p->n)   /* the field reads 0 where a snapshot has no such column */
+      return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no dt column (written by an "
+                          "hvsph before it kept each particle's time step): colour by another "
+                          "quantity");
+  }
   if (o->mode == RENDER_RADIOGRAPH && !(o->mu > 0.0 && isfinite(o->mu)))
     return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg]");
   if (o->have_range && !(o->range[0] < o->range[1]))

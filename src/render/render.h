@@ -39,7 +39,8 @@ enum render_color {
   RENDER_COLOR_VELOCITY,      /* |v| [m/s], labelled in km/s */
   RENDER_COLOR_PRESSURE,      /* p [Pa], labelled in GPa */
   RENDER_COLOR_DENSITY,       /* rho [kg/m3], labelled in g/cm3 */
-  RENDER_COLOR_ALPHA          /* the viscosity switch's α (sph.viscosity.switch), 0..its max */
+  RENDER_COLOR_ALPHA,         /* the viscosity switch's α (sph.viscosity.switch), 0..its max */
+  RENDER_COLOR_DT             /* the time step a particle allows [s], coloured by its log10 */
 };
 
 #define RENDER_MU_DEFAULT 0.05   /* [m2/kg] film mass attenuation coefficient (grey; iron near 90 keV) */

@@ -30,8 +30,9 @@ static void render_usage(FILE *f)
           "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
           "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
           "                                and y up (along z), x and z (along y), y and z (along x)\n"
-          "  --color material|damage|velocity|pressure|density|alpha   particles mode (default\n"
-          "                                material; alpha: the viscosity switch's coefficient)\n"
+          "  --color material|damage|velocity|pressure|density|alpha|dt   particles mode (default\n"
+          "                                material; alpha: the viscosity switch's coefficient;\n"
+          "                                dt: the time step each particle allows, log scale)\n"
           "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
           "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
           "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
@@ -103,7 +104,8 @@ int render_main(int argc, char **argv)
 {
   static const char *modes[] = {"radiograph", "particles"};
   static const char *axes[] = {"x", "y", "z"};
-  static const char *colors[] = {"material", "damage", "velocity", "pressure", "density", "alpha"};
+  static const char *colors[] = {"material", "damage", "velocity", "pressure", "density", "alpha",
+                                 "dt"};
   struct render_options o;
   render_options_default(&o);
   const char *in = NULL, *out = NULL, *range = NULL;
@@ -136,8 +138,9 @@ int render_main(int argc, char **argv)
       if ((k = pick(val, axes, 3)) < 0) return fail_usage("--axis must be x, y or z, not '%s'", val);
       o.axis = k;
     } else if (!strcmp(opt, "--color") || !strcmp(opt, "--colour")) {
-      if ((k = pick(val, colors, 6)) < 0)
-        return fail_usage("--color must be material, damage, velocity, pressure, density or alpha, not '%s'", val);
+      if ((k = pick(val, colors, 7)) < 0)
+        return fail_usage("--color must be material, damage, velocity, pressure, density, alpha "
+                          "or dt, not '%s'", val);
       o.color = (enum render_color)k;
     } else if (!strcmp(opt, "--size")) {
       if (parse_size(val, &o.width, &o.height)) return fail_usage("--size needs WxH or W in pixels, not '%s'", val);
@@ -172,12 +175,19 @@ int render_main(int argc, char **argv)
     static const enum unit_dim dim[] = {
         [RENDER_COLOR_MATERIAL] = UNIT_NONE,    [RENDER_COLOR_DAMAGE] = UNIT_NONE,
         [RENDER_COLOR_VELOCITY] = UNIT_VELOCITY, [RENDER_COLOR_PRESSURE] = UNIT_PRESSURE,
-        [RENDER_COLOR_DENSITY] = UNIT_DENSITY,  [RENDER_COLOR_ALPHA] = UNIT_NONE};
+        [RENDER_COLOR_DENSITY] = UNIT_DENSITY,  [RENDER_COLOR_ALPHA] = UNIT_NONE,
+        [RENDER_COLOR_DT] = UNIT_TIME};
     if (o.mode != RENDER_PARTICLES || o.color == RENDER_COLOR_MATERIAL)
       return fail_usage("%s", "--range needs --mode particles and a --color quantity");
     if (parse_list(range, 2, dim[o.color], o.range, msg, sizeof msg) || !(o.range[0] < o.range[1])) {
       fprintf(stderr, "hvsph render: --range '%s': %s\n", range, msg[0] ? msg : "low end must be below high end");
       return HV_EXIT_USAGE;
+    }
+    if (o.color == RENDER_COLOR_DT) {   /* given as times, coloured by their log10 */
+      if (!(o.range[0] > 0.0))
+        return fail_usage("--range '%s': time steps are positive", range);
+      o.range[0] = log10(o.range[0]);
+      o.range[1] = log10(o.range[1]);
     }
     o.have_range = 1;
   }

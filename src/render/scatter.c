@@ -38,6 +38,7 @@ static double particle_value(const struct particles *p, size_t i, enum render_co
   case RENDER_COLOR_PRESSURE: return p->p[i];
   case RENDER_COLOR_DENSITY: return p->rho[i];
   case RENDER_COLOR_ALPHA: return p->alpha ? p->alpha[i] : 0.0;
+  case RENDER_COLOR_DT: return p->dt[i] > 0.0 ? log10(p->dt[i]) : (double)NAN;   /* not drawn */
   case RENDER_COLOR_MATERIAL: break;
   }
   return (double)p->mat[i];

@@ -24,6 +24,7 @@
  *     steps: 7.48e-4; the mirror conserves it, the check allows 2e-3, 1e-2 before).
  *  5. A particle carried across a wall by the predictor's half step is reflected
  *     exactly (see predictor_crossing).
+ * In parts 1–4 the snapshots' per-particle `dt` is checked against the step (dt_field_bad).
  */
 #include <math.h>
 #include <stdint.h>
@@ -62,6 +63,25 @@
   "     shape: {type: box, min: [%g, 0.4375, 0.4375], max: [%g, 0.5625, 0.5625]}}\n"        \
   "time: {end: 1e30}\n"
 
+/* The snapshots' `dt` field: every particle's own limit is positive and finite, none is
+ * below the run's next step, and where a particle's limit set that step (CFL,
+ * acceleration, wall approach) it is the step bit for bit, at the particle named. */
+static int dt_field_bad(const struct sim *s)
+{
+  double dmin = HUGE_VAL;
+  int64_t who = -1;
+  for (size_t i = 0; i < s->p.n; i++) {
+    const double d = s->p.dt[i];
+    if (!(d > 0.0 && isfinite(d)) || d < s->dt) return 1;
+    if (d < dmin) {
+      dmin = d;
+      who = s->p.id[i];
+    }
+  }
+  const int set_by_particle = s->dt_limit == DT_CFL || s->dt_limit == DT_ACCELERATION;
+  return set_by_particle && (dmin != s->dt || who != s->dt_limit_id);
+}
+
 /* Runs NSTEPS steps with the lone particle's box starting at x0; returns its vsig, and
  * *limit_body the body whose limit set the last proposed step (-1 on failure). */
 static double run(int solid, double x0, int *limit_body, double *c_lone)
@@ -77,6 +97,8 @@ static double run(int solid, double x0, int *limit_body, double *c_lone)
   int ok = !step_init(&s, &err);
   for (int k = 0; k < NSTEPS && ok; k++) ok = !step_advance(&s, &err);
   CHECK(ok, "x0 = %g: %d steps (%s)", x0, NSTEPS, ok ? "ok" : err.msg);
+  CHECK(ok && !dt_field_bad(&s), "x0 = %g: each particle's dt is its own limit, the smallest "
+        "the step (%.6g s)", x0, s.dt);
   double vsig = NAN;
   for (size_t i = 0; i < s.p.n; i++)
     if (s.p.body[i] == 1) {
@@ -114,7 +136,7 @@ static void wall_approach(void)
   const size_t n = s.p.n;
   double *d0 = malloc(n * sizeof *d0), *h0 = malloc(n * sizeof *h0), worst = 0.0;
   int64_t *id0 = malloc(n * sizeof *id0);
-  int steps = 0, reached = 0;
+  int steps = 0, reached = 0, dt_bad = 0;
   /* until the block has stopped against the wall and moved back (or 400 steps) */
   while (ok && steps < 400) {
     for (size_t i = 0; i < n; i++) {
@@ -126,6 +148,7 @@ static void wall_approach(void)
     ok = !step_advance(&s, &err);
     if (!ok) break;
     steps++;
+    dt_bad += dt_field_bad(&s);
     CHECK(s.p.n == n, "wall: no particle lost (%zu of %zu)", s.p.n, n);
     if (s.p.n != n) break;
     /* the particles keep their slots unless reordered: match by id */
@@ -143,6 +166,8 @@ static void wall_approach(void)
     if (reached && vmax < 0.0) break;   /* everything rebounds */
   }
   CHECK(ok, "wall: %d steps (%s)", steps, ok ? "ok" : err.msg);
+  CHECK(dt_bad == 0, "wall: each particle's dt is its own limit, the smallest the step, at "
+        "every step (%d of %d steps wrong)", dt_bad, steps);
   diag_totals(&s.p, &t);
   const double de = fabs(t.e_total - t0.e_total) / t0.e_total;
   printf("wall: %d steps to t = %.4g s; the largest move towards the wall %.4g of "

@@ -282,7 +282,8 @@ static void test_extremes(void)
  * cloud of small clusters; a half model z >= 0. Body 0 the projectile, body 1 the bumper
  * and its debris; material 0 projectile, 1 bumper, or with swap the other way round (as a
  * case whose materials are numbered in another order). solid: 1 with a damage column, 2
- * with an alpha column (viscosity switch), 3 both. */
+ * with an alpha column (viscosity switch), 3 both; 4 adds each particle's time step, dt
+ * (1 ns in the projectile, 0.1 us in the bumper). */
 static const char *write_scene(const char *name, int solid, int swap)
 {
   struct particles p;
@@ -308,6 +309,8 @@ static const char *write_scene(const char *name, int solid, int swap)
   }
   if (solid & 2)
     for (size_t i = 0; i < p.n; i++) p.alpha[i] = 0.1 + 0.9 * (double)(i % 7) / 6.0;
+  if (solid & 4)
+    for (size_t i = 0; i < p.n; i++) p.dt[i] = p.mat[i] == 0 ? 1e-9 : 1e-7;
   if (solid & 1)
     for (size_t i = 0; i < p.n; i++) p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
   for (size_t i = 0; i < p.n; i++) {
@@ -472,6 +475,31 @@ static void test_command(void)
            "--range 0,1km/s", avscene, dir);
   st = run(args, out, sizeof out);
   CHECK(st == 1 && strstr(out, "--range"), "alpha --range with a unit: exit %d (1) %s", st, out);
+
+  /* --color dt: each particle's time step on a log scale; --range in time units, > 0 */
+  const char *dtscene = write_scene("scene_dt.csv", 5, 0);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+           "--axis y --size 640x400", dtscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 0, "particles by dt: exit %d (0) %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+           "--range 1ns,0.1us --axis y --size 640x400", dtscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 0, "particles by dt with --range 1ns,0.1us: exit %d (0) %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+           "--range 0,1us", dtscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 1 && strstr(out, "time steps are positive"), "dt --range from 0: exit %d (1) %s",
+        st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+           "--range 1,2km/s", dtscene, dir);
+  st = run(args, out, sizeof out);
+  CHECK(st == 1 && strstr(out, "--range"), "dt --range in km/s: exit %d (1) %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt0.png' --mode particles --color dt",
+           avscene, dir);   /* a snapshot without the column (an older hvsph's) */
+  st = run(args, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "no dt column"), "dt colour without a dt column: exit %d (2): %s",
+        st, out);
 
   /* a --range narrower than the rounding of its ends: the colour bar's ticks must not
    * loop for ever */
