@@ -480,7 +480,7 @@ static int check_units(struct cfg *c, const char *path, const struct material *m
     double lo, hi;
     const char *what;
   } typical[] = {
-      {"rho0", UNIT_DENSITY, 50.0, 1e5, "densities of condensed materials"},
+      {"rho0", UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI, HV_RHO_CONDENSED_WHAT},
       {"c0", UNIT_VELOCITY, 100.0, 5e4, "bulk sound speeds of condensed materials"},
       {"A", UNIT_PRESSURE, 1e6, 1e13, "bulk moduli of condensed materials (Tillotson A)"},
       {"E0", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "Tillotson E0 of real materials"},

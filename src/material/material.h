@@ -123,6 +123,12 @@ struct material {
 
 #define HV_MAX_MATERIALS 32
 
+/* The densities condensed materials span [kg/m3]: a bare number outside is a wrong unit
+ * (cfg_check_typical; a material's rho0 and a body's density, docs/units.md). */
+#define HV_RHO_CONDENSED_LO 50.0
+#define HV_RHO_CONDENSED_HI 1e5
+#define HV_RHO_CONDENSED_WHAT "densities of condensed materials"
+
 /* Reads the material defined at `path` (a mapping, e.g. "materials.steel") from the
  * case, after grafting the library entry it names (`library: NAME`) under it: keys the
  * case gives override the library's (cfg_graft). Keys: see docs/models.md, "Material

@@ -200,7 +200,8 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, DBL_MIN, HUGE_VAL, &bs->rho, err)) return -1;
   /* wrong units: a bare density far from any condensed material's (2.78, in g/cm3) */
   if (m->eos != EOS_IDEAL_GAS &&
-      cfg_check_typical(c, key, UNIT_DENSITY, 50.0, 1e5, "densities of condensed materials", err))
+      cfg_check_typical(c, key, UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI,
+                        HV_RHO_CONDENSED_WHAT, err))
     return -1;
   snprintf(key, sizeof key, "%s.pressure", path);
   snprintf(key2, sizeof key2, "%s.energy", path);

@@ -427,7 +427,7 @@ static void test_table_errors(void)
       {"cneg.txt", "rho_count 2 e_count 2\n1 2\n0 1\n1 2\n3 4\n5 6\n7 -8\n",
        "cneg.txt:7: sound-speed row 2 value 2 = -8 must be > 0"},
       {"word.txt", "rho_count 2 e_count 2\n1 2\n0 x1\n", "word.txt:3: e[2]: 'x1' is not a number"},
-      /* a sound speed past light's (found by fuzzing: 9.2e18 m/s set a step of 1e-22 s, a
+      /* a sound speed past light's (found by fuzzing: 9.2e18 m/s set a step of order 1e-22 s, a
          run that never ends) */
       {"clight.txt", "rho_count 2 e_count 2\n1 2\n0 1\n1 2\n3 4\n5 9.2e18\n7 8\n",
        "clight.txt:6: sound-speed row 1 value 2 = 9.2e+18 m/s is faster than light "
