@@ -111,7 +111,7 @@ static void test_csv(struct particles *p)
   CHECK(text && strncmp(text, "# hvsph v0.1-test case demo time 1.2345678901234567e-06 s step 4242\n",
                         67) == 0, "CSV comment line");
   CHECK(text && strstr(text, "\n# materials 0=al-2024 1=steel_4340 2=W--alloy\n"), "materials line");
-  CHECK(text && strstr(text, "\nid,x,y,z,vx,vy,vz,m,rho,p,e,h,mat,body,cs\n"), "CSV header");
+  CHECK(text && strstr(text, "\nid,x,y,z,vx,vy,vz,m,rho,p,e,h,mat,body,cs,dt\n"), "CSV header");
   int lines = 0;
   for (char *q = text; q && *q; q++) lines += *q == '\n';
   CHECK(lines == 3 + NP, "CSV has %d lines (3 + %d reals, no ghosts)", lines, NP);
