@@ -476,30 +476,49 @@ static void test_command(void)
   st = run(args, out, sizeof out);
   CHECK(st == 1 && strstr(out, "--range"), "alpha --range with a unit: exit %d (1) %s", st, out);
 
-  /* --color dt: each particle's time step on a log scale; --range in time units, > 0 */
+  /* --color dt: each particle's time step on a log scale; --range in time units, > 0.
+   * The scene's projectile allows 1 ns, its bumper 0.1 us: with --range 1ns,0.1us they
+   * take the colour map's two ends; with 10ns,1us the bumper (log10 -7) is mid-map and
+   * no disc has the top end. Counted in the plot, above the caption band. */
   const char *dtscene = write_scene("scene_dt.csv", 5, 0);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
-           "--axis y --size 640x400", dtscene, dir);
-  st = run(args, out, sizeof out);
-  CHECK(st == 0, "particles by dt: exit %d (0) %s", st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
-           "--range 1ns,0.1us --axis y --size 640x400", dtscene, dir);
-  st = run(args, out, sizeof out);
-  CHECK(st == 0, "particles by dt with --range 1ns,0.1us: exit %d (0) %s", st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
-           "--range 0,1us", dtscene, dir);
-  st = run(args, out, sizeof out);
-  CHECK(st == 1 && strstr(out, "time steps are positive"), "dt --range from 0: exit %d (1) %s",
-        st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
-           "--range 1,2km/s", dtscene, dir);
-  st = run(args, out, sizeof out);
-  CHECK(st == 1 && strstr(out, "--range"), "dt --range in km/s: exit %d (1) %s", st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_dt0.png' --mode particles --color dt",
-           avscene, dir);   /* a snapshot without the column (an older hvsph's) */
-  st = run(args, out, sizeof out);
-  CHECK(st == 2 && strstr(out, "no dt column"), "dt colour without a dt column: exit %d (2): %s",
-        st, out);
+  static const struct {
+    const char *scene;        /* "dt": the scene with dt, "av": without the column */
+    const char *opts;
+    int status, top;          /* exit status; whether the top colour must be drawn */
+    const char *needle;       /* in the output, or NULL */
+  } dtc[] = {
+      {"dt", "--axis y", 0, -1, NULL},
+      {"dt", "--range 1ns,0.1us --axis y", 0, 1, NULL},
+      {"dt", "--range 10ns,1us --axis y", 0, 0, NULL},
+      {"dt", "--range 0,1us", 1, -1, "time steps are positive"},
+      {"dt", "--range 1,2km/s", 1, -1, "--range"},
+      {"av", "", 2, -1, "no dt column"},   /* a snapshot without the column (an older hvsph's) */
+  };
+  for (size_t k = 0; k < sizeof dtc / sizeof dtc[0]; k++) {
+    snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+             "--size 640x400 %s", dtc[k].scene[0] == 'd' ? dtscene : avscene, dir,
+             dtc[k].opts);
+    st = run(args, out, sizeof out);
+    CHECK(st == dtc[k].status && (!dtc[k].needle || strstr(out, dtc[k].needle)),
+          "--color dt %s: exit %d (%d) %s", dtc[k].opts, st, dtc[k].status, out);
+    if (dtc[k].top < 0 || st != 0) continue;
+    snprintf(args, sizeof args, "%s/particles_dt.png", dir);
+    img = read_png(args, &w, &h);
+    unsigned char lo[3], hi[3];
+    render_colormap(0.0, lo);
+    render_colormap(1.0, hi);
+    long nlo = 0, nhi = 0;
+    for (int y = 0; img && y < h - 120; y++)
+      for (int x = 0; x < w; x++) {
+        const unsigned char *q = img + 3 * ((size_t)y * (size_t)w + (size_t)x);
+        nlo += q[0] == lo[0] && q[1] == lo[1] && q[2] == lo[2];
+        nhi += q[0] == hi[0] && q[1] == hi[1] && q[2] == hi[2];
+      }
+    CHECK(img && nlo > 200 && (dtc[k].top ? nhi > 200 : nhi == 0),
+          "--color dt %s: %ld pixels of the map's low end (projectile, > 200), %ld of its top "
+          "(bumper, %s)", dtc[k].opts, nlo, nhi, dtc[k].top ? "> 200" : "none");
+    free(img);
+  }
 
   /* a --range narrower than the rounding of its ends: the colour bar's ticks must not
    * loop for ever */
