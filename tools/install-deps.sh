@@ -6,7 +6,7 @@
 #                                  and study tools (tools/*.py)
 #   tools/install-deps.sh --analyze   also clang-tools-14 (scan-build) for `make analyze`
 set -euo pipefail
-# git: the version baked into the binary and its outputs is `git describe` (cmake/version.cmake);
+# git: the commit in the version baked into the binary and its outputs (cmake/version.cmake);
 # unit.test_cli fails on "unknown". python3: tests/consistency/test_restart.sh.
 pkgs=(build-essential cmake pkg-config libfyaml-dev libpng-dev zlib1g-dev python3 git)
 for arg in "$@"; do

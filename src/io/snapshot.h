@@ -62,10 +62,11 @@ int io_read_particles(const char *path, struct particles *p, double *time, struc
 int io_read_material_names(const char *path, char names[][64], int max);
 
 /* ParaView collection: rewrites the whole .pvd listing every (times[k] [s],
- * files[k]) so far. File names are written as given; ParaView resolves them
- * relative to the .pvd's folder. */
+ * files[k]) so far, after an XML comment with meta's version and case name (meta may
+ * be NULL; its time and step are not used). File names are written as given;
+ * ParaView resolves them relative to the .pvd's folder. */
 int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
-                 struct hv_error *err);
+                 const struct snapshot_meta *meta, struct hv_error *err);
 
 /* A generic CSV table: optional comment (each line prefixed "# "), a header of
  * the ncols column names, then nrows rows from rows[r * ncols + c]. A value that

@@ -83,7 +83,8 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
     o->times[o->count] = s->t;
     o->files[o->count] = strdup(name);
     snprintf(path, sizeof path, "%s/run.pvd", o->dir);
-    if (io_write_pvd(path, o->times, (const char *const *)o->files, o->count + 1, err)) return -1;
+    if (io_write_pvd(path, o->times, (const char *const *)o->files, o->count + 1, &meta, err))
+      return -1;
   }
   if (s->out.csv) {
     snprintf(path, sizeof path, "%s/particles_%05d.csv", o->dir, o->count);

@@ -398,9 +398,23 @@ static void test_pvd(void)
   const double t[3] = {0.0, 1e-6, 2.5e-6};
   const char *files[3] = {"particles_000000.vtu", "particles_000001.vtu", "a&b.vtu"};
   const char *path = path_in("run.pvd");
-  CHECK(io_write_pvd(path, t, files, 3, &err) == 0, "PVD written: %s", err.msg);
+  /* a case named so that its comment holds what the reader looks for */
+  struct snapshot_meta meta = {.version = "0.9.0 (commit abc1234)",
+                               .case_name = "<DataSet timestep=\"9\" file=\"x.vtu\"/> <Collection>"};
+  CHECK(io_write_pvd(path, t, files, 3, &meta, &err) == 0, "PVD written: %s", err.msg);
   char *text = test_slurp(path, NULL);
   CHECK(text && strstr(text, "type=\"Collection\""), "PVD is a collection");
+  CHECK(text && !strncmp(text, "<?xml version=\"1.0\"?>\n<!-- hvsph 0.9.0 (commit abc1234) case "
+                         "<DataSet", 58), "PVD's comment gives the version and case: %.80s",
+        text ? text : "");
+  double *rt = NULL;
+  char **rf = NULL;
+  int rn = io_read_pvd(path, &rt, &rf, &err);
+  CHECK(rn == 3 && rt[1] == 1e-6 && !strcmp(rf[2], "a&b.vtu"),
+        "PVD read back: 3 entries, not the comment's (%d)", rn);
+  for (int k = 0; k < rn; k++) free(rf[k]);
+  free(rf);
+  free(rt);
   CHECK(text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
             strstr(text, "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
             strstr(text, "file=\"a&amp;b.vtu\""),
