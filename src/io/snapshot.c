@@ -64,8 +64,7 @@ int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const c
   return afile_printf(af, err, "%s", suffix);
 }
 
-/* Writes s as the value of an XML attribute (escaping & < > " '). */
-static int put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
+int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
 {
   for (; *s; s++) {
     const char *rep = NULL;
@@ -100,7 +99,7 @@ static int pvd_body(struct afile *af, const double *times, const char *const *fi
   for (int k = 0; k < n; k++) {
     if (afile_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
                      times[k]) ||
-        put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
+        io_put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
       return -1;
   }
   return afile_printf(af, err, "  </Collection>\n</VTKFile>\n");
