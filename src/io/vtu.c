@@ -146,6 +146,7 @@ static int compress_array(struct vtu_array *a, unsigned char *buf, const char *p
     a->zhdr[3 + b] = zl;
   }
   free(zb);
+  if (a->zlen) a->z = hv_realloc(a->z, a->zlen, "snapshot compression");   /* the slack back */
   a->block = 8 * (3 + nb) + a->zlen;
   return 0;
 }
