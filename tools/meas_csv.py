@@ -114,7 +114,7 @@ def validation_table(path):
     paper_simulation)}}, the quantity's name without its ':object' suffix."""
     out = {}
     with open(path) as f:
-        for r in csv.DictReader(f):
+        for r in csv.DictReader(line for line in f if not line.startswith("#")):
             q = r["quantity"].split(":")[0]
             out.setdefault(r["case"], {})[q] = (float(r["simulated"]), float(r["experiment"]),
                                                 float(r["paper_simulation"]))

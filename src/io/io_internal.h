@@ -19,6 +19,9 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
 int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
                      const char *suffix, int xml_comment, struct hv_error *err);
 
+/* Writes s as the value of an XML attribute (escaping & < > " '); -1 on a write error. */
+int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err);
+
 /* The value of the attribute `name` in the XML tag [s, end) (the tag's text from its
  * '<'), the five character entities decoded, into buf (len bytes); -1 when the tag has no
  * such attribute, its value is not closed or does not fit, or holds another entity

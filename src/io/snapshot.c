@@ -64,8 +64,7 @@ int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const c
   return afile_printf(af, err, "%s", suffix);
 }
 
-/* Writes s as the value of an XML attribute (escaping & < > " '). */
-static int put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
+int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
 {
   for (; *s; s++) {
     const char *rep = NULL;
@@ -83,32 +82,35 @@ static int put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
 }
 
 static int pvd_body(struct afile *af, const double *times, const char *const *files, int n,
-                    struct hv_error *err)
+                    const struct snapshot_meta *meta, struct hv_error *err)
 {
   const unsigned short one = 1;
   unsigned char first;
   memcpy(&first, &one, 1);
+  char ver[256], name[1024];
+  io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
+  io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
   if (afile_printf(af, err,
-                   "<?xml version=\"1.0\"?>\n"
+                   "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n"
                    "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
                    "  <Collection>\n",
-                   first ? "LittleEndian" : "BigEndian"))
+                   ver, name, first ? "LittleEndian" : "BigEndian"))
     return -1;
   for (int k = 0; k < n; k++) {
     if (afile_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
                      times[k]) ||
-        put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
+        io_put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
       return -1;
   }
   return afile_printf(af, err, "  </Collection>\n</VTKFile>\n");
 }
 
 int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
-                 struct hv_error *err)
+                 const struct snapshot_meta *meta, struct hv_error *err)
 {
   struct afile af;
   if (afile_open(&af, path, err)) return -1;
-  if (pvd_body(&af, times, files, n, err)) {
+  if (pvd_body(&af, times, files, n, meta, err)) {
     afile_abort(&af);
     return -1;
   }
@@ -305,11 +307,16 @@ int io_read_pvd(const char *path, double **times, char ***files, struct hv_error
   fclose(f);
   text[len] = '\0';
   int n = 0, rc = 0;
+  /* searched for from the root element on: the comment before it holds the case's name,
+     which may contain "<DataSet" (its text is one line, cleaned of control characters, so
+     it cannot hold "\n<VTKFile"); a file of another writer is read from its start */
+  const char *root = strstr(text, "\n<VTKFile");
+  const char *coll = memchr(text, '\0', len) ? NULL : strstr(root ? root : text, "<Collection");
   if (e) rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
-  else if (memchr(text, '\0', len) || !strstr(text, "<Collection"))
+  else if (!coll)
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: not a ParaView collection (no <Collection> "
                       "element)", path);
-  for (const char *q = text; !rc && (q = strstr(q, "<DataSet")) != NULL; n++) {
+  for (const char *q = coll; !rc && (q = strstr(q, "<DataSet")) != NULL; n++) {
     const char *end = strchr(q, '>');
     char name[4096], ts[128], *tend;
     if (!end || io_xml_attr(q, end, "file", name, sizeof name) ||

@@ -20,13 +20,17 @@ struct snapshot_meta {
   const char *case_name;              /* name of the case */
   const char *const *material_names;  /* index -> name, for the mat column; may be NULL */
   int nmat;                           /* entries in material_names */
+  const char *const *body_names;      /* index -> name, for the body column; may be NULL */
+  int nbody;                          /* entries in body_names */
+  int vtu_zlib;                       /* VTU: zlib-compressed arrays (output.compress) */
 };
 
 /* VTK XML UnstructuredGrid (.vtu), appended raw binary data with
- * header_type="UInt64" (no base64, no compression): one VTK_VERTEX cell per
- * particle, Points = x, PointData = every other field flagged PF_OUT (vectors
- * as 3-component arrays named like the field, e.g. "v"; int64 -> Int64,
- * int32 -> Int32, double -> Float64), FieldData TIME [s] and STEP. */
+ * header_type="UInt64" (no base64; zlib-compressed when meta->vtu_zlib): one
+ * VTK_VERTEX cell per particle, Points = x, PointData = every other field flagged
+ * PF_OUT (vectors as 3-component arrays named like the field, e.g. "v"; int64 ->
+ * Int64, int32 -> Int32, double -> Float64), FieldData TIME [s], STEP and the
+ * material and body names ("mat <name>", "body <name>": Int32, the index). */
 int io_write_vtu(const char *path, struct particles *p, const struct snapshot_meta *meta,
                  struct hv_error *err);
 
@@ -48,7 +52,8 @@ int io_read_particles_csv(const char *path, struct particles *p, double *time,
 /* Reads a file written by io_write_vtu the same way: arrays matched by name against
  * the fields (positions from Points), unknown arrays ignored, missing fields zero;
  * *time [s] from FieldData TIME (NaN when absent). Reads only hvsph's own form
- * (UInt64 headers, appended raw data in this machine's byte order); anything else,
+ * (UInt64 headers, appended raw data in this machine's byte order, uncompressed or
+ * compressed by vtkZLibDataCompressor); anything else,
  * a block whose byte count does not match NumberOfPoints, or a file cut short is an
  * error naming the file and the array (HV_EXIT_INPUT), and p->n is restored. */
 int io_read_particles_vtu(const char *path, struct particles *p, double *time,
@@ -62,10 +67,11 @@ int io_read_particles(const char *path, struct particles *p, double *time, struc
 int io_read_material_names(const char *path, char names[][64], int max);
 
 /* ParaView collection: rewrites the whole .pvd listing every (times[k] [s],
- * files[k]) so far. File names are written as given; ParaView resolves them
- * relative to the .pvd's folder. */
+ * files[k]) so far, after an XML comment with meta's version and case name (meta may
+ * be NULL; its time and step are not used). File names are written as given;
+ * ParaView resolves them relative to the .pvd's folder. */
 int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
-                 struct hv_error *err);
+                 const struct snapshot_meta *meta, struct hv_error *err);
 
 /* A generic CSV table: optional comment (each line prefixed "# "), a header of
  * the ncols column names, then nrows rows from rows[r * ncols + c]. A value that

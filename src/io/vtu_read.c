@@ -3,11 +3,13 @@
  * that wrote only its default VTU files.
  *
  * Only hvsph's own form is read: UnstructuredGrid, header_type="UInt64", appended
- * raw data in the byte order of this machine. The XML header (everything before the
- * appended block's '_') is parsed for the DataArray elements of PointData and Points
- * and for FieldData TIME; each array's block is then read at its offset, its byte
- * count checked against NumberOfPoints × components × type size and against the
- * file's size before anything is stored.
+ * raw data in the byte order of this machine, uncompressed or compressed by
+ * vtkZLibDataCompressor. The XML header (everything before the appended block's '_')
+ * is parsed for the DataArray elements of PointData and Points and for FieldData TIME;
+ * each array's block is then read at its offset, its byte count (compressed: its block
+ * count and sizes) checked against NumberOfPoints × components × type size and
+ * against the file's size before anything is stored; a compressed block must inflate
+ * to exactly its size.
  */
 #define _FILE_OFFSET_BITS 64
 #include <errno.h>
@@ -17,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <zlib.h>
 
 #include "io/io_internal.h"
 #include "io/snapshot.h"
@@ -46,6 +49,7 @@ static const char *vtk_name(enum pf_type t)
 
 struct vtu_header {
   size_t n;              /* NumberOfPoints */
+  int zlib;              /* compressor="vtkZLibDataCompressor" */
   double time;           /* FieldData TIME, NaN when absent */
   long long data_start;  /* file position of the byte after '_' */
   int narr;
@@ -81,6 +85,13 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
       strcmp(v, little ? "LittleEndian" : "BigEndian"))
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': written in the other byte order (%s); "
                         "this machine reads only its own", path, v);
+  vh->zlib = 0;
+  if (!io_xml_attr(file, fe, "compressor", v, sizeof v)) {
+    if (strcmp(v, "vtkZLibDataCompressor"))
+      return hv_error_set(err, HV_EXIT_INPUT, "'%s': compressed by '%s'; hvsph reads "
+                          "vtkZLibDataCompressor only", path, v);
+    vh->zlib = 1;
+  }
   const char *piece = strstr(fe, "<Piece");
   if (!piece) return bad(err, path, "no <Piece> element");
   const char *pe = strchr(piece, '>');
@@ -147,8 +158,108 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   return 0;
 }
 
+/* Scatters the bytes [pos, pos + len) of an array's values (vectors interleaved) into
+   field f at slots from first on; pos and len are multiples of the value size. */
+static void scatter(const struct pfield *f, size_t first, uint64_t pos, const unsigned char *buf,
+                    size_t len)
+{
+  const size_t s = pf_type_size(f->type), nc = (size_t)f->ncomp;
+  const uint64_t e0 = pos / s;
+  if (nc == 1) {
+    memcpy((char *)f->comp[0] + (first + e0) * s, buf, len);
+    return;
+  }
+  for (size_t k = 0; k < len / s; k++) {
+    const uint64_t e = e0 + k;
+    memcpy((char *)f->comp[e % nc] + (first + e / nc) * s, buf + k * s, s);
+  }
+}
+
+static int cut_short(struct hv_error *err, const char *path, const struct vtu_array *a)
+{
+  return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': the file ends inside its "
+                      "block (cut short?)", path, a->name);
+}
+
+static int short_read(FILE *fp, struct hv_error *err, const char *path, const struct vtu_array *a)
+{
+  return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s' (array '%s'): %s", path, a->name,
+                      ferror(fp) ? strerror(errno ? errno : EIO) : "the file ends early");
+}
+
+static int wrong_size(struct hv_error *err, const char *path, const struct vtu_array *a,
+                      uint64_t nb, size_t n, uint64_t want)
+{
+  return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' holds %llu bytes, %zu points "
+                      "need %llu", path, a->name, (unsigned long long)nb, n,
+                      (unsigned long long)want);
+}
+
+/* A compressed block at the file's position (after fseeko): the header [blocks, block
+   size, last partial block's size, compressed sizes], checked against want and the file's
+   size; with f->comp[0], every zlib stream inflated into f. */
+static int read_zblock(FILE *fp, const char *path, const struct vtu_array *a,
+                       const struct pfield *f, size_t first, size_t n, uint64_t want,
+                       uint64_t room, struct hv_error *err)
+{
+  const size_t s = pf_type_size(f->type);
+  uint64_t h[3];
+  if (room < sizeof h || fread(h, 8, 3, fp) != 3) return cut_short(err, path, a);
+  const uint64_t nb = h[0], bs = h[1], last = h[2];
+  if (bs == 0 || bs > (1u << 30) || bs % s || last >= bs || (nb == 0 && last))
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': a compression header hvsph "
+                        "does not read (%llu blocks of %llu bytes, the last %llu)", path,
+                        a->name, (unsigned long long)nb, (unsigned long long)bs,
+                        (unsigned long long)last);
+  if (nb > (room - sizeof h) / 8) return cut_short(err, path, a);
+  const uint64_t total = nb == 0 ? 0 : last ? (nb - 1) * bs + last : nb * bs;
+  if (total != want) return wrong_size(err, path, a, total, n, want);
+  uint64_t *cs = malloc((size_t)(nb ? nb : 1) * sizeof *cs);
+  if (!cs) return hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+  int rc = 0;
+  if (nb && fread(cs, 8, (size_t)nb, fp) != nb) rc = cut_short(err, path, a);
+  /* zlib never makes more of bs bytes than compressBound(bs), so this bounds the buffer */
+  const uint64_t bound = compressBound((uLong)bs);
+  uint64_t left = room - sizeof h - 8 * nb;
+  for (uint64_t b = 0; !rc && b < nb; b++) {
+    if (cs[b] > bound)
+      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': block %llu claims %llu "
+                        "compressed bytes, more than zlib makes of %llu", path, a->name,
+                        (unsigned long long)b, (unsigned long long)cs[b], (unsigned long long)bs);
+    else if (cs[b] > left) rc = cut_short(err, path, a);
+    else left -= cs[b];
+  }
+  if (rc || !f->comp[0]) {   /* with no storage: the check only */
+    free(cs);
+    return rc;
+  }
+  unsigned char *zin = malloc((size_t)bound), *out = malloc((size_t)bs);
+  if (!zin || !out) rc = hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+  for (uint64_t b = 0; !rc && b < nb; b++) {
+    const uint64_t expect = b + 1 == nb && last ? last : bs;
+    uLongf ol = (uLongf)bs;
+    errno = 0;
+    if (fread(zin, 1, (size_t)cs[b], fp) != cs[b]) {
+      rc = short_read(fp, err, path, a);
+      break;
+    }
+    const int zrc = uncompress(out, &ol, zin, (uLong)cs[b]);
+    if (zrc != Z_OK || ol != expect)
+      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': block %llu does not inflate "
+                        "to its %llu bytes (zlib: %s; a damaged file?)", path, a->name,
+                        (unsigned long long)b, (unsigned long long)expect,
+                        zrc == Z_OK ? "another size" : zError(zrc));
+    else
+      scatter(f, first, b * bs, out, (size_t)ol);
+  }
+  free(zin);
+  free(out);
+  free(cs);
+  return rc;
+}
+
 /* Checks one array's block (its byte count against n × components × size, and its
- * extent against the file's size) and, with f, reads it into field f at slots
+ * extent against the file's size) and, with f->comp[0], reads it into field f at slots
  * [first, first + n). */
 static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
                       const struct vtu_array *a, const struct pfield *f, size_t first,
@@ -162,38 +273,29 @@ static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
                         "of the file (cut short?)", path, a->name);
   const long long pos = vh->data_start + a->offset;
   errno = 0;
-  if (fseeko(fp, (off_t)pos, SEEK_SET) || fread(&nb, 8, 1, fp) != 1)
+  if (fseeko(fp, (off_t)pos, SEEK_SET))
     return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
                         "of the file (cut short?)", path, a->name);
-  if (nb != want)
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' holds %llu bytes, %zu points "
-                        "need %llu", path, a->name, (unsigned long long)nb, n,
-                        (unsigned long long)want);
-  if (nb > (uint64_t)(fsize - pos - 8))
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': the file ends inside its "
-                        "block (cut short?)", path, a->name);
+  if (vh->zlib)
+    return read_zblock(fp, path, a, f, first, n, want, (uint64_t)(fsize - pos), err);
+  if (fread(&nb, 8, 1, fp) != 1) return cut_short(err, path, a);
+  if (nb != want) return wrong_size(err, path, a, nb, n, want);
+  if (nb > (uint64_t)(fsize - pos - 8)) return cut_short(err, path, a);
   if (!f->comp[0]) return 0;   /* the check only */
-  if (nc == 1) {
-    if (n && fread((char *)f->comp[0] + first * s, s, n, fp) != n) goto short_read;
-    return 0;
-  }
-  unsigned char *buf = malloc(VTU_CHUNK * nc * s);
+  /* VTU_CHUNK tuples of at most 6 values of 8 bytes: a multiple of every value size */
+  const size_t chunk = VTU_CHUNK * 48;
+  unsigned char *buf = malloc(chunk);
   if (!buf) return hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
-  for (size_t i0 = 0; i0 < n; i0 += VTU_CHUNK) {
-    const size_t m = n - i0 < VTU_CHUNK ? n - i0 : VTU_CHUNK;
-    if (fread(buf, s * nc, m, fp) != m) {
+  for (uint64_t at = 0; at < nb; at += chunk) {
+    const size_t len = nb - at < chunk ? (size_t)(nb - at) : chunk;
+    if (fread(buf, 1, len, fp) != len) {
       free(buf);
-      goto short_read;
+      return short_read(fp, err, path, a);
     }
-    for (size_t i = 0; i < m; i++)
-      for (size_t c = 0; c < nc; c++)
-        memcpy((char *)f->comp[c] + (first + i0 + i) * s, buf + (i * nc + c) * s, s);
+    scatter(f, first, at, buf, len);
   }
   free(buf);
   return 0;
-short_read:
-  return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s' (array '%s'): %s", path, a->name,
-                      ferror(fp) ? strerror(errno ? errno : EIO) : "the file ends early");
 }
 
 int io_read_particles_vtu(const char *path, struct particles *p, double *time,

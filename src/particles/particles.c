@@ -160,6 +160,7 @@ size_t particles_add(struct particles *p, size_t count)
   size_t first = p->n;
   p->n_ghost = 0;
   particles_reserve(p, p->n + count);
+  if (count == 0) return first;   /* an empty store's arrays are NULL: no memset on them */
   struct pfield f[HV_MAX_FIELDS];
   int nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {

@@ -104,6 +104,7 @@ static int read_output(struct output_params *op, struct cfg *c, struct hv_error 
                           &op->checkpoint_wall, err) ||
          cfg_get_bool(c, "output.vtu", &yes, &op->vtu, err) ||
          cfg_get_bool(c, "output.csv", &no, &op->csv, err) ||
+         cfg_get_bool(c, "output.compress", &no, &op->compress, err) ||
          cfg_get_int(c, "output.log_every", &every, 1, 1000000000L, &op->log_every, err)
              ? -1 : 0;
 }

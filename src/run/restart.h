@@ -36,6 +36,7 @@ struct run_outputs {
   long next_k;       /* index of the next output time */
   long next_mk;      /* index of the next measurement time (measure.every) */
   const char *matnames[HV_MAX_MATERIALS];
+  const char *bodynames[64];   /* sim's body[].name */
 };
 
 /* OUTDIR/checkpoint.hvc */

@@ -73,7 +73,8 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
   o->nrows++;
   struct snapshot_meta meta = {.time = s->t, .step = s->step, .version = HVSPH_VERSION,
                                .case_name = s->case_name, .material_names = o->matnames,
-                               .nmat = s->nmat};
+                               .nmat = s->nmat, .body_names = o->bodynames,
+                               .nbody = s->nbody, .vtu_zlib = s->out.compress};
   if (s->out.vtu) {
     snprintf(name, sizeof name, "particles_%05d.vtu", o->count);
     snprintf(path, sizeof path, "%s/%s", o->dir, name);
@@ -83,7 +84,8 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
     o->times[o->count] = s->t;
     o->files[o->count] = strdup(name);
     snprintf(path, sizeof path, "%s/run.pvd", o->dir);
-    if (io_write_pvd(path, o->times, (const char *const *)o->files, o->count + 1, err)) return -1;
+    if (io_write_pvd(path, o->times, (const char *const *)o->files, o->count + 1, &meta, err))
+      return -1;
   }
   if (s->out.csv) {
     snprintf(path, sizeof path, "%s/particles_%05d.csv", o->dir, o->count);
@@ -465,6 +467,7 @@ int run_main(const struct run_options *ro)
   else snprintf(o.dir, sizeof o.dir, "out/%s", cfg_has(c, "name") ? s.case_name
                 : default_name(ro->case_path, nbuf, sizeof nbuf));
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
+  for (int i = 0; i < s.nbody; i++) o.bodynames[i] = s.body[i].name;
   if (restart) {
     if (restart_read(&s, &o, ckpt, &err)) goto fail;
     const int stale = afile_remove_stale(o.dir);

@@ -23,6 +23,7 @@ struct time_params {
 struct output_params {
   double every;        /* [s] interval between snapshots (0: only start and end) */
   int vtu, csv;        /* which particle files */
+  int compress;        /* zlib-compressed VTU arrays */
   long log_every;      /* steps between log lines when not on a terminal */
   int checkpoint;      /* write OUTDIR/checkpoint.hvc (restart) */
   double checkpoint_wall; /* [s] of wall-clock time between checkpoints besides those at

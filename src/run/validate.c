@@ -4,8 +4,8 @@
  * Runs each case of examples/paper/ (or --cases DIR) with its particle counts times S
  * (resolution = S), into DIR/<case>/, then puts the final value of each measured
  * quantity named in data/paper_results.yaml beside the experiment and the paper's own
- * simulation: DIR/validation.csv (case,quantity,simulated,experiment,paper_simulation,
- * unit,rel_error) and DIR/validation.md (tables, mean errors, runtimes, radiographs of
+ * simulation: DIR/validation.csv (a "# hvsph <version>" comment line, then
+ * case,quantity,simulated,experiment,paper_simulation,unit,rel_error) and DIR/validation.md (tables, mean errors, runtimes, radiographs of
  * the final states of the impact cases). --no-run only re-reads earlier runs' outputs.
  * --resume continues each case that has a checkpoint in DIR/<case>/ (hvsph restart:
  * a stopped run goes on, a finished one is only re-read) and runs the others.
@@ -218,7 +218,11 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   struct afile af;
   snprintf(path, sizeof path, "%s/validation.csv", dir);
   if (afile_open(&af, path, err)) return -1;
-  afile_printf(&af, err, "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n");
+  /* a comment line first, as every CSV table of hvsph has (pandas' comment="#" and the
+     numpy recipe of docs/output-files.md skip it) */
+  afile_printf(&af, err, "# hvsph %s: validation against the seed paper%s (validation.md)\n"
+               "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n",
+               HVSPH_VERSION, norun ? ", re-read from earlier runs" : "");
   for (int k = 0; k < nrows; k++) {
     const struct val_row *r = &rows[k];
     double f;

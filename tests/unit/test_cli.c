@@ -271,15 +271,28 @@ static void test_commands(void)
   }
   snprintf(cmd, sizeof cmd, "'%s' --version 2>/dev/null", test_bin());
   rc = test_run(cmd, out, sizeof out);
+  /* "hvsph <release> (commit <hash>[-dirty])": the release of project() in
+   * CMakeLists.txt, MAJOR.MINOR.PATCH, and the commit from git */
   char version[256] = "";
-  int got = sscanf(out, "hvsph %255s", version) == 1 && !strcmp(version, HVSPH_VERSION) &&
-            strchr(out, '\n') == out + strlen(out) - 1;
-  CHECK(rc == 0 && got, "--version exits 0 (%d) and prints one line 'hvsph %s': '%s'", rc,
-        HVSPH_VERSION, version);
-  /* "unknown" only where the build had nothing to take a version from: a copy of the
-   * tree without its history, not a `git archive` tarball, no -DHVSPH_VERSION */
-  CHECK(strcmp(version, "unknown") || !strcmp(HVSPH_VERSION_SOURCE, "none"),
-        "the version is known (from %s): '%s'", HVSPH_VERSION_SOURCE, version);
+  snprintf(version, sizeof version, "%s", HVSPH_VERSION);
+  char want_line[300];
+  snprintf(want_line, sizeof want_line, "hvsph %s\n", HVSPH_VERSION);
+  CHECK(rc == 0 && !strcmp(out, want_line), "--version exits 0 (%d) and prints one line '%.*s': "
+        "'%s'", rc, (int)strlen(want_line) - 1, want_line, out);
+  unsigned major, minor, patch;
+  char after[8] = "";
+  CHECK(sscanf(HVSPH_RELEASE, "%u.%u.%u%1s", &major, &minor, &patch, after) == 3 &&
+            !strcmp(HVSPH_VERSION, HVSPH_RELEASE " (commit " HVSPH_COMMIT ")"),
+        "the version is MAJOR.MINOR.PATCH (commit ...): '%s'", HVSPH_VERSION);
+  /* "unknown" only where the build had nothing to take the commit from: a copy of the
+   * tree without its history, not a `git archive` tarball, no -DHVSPH_COMMIT; from git
+   * it is an abbreviated hash (7 or more hex digits), "-dirty" when the tree was edited */
+  size_t hexlen = strspn(HVSPH_COMMIT, "0123456789abcdef");
+  CHECK(strcmp(HVSPH_VERSION_SOURCE, "git") ||
+            (hexlen >= 7 && (!HVSPH_COMMIT[hexlen] || !strcmp(HVSPH_COMMIT + hexlen, "-dirty"))),
+        "from git the commit is a hash: '%s'", HVSPH_COMMIT);
+  CHECK(strcmp(HVSPH_COMMIT, "unknown") || !strcmp(HVSPH_VERSION_SOURCE, "none"),
+        "the commit is known (from %s): '%s'", HVSPH_VERSION_SOURCE, HVSPH_COMMIT);
 
   /* render's errors read as every command's: one "hvsph: error: " line (they read
    * "hvsph render: " before session 58) */
@@ -306,6 +319,26 @@ static void test_commands(void)
   CHECK(u && !strncmp(u, want, strlen(want)), "used_parameters.yaml starts with '%.*s'",
         (int)strlen(want) - 1, want);
   free(u);
+  /* every file of the run carries the version near its start: a "#" comment of the CSV
+   * tables, the XML comment of the VTU and PVD, the checkpoint's version record */
+  {
+    static const char *const with_version[] = {"summary.csv", "particles_00000.vtu", "run.pvd",
+                                               "particles_00000.csv", "used_parameters.yaml",
+                                               "run_segments.csv", "checkpoint.hvc"};
+    for (size_t k = 0; k < sizeof with_version / sizeof *with_version; k++) {
+      char fp[4400];
+      snprintf(fp, sizeof fp, "%s/%s", dir, with_version[k]);
+      size_t flen = 0;
+      char *ftext = test_slurp(fp, &flen);
+      size_t head = flen < 4096 ? flen : 4096, vl = strlen(HVSPH_VERSION);
+      int found = 0;
+      for (size_t i = 0; ftext && i + vl <= head && !found; i++)
+        found = !memcmp(ftext + i, HVSPH_VERSION, vl);
+      CHECK(found, "%s carries the version '%s' in its first 4 kB", with_version[k],
+            HVSPH_VERSION);
+      free(ftext);
+    }
+  }
   CHECK(summary_rows(dir) == 3, "summary.csv has 3 rows (t = 0, 0.005, 0.01)");
   /* each log line says what set the step: a stability limit at a particle of 'slab' */
   const char *lim = strstr(out, "[dt: CFL h/v_sig, particle ");
@@ -885,8 +918,14 @@ static void test_validate(void)
   if (!f || fputs("garbage\n", f) < 0 || fclose(f)) exit(1);
   snprintf(args, sizeof args, "validate --no-run --only wp1 bumper-1 -o '%s'", dir);
   rc = hvsph(args, out, sizeof out);
+  snprintf(p, sizeof p, "%s/validation.csv", dir);
+  char *vcsv = test_slurp(p, NULL);
+  CHECK(vcsv && !strncmp(vcsv, "# hvsph " HVSPH_VERSION ": ", strlen("# hvsph " HVSPH_VERSION ": ")),
+        "validation.csv starts with a comment line giving the version: %.80s", vcsv ? vcsv : "");
+  free(vcsv);
   snprintf(p, sizeof p, "%s/validation.md", dir);
   char *md = test_slurp(p, NULL);
+  CHECK(md && strstr(md, "hvsph " HVSPH_VERSION), "validation.md names the version");
   int nerr;
   error_line(out, &nerr);
   CHECK(rc == 0 && nerr == 0 && strstr(out, "wp1: no radiograph") && md &&
@@ -915,6 +954,9 @@ static void test_measure(void)
   snprintf(fp, sizeof fp, "%s/fragments_00002.csv", dir);
   snprintf(sp, sizeof sp, "%s/particles_00001.csv", dir);
   char *m0 = test_slurp(mp, NULL), *f0 = test_slurp(fp, NULL);
+  const char *vline = "# hvsph " HVSPH_VERSION " case ";
+  CHECK(m0 && f0 && !strncmp(m0, vline, strlen(vline)) && !strncmp(f0, vline, strlen(vline)),
+        "measurements.csv and fragments_00002.csv start with '%s'", vline);
   snprintf(args, sizeof args, "measure '%s' --quiet", dir);
   rc = hvsph(args, out, sizeof out);
   char *m1 = test_slurp(mp, NULL);

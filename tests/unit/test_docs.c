@@ -833,6 +833,15 @@ static void test_summary_columns(const struct example *sod)
   free(md);
 }
 
+/* Whether the n bytes at s hold the text w. */
+static int span_has(const char *s, size_t n, const char *w)
+{
+  const size_t wl = strlen(w);
+  for (size_t i = 0; i + wl <= n; i++)
+    if (!memcmp(s + i, w, wl)) return 1;
+  return 0;
+}
+
 /* Every column of a particle snapshot (CSV) and every array of its VTU, of a case that
  * writes all of them (strength, the crack's fields, the viscosity switch), in
  * output-files.md's sections on the two formats. */
@@ -878,8 +887,16 @@ static void test_particle_columns(void)
     } else {        /* Name="..." of each DataArray, before the appended data */
       const char *end = strstr(text, "<AppendedData");
       for (const char *p = strstr(text, "Name=\""); p && (!end || p < end);
-           p = strstr(p + 1, "Name=\""))
+           p = strstr(p + 1, "Name=\"")) {
+        /* the FieldData arrays named after the case's materials and bodies ("mat al",
+           "body b") are documented by their pattern, checked below */
+        if (!strncmp(p + 6, "mat ", 4) || !strncmp(p + 6, "body ", 5)) continue;
         text_add(&names, "%.*s\n", (int)strcspn(p + 6, "\""), p + 6);
+      }
+      CHECK(strstr(text, "Name=\"mat al\"") && strstr(text, "Name=\"body b\"") &&
+                span_has(sec, slen, "`mat <name>`") && span_has(sec, slen, "`body <name>`"),
+            "the VTU's FieldData names material al and body b, and the section says so "
+            "(`mat <name>`, `body <name>`)");
     }
     int nmissing = 0;
     const int n = names.s ? names_in_code(sec, slen, names.s, ",\n", &missing, &nmissing) : 0;

@@ -92,12 +92,14 @@ static int same_out_fields(struct particles *a, struct particles *b, const char 
 }
 
 static const char *mats[] = {"al-2024", "steel 4340", "W--alloy"};
+static const char *bodies[] = {"bumper", "rod <W&\"Fe\">"};
 
 static struct snapshot_meta meta(void)
 {
   return (struct snapshot_meta){.time = 1.2345678901234567e-6, .step = 4242,
                                 .version = "v0.1-test", .case_name = "demo",
-                                .material_names = mats, .nmat = 3};
+                                .material_names = mats, .nmat = 3, .body_names = bodies,
+                                .nbody = 2};
 }
 
 static void test_csv(struct particles *p)
@@ -216,10 +218,26 @@ static void test_vtu(struct particles *p)
   int64_t id1 = 0;
   if (oid >= 0) memcpy(&id1, base + oid + 8 + 8, 8);
   CHECK(id1 == p->id[1], "second id decodes (%lld)", (long long)id1);
+  /* the blocks in the reverse of the declared order (meshio 7.0 finds them only so):
+     types (declared last) first, id (declared first) last, ending the file */
   long long otype = attr_after(text, "Name=\"types\"", "offset");
-  CHECK(otype >= 0 && base[otype + 8] == 1 && base[otype + 8 + NP - 1] == 1 &&
-            strcmp((const char *)base + otype + 8 + NP, "\n  </AppendedData>\n</VTKFile>\n") == 0,
-        "types are VTK_VERTEX and the file ends after them");
+  CHECK(otype == 0 && base[otype + 8] == 1 && base[otype + 8 + NP - 1] == 1,
+        "types are VTK_VERTEX, the first block (offset %lld)", otype);
+  CHECK(oid >= 0 && strcmp((const char *)base + oid + 8 + 8 * NP,
+                           "\n  </AppendedData>\n</VTKFile>\n") == 0,
+        "the file ends after id's block");
+  /* the names of the materials and bodies as FieldData: "mat <name>" and "body <name>"
+     holding the index, the names escaped for XML (not cleaned as in the comments) */
+  CHECK(strstr(text, "<DataArray type=\"Int32\" Name=\"mat steel 4340\" NumberOfTuples=\"1\" "
+                     "format=\"ascii\">1</DataArray>") &&
+            strstr(text, "Name=\"mat W--alloy\" NumberOfTuples=\"1\" format=\"ascii\">2<") &&
+            strstr(text, "Name=\"body bumper\" NumberOfTuples=\"1\" format=\"ascii\">0<") &&
+            strstr(text, "Name=\"body rod &lt;W&amp;&quot;Fe&quot;&gt;\" NumberOfTuples=\"1\" "
+                         "format=\"ascii\">1<"),
+        "FieldData names the materials and bodies");
+  char *fd_end = strstr(text, "</FieldData>"), *piece = strstr(text, "<Piece");
+  CHECK(fd_end && piece && fd_end < piece && strstr(text, "Name=\"body bumper\"") < fd_end,
+        "... inside FieldData, before the Piece");
   free(text);
 }
 
@@ -398,9 +416,23 @@ static void test_pvd(void)
   const double t[3] = {0.0, 1e-6, 2.5e-6};
   const char *files[3] = {"particles_000000.vtu", "particles_000001.vtu", "a&b.vtu"};
   const char *path = path_in("run.pvd");
-  CHECK(io_write_pvd(path, t, files, 3, &err) == 0, "PVD written: %s", err.msg);
+  /* a case named so that its comment holds what the reader looks for */
+  struct snapshot_meta meta = {.version = "0.9.0 (commit abc1234)",
+                               .case_name = "<DataSet timestep=\"9\" file=\"x.vtu\"/> <Collection>"};
+  CHECK(io_write_pvd(path, t, files, 3, &meta, &err) == 0, "PVD written: %s", err.msg);
   char *text = test_slurp(path, NULL);
   CHECK(text && strstr(text, "type=\"Collection\""), "PVD is a collection");
+  CHECK(text && !strncmp(text, "<?xml version=\"1.0\"?>\n<!-- hvsph 0.9.0 (commit abc1234) case "
+                         "<DataSet", 58), "PVD's comment gives the version and case: %.80s",
+        text ? text : "");
+  double *rt = NULL;
+  char **rf = NULL;
+  int rn = io_read_pvd(path, &rt, &rf, &err);
+  CHECK(rn == 3 && rt[1] == 1e-6 && !strcmp(rf[2], "a&b.vtu"),
+        "PVD read back: 3 entries, not the comment's (%d)", rn);
+  for (int k = 0; k < rn; k++) free(rf[k]);
+  free(rf);
+  free(rt);
   CHECK(text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
             strstr(text, "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
             strstr(text, "file=\"a&amp;b.vtu\""),
@@ -557,6 +589,121 @@ static void test_mkdir(void)
         "a file as a parent: %s", err.msg);
 }
 
+/* output.compress: the arrays as zlib blocks (vtkZLibDataCompressor), read back bit for
+ * bit by hvsph; a damaged or cut block is refused naming the file and the array, nothing
+ * appended. NP = 100 particles make blocks smaller than one zlib block of 32 kB; the
+ * many-block case (several full blocks and a partial one) is a store of 5,000. */
+static void test_vtu_zlib(struct particles *p)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct snapshot_meta m = meta();
+  m.vtu_zlib = 1;
+  const char *path = path_in("zlib.vtu");
+  CHECK(io_write_vtu(path, p, &m, &err) == 0, "compressed VTU written: %s", err.msg);
+  size_t len = 0;
+  char *text = test_slurp(path, &len);
+  CHECK(text && strstr(text, " header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">"),
+        "the root names the compressor");
+  struct particles q;
+  particles_init(&q);
+  double t = 0.0;
+  const char *bad = "";
+  CHECK(io_read_particles_vtu(path, &q, &t, &err) == 0 && q.n == NP &&
+            same_out_fields(p, &q, &bad) && t == m.time,
+        "compressed VTU read back, every output value bitwise equal (%s) %s", bad, err.msg);
+  particles_free(&q);
+
+  /* 5,000 particles: x and v are 120,000 bytes, 3 full blocks and one of 21,696 */
+  struct particles big;
+  particles_init(&big);
+  const size_t i0 = particles_add(&big, 5000);
+  for (size_t k = 0; k < 5000; k++) {
+    big.id[i0 + k] = (int64_t)(7 * k);
+    for (int d = 0; d < 3; d++) {
+      big.x[d][i0 + k] = sin((double)(k * 3 + (size_t)d));
+      big.v[d][i0 + k] = 1e3 * cos((double)k) + d;
+    }
+    big.rho[i0 + k] = 2700.0 + (double)k / 7.0;
+    big.mat[i0 + k] = (int32_t)(k % 3);
+  }
+  const char *bpath = path_in("zlib_big.vtu");
+  particles_init(&q);
+  int ok = io_write_vtu(bpath, &big, &m, &err) == 0 &&
+           io_read_particles_vtu(bpath, &q, NULL, &err) == 0;
+  CHECK(ok && q.n == 5000 && same_out_fields(&big, &q, &bad),
+        "5,000 particles in several zlib blocks read back bitwise (%s) %s", bad, err.msg);
+  particles_free(&q);
+  /* an empty snapshot: no blocks at all */
+  particles_init(&q);
+  struct particles none;
+  particles_init(&none);
+  ok = io_write_vtu(path_in("zlib_empty.vtu"), &none, &m, &err) == 0 &&
+       io_read_particles_vtu(path_in("zlib_empty.vtu"), &q, NULL, &err) == 0;
+  CHECK(ok && q.n == 0, "an empty compressed snapshot reads back: %s", err.msg);
+  particles_free(&none);
+
+  /* damaged: a byte inside x's first zlib stream; then the file cut inside a block */
+  size_t blen = 0;
+  char *btext = test_slurp(bpath, &blen);
+  char *us = btext ? strstr(btext, "<AppendedData encoding=\"raw\">") : NULL;
+  us = us ? strchr(us, '_') : NULL;
+  long long ox = btext ? attr_after(btext, "<Points>", "offset") : -1;
+  if (us && ox >= 0) {
+    uint64_t nbx;
+    memcpy(&nbx, us + 1 + ox, 8);
+    char *z0 = us + 1 + ox + 8 * (3 + (long long)nbx);   /* x's first zlib stream */
+    z0[40] = (char)(z0[40] ^ 0x5a);
+    FILE *f = fopen(path_in("zlib_damaged.vtu"), "wb");
+    if (f) {
+      fwrite(btext, 1, blen, f);
+      fclose(f);
+    }
+    particles_init(&q);
+    CHECK(io_read_particles_vtu(path_in("zlib_damaged.vtu"), &q, NULL, &err) != 0 &&
+              strstr(err.msg, "zlib_damaged.vtu") && strstr(err.msg, "'x'") &&
+              err.code == HV_EXIT_INPUT && q.n == 0,
+          "a damaged zlib block is refused, nothing appended: %s", err.msg);
+    particles_free(&q);
+    f = fopen(path_in("zlib_cut.vtu"), "wb");
+    if (f) {   /* x's block cut, the closing tag kept (so the block's extent is checked) */
+      fwrite(btext, 1, (size_t)(z0 - btext) + 100, f);
+      fputs("\n  </AppendedData>\n</VTKFile>\n", f);
+      fclose(f);
+    }
+    particles_init(&q);
+    CHECK(io_read_particles_vtu(path_in("zlib_cut.vtu"), &q, NULL, &err) != 0 &&
+              strstr(err.msg, "zlib_cut.vtu") && q.n == 0 && q.cap < 5000,
+          "a cut compressed block is refused before allocating: %s", err.msg);
+    particles_free(&q);
+    /* x's first block claiming 1 GB: more than zlib makes of 32 kB, refused before any
+       buffer of that size is taken */
+    uint64_t huge = 1000000000;
+    memcpy(us + 1 + ox + 24, &huge, 8);
+    f = fopen(path_in("zlib_claim.vtu"), "wb");
+    if (f) {
+      fwrite(btext, 1, blen, f);
+      fclose(f);
+    }
+    particles_init(&q);
+    CHECK(io_read_particles_vtu(path_in("zlib_claim.vtu"), &q, NULL, &err) != 0 &&
+              strstr(err.msg, "'x': block 0 claims 1000000000 compressed bytes") && q.n == 0,
+          "a block claiming 1 GB is refused: %s", err.msg);
+    particles_free(&q);
+  } else {
+    CHECK(0, "x's compressed block found in %s", bpath);
+  }
+  free(btext);
+  particles_free(&big);
+  const char *lzma = vtu_variant(path, "lzma.vtu", "vtkZLibDataCompressor",
+                                 "vtkLZMADataCompressor", 0);
+  particles_init(&q);
+  CHECK(io_read_particles_vtu(lzma, &q, NULL, &err) != 0 && strstr(err.msg, "vtkLZMADataCompressor") &&
+            q.n == 0, "another compressor is named and refused: %s", err.msg);
+  particles_free(&q);
+  free(text);
+}
+
 static void test_empty_and_ghosts(struct particles *p)
 {
   struct hv_error err;
@@ -632,6 +779,7 @@ int main(void)
   test_vtu(&p);
   test_vtu_read(&p);
   test_vtu_utf8(&p);
+  test_vtu_zlib(&p);
   test_pvd();
   test_table();
   test_atomic(&p);
