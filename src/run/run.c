@@ -556,7 +556,7 @@ int run_main(const struct run_options *ro)
     if (runfolder_earlier_run(o.dir, what, sizeof what) > 0) {
       if (!ro->overwrite) {
         hv_error_set(&err, HV_EXIT_INPUT, "%s holds an earlier run (%s): a new run does not "
-                     "write over it. Continue it with `hvsph restart %s`, write elsewhere with "
+                     "write over it. Continue it with 'hvsph restart %s', write elsewhere with "
                      "-o OUTDIR, or give --overwrite to replace it", o.dir, what, o.dir);
         goto fail;
       }
