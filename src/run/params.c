@@ -141,7 +141,8 @@ static int check_name(struct cfg *c, const char *name, struct hv_error *err)
   size_t bad = n;
   for (size_t k = 0; k < n && bad == n; k++) {
     const unsigned char ch = (unsigned char)name[k];
-    const int alnum = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+    const int alnum =
+        (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
     if (!(alnum || ch == '_' || (k > 0 && (ch == '.' || ch == '-' || ch == '+')))) bad = k;
   }
   if (n > 0 && n <= CASE_NAME_MAX && bad == n) return 0;

@@ -78,9 +78,13 @@ static void stop_signals_catch(struct sigaction *old)
   }
 }
 
+/* The earlier actions back, but SIGXCPU's after a run it stopped: its repeats would end
+ * the process (validate writing its tables) with a core dump. */
 static void stop_signals_restore(const struct sigaction *old)
 {
-  for (int k = 0; k < NSTOP; k++) sigaction(stop_signals[k].sig, &old[k], NULL);
+  for (int k = 0; k < NSTOP; k++)
+    if (!(stop_signals[k].sig == SIGXCPU && interrupted == SIGXCPU))
+      sigaction(stop_signals[k].sig, &old[k], NULL);
 }
 
 static const char *signal_name(int sig)

@@ -135,6 +135,29 @@ static int hvsph(const char *args, char *err, size_t len)
   return test_run(cmd, err, len);
 }
 
+/* A child process of this test that takes dir's lock (through the library, as hvsph run
+ * does) and waits to be killed; its pid, once it holds the lock. */
+static pid_t hold_lock(const char *dir)
+{
+  int fds[2];
+  if (pipe(fds)) exit(1);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fds[0]);
+    struct runfolder_lock l;
+    struct hv_error err;
+    const char ok = runfolder_lock(&l, dir, "run", 1, &err) == 0 ? 'y' : 'n';
+    if (write(fds[1], &ok, 1) != 1) _exit(1);
+    for (;;) pause();   /* killed by the test, the lock file left behind */
+  }
+  close(fds[1]);
+  char ok = 0;
+  CHECK(child > 0 && read(fds[0], &ok, 1) == 1 && ok == 'y', "a child process (%ld) took the "
+        "lock of %s", (long)child, dir);
+  close(fds[0]);
+  return child;
+}
+
 /* The one "hvsph: error:" line of the output (NULL unless there is exactly one). */
 static const char *error_line(const char *out, int *count)
 {
@@ -317,7 +340,8 @@ static void test_commands(void)
   if (!lim) lim = strstr(out, "[dt: acceleration sqrt(h/|a|), particle ");
   CHECK(lim && strstr(lim, " in 'slab']"), "log lines name the step's limit and particle: %.*s",
         lim ? (int)strcspn(lim, "\n") : 4, lim ? lim : "none");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.dt_max=1e-5 --set output.log_every=1",
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--set time.dt_max=1e-5 --set output.log_every=1",
            casefile, path_of("dtmax"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"), "with a small time.dt_max the lines say "
@@ -343,7 +367,8 @@ static void test_commands(void)
       char file[40];
       snprintf(file, sizeof file, "%s.yaml", name);
       const char *f = test_write_file(file, whole);
-      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0", f, path_of(name));
+      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+               "--set time.end=0", f, path_of(name));
       rc = hvsph(args, out, sizeof out);
       const char *w = strstr(out, "warning: body 'slab' (particles of ");
       /* the remedy: (30/64)^(1/3) = 0.7768, (30/34.3)^(1/3) = 0.9563 of the slab's
@@ -402,7 +427,8 @@ static void test_commands(void)
      is bad input naming the case file and the bodies' materials (a typo would otherwise
      run the case unchanged); so is a NEW that neither the case nor the library has; no '='
      is a usage error */
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0 --material gas=nitrogen",
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--set time.end=0 --material gas=nitrogen",
            casefile, path_of("swap"));
   rc = hvsph(args, out, sizeof out);
   snprintf(up, sizeof up, "%s/used_parameters.yaml", path_of("swap"));
@@ -890,6 +916,17 @@ static void test_validate(void)
   struct stat st;
   CHECK(stat(fresh, &st) != 0, "validate --only wp11 creates no output folder");
 
+  /* a DIR in use by another process (its lock): refused, the tables kept */
+  dir = prepare_valdir("val_locked");
+  const pid_t holder = hold_lock(dir);
+  snprintf(args, sizeof args, "validate --no-run --only wp1 -o '%s'", dir);
+  rc = hvsph(args, out, sizeof out);
+  kill(holder, SIGKILL);
+  waitpid(holder, NULL, 0);
+  CHECK(rc == 2 && tables_kept(dir), "validate into a DIR in use: exit %d (want 2), the tables "
+        "kept", rc);
+  check_message("validate, DIR in use", out, (const char *const[]){"is in use by another", NULL});
+
   /* --only without a name, --scale inf: usage errors (not every case, not a scale no run
      takes); --no-run keeps a regression from running anything */
   static const char *const usage[] = {"--only", "--only --threads 1", "--scale inf --only wp1",
@@ -947,6 +984,18 @@ static void test_measure(void)
   char *m1 = test_slurp(mp, NULL);
   CHECK(rc == 0 && m0 && m1 && !strcmp(m0, m1), "hvsph measure rewrites measurements.csv with "
         "the run's own rows (exit %d): %s", rc, out);
+  {   /* measure takes the folder's lock, as a run that rewrites measurements.csv does */
+    const pid_t holder = hold_lock(dir);
+    rc = hvsph(args, out, sizeof out);
+    kill(holder, SIGKILL);
+    waitpid(holder, NULL, 0);
+    char *m2 = test_slurp(mp, NULL), want[64];
+    snprintf(want, sizeof want, "is in use by another hvsph process %ld ", (long)holder);
+    CHECK(rc == 2 && strstr(out, want) && m2 && m0 && !strcmp(m0, m2), "measure of a folder in "
+          "use: exit %d (want 2), naming the process, measurements.csv unchanged: %.200s", rc,
+          out);
+    free(m2);
+  }
   free(m1);
   /* the run's measurements.csv and fragments_00002.csv marked, to see that they stay */
   FILE *f = fopen(mp, "a");
@@ -983,7 +1032,8 @@ static void test_measure_damaged(void)
       test_write_file("measured_solid.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
                                                          "fragments: true}"));
   const char *dir = path_of("measured_solid");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set bodies[0].material=al-alloy "
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet --set bodies[0].material=al-alloy "
            "--set bodies[0].density=2780 --set time.end=2e-6 --set output.every=1e-6",
            casefile, dir);
   int rc = hvsph(args, out, sizeof out);
@@ -1016,7 +1066,8 @@ static void test_scaled_units_restart(void)
   char out[16384], args[9000];
   const char *casefile = test_write_file("scaled.yaml", variant(13, "    density: 1 kg/m3"));
   const char *dir = path_of("scaled"), *dir2 = path_of("scaled_again");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set bodies[0].material=rubber-ring "
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet --set bodies[0].material=rubber-ring "
            "--set bodies[0].pressure=0 --set time.max_steps=3", casefile, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: the run (exit %d): %s", rc, out);
@@ -1100,22 +1151,8 @@ static void test_run_folders(void)
         "--overwrite replaces it: exit %d, the earlier snapshots and checkpoint removed, "
         "notes.txt kept, summary.csv the new run's: %.300s", rc, out);
 
-  /* a process holding the folder's lock (a child of this test, through the library) */
-  int fds[2];
-  if (pipe(fds)) exit(1);
-  const pid_t child = fork();
-  if (child == 0) {
-    close(fds[0]);
-    struct runfolder_lock l;
-    struct hv_error err;
-    const char ok = runfolder_lock(&l, dir, "run", 1, &err) == 0 ? 'y' : 'n';
-    if (write(fds[1], &ok, 1) != 1) _exit(1);
-    for (;;) pause();   /* killed below, the lock file left behind */
-  }
-  close(fds[1]);
-  char ok = 0;
-  CHECK(child > 0 && read(fds[0], &ok, 1) == 1 && ok == 'y', "a child process took the lock");
-  close(fds[0]);
+  /* a process holding the folder's lock */
+  const pid_t child = hold_lock(dir);
   char pid[64];
   snprintf(pid, sizeof pid, "hvsph process %ld on ", (long)child);
   n0 = count_entries(dir, &ntmp, NULL, 0);
@@ -1173,7 +1210,8 @@ static void test_every_warning(void)
         out);
   /* with its unit it is meant (a --set time.end shorter than it, for a quick look) */
   casefile = test_write_file("every_unit.yaml", variant(20, "  every: 5 s"));
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, path_of("every_unit"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet", casefile, path_of("every_unit"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 5 s: no warning (exit %d): %s",
         rc, out);
