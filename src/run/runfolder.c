@@ -52,10 +52,18 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
   /* a holder that ends between our open and our lock has removed the file we opened:
      we then hold the lock of a file no longer in the folder, and try again */
   for (int attempt = 0; attempt < 20; attempt++) {
-    const int fd = open(l->path, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    /* not through a symbolic link, and only a regular file: the holder truncates and
+       writes it */
+    const int fd = open(l->path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+    struct stat a, b;
     if (fd < 0)
       return hv_error_set(err, HV_EXIT_INPUT, "cannot create the lock file %s: %s", l->path,
                           strerror(errno));
+    if (fstat(fd, &a) || !S_ISREG(a.st_mode)) {
+      close(fd);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s is not a regular file: remove it (it is "
+                          "hvsph's lock file)", l->path);
+    }
     struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
     if (fcntl(fd, F_SETLK, &fl)) {
       const int e = errno;
@@ -75,8 +83,7 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
       l->fd = fd;
       return 0;
     }
-    struct stat a, b;
-    if (fstat(fd, &a) || stat(l->path, &b) || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+    if (stat(l->path, &b) || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
       close(fd);   /* removed (or replaced) by a holder that just ended: again */
       continue;
     }

@@ -1183,6 +1183,18 @@ static void test_run_folders(void)
         "a lock left by a killed process is taken over with a note (exit %d), and removed at "
         "the end: %.300s", rc, out);
 
+  /* a lock file that is a symbolic link is not followed (the holder truncates it) */
+  const char *victim = test_write_file("victim.txt", "not hvsph's\n");
+  if (symlink(victim, lockf)) exit(1);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  char *v = test_slurp(victim, NULL);
+  CHECK(rc == 2 && v && !strcmp(v, "not hvsph's\n") && strstr(out, "cannot create the lock file"),
+        "a lock file that is a symbolic link: exit %d (want 2), its target untouched: %.200s", rc,
+        out);
+  free(v);
+  unlink(lockf);
+
   /* --force lets a case write more than 10000 outputs (here stopped after 2 steps) */
   snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --force --set output.every=1e-9 "
            "--set time.max_steps=2", casefile, dir);
