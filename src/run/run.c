@@ -612,7 +612,7 @@ int run_main(const struct run_options *ro)
   if (interrupted) {
     if (s.step == 0)   /* before the first step: the initial outputs only, no checkpoint */
       hv_info("interrupted before the first step; %s holds the initial state's outputs, "
-              "no checkpoint (run the case again)", o.dir);
+              "no checkpoint (run the case again, with --overwrite)", o.dir);
     else
       hv_info("interrupted at t = %g s (step %ld) by %s; the state at that time is written "
               "to %s%s", s.t, s.step, signal_name(interrupted), o.dir,
