@@ -19,11 +19,13 @@ static const struct {
   const char *cmd, *text;
 } usage_lines[] = {
     {"run", "  hvsph run CASE.yaml [-o OUTDIR] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
-            "            [--threads N] [--quiet]\n"
+            "            [--threads N] [--quiet] [--overwrite] [--force]\n"
             "      run a case file; results in OUTDIR (default out/<case name>)\n"
+            "      --overwrite replaces an earlier run in OUTDIR (refused otherwise)\n"
+            "      --force lets a case write more than 10000 outputs (refused otherwise)\n"
             "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
             "      --material gives the bodies of material OLD the material NEW instead\n"},
-    {"restart", "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet]\n"
+    {"restart", "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet] [--force]\n"
                 "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
                 "      --set time.end=\"60 us\" carries a finished run further\n"},
     {"bench", "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
@@ -108,6 +110,8 @@ static int cmd_run(int argc, char **argv, int restart)
       }
       o.threads = (int)v;
     } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o.quiet = 1;
+    else if (!restart && !strcmp(a, "--overwrite")) o.overwrite = 1;
+    else if (!strcmp(a, "--force")) o.force = 1;
     else if (a[0] == '-' || o.case_path) {
       fprintf(stderr, "hvsph %s: unexpected argument '%s' (see hvsph --help)\n", cmd, a);
       free(sets);

@@ -12,7 +12,8 @@ echo "hvsph demo: $case at resolution $res (particle counts x $res), to t = 30 u
 # bodies[4] is the backwall's four-layer disc (backwall-core): the debris does not reach
 # the backwall by 30 us, so at the demo's resolution the disc is as coarse as the plate
 # around it (at least three layers otherwise: 30 000 of the demo's 43 000 particles)
-"$build/hvsph" run "$case" -o "$out" --threads "${HVSPH_THREADS:-2}" \
+# --overwrite: the demo's own folder, replaced by each `make demo`
+"$build/hvsph" run "$case" -o "$out" --overwrite --threads "${HVSPH_THREADS:-2}" \
   --set resolution="$res" --set time.end="30 us" --set output.every="2 us" --set output.csv=true \
   --set bodies[4].particles=1000
 last=$(ls "$out"/particles_*.csv | sort | tail -n 1)

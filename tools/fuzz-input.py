@@ -89,8 +89,8 @@ def fuzz_cases(binary, n, work):
             lines = mutate(lines)
         path = os.path.join(work, 'case.yaml')
         open(path, 'w').write(''.join(lines))
-        rc, err = run([binary, 'run', path, '-o', os.path.join(work, 'out'), '--set',
-                       'time.end=0', '--threads', '1', '--quiet'])
+        rc, err = run([binary, 'run', path, '-o', os.path.join(work, 'out'), '--overwrite',
+                       '--set', 'time.end=0', '--threads', '1', '--quiet'])
         if not (rc == 0 or (rc == 2 and errors(err) == 1 and 'case.yaml' in err)):
             bad += 1
             keep = os.path.join(work, 'bad_%d.yaml' % it)
@@ -122,8 +122,8 @@ def fuzz_sets(binary, n, work, used):
         for _ in range(random.randint(1, 3)):
             sets += ['--set', '%s=%s' % (random.choice(keys), random.choice(VALUES))]
         case = random.choice(cases)
-        rc, err = run([binary, 'run', case, '-o', os.path.join(work, 'out'), '--threads', '1',
-                       '--quiet', '--set', 'resolution=0.02'] + sets +
+        rc, err = run([binary, 'run', case, '-o', os.path.join(work, 'out'), '--overwrite',
+                       '--threads', '1', '--quiet', '--set', 'resolution=0.02'] + sets +
                       ['--set', 'time.end=2e-7', '--set', 'output.every=1e-7'])
         if not (rc == 0 or (rc in (2, 3) and errors(err) == 1)):
             bad += 1
@@ -288,7 +288,7 @@ def fuzz_tables(binary, n, work):
         table = '\n'.join(lines)
         open(os.path.join(work, 'eos.txt'), 'w').write(table)
         rc, err = run([binary, 'run', os.path.join(work, 'case.yaml'), '-o',
-                       os.path.join(work, 'out'), '--threads', '1', '--quiet'])
+                       os.path.join(work, 'out'), '--overwrite', '--threads', '1', '--quiet'])
         if not (rc == 0 or (rc in (2, 3) and errors(err) == 1)):
             bad += 1
             keep = os.path.join(work, 'bad_%d.txt' % it)

@@ -84,8 +84,8 @@ def main():
         with open(path, "w") as f:
             f.write(case(label, mat, ds, thick, v, dw, side, end))
         out = os.path.join(a.o, name)
-        subprocess.run([a.hvsph, "run", path, "-o", out, "--threads", "1", "--quiet"],
-                       check=True)
+        subprocess.run([a.hvsph, "run", path, "-o", out, "--overwrite", "--threads", "1",
+                        "--quiet"], check=True)
         snaps = sorted(glob.glob(os.path.join(out, "particles_*.csv")))[1:]
         rd, rw = RHO0[mat], RHO0["al-alloy"]
         dmax = wmax = 0.0

@@ -130,11 +130,46 @@ static int read_materials(struct sim *s, struct cfg *c, struct hv_error *err)
   return 0;
 }
 
+/* The case's name names its output folder (out/<name>) and is written into every output
+ * file: a plain file name of ASCII letters, digits and . _ - +, starting with a letter,
+ * digit or _ (so no '/' that leaves out/, no "." or "..", no leading '-' that a shell
+ * command would take for an option, no blanks or control characters), at most 100
+ * characters. */
+#define CASE_NAME_MAX 100
+static int check_name(struct cfg *c, const char *name, struct hv_error *err)
+{
+  const size_t n = strlen(name);
+  size_t bad = n;
+  for (size_t k = 0; k < n && bad == n; k++) {
+    const unsigned char ch = (unsigned char)name[k];
+    const int alnum =
+        (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+    if (!(alnum || ch == '_' || (k > 0 && (ch == '.' || ch == '-' || ch == '+')))) bad = k;
+  }
+  if (n > 0 && n <= CASE_NAME_MAX && bad == n) return 0;
+  char where[256], what[64];
+  const unsigned char ch = bad < n ? (unsigned char)name[bad] : 0;
+  if (n == 0) snprintf(what, sizeof what, "it is empty");
+  else if (n > CASE_NAME_MAX) snprintf(what, sizeof what, "%zu characters", n);
+  else if (ch >= ' ' && ch < 0x7f)
+    snprintf(what, sizeof what, "'%c' at character %zu", ch, bad + 1);
+  else snprintf(what, sizeof what, "byte 0x%02x at character %zu", ch, bad + 1);
+  char shown[64];   /* control characters as '?': the message stays one line */
+  snprintf(shown, sizeof shown, "%.60s%s", name, n > 60 ? "..." : "");
+  for (char *q = shown; *q; q++)
+    if ((unsigned char)*q < ' ' || *q == 0x7f) *q = '?';
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: name: '%s' is not a plain file name (%s): "
+                      "the name is the output folder's (out/<name>); write it with ASCII "
+                      "letters, digits and . _ - +, starting with a letter, digit or _, at "
+                      "most %d characters (e.g. \"whipple-shield_2\")",
+                      cfg_where(c, "name", where, sizeof where), shown, what, CASE_NAME_MAX);
+}
+
 int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
 {
   long reorder_def = 10, reorder = 10;
   const char *name;
-  if (cfg_get_string(c, "name", "case", &name, err)) return -1;
+  if (cfg_get_string(c, "name", "case", &name, err) || check_name(c, name, err)) return -1;
   snprintf(s->case_name, sizeof s->case_name, "%s", name);
   if (read_sph(&s->sph, c, err) || read_time(&s->tp, c, err) || read_output(&s->out, c, err) ||
       read_materials(s, c, err) || boundary_read(&s->bnd, c, err) ||

@@ -11,6 +11,9 @@
  * The backwall's peak pressure at the centre is a running maximum over every time
  * step, which snapshots cannot give; the value of the run's earlier measurements.csv
  * at the same time is kept when it is larger than the maximum over the snapshots.
+ *
+ * It takes the run folder's lock (run/runfolder.h) as a run does: a run still going
+ * rewrites measurements.csv at each output, so measuring it then is refused (exit 2).
  */
 #include "run/remeasure.h"
 
@@ -28,6 +31,7 @@
 #include "io/snapshot.h"
 #include "run/measure_run.h"
 #include "run/run.h"
+#include "run/runfolder.h"
 #include "run/sim.h"
 
 static void usage(FILE *f)
@@ -104,6 +108,8 @@ int remeasure_main(int argc, char **argv)
   struct cfg *c = NULL;
   int status = HV_EXIT_OK;
   char path[4400], stage[4400] = "";
+  struct runfolder_lock lock;
+  runfolder_lock_init(&lock);
   if (!casefile) {
     snprintf(path, sizeof path, "%s/used_parameters.yaml", dir);
     casefile = path;
@@ -121,6 +127,8 @@ int remeasure_main(int argc, char **argv)
                  "measure (docs/case-files.md)", casefile);
     goto fail;
   }
+  /* one writer at a time: a run still going rewrites measurements.csv itself */
+  if (runfolder_lock(&lock, dir, "measure", quiet, &err)) goto fail;
   int ns;
   const char *ext = io_list_readable_snapshots(dir, &snaps, &ns);
   if (ns < 0) {
@@ -218,6 +226,7 @@ fail:
   status = err.code ? err.code : HV_EXIT_RUN;
 done:
   if (stage[0]) unstage(stage, dir, 0, NULL);
+  runfolder_unlock(&lock);
   free(snaps);
   free(times);
   meas_table_free(&old);

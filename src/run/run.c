@@ -3,7 +3,12 @@
  * Outputs go to OUTDIR: used_parameters.yaml, summary.csv (one row per output
  * time), particles_NNNNN.vtu + run.pvd, and particles_NNNNN.csv when asked. Every
  * file is written to a temporary name and renamed. Ctrl-C ends the run after the
- * current step and writes that state; a second Ctrl-C stops at once.
+ * current step and writes that state; a second Ctrl-C stops at once. SIGTERM, SIGHUP,
+ * SIGUSR1, SIGUSR2 and SIGXCPU do the same (batch systems send one of them before a
+ * time limit's SIGKILL).
+ *
+ * One process at a time writes a run folder (its lock, run/runfolder.h); a new run
+ * refuses a folder that holds an earlier run unless told to replace it (--overwrite).
  */
 #include "run/run.h"
 
@@ -15,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -26,16 +32,66 @@
 #include "material/material.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
+#include "run/runfolder.h"
 #include "run/sim.h"
 #include "setup/setup.h"
 #include "version.h"
 
-static volatile sig_atomic_t interrupted = 0;
+static volatile sig_atomic_t interrupted = 0;   /* the signal that ended the run, or 0 */
 
-static void on_sigint(int sig)
+/* The signals that end a run with its state written: Ctrl-C, kill, a closed terminal,
+ * and what batch systems send ahead of a time limit (Slurm's --signal, PBS, LSF: USR1,
+ * USR2 or TERM; SIGXCPU at a CPU-time limit's soft value). */
+static const struct {
+  int sig;
+  const char *name;
+} stop_signals[] = {{SIGINT, "SIGINT"},   {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"},
+                    {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"}, {SIGXCPU, "SIGXCPU"}};
+#define NSTOP ((int)(sizeof stop_signals / sizeof stop_signals[0]))
+
+static void on_stop_signal(int sig)
 {
-  interrupted = 1;
-  signal(sig, SIG_DFL);   /* a second Ctrl-C (or SIGTERM) stops at once */
+  interrupted = sig;
+  /* a second signal of the same kind stops at once (its default action), but SIGXCPU,
+     which the kernel repeats every second past the soft limit until the hard limit's
+     SIGKILL: its repeats are ignored, so that the state gets written meanwhile */
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = sig == SIGXCPU ? SIG_IGN : SIG_DFL;
+  sigemptyset(&sa.sa_mask);
+  sigaction(sig, &sa, NULL);
+}
+
+/* Installs the handler for the stop signals, keeping their earlier actions in old. A
+ * SIGHUP that is ignored (nohup) stays ignored. */
+static void stop_signals_catch(struct sigaction *old)
+{
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;   /* a write under way is not cut short by the signal */
+  for (int k = 0; k < NSTOP; k++) {
+    sigaction(stop_signals[k].sig, NULL, &old[k]);
+    if (stop_signals[k].sig == SIGHUP && old[k].sa_handler == SIG_IGN) continue;
+    sigaction(stop_signals[k].sig, &sa, NULL);
+  }
+}
+
+/* The earlier actions back, but SIGXCPU's after a run it stopped: its repeats would end
+ * the process (validate writing its tables) with a core dump. */
+static void stop_signals_restore(const struct sigaction *old)
+{
+  for (int k = 0; k < NSTOP; k++)
+    if (!(stop_signals[k].sig == SIGXCPU && interrupted == SIGXCPU))
+      sigaction(stop_signals[k].sig, &old[k], NULL);
+}
+
+static const char *signal_name(int sig)
+{
+  for (int k = 0; k < NSTOP; k++)
+    if (stop_signals[k].sig == sig) return stop_signals[k].name;
+  return "a signal";
 }
 
 int run_interrupted(void) { return interrupted != 0; }
@@ -171,18 +227,6 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
     }
   }
   return 0;
-}
-
-/* Snapshot files already in the output folder (an earlier run's). */
-static int count_snapshots(const char *dir)
-{
-  int *nums = NULL, n = 0;
-  for (int e = 0; e < 2; e++) {
-    const int k = io_list_snapshots(dir, e ? "vtu" : "csv", &nums);
-    n += k > 0 ? k : 0;
-    free(nums);
-  }
-  return n;
 }
 
 static const char *default_name(const char *path, char *buf, size_t len)
@@ -419,6 +463,29 @@ int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int str
   return rc;
 }
 
+int run_check_output_count(const struct sim *s, struct cfg *c, double t_from, int written,
+                           int force, struct hv_error *err)
+{
+  const double every = s->out.every, span = s->tp.end - t_from;
+  if (!(every > 0.0) || !(span > 0.0)) return 0;
+  /* the outputs still to come (each multiple of every up to the end, and the end) and,
+     for a new run, the initial state; as a double: 1e300 outputs is a count too */
+  const double n = (double)written + (written ? 1.0 : 2.0) + floor(span / every);
+  if (n <= RUN_MAX_OUTPUTS) return 0;
+  char where[256];
+  cfg_where(c, "output.every", where, sizeof where);
+  if (force) {
+    hv_warn("%s: output.every = %g s writes %.0f outputs by time.end = %g s (--force)", where,
+            every, n, s->tp.end);
+    return 0;
+  }
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: output.every = %g s with time.end = %g s writes "
+                      "%.0f outputs (snapshots, summary rows, checkpoints), more than "
+                      "%d: was the interval meant in another unit (a bare number is seconds: "
+                      "\"every: 1 us\")? Give --force to write them all", where, every,
+                      s->tp.end, n, RUN_MAX_OUTPUTS);
+}
+
 int run_main(const struct run_options *ro)
 {
   struct hv_error err;
@@ -435,10 +502,19 @@ int run_main(const struct run_options *ro)
   char path[4200], ckpt[4200];
   struct cfg *c = NULL;
   struct segment seg;
-  int seg_open = 0;
+  int seg_open = 0, caught = 0;
+  struct sigaction old_actions[NSTOP];
+  struct runfolder_lock lock;
+  runfolder_lock_init(&lock);
   if (restart) {   /* the case is the run's used_parameters.yaml */
     snprintf(path, sizeof path, "%s/used_parameters.yaml", restart);
     restart_path(restart, ckpt, sizeof ckpt);
+    /* before anything is read: a run still going rewrites these files (and may not
+       have written its first checkpoint yet) */
+    struct stat st;
+    if (stat(restart, &st) == 0 && S_ISDIR(st.st_mode) &&
+        runfolder_lock(&lock, restart, "restart", ro->quiet, &err))
+      goto fail;
     if (access(ckpt, R_OK)) {
       hv_error_set(&err, HV_EXIT_INPUT, "%s: no checkpoint to restart from (%s); runs write "
                    "one at every output time unless output.checkpoint is false", ckpt,
@@ -469,32 +545,34 @@ int run_main(const struct run_options *ro)
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
   for (int i = 0; i < s.nbody; i++) o.bodynames[i] = s.body[i].name;
   if (restart) {
-    if (restart_read(&s, &o, ckpt, &err)) goto fail;
+    if (restart_read(&s, &o, ckpt, &err) ||
+        run_check_output_count(&s, c, s.t, o.count, ro->force, &err))
+      goto fail;
     const int stale = afile_remove_stale(o.dir);
     if (stale > 0 && !ro->quiet)
       hv_info("removed %d unfinished temporary file%s of the stopped run", stale,
               stale == 1 ? "" : "s");
   } else {
-    if (io_mkdir_p(o.dir, &err)) goto fail;
-    const int old_snaps = count_snapshots(o.dir);
-    if (old_snaps > 0)
-      hv_warn("%s already holds %d particle snapshot file%s of an earlier run: this run "
-              "overwrites those with its own numbers and leaves the rest; summary.csv and "
-              "run.pvd list this run's outputs", o.dir, old_snaps, old_snaps == 1 ? "" : "s");
-    /* an earlier run's checkpoint in the folder: this run replaces its
-       used_parameters.yaml and snapshots, so `hvsph restart` would continue the old
-       state under the new parameters if this run were killed before its own first
-       checkpoint */
-    char oldck[4200];
-    restart_path(o.dir, oldck, sizeof oldck);
-    if (access(oldck, F_OK) == 0) {
-      if (remove(oldck)) {
-        hv_error_set(&err, HV_EXIT_INPUT, "%s: cannot remove the checkpoint of an earlier run "
-                     "in the output folder: %s", oldck, strerror(errno));
+    if (run_check_output_count(&s, c, s.t, 0, ro->force, &err) || io_mkdir_p(o.dir, &err) ||
+        runfolder_lock(&lock, o.dir, "run", ro->quiet, &err))
+      goto fail;
+    /* an earlier run in the folder: its checkpoint, snapshots and tables would be
+       replaced or, worse, mixed with this run's (a restart continuing the old state
+       under the new used_parameters.yaml) */
+    char what[1024];
+    if (runfolder_earlier_run(o.dir, what, sizeof what) > 0) {
+      if (!ro->overwrite) {
+        hv_error_set(&err, HV_EXIT_INPUT, "%s holds an earlier run (%s): a new run does not "
+                     "write over it. Continue it with 'hvsph restart %s', write elsewhere with "
+                     "-o OUTDIR, or give --overwrite to replace it", o.dir, what, o.dir);
         goto fail;
       }
-      hv_warn("removed %s, the checkpoint of an earlier run in this folder (a new run starts "
-              "here; it writes its own)", oldck);
+      const int gone = runfolder_remove_run(o.dir, &err);
+      if (gone < 0) goto fail;
+      afile_remove_stale(o.dir);
+      if (!ro->quiet)
+        hv_info("--overwrite: removed the earlier run's %d file%s from %s (%s)", gone,
+                gone == 1 ? "" : "s", o.dir, what);
     }
     o.t_start = s.t;
     o.next_k = 1;
@@ -522,25 +600,26 @@ int run_main(const struct run_options *ro)
               "time.end=LATER)", s.tp.end);
     goto done;
   }
-  signal(SIGINT, on_sigint);
-  signal(SIGTERM, on_sigint);
+  stop_signals_catch(old_actions);
+  caught = 1;
   segment_begin(&seg, o.dir, restart != NULL, &s);
   seg_open = 1;
   if ((!restart && write_outputs(&s, &o, &err)) ||
       run_loop(&s, &o, &seg, ro->quiet, &err))
     goto fail;
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
+  stop_signals_restore(old_actions);
+  caught = 0;
   if (segment_write(&seg, o.dir, &s, interrupted ? "interrupted" : s.t < s.tp.end ?
                     "stopped (max_steps)" : "done", &err))
     goto fail;
   if (interrupted) {
     if (s.step == 0)   /* before the first step: the initial outputs only, no checkpoint */
       hv_info("interrupted before the first step; %s holds the initial state's outputs, "
-              "no checkpoint (run the case again)", o.dir);
+              "no checkpoint (run the case again, with --overwrite)", o.dir);
     else
-      hv_info("interrupted at t = %g s (step %ld); the state at that time is written to %s%s",
-              s.t, s.step, o.dir, s.out.checkpoint ? " (continue with hvsph restart)" : "");
+      hv_info("interrupted at t = %g s (step %ld) by %s; the state at that time is written "
+              "to %s%s", s.t, s.step, signal_name(interrupted), o.dir,
+              s.out.checkpoint ? " (continue with hvsph restart)" : "");
     status = HV_EXIT_INTERRUPTED;
   } else if (!ro->quiet) {
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
@@ -549,8 +628,7 @@ int run_main(const struct run_options *ro)
   }
   goto done;
 fail:
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
+  if (caught) stop_signals_restore(old_actions);
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
   if (seg_open) {   /* the row says how it ended; a second failure here is not reported */
@@ -559,6 +637,7 @@ fail:
     segment_write(&seg, o.dir, &s, "failed", &e2);
   }
 done:
+  runfolder_unlock(&lock);
   if (seg_open) free(seg.prev);
   outputs_free(&o);
   sim_free(&s);

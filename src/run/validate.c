@@ -12,6 +12,9 @@
  * --set KEY=VALUE and --material OLD=NEW go to every case's run as to hvsph run's (a
  * material swap that no selected case takes is bad input) and are written at the head
  * of validation.md: one material set for the whole table, as the paper's aims ask.
+ * A case's folder is validate's own: a new run of a case replaces the earlier one there
+ * (hvsph run --overwrite). DIR is locked for the whole validation and each case's folder
+ * while it runs (run/runfolder.h), so that two validations do not write one DIR.
  */
 #include "run/validate.h"
 
@@ -30,6 +33,7 @@
 #include "material/material.h"
 #include "render/render.h"
 #include "run/run.h"
+#include "run/runfolder.h"
 #include "version.h"
 
 #define VAL_MAX_CASES 64
@@ -174,7 +178,7 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
   for (int k = 0; k < ov->nsets; k++) sets[2 + k] = ov->sets[k];
   struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets,
                            .nsets = 2 + ov->nsets, .threads = threads, .swaps = ov->swaps,
-                           .nswaps = ov->nswaps, .swaps_lenient = 1};
+                           .nswaps = ov->nswaps, .swaps_lenient = 1, .overwrite = 1};
   char ckpt[8400];
   restart_path(outdir, ckpt, sizeof ckpt);
   if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
@@ -321,7 +325,18 @@ static int usage(void)
   return HV_EXIT_USAGE;
 }
 
+static int validate(int argc, char **argv, struct runfolder_lock *lock);
+
 int validate_main(int argc, char **argv)
+{
+  struct runfolder_lock lock;
+  runfolder_lock_init(&lock);
+  const int status = validate(argc, argv, &lock);
+  runfolder_unlock(&lock);
+  return status;
+}
+
+static int validate(int argc, char **argv, struct runfolder_lock *lock)
 {
   double scale = 1.0;
   const char *outdir = "out/validation", *cases = NULL, *only[VAL_MAX_CASES];
@@ -424,7 +439,7 @@ int validate_main(int argc, char **argv)
       }
   }
   /* the folder only once the options are known to be good */
-  if (io_mkdir_p(outdir, &err)) {
+  if (io_mkdir_p(outdir, &err) || runfolder_lock(lock, outdir, "validate", 0, &err)) {
     cfg_free(ref);
     goto fail;
   }

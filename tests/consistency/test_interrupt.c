@@ -13,6 +13,12 @@
  *   - the last particle .csv reads back with every particle, at that time;
  *   - there are as many .vtu and .csv snapshots as summary rows, and no temporary
  *     file (".tmp.") is left in the folder.
+ * While it runs, a second process is refused the folder (its lock): `hvsph restart` and
+ * `hvsph run --overwrite` into it end with exit status 2 naming the running pid, and
+ * touch nothing; after the run's end no lock file is left.
+ * Then SIGTERM, SIGHUP, SIGUSR1, SIGUSR2 and SIGXCPU (what batch systems send before a
+ * time limit), each to a run of its own: exit status 130, the log names the signal, and
+ * the checkpoint continues (`hvsph restart` for 3 more steps, exit 0).
  * Then the same on a terminal 80 columns wide (a pseudo-terminal): the status line,
  * rewritten in place after a carriage return, must never be wider than 79 columns
  * (a wider one wraps, and each rewrite then leaves a row behind: it was padded to 160
@@ -131,6 +137,85 @@ static int vtu_complete(const char *path, double *t, long *step, long *np)
   return ok;
 }
 
+/* While the run (pid) goes on in dir: a restart and a new run with --overwrite are refused
+   (exit 2, the message naming the pid), and summary.csv is not rewritten by them. */
+static void locked_out(const char *casefile, pid_t pid)
+{
+  char cmd[9000], out[8192], want[64];
+  snprintf(want, sizeof want, "process %ld on ", (long)pid);
+  for (int k = 0; k < 2; k++) {
+    char args[8800];
+    if (k == 0) snprintf(args, sizeof args, "restart '%s' --quiet", dir);
+    else snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
+    snprintf(cmd, sizeof cmd, "'%s' %s", test_bin(), args);
+    const int rc = test_run(cmd, out, sizeof out);
+    CHECK(rc == 2 && strstr(out, "is in use by another hvsph") && strstr(out, want),
+          "while the run goes on, hvsph %s is refused: exit %d (want 2), naming pid %ld: %.300s",
+          k ? "run --overwrite" : "restart", rc, (long)pid, out);
+  }
+  CHECK(kill(pid, 0) == 0, "... and the run goes on");
+}
+
+/* A run stopped by signal sig: exit 130, the log names the signal, and its checkpoint
+   continues for 3 more steps. */
+static void stopped_by(const char *casefile, int sig, const char *name)
+{
+  char sdir[4400], log[4500], cmd[9000], out[8192];
+  snprintf(sdir, sizeof sdir, "%s/sig_%s", test_tmpdir(), name);
+  snprintf(log, sizeof log, "%s/sig_%s.log", test_tmpdir(), name);
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", sdir);
+  test_run(cmd, NULL, 0);
+  pid_t pid = fork();
+  if (pid == 0) {
+    if (!freopen(log, "w", stderr) || !freopen("/dev/null", "w", stdout)) _exit(99);
+    signal(sig, SIG_DFL);   /* hvsph keeps an ignored SIGHUP ignored (nohup) */
+    execl(test_bin(), "hvsph", "run", casefile, "-o", sdir, "--set", "time.end=1000", "--set",
+          "output.every=1000", "--set", "output.checkpoint_wall=0", (char *)NULL);
+    _exit(98);
+  }
+  if (pid <= 0) {
+    CHECK(0, "%s: started hvsph", name);
+    return;
+  }
+  /* past set-up and its first output (summary.csv), then 0.3 s of steps */
+  char sp[4500];
+  snprintf(sp, sizeof sp, "%s/summary.csv", sdir);
+  struct stat st;
+  int status = 0, done = 0;
+  for (double t0 = now(); now() - t0 < 60 && stat(sp, &st); sleep_s(0.02)) {}
+  sleep_s(0.3);
+  kill(pid, sig);
+  for (double t0 = now(); !done && now() - t0 < 60; sleep_s(0.01))
+    done = waitpid(pid, &status, WNOHANG) == pid;
+  if (!done) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  char *text = test_slurp(log, NULL), want[64];
+  snprintf(want, sizeof want, ") by %s; the state", name);
+  CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130 && text && strstr(text, want),
+        "%s ends the run with exit status 130 (got %s %d) and the log says '%s': %.200s", name,
+        WIFEXITED(status) ? "exit" : "signal",
+        WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1,
+        want, text && strstr(text, "interrupted") ? strstr(text, "interrupted") : "");
+  free(text);
+  long step = -1;
+  double t = -1, tfirst = -1;
+  char keep[sizeof dir];
+  memcpy(keep, dir, sizeof dir);   /* summary_last reads dir's */
+  snprintf(dir, sizeof dir, "%s/sig_%s", test_tmpdir(), name);
+  const int rows = summary_last(&step, &t, &tfirst);
+  memcpy(dir, keep, sizeof dir);
+  snprintf(cmd, sizeof cmd, "'%s' restart '%s' --set time.max_steps=%ld", test_bin(), sdir,
+           step + 3);
+  const int rc = test_run(cmd, out, sizeof out);
+  snprintf(want, sizeof want, "(step %ld,", step);
+  CHECK(rows >= 2 && step > 0 && rc == 0 && strstr(out, "from its checkpoint at t = ") &&
+            strstr(out, want),
+        "%s: the checkpoint at step %ld continues (hvsph restart, 3 steps: exit %d): %.300s",
+        name, step, rc, out);
+}
+
 /* hvsph on a pseudo-terminal 80 columns wide, interrupted after its first status
    line and 1 s more: checks its status lines and messages as a terminal shows them. */
 static void on_terminal(const char *casefile)
@@ -141,8 +226,8 @@ static void on_terminal(const char *casefile)
   int fd = -1;
   pid_t pid = forkpty(&fd, NULL, NULL, &ws);
   if (pid == 0) {
-    execl(test_bin(), "hvsph", "run", casefile, "-o", tdir, "--set", "time.end=1000",
-          "--set", "output.every=1000", (char *)NULL);
+    execl(test_bin(), "hvsph", "run", casefile, "-o", tdir, "--overwrite", "--set",
+          "time.end=1000", "--set", "output.every=1000", (char *)NULL);
     _exit(98);
   }
   CHECK(pid > 0, "started hvsph on a terminal (pid %ld)", (long)pid);
@@ -219,8 +304,9 @@ int main(void)
   pid_t pid = fork();
   if (pid == 0) {
     if (!freopen(logfile, "w", stderr) || !freopen("/dev/null", "w", stdout)) _exit(99);
-    execl(test_bin(), "hvsph", "run", casefile, "-o", dir, "--set", "time.end=1000", "--set",
-          "output.every=0.002", "--set", "output.log_every=1000000", (char *)NULL);
+    /* 500 000 output times: --force (the run is stopped long before) */
+    execl(test_bin(), "hvsph", "run", casefile, "-o", dir, "--force", "--set", "time.end=1000",
+          "--set", "output.every=0.002", "--set", "output.log_every=1000000", (char *)NULL);
     _exit(98);
   }
   CHECK(pid > 0, "started hvsph (pid %ld)", (long)pid);
@@ -240,6 +326,7 @@ int main(void)
   }
   CHECK(started, "the run wrote its first output after %.2f s", now() - t0);
   if (started) sleep_s(1.0);
+  if (started) locked_out(casefile, pid);
   double tsig = now();
   kill(pid, SIGINT);
   int done = 0;
@@ -287,6 +374,7 @@ int main(void)
   }
   if (d) closedir(d);
   CHECK(ntmp == 0, "no temporary files left (%d)", ntmp);
+  CHECK(access(in_dir(".hvsph.lock"), F_OK) != 0, "no lock file left (.hvsph.lock)");
   CHECK(nvtu == rows && ncsv == rows, "%d .vtu and %d .csv snapshots, one per summary row (%d)",
         nvtu, ncsv, rows);
 
@@ -327,6 +415,9 @@ int main(void)
   CHECK(cok && p.n == NPART && ct == t, "last .csv reads back: %zu particles at t = %.17g s "
         "(want %d at %.17g)%s%s", p.n, ct, NPART, t, cok ? "" : ": ", cok ? "" : err.msg);
   particles_free(&p);
+  static const int sigs[] = {SIGTERM, SIGHUP, SIGUSR1, SIGUSR2, SIGXCPU};
+  static const char *const names[] = {"SIGTERM", "SIGHUP", "SIGUSR1", "SIGUSR2", "SIGXCPU"};
+  for (int k = 0; k < 5; k++) stopped_by(casefile, sigs[k], names[k]);
   on_terminal(casefile);
   return test_finish();
 }

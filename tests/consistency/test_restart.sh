@@ -20,7 +20,8 @@
 #     byte changed), a truncated one, a missing one and one from another resolution
 #     end with exit status 2 and a message naming the file, and leave every file of
 #     the folder as it was;
-#     a new run in a folder holding an earlier run's checkpoint removes it;
+#     a new run in a folder holding an earlier run is refused (exit 2, every file as it
+#     was) and, with --overwrite, replaces it (its checkpoint and snapshots removed);
 #  5. `hvsph validate --resume` continues a validation run stopped by SIGINT, and its
 #     validation.csv and measurements.csv equal those of a straight run;
 #  6. 1. again with split material without tension (fracture.split: no-tension);
@@ -135,14 +136,23 @@ bad_case truncated "truncate -s 20000 \$d/checkpoint.hvc" "not a usable hvsph ch
 bad_case missing "rm \$d/checkpoint.hvc" "no checkpoint to restart from"
 bad_case other_resolution ":" "does not belong to this case" --set resolution=0.1
 
-# a new run in a folder that holds an earlier run's checkpoint removes it (it replaces
-# used_parameters.yaml: killed before its own first checkpoint, `hvsph restart` would
-# continue the old state under the new parameters)
+# a new run in a folder that holds an earlier run is refused, the folder untouched (it
+# once removed the checkpoint: a "quick check" to t = 0 into the default out/<name> lost
+# a finished run's); with --overwrite it replaces that run: its checkpoint and its
+# snapshots beyond this run's go (killed before its own first checkpoint, `hvsph restart`
+# would otherwise continue the old state under the new used_parameters.yaml)
 cp -r "$T/ref" "$T/reuse"
+(cd "$T/reuse" && md5sum * > "$T/before_reuse.md5")
 "$BIN" run "$CASE" -o "$T/reuse" "${SETS[@]}" --set time.end=0 --threads 2 --quiet 2> "$T/reuse.log"
 st=$?
-[ $st -eq 0 ] && [ ! -e "$T/reuse/checkpoint.hvc" ] && grep -q "removed .*checkpoint.hvc" "$T/reuse.log"
-check $? "a new run (to t = 0) in a folder holding an earlier run's checkpoint removes it, with a warning (status $st)"
+[ $st -eq 2 ] && grep -q "holds an earlier run (checkpoint.hvc" "$T/reuse.log" &&
+  (cd "$T/reuse" && md5sum -c --quiet "$T/before_reuse.md5") && [ -z "$(ls -A "$T/reuse" | grep '^\.')" ]
+check $? "a new run (to t = 0) in a folder holding an earlier run: exit 2 ($st), every file as it was: $(tail -1 "$T/reuse.log" | cut -c1-120)"
+"$BIN" run "$CASE" -o "$T/reuse" "${SETS[@]}" --set time.end=0 --overwrite --threads 2 2> "$T/reuse2.log"
+st=$?
+[ $st -eq 0 ] && [ ! -e "$T/reuse/checkpoint.hvc" ] && [ ! -e "$T/reuse/particles_00001.vtu" ] &&
+  [ -e "$T/reuse/particles_00000.vtu" ] && grep -q "overwrite: removed the earlier run's" "$T/reuse2.log"
+check $? "... with --overwrite it replaces it: no checkpoint, only the new snapshot (status $st)"
 
 # a checkpoint of another hvsph version: continued, with a warning (the version record
 # rewritten in place and the CRC-32 made good again)

@@ -1,7 +1,8 @@
 /* profile.h — shared plumbing of the verification tests (tests/verification/).
  *
  * verif_run() runs `$HVSPH_BIN run $HVSPH_SOURCE_DIR/examples/verification/<name>.yaml
- * -o $HVSPH_TMP/<name> --quiet --threads N` plus any extra arguments (the test
+ * -o $HVSPH_TMP/<name> --overwrite --quiet --threads N` (the folder is the test's:
+ * its last run replaced) plus any extra arguments (the test
  * program's own command-line arguments, e.g. `--set bodies[0].spacing=0.0025` for a
  * finer run, then $HVSPH_CASE_ARGS as in tests/support/solidcase.h), times it, and
  * returns the exit status. N is $HVSPH_TEST_THREADS, default 1 (`make check` runs

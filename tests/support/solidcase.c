@@ -34,7 +34,8 @@ int sc_run(const char *example, const char *outname, const char *extra, double *
   char cmd[8192];
   static char out[65536];
   const char *more = getenv("HVSPH_CASE_ARGS");
-  snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s' --quiet "
+  snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s' --overwrite "
+           "--quiet "
            "--threads %d %s %s", test_bin(), test_source_dir(), example, sc_outdir(outname),
            sc_threads(), extra ? extra : "", more ? more : "");
   printf("running: %s\n", cmd);

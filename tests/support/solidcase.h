@@ -17,7 +17,8 @@
 #include "particles/particles.h"
 
 /* Runs `$HVSPH_BIN run $HVSPH_SOURCE_DIR/examples/verification/<example>.yaml
- * -o $HVSPH_TMP/<outname> --quiet --threads N <extra>` (extra may be NULL: a string of
+ * -o $HVSPH_TMP/<outname> --overwrite --quiet --threads N <extra>` (the folder is the
+ * test's, holding its last run: replaced; extra may be NULL: a string of
  * further arguments, e.g. "--set time.end=1e-6"; then $HVSPH_CASE_ARGS). Returns the exit status; *seconds
  * (may be NULL) gets the wall time [s]. On failure the last lines of the output are
  * printed. */

@@ -22,11 +22,15 @@
  *     "particle N ...: rho = -nan".
  */
 #include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include "run/runfolder.h"
 #include "testlib.h"
 #include "version.h"
 
@@ -131,6 +135,29 @@ static int hvsph(const char *args, char *err, size_t len)
   return test_run(cmd, err, len);
 }
 
+/* A child process of this test that takes dir's lock (through the library, as hvsph run
+ * does) and waits to be killed; its pid, once it holds the lock. */
+static pid_t hold_lock(const char *dir)
+{
+  int fds[2];
+  if (pipe(fds)) exit(1);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fds[0]);
+    struct runfolder_lock l;
+    struct hv_error err;
+    const char ok = runfolder_lock(&l, dir, "run", 1, &err) == 0 ? 'y' : 'n';
+    if (write(fds[1], &ok, 1) != 1) _exit(1);
+    for (;;) pause();   /* killed by the test, the lock file left behind */
+  }
+  close(fds[1]);
+  char ok = 0;
+  CHECK(child > 0 && read(fds[0], &ok, 1) == 1 && ok == 'y', "a child process (%ld) took the "
+        "lock of %s", (long)child, dir);
+  close(fds[0]);
+  return child;
+}
+
 /* The one "hvsph: error:" line of the output (NULL unless there is exactly one). */
 static const char *error_line(const char *out, int *count)
 {
@@ -223,13 +250,14 @@ static int summary_rows(const char *dir)
   return ok && header ? rows : -1;
 }
 
-/* A run that fails: exit 3, the message, no temporary files, a complete summary.csv. */
+/* A run that fails: exit 3, the message, no temporary files, a complete summary.csv
+ * (the folder's earlier summary.csv replaced: --overwrite). */
 static void failed_run(const char *name, const char *extra, const char *const *want)
 {
   char out[16384], args[9000], names[512];
   const char *casefile = test_write_file("base.yaml", variant(0, ""));
   const char *dir = prepare_outdir(name);
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet %s", casefile, dir, extra);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --overwrite %s", casefile, dir, extra);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 3, "%s: exit status %d (want 3)", name, rc);
   check_message(name, out, want);
@@ -307,7 +335,7 @@ static void test_commands(void)
   const char *casefile = test_write_file("base.yaml", variant(0, ""));
   const char *dir = path_of("ok");
   char args[9000];
-  snprintf(args, sizeof args, "run '%s' -o '%s'", casefile, dir);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite", casefile, dir);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "the base case runs (exit %d)", rc);
   CHECK(strstr(out, "hvsph: step ") && !strchr(out, '\r') && strstr(out, "hvsph: done:"),
@@ -345,7 +373,8 @@ static void test_commands(void)
   if (!lim) lim = strstr(out, "[dt: acceleration sqrt(h/|a|), particle ");
   CHECK(lim && strstr(lim, " in 'slab']"), "log lines name the step's limit and particle: %.*s",
         lim ? (int)strcspn(lim, "\n") : 4, lim ? lim : "none");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.dt_max=1e-5 --set output.log_every=1",
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--set time.dt_max=1e-5 --set output.log_every=1",
            casefile, path_of("dtmax"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"), "with a small time.dt_max the lines say "
@@ -371,7 +400,8 @@ static void test_commands(void)
       char file[40];
       snprintf(file, sizeof file, "%s.yaml", name);
       const char *f = test_write_file(file, whole);
-      snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0", f, path_of(name));
+      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+               "--set time.end=0", f, path_of(name));
       rc = hvsph(args, out, sizeof out);
       const char *w = strstr(out, "warning: body 'slab' (particles of ");
       /* the remedy: (30/64)^(1/3) = 0.7768, (30/34.3)^(1/3) = 0.9563 of the slab's
@@ -430,7 +460,8 @@ static void test_commands(void)
      is bad input naming the case file and the bodies' materials (a typo would otherwise
      run the case unchanged); so is a NEW that neither the case nor the library has; no '='
      is a usage error */
-  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogen",
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--set time.end=0 --material gas=nitrogen",
            casefile, path_of("swap"));
   rc = hvsph(args, out, sizeof out);
   snprintf(up, sizeof up, "%s/used_parameters.yaml", path_of("swap"));
@@ -465,7 +496,7 @@ static void test_commands(void)
              "0.05, 0.05]}\n    spacing: 6.25 mm\n    density: 1.0\n    pressure: 1.0\n%s",
              g ? (int)(g - two) : 0, two, g && t ? (int)(t - g) : 0, g ? g : "", t ? t : "");
     const char *f = test_write_file("swap2.yaml", whole);
-    snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=gas2 "
+    snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0 --material gas=gas2 "
              "--material gas2=gas", f, path_of("swapx"));
     rc = hvsph(args, out, sizeof out);
     CHECK(rc == 0 && strstr(out, "override: bodies[0].material = gas2") &&
@@ -500,6 +531,28 @@ static void test_commands(void)
 
 static void test_bad_input(void)
 {
+  /* the case's name is the output folder's: a plain file name only */
+  bad_input("name_path", variant(1, "name: ../../x"), NULL,
+            (const char *const[]){"name_path.yaml:1: name: '../../x' is not a plain file name",
+                                  "letters, digits and . _ - +", NULL});
+  bad_input("name_dash", variant(1, "name: -rf"), NULL,
+            (const char *const[]){"name_dash.yaml:1: name: '-rf'", "'-' at character 1", NULL});
+  bad_input("name_blank", variant(1, "name: \"my case\""), NULL,
+            (const char *const[]){"name_blank.yaml:1: name: 'my case'", "' ' at character 3",
+                                  NULL});
+  bad_input("name_dot", variant(1, "name: \"..\""), NULL,
+            (const char *const[]){"name_dot.yaml:1: name: '..'", NULL});
+  bad_input("name_control", variant(1, "name: \"a\\tb\""), NULL,
+            (const char *const[]){"name_control.yaml:1: name: 'a?b'",
+                                  "byte 0x09 at character 2", NULL});
+  bad_input("name_set", variant(0, ""), "--set name=a/b",
+            (const char *const[]){"--set: name: 'a/b'", "'/' at character 2", NULL});
+  /* no bound on the outputs: 0.01 s every 1 ns is 10^7 snapshots (without --force) */
+  bad_input("many_outputs", variant(20, "  every: 1e-9"), NULL,
+            (const char *const[]){"many_outputs.yaml:20: output.every = 1e-09 s",
+                                  "outputs (snapshots, summary rows, checkpoints), more than "
+                                  "10000", "--force", NULL});
+
   /* malformed YAML: line and column of the fault */
   bad_input("malformed", variant(7, "  boundary: {x: wall, y: periodic, z: periodic}}"), NULL,
             (const char *const[]){"malformed.yaml:7:", "YAML syntax error", NULL});
@@ -696,7 +749,7 @@ static void test_mass_ratio_warning(void)
     snprintf(yaml, sizeof yaml, fmt, v[k].y, v[k].v, v[k].minus, v[k].extra);
     snprintf(name, sizeof name, "meet_%zu.yaml", k);
     const char *file = test_write_file(name, yaml);
-    snprintf(args, sizeof args, "run '%s' -o '%s/meet_%zu'", file, test_tmpdir(), k);
+    snprintf(args, sizeof args, "run '%s' -o '%s/meet_%zu' --overwrite", file, test_tmpdir(), k);
     const int st = hvsph(args, out, sizeof out);
     const int warned = strstr(out, "much heavier than 'rod'") != NULL;
     CHECK(st == 0 && warned == v[k].warn, "%s: exit %d, the rod %s named in a mass-ratio warning "
@@ -720,7 +773,7 @@ static void test_mass_ratio_warning(void)
       "    spacing: 0.25 mm\n"
       "time: {end: 0}\n";
   const char *file = test_write_file("meet_seam.yaml", seam);
-  snprintf(args, sizeof args, "run '%s' -o '%s/meet_seam'", file, test_tmpdir());
+  snprintf(args, sizeof args, "run '%s' -o '%s/meet_seam' --overwrite", file, test_tmpdir());
   const int st = hvsph(args, out, sizeof out);
   CHECK(st == 0 && strstr(out, "'ring'") && strstr(out, "much heavier than 'disc'"),
         "a light disc in a heavy ring at rest (a seam): the ring's warning names the disc "
@@ -747,7 +800,7 @@ static void test_mass_ratio_warning(void)
       "    spacing: 1 mm\n"
       "time: {end: 0}\n";
   file = test_write_file("meet_near.yaml", near);
-  snprintf(args, sizeof args, "run '%s' -o '%s/meet_near'", file, test_tmpdir());
+  snprintf(args, sizeof args, "run '%s' -o '%s/meet_near' --overwrite", file, test_tmpdir());
   const int st2 = hvsph(args, out, sizeof out);
   const char *r = strstr(out, "much heavier than 'rod' (");
   const char *f = strstr(out, "A spacing for 'block' at most ");
@@ -783,7 +836,7 @@ static void test_lattice_cover_warning(void)
     char name[64];
     snprintf(name, sizeof name, "cover_%d.yaml", k);
     const char *file = test_write_file(name, yaml);
-    snprintf(args, sizeof args, "run '%s' -o '%s/cover_%d'", file, test_tmpdir(), k);
+    snprintf(args, sizeof args, "run '%s' -o '%s/cover_%d' --overwrite", file, test_tmpdir(), k);
     const int st = hvsph(args, out, sizeof out);
     const char *w = strstr(out, "body 'rod': its ");
     if (k == 0) {
@@ -896,6 +949,17 @@ static void test_validate(void)
   struct stat st;
   CHECK(stat(fresh, &st) != 0, "validate --only wp11 creates no output folder");
 
+  /* a DIR in use by another process (its lock): refused, the tables kept */
+  dir = prepare_valdir("val_locked");
+  const pid_t holder = hold_lock(dir);
+  snprintf(args, sizeof args, "validate --no-run --only wp1 -o '%s'", dir);
+  rc = hvsph(args, out, sizeof out);
+  kill(holder, SIGKILL);
+  waitpid(holder, NULL, 0);
+  CHECK(rc == 2 && tables_kept(dir), "validate into a DIR in use: exit %d (want 2), the tables "
+        "kept", rc);
+  check_message("validate, DIR in use", out, (const char *const[]){"is in use by another", NULL});
+
   /* --only without a name, --scale inf: usage errors (not every case, not a scale no run
      takes); --no-run keeps a regression from running anything */
   static const char *const usage[] = {"--only", "--only --threads 1", "--scale inf --only wp1",
@@ -946,7 +1010,7 @@ static void test_measure(void)
       test_write_file("measured.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
                                                    "fragments: true}"));
   const char *dir = path_of("measured");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, dir);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "the measured case runs (exit %d): %s", rc, out);
   char mp[4400], fp[4400], sp[4400];
@@ -962,6 +1026,18 @@ static void test_measure(void)
   char *m1 = test_slurp(mp, NULL);
   CHECK(rc == 0 && m0 && m1 && !strcmp(m0, m1), "hvsph measure rewrites measurements.csv with "
         "the run's own rows (exit %d): %s", rc, out);
+  {   /* measure takes the folder's lock, as a run that rewrites measurements.csv does */
+    const pid_t holder = hold_lock(dir);
+    rc = hvsph(args, out, sizeof out);
+    kill(holder, SIGKILL);
+    waitpid(holder, NULL, 0);
+    char *m2 = test_slurp(mp, NULL), want[64];
+    snprintf(want, sizeof want, "is in use by another hvsph process %ld ", (long)holder);
+    CHECK(rc == 2 && strstr(out, want) && m2 && m0 && !strcmp(m0, m2), "measure of a folder in "
+          "use: exit %d (want 2), naming the process, measurements.csv unchanged: %.200s", rc,
+          out);
+    free(m2);
+  }
   free(m1);
   /* the run's measurements.csv and fragments_00002.csv marked, to see that they stay */
   FILE *f = fopen(mp, "a");
@@ -998,7 +1074,8 @@ static void test_measure_damaged(void)
       test_write_file("measured_solid.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
                                                          "fragments: true}"));
   const char *dir = path_of("measured_solid");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].material=al-alloy "
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet --set bodies[0].material=al-alloy "
            "--set bodies[0].density=2780 --set time.end=2e-6 --set output.every=1e-6",
            casefile, dir);
   int rc = hvsph(args, out, sizeof out);
@@ -1031,14 +1108,15 @@ static void test_scaled_units_restart(void)
   char out[16384], args[9000];
   const char *casefile = test_write_file("scaled.yaml", variant(13, "    density: 1 kg/m3"));
   const char *dir = path_of("scaled"), *dir2 = path_of("scaled_again");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].material=rubber-ring "
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet --set bodies[0].material=rubber-ring "
            "--set bodies[0].pressure=0 --set time.max_steps=3", casefile, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: the run (exit %d): %s", rc, out);
   snprintf(args, sizeof args, "restart '%s' --quiet --set time.max_steps=6", dir);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: hvsph restart takes used_parameters.yaml (exit %d): %s", rc, out);
-  snprintf(args, sizeof args, "run '%s/used_parameters.yaml' -o '%s' --quiet "
+  snprintf(args, sizeof args, "run '%s/used_parameters.yaml' -o '%s' --overwrite --quiet "
            "--set time.max_steps=2", dir, dir2);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: used_parameters.yaml runs as a case (exit %d): %s", rc, out);
@@ -1052,23 +1130,142 @@ static void test_scaled_units_restart(void)
 
 /* output.every written bare and longer than time.end (a 5 meant in us) is said: outputs
  * at the start and the end only; the run goes on */
+/* A folder holding an earlier run is refused (exit 2, its files intact) unless
+ * --overwrite, which removes that run's files and nothing else; a folder in use by
+ * another process (its lock) is refused, naming the process; a lock left by a process
+ * that was killed is taken over. */
+static void test_run_folders(void)
+{
+  char out[16384], args[9000], cmd[9000];
+  const char *casefile = test_write_file("base.yaml", variant(0, ""));
+  const char *dir = path_of("earlier");
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  test_run(cmd, NULL, 0);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "a first run into a new folder (exit %d): %s", rc, out);
+  char ck[4400], sp[4400], snap2[4400], notes[4400], lockf[4400];
+  snprintf(ck, sizeof ck, "%s/checkpoint.hvc", dir);
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  snprintf(snap2, sizeof snap2, "%s/particles_00002.vtu", dir);
+  snprintf(notes, sizeof notes, "%s/notes.txt", dir);
+  snprintf(lockf, sizeof lockf, "%s/" RUNFOLDER_LOCK, dir);
+  FILE *f = fopen(notes, "w");
+  if (!f || fputs("the user's own file\n", f) < 0 || fclose(f)) exit(1);
+  size_t cklen = 0, splen = 0;
+  char *ck0 = test_slurp(ck, &cklen), *sp0 = test_slurp(sp, &splen);
+  int ntmp, n0 = count_entries(dir, &ntmp, NULL, 0);
+  CHECK(ck0 && cklen > 0 && access(lockf, F_OK) != 0, "it wrote a checkpoint (%zu bytes) and "
+        "left no lock file", cklen);
+
+  /* again, as the "quick check" (time.end = 0) and as a whole run: refused */
+  static const char *const again[] = {"--set time.end=0", ""};
+  for (int k = 0; k < 2; k++) {
+    snprintf(args, sizeof args, "run '%s' -o '%s' --quiet %s", casefile, dir, again[k]);
+    rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 2, "a new run%s into the folder of a finished run: exit %d (want 2)",
+          k ? "" : " with time.end=0", rc);
+    char w0[4500];
+    snprintf(w0, sizeof w0, "%s holds an earlier run (checkpoint.hvc, summary.csv", dir);
+    check_message("earlier run", out, (const char *const[]){w0, "6 particle snapshot files",
+                                                              "hvsph restart", "--overwrite",
+                                                              NULL});
+    size_t l1 = 0, l2 = 0;
+    char *ck1 = test_slurp(ck, &l1), *sp1 = test_slurp(sp, &l2);
+    CHECK(ck1 && l1 == cklen && !memcmp(ck0, ck1, cklen) && sp1 && l2 == splen &&
+              !memcmp(sp0, sp1, splen) && count_entries(dir, &ntmp, NULL, 0) == n0,
+          "... its checkpoint, summary.csv and files intact (%d entries)", n0);
+    free(ck1);
+    free(sp1);
+  }
+  snprintf(args, sizeof args, "restart '%s' --set time.end=0.015 --quiet", dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && summary_rows(dir) == 4, "... and the run continues from it (exit %d, %d "
+        "summary rows)", rc, summary_rows(dir));
+
+  /* --overwrite: the earlier run's files go (its later snapshot and checkpoint: this one
+     writes neither), the user's notes stay */
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "--overwrite: removed the earlier run's ") &&
+            access(snap2, F_OK) != 0 && access(ck, F_OK) != 0 && access(notes, F_OK) == 0 &&
+            summary_rows(dir) == 1,
+        "--overwrite replaces it: exit %d, the earlier snapshots and checkpoint removed, "
+        "notes.txt kept, summary.csv the new run's: %.300s", rc, out);
+
+  /* a process holding the folder's lock */
+  const pid_t child = hold_lock(dir);
+  char pid[64];
+  snprintf(pid, sizeof pid, "hvsph process %ld on ", (long)child);
+  n0 = count_entries(dir, &ntmp, NULL, 0);
+  for (int k = 0; k < 2; k++) {
+    if (k == 0) snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
+    else snprintf(args, sizeof args, "restart '%s'", dir);
+    rc = hvsph(args, out, sizeof out);
+    CHECK(rc == 2, "%s of a folder in use: exit %d (want 2)", k ? "restart" : "run --overwrite",
+          rc);
+    check_message(k ? "restart, folder in use" : "run, folder in use", out,
+                  (const char *const[]){"is in use by another", pid, "(hvsph run, started ",
+                                        NULL});
+    CHECK(count_entries(dir, &ntmp, NULL, 0) == n0 && access(lockf, F_OK) == 0,
+          "... nothing changed in the folder (%d entries, the lock file still there)", n0);
+  }
+  kill(child, SIGKILL);
+  waitpid(child, NULL, 0);
+  /* the killed process's lock file: stale, taken over with a note */
+  char *lk = test_slurp(lockf, NULL), want[64];
+  snprintf(want, sizeof want, "pid: %ld\n", (long)child);
+  CHECK(lk && strstr(lk, want), "the killed process left its lock file naming it: %.80s",
+        lk ? lk : "(none)");
+  free(lk);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  snprintf(want, sizeof want, "took over the lock left by hvsph process %ld ", (long)child);
+  CHECK(rc == 0 && strstr(out, want) && access(lockf, F_OK) != 0,
+        "a lock left by a killed process is taken over with a note (exit %d), and removed at "
+        "the end: %.300s", rc, out);
+
+  /* a lock file that is a symbolic link is not followed (the holder truncates it) */
+  const char *victim = test_write_file("victim.txt", "not hvsph's\n");
+  if (symlink(victim, lockf)) exit(1);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  char *v = test_slurp(victim, NULL);
+  CHECK(rc == 2 && v && !strcmp(v, "not hvsph's\n") && strstr(out, "cannot create the lock file"),
+        "a lock file that is a symbolic link: exit %d (want 2), its target untouched: %.200s", rc,
+        out);
+  free(v);
+  unlink(lockf);
+
+  /* --force lets a case write more than 10000 outputs (here stopped after 2 steps) */
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --force --set output.every=1e-9 "
+           "--set time.max_steps=2", casefile, dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "warning: --set: output.every = 1e-09 s writes ") &&
+            strstr(out, "(--force)"),
+        "--force: 10^7 output times are a warning only (exit %d): %.300s", rc, out);
+  free(ck0);
+  free(sp0);
+}
+
 static void test_every_warning(void)
 {
   char out[16384], args[9000];
   const char *casefile = test_write_file("every.yaml", variant(20, "  every: 5"));
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, path_of("every"));
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && strstr(out, "every.yaml:20: output.every = 5 s is longer than time.end = "
                                "0.01 s: outputs at the start and the end only"),
         "output.every past time.end: warned, run (exit %d): %s", rc, out);
   casefile = test_write_file("every0.yaml", variant(20, "  every: 0"));
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every0"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, path_of("every0"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 0: no warning (exit %d): %s", rc,
         out);
   /* with its unit it is meant (a --set time.end shorter than it, for a quick look) */
   casefile = test_write_file("every_unit.yaml", variant(20, "  every: 5 s"));
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, path_of("every_unit"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+           "--quiet", casefile, path_of("every_unit"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 5 s: no warning (exit %d): %s",
         rc, out);
@@ -1092,6 +1289,7 @@ int main(void)
   test_measure_damaged();
   test_scaled_units_restart();
   test_every_warning();
+  test_run_folders();
   failed_run("negative_density",
              "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",
@@ -1104,7 +1302,7 @@ int main(void)
     char out[16384], args[9000];
     const char *casefile = test_write_file("eos_inf.yaml", variant(14, "    energy: 1e305"));
     const char *dir = prepare_outdir("eos_not_finite");
-    snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set bodies[0].density=2780 "
+    snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set bodies[0].density=2780 "
              "--set bodies[0].material=al-alloy", casefile, dir);
     const int rc = hvsph(args, out, sizeof out);
     CHECK(rc == 3, "eos_not_finite: exit status %d (want 3)", rc);

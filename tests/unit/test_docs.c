@@ -860,7 +860,7 @@ static void test_particle_columns(void)
   const char *path = test_write_file("columns.yaml", yaml);
   char dir[4400], args[9000], out[16384], file[4500];
   snprintf(dir, sizeof dir, "%.4000s/runs/columns", test_tmpdir());
-  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", path, dir);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", path, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "a case writing every particle field runs (exit %d): %.*s", rc, first_len(out),
         out);
@@ -941,7 +941,8 @@ static void test_example_blocks(void)
         snprintf(name, sizeof name, "example_%d.yaml", nblocks);
         const char *path = test_write_file(name, b);
         snprintf(dir, sizeof dir, "%.4000s/runs/example_%d", test_tmpdir(), nblocks);
-        snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set time.end=0", path, dir);
+        snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set time.end=0",
+                 path, dir);
         const int rc = hvsph(args, out, sizeof out);
         nblocks++;
         if (rc != 0) {

@@ -565,7 +565,8 @@ static int run_variant(const char *text, const char *stem, int k, int refuse, co
   const char *tmp = test_tmpdir();
   snprintf(name, sizeof name, "%s_%d.yaml", stem, k);
   const char *file = test_write_file(name, text);
-  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s/%s_%d' --quiet", test_bin(), file, tmp, stem, k);
+  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s/%s_%d' --overwrite --quiet", test_bin(), file,
+           tmp, stem, k);
   snprintf(csv, ncsv, "%s/%s_%d/measurements.csv", tmp, stem, k);
   const int st = test_run(cmd, out, sizeof out);
   if (refuse) {

@@ -38,6 +38,7 @@ int main(void)
   char cmd[8192], out[4096], path[4400];
   const char *tmp = test_tmpdir();
   snprintf(cmd, sizeof cmd, "%s run %s/examples/paper/bumper-1.yaml -o %s/validation/bumper-1 "
+           "--overwrite "
            "--set resolution=0.1 --set time.end=\"6 us\" --set output.every=\"3 us\" "
            "--set output.csv=true --quiet", test_bin(), test_source_dir(), tmp);
   int st = test_run(cmd, out, sizeof out);
