@@ -16,10 +16,20 @@
  *
  * Film. The fraction of the x-ray beam transmitted through the column is
  *   T = exp(−μ σ),
- * with one mass attenuation coefficient μ for every material (grey approximation,
- * default 0.05 m²/kg = 0.5 cm²/g, about iron's at 90 keV: 3 mm of steel, σ = 23.6 kg/m²,
- * transmits 31 %). The grey level is 255·T: white where nothing absorbs, dark where the
- * column is dense, like a print of a flash radiograph.
+ * with one mass attenuation coefficient μ for every material (grey approximation). The
+ * grey level is 255·T: white where nothing absorbs, dark where the column is dense, like
+ * a print of a flash radiograph.
+ *
+ * Exposure. A fixed μ suits one kind of scene only: 0.05 m²/kg (iron near 90 keV) shows a
+ * steel plate but leaves a 1.5 mm aluminium bumper at T = 0.82 and its debris, a tenth
+ * of that column, at T = 0.98: white on white. So unless --mu gives it, μ is picked per
+ * picture as an exposure is picked for an experiment: the median areal density of the
+ * pixels holding material gets T = 1/2, mid grey (render_auto_mu). Half the material's
+ * columns are then lighter than mid grey and half darker; 8 bits resolve columns from a
+ * tenth of the median (T = 0.93, 17 grey levels below white) to eight times it
+ * (T = 1/256). The median, not the mean or the peak, because one dense column (a plate
+ * seen edge on) must not decide the exposure of a picture that is mostly debris, and a
+ * few fragments must not decide it for one that is mostly plate.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -140,6 +150,31 @@ void render_areal_density(const struct particles *p, const struct render_view *v
   free(ct);
   double inv_area = 1.0 / (v->pix * v->pix);
   for (size_t k = 0; k < npix; k++) sigma[k] *= inv_area;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+double render_auto_mu(const double *sigma, size_t npix, double *median)
+{
+  size_t n = 0;
+  for (size_t k = 0; k < npix; k++) n += sigma[k] > 0.0;
+  *median = 0.0;
+  if (n == 0) return RENDER_MU_FALLBACK;
+  double *s = hv_malloc(n * sizeof *s, "areal densities");
+  n = 0;
+  for (size_t k = 0; k < npix; k++)
+    if (sigma[k] > 0.0) s[n++] = sigma[k];
+  qsort(s, n, sizeof *s, cmp_double);
+  const double med = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+  free(s);
+  const double mu = log(2.0) / med;
+  if (!(mu > 0.0 && isfinite(mu))) return RENDER_MU_FALLBACK; /* σ of 1e-320: underflow */
+  *median = med;
+  return mu;
 }
 
 void render_film(struct canvas *c, const struct render_view *view, const double *sigma,
