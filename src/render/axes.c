@@ -1,5 +1,7 @@
 /* axes.c — the axes of a picture: lines along the left and bottom edges of the plot area,
- * ticks in mm pointing out of it, their labels, and the axis names ("x [mm]").
+ * ticks in mm pointing out of it, their labels, and the axis names ("x [mm]") in the
+ * left margin, the upward one at its top, the rightward one at its foot (the corner
+ * left of the bottom axis, where no tick label goes).
  *
  * Tick steps are 1, 2 or 5 × 10ᵏ mm (render_tick_step), the smallest of them whose
  * ticks lie far enough apart for their labels: 42 s pixels along the bottom (a label of
@@ -47,8 +49,8 @@ void render_axes(struct canvas *c, const struct render_view *v)
 
   /* bottom: u */
   snprintf(name, sizeof name, "%c [mm]", "xyz"[v->iu]);
-  const int name_x = ml + nu - canvas_text_width(s, name), text_y = nv + 5 * s;
-  canvas_text(c, name_x, text_y, s, ink, name);
+  const int name_w = canvas_text_width(s, name), text_y = nv + 5 * s;
+  canvas_text(c, 0, text_y, s, ink, name);
   const double u0 = v->u0 * 1e3, u1 = v->u1 * 1e3;
   double step = render_tick_step(u1 - u0, nu, 42.0 * s);
   if (step > 0.0) {
@@ -61,8 +63,7 @@ void render_axes(struct canvas *c, const struct render_view *v)
       canvas_rect(c, x, nv + s, x + s, nv + 4 * s, ink);
       tick_label(lab, sizeof lab, t, step);
       const int tw = canvas_text_width(s, lab), tx = x - tw / 2;
-      if (tx < 0 || tx + tw > name_x - 2 * FONT_ADVANCE * s || tx < last_right + 2 * s)
-        continue;
+      if (tx < name_w + FONT_ADVANCE * s || tx + tw > c->w || tx < last_right + 2 * s) continue;
       canvas_text(c, tx, text_y, s, ink, lab);
       last_right = tx + tw;
     }

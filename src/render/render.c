@@ -55,9 +55,14 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
   size_t npix = (size_t)v->nu * (size_t)v->nv;
   double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture");
   render_areal_density(p, v, sigma);
-  double median = 0.0, mu = o->mu;
+  double quartile = 0.0, mu = o->mu;
   const int automatic = !(o->mu > 0.0);
-  if (automatic) mu = render_auto_mu(sigma, npix, &median);
+  if (automatic) {
+    unsigned char *occ = hv_malloc(npix, "occupied pixels");
+    render_occupied(p, v, occ);
+    mu = render_auto_mu(sigma, occ, npix, &quartile);
+    free(occ);
+  }
   render_film(c, v, sigma, mu);
   double mass = 0.0, smax = 0.0;
   for (size_t k = 0; k < npix; k++) {
@@ -73,8 +78,8 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
   key->mu = mu;
   char how[160] = "";
   if (automatic)
-    snprintf(how, sizeof how, " (automatic: the median areal density of the pixels holding "
-             "material, %.6g kg/m2, at T = 1/2)", median);
+    snprintf(how, sizeof how, " (automatic: the lower quartile of the areal densities of the "
+             "pixels holding a particle, %.6g kg/m2, at T = 1/2)", quartile);
   snprintf(desc, dlen, "simulated flash radiograph along %c%s: areal density, film T = "
            "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg, peak areal density "
            "%.6g kg/m2",

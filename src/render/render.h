@@ -17,9 +17,9 @@
  * σ = ∫ρ dl [kg/m²], and the film shows the transmitted fraction T = exp(−μ σ) as grey
  * (white: no material). Pixels are square; the mass in the picture is conserved to
  * rounding (kernels that reach past the edge lose only the part outside). Unless --mu
- * gives it, μ is chosen from the picture: the median areal density of the pixels that
- * hold material gets T = 1/2 (render_auto_mu), so thin aluminium debris shows as well
- * as a steel plate.
+ * gives it, μ is chosen from the picture: the lower quartile of the areal densities of
+ * the pixels that hold a particle's centre gets T = 1/2 (render_auto_mu), so thin aluminium debris shows
+ * as well as a steel plate.
  *
  * Particles: discs of radius 0.6 h, far ones first (painter's algorithm; the viewer sits on
  * the negative side of the view axis), coloured by material or by a quantity through a
@@ -111,10 +111,16 @@ int render_half_model(const struct particles *p);
 double render_kernel_column(double s);
 
 /* The attenuation a radiograph of areal densities sigma[0..npix) gets by default: the
- * median σ of the pixels holding material (σ > 0) is given T = exp(−μσ) = 1/2, so
- * μ = ln 2 / median; RENDER_MU_FALLBACK when no pixel holds any. *median gets that σ (0
- * when none). docs/rendering.md argues the choice. */
-double render_auto_mu(const double *sigma, size_t npix, double *median);
+ * lower quartile of σ over the pixels holding material (σ > 0) and, where occupied is not
+ * NULL, a particle's centre (occupied[k] != 0, render_occupied) is given
+ * T = exp(−μσ) = 1/2, so μ = ln 2 / quartile; RENDER_MU_FALLBACK when no pixel
+ * qualifies. *quartile gets that σ (0 when none). radiograph.c and docs/rendering.md argue the choice. */
+double render_auto_mu(const double *sigma, const unsigned char *occupied, size_t npix,
+                      double *quartile);
+/* occupied[j * nu + i] = 1 for the view's plot pixels that hold the centre of a particle
+ * in view (mirror copies included), 0 for the others. */
+void render_occupied(const struct particles *p, const struct render_view *v,
+                     unsigned char *occupied);
 
 /* The tick step of an axis: the smallest 1, 2 or 5 × 10ᵏ (in the units of span) whose
  * ticks lie at least min_px apart on an axis of npx pixels showing span (> 0). */

@@ -189,12 +189,15 @@ int render_series(const char *rundir, const char *framedir, const struct render_
     rc = load(path, &p, &t, err) || render_view_setup(&p, &o, &v, err);
     if (!rc) {
       const size_t npix = (size_t)v.nu * (size_t)v.nv;
-      double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), median;
+      double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), quartile;
       render_areal_density(&p, &v, sigma);
-      o.mu = render_auto_mu(sigma, npix, &median);
+      unsigned char *occ = hv_malloc(npix, "occupied pixels");
+      render_occupied(&p, &v, occ);
+      o.mu = render_auto_mu(sigma, occ, npix, &quartile);
+      free(occ);
       free(sigma);
-      hv_info("film mu = %.3g m2/kg for every frame (the median areal density of the "
-              "material in %s, %.3g kg/m2, at T = 1/2)", o.mu, path, median);
+      hv_info("film mu = %.3g m2/kg for every frame (the lower quartile of the areal "
+              "densities of the material in %s, %.3g kg/m2, at T = 1/2)", o.mu, path, quartile);
     }
     particles_free(&p);
   }
