@@ -1059,6 +1059,9 @@ static void test_series(void)
   CHECK(count_lines(out, "hvsph: wrote ") == nsnap && !strstr(out, "particles_00007") &&
             count_lines(out, ".vtu, t = ") == nsnap,
         "one line per frame, from the .vtu snapshots, none from particles_00007.vtu: %s", out);
+  CHECK(count_lines(out, "film mu = ") == 1 && strstr(out, "for every frame") &&
+            strstr(out, "particles_00003.vtu"),
+        "one automatic mu for every frame, from the last snapshot: %s", out);
   snprintf(args, sizeof args, "%s/frames_xray/frame_%%05d.png -pix_fmt yuv420p", dir);
   CHECK(strstr(out, "ffmpeg -framerate 10 -i ") && strstr(out, args),
         "the last line names the folder and an ffmpeg command: %s", out);
