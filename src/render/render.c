@@ -154,7 +154,23 @@ int render_png(const char *path, const struct particles *p, const struct render_
              "SI), %zu discs", axis, v.mirror ? ", mirrored at z = 0" : "",
              color_name(o->color), lo, hi, nd);
   }
-  if (o->labels) render_body_labels(&plot, p, &v, info);
+  if (o->labels && info && !info->body_names && info->source) {
+    /* names not given: the run's, next to the snapshot (validate's pictures, say) */
+    static char names[RENDER_MAX_BODIES][64];
+    const char *ptr[RENDER_MAX_BODIES];
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", info->source);
+    char *slash = strrchr(dir, '/');
+    if (slash) slash[slash == dir] = '\0';   /* "/snap.csv": the root */
+    else snprintf(dir, sizeof dir, ".");
+    struct render_info named = *info;
+    named.nbody = render_read_body_names(dir, names, RENDER_MAX_BODIES);
+    for (int k = 0; k < named.nbody; k++) ptr[k] = names[k];
+    named.body_names = ptr;
+    render_body_labels(&plot, p, &v, &named);
+  } else if (o->labels) {
+    render_body_labels(&plot, p, &v, info);
+  }
   for (int j = 0; j < v.nv; j++)
     memcpy(c.rgb + 3 * ((size_t)j * (size_t)c.w + (size_t)v.ml), plot.rgb + 3 * (size_t)j * (size_t)v.nu,
            3 * (size_t)v.nu);

@@ -164,8 +164,9 @@ struct render_info {
                                          same over a series of pictures; NULL: ranked from p's
                                          bodies (render.c) */
   int nslot;
-  const char *const *body_names;      /* body index -> name (labels); may be NULL or hold
-                                         NULLs: "body N" */
+  const char *const *body_names;      /* body index -> name (labels), may hold NULLs
+                                         ("body N"); NULL: render_png reads them from the
+                                         used_parameters.yaml in source's folder */
   int nbody;
 };
 

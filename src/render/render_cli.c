@@ -222,17 +222,8 @@ int render_main(int argc, char **argv)
     const char *ptr[RENDER_MAX_MATERIALS];
     int nm = io_read_material_names(in, names, RENDER_MAX_MATERIALS);
     for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
-    static char bnames[RENDER_MAX_BODIES][64];
-    const char *bptr[RENDER_MAX_BODIES];
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", in);
-    char *slash = strrchr(dir, '/');
-    if (slash) slash[slash == dir] = '\0';   /* "/snap.csv": the root */
-    else snprintf(dir, sizeof dir, ".");
-    const int nb = o.labels ? render_read_body_names(dir, bnames, RENDER_MAX_BODIES) : 0;
-    for (int k = 0; k < nb; k++) bptr[k] = bnames[k];
-    struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in,
-                               .body_names = bptr, .nbody = nb};
+    /* the body names: render_png reads them from the snapshot's folder */
+    struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
     rc = render_check_particles(&p, nm, in, &err);
     if (!rc) rc = render_png(out, &p, &o, &info, &err);
     if (!rc) hv_info("wrote %s (%zu particles)", out, p.n);

@@ -908,6 +908,17 @@ static void test_labels(void)
   }
   CHECK(diff[0] > 200 && diff[1] > 200, "the command labels the bodies (radiograph: %ld bytes "
         "differ from --no-labels, particles: %ld; > 200)", diff[0], diff[1]);
+  /* the same snapshot in a folder without used_parameters.yaml: "body N", not the names */
+  snprintf(args, sizeof args, "mkdir -p '%s/unnamed' && cp '%s' '%s/unnamed/' && '%s' render "
+           "'%s/unnamed/particles_00000.csv' -o '%s/unnamed.png' --size 800 --mode particles "
+           "--axis y", test_tmpdir(), path, test_tmpdir(), test_bin(), test_tmpdir(), dir);
+  const int st = test_run(args, out, sizeof out);
+  char a[4400], b[4400];
+  snprintf(a, sizeof a, "%s/with.png", dir);
+  snprintf(b, sizeof b, "%s/unnamed.png", dir);
+  const long dn = st ? -2 : png_differ(a, b);
+  CHECK(dn > 100, "names from the snapshot's used_parameters.yaml, \"body N\" without it: %ld "
+        "bytes differ (> 100) %s", dn, out);
 }
 
 /* Bad data: refused with one line naming the file, the particle and the field, exit 2,
