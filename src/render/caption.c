@@ -119,7 +119,7 @@ static void key_legend(struct canvas *c, const struct caption_key *k,
 void render_caption(struct canvas *c, const struct render_view *v, const struct render_info *info,
                     const char *const what[2], const struct caption_key *key)
 {
-  int s = v->scale, y0 = v->nv;
+  int s = v->scale, y0 = v->nv + v->mb;
   canvas_rect(c, 0, y0, c->w, y0 + s, rule);
 
   /* row 1: scale bar, what is shown, time */

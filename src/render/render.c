@@ -47,15 +47,23 @@ static const char *color_name(enum render_color c)
   return n[c];
 }
 
-/* Radiograph into the plot area; fills the key and the description. */
-static void draw_radiograph(struct canvas *c, const struct particles *p,
-                            const struct render_view *v, const struct render_options *o,
-                            struct caption_key *key, char *desc, size_t dlen)
+/* Radiograph into the plot canvas; fills the key and the description; returns μ. */
+static double draw_radiograph(struct canvas *c, const struct particles *p,
+                              const struct render_view *v, const struct render_options *o,
+                              struct caption_key *key, char *desc, size_t dlen)
 {
   size_t npix = (size_t)v->nu * (size_t)v->nv;
   double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture");
   render_areal_density(p, v, sigma);
-  render_film(c, v, sigma, o->mu);
+  double quartile = 0.0, mu = o->mu;
+  const int automatic = !(o->mu > 0.0);
+  if (automatic) {
+    unsigned char *occ = hv_malloc(npix, "occupied pixels");
+    render_occupied(p, v, occ);
+    mu = render_auto_mu(sigma, occ, npix, &quartile);
+    free(occ);
+  }
+  render_film(c, v, sigma, mu);
   double mass = 0.0, smax = 0.0;
   for (size_t k = 0; k < npix; k++) {
     mass += sigma[k];
@@ -65,13 +73,18 @@ static void draw_radiograph(struct canvas *c, const struct particles *p,
   free(sigma);
   key->kind = 0;
   key->lo = 0.0;
-  key->hi = 3.0 / o->mu; /* the film transmits 5 % there */
+  key->hi = 3.0 / mu; /* the film transmits 5 % there */
   key->unit = 1.0;
-  key->mu = o->mu;
+  key->mu = mu;
+  char how[160] = "";
+  if (automatic)
+    snprintf(how, sizeof how, " (automatic: the lower quartile of the areal densities of the "
+             "pixels holding a particle, %.6g kg/m2, at T = 1/2)", quartile);
   snprintf(desc, dlen, "simulated flash radiograph along %c%s: areal density, film T = "
-           "exp(-mu*sigma), mu = %g m2/kg; mass in picture %.6g kg, peak areal density "
+           "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg, peak areal density "
            "%.6g kg/m2",
-           "xyz"[v->axis], v->mirror ? ", mirrored at z = 0" : "", o->mu, mass, smax);
+           "xyz"[v->axis], v->mirror ? ", mirrored at z = 0" : "", mu, how, mass, smax);
+  return mu;
 }
 
 int render_png(const char *path, const struct particles *p, const struct render_options *o,
@@ -91,23 +104,25 @@ int render_png(const char *path, const struct particles *p, const struct render_
                           "hvsph before it kept each particle's time step): colour by another "
                           "quantity");
   }
-  if (o->mode == RENDER_RADIOGRAPH && !(o->mu > 0.0 && isfinite(o->mu)))
-    return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg]");
+  if (o->mode == RENDER_RADIOGRAPH && !(o->mu >= 0.0 && isfinite(o->mu)))
+    return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg] or auto");
   if (o->have_range && !(o->range[0] < o->range[1]))
     return hv_error_set(err, HV_EXIT_USAGE, "--range: the low end must be below the high end");
   struct render_view v;
   if (render_view_setup(p, o, &v, err)) return -1;
 
-  struct canvas c;
+  struct canvas c, plot;
   canvas_init(&c, v.width, v.height);
+  canvas_init(&plot, v.nu, v.nv);   /* the plot area, drawn alone, then put in place */
   struct caption_key key = {0};
   char what[2][128], desc[1024], mu_label[96];
   char axis = "xyz"[v.axis], right = "xyz"[v.iu], up = "xyz"[v.iv];
   unsigned char *present = NULL;
   int *slot = NULL;
   if (o->mode == RENDER_RADIOGRAPH) {
-    draw_radiograph(&c, p, &v, o, &key, desc, sizeof desc);
-    snprintf(mu_label, sizeof mu_label, "σ [kg/m²]  film T = exp(−μσ), μ = %g m²/kg", o->mu);
+    const double mu = draw_radiograph(&plot, p, &v, o, &key, desc, sizeof desc);
+    snprintf(mu_label, sizeof mu_label, "σ [kg/m²]  film T = exp(−μσ), μ = %.3g m²/kg%s", mu,
+             o->mu > 0.0 ? "" : " (auto)");
     key.label[0] = mu_label;
     key.label[1] = "σ [kg/m²]";
     snprintf(what[0], sizeof what[0], "x-ray along %c (%c→ %c↑)%s", axis, right, up,
@@ -124,7 +139,7 @@ int render_png(const char *path, const struct particles *p, const struct render_
     if (given) memcpy(slot, info->material_slot, (size_t)nmat * sizeof *slot);
     else render_material_slots(p, nmat, slot);
     double lo, hi;
-    size_t nd = render_discs(&c, p, &v, o, &lo, &hi, present, slot, nmat);
+    size_t nd = render_discs(&plot, p, &v, o, &lo, &hi, present, slot, nmat);
     key.kind = o->color == RENDER_COLOR_MATERIAL ? 2 : 1;
     key.lo = lo;
     key.hi = hi;
@@ -139,6 +154,28 @@ int render_png(const char *path, const struct particles *p, const struct render_
              "SI), %zu discs", axis, v.mirror ? ", mirrored at z = 0" : "",
              color_name(o->color), lo, hi, nd);
   }
+  if (o->labels && info && !info->body_names && info->source) {
+    /* names not given: the run's, next to the snapshot (validate's pictures, say) */
+    static char names[RENDER_MAX_BODIES][64];
+    const char *ptr[RENDER_MAX_BODIES];
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", info->source);
+    char *slash = strrchr(dir, '/');
+    if (slash) slash[slash == dir] = '\0';   /* "/snap.csv": the root */
+    else snprintf(dir, sizeof dir, ".");
+    struct render_info named = *info;
+    named.nbody = render_read_body_names(dir, names, RENDER_MAX_BODIES);
+    for (int k = 0; k < named.nbody; k++) ptr[k] = names[k];
+    named.body_names = ptr;
+    render_body_labels(&plot, p, &v, &named);
+  } else if (o->labels) {
+    render_body_labels(&plot, p, &v, info);
+  }
+  for (int j = 0; j < v.nv; j++)
+    memcpy(c.rgb + 3 * ((size_t)j * (size_t)c.w + (size_t)v.ml), plot.rgb + 3 * (size_t)j * (size_t)v.nu,
+           3 * (size_t)v.nu);
+  canvas_free(&plot);
+  render_axes(&c, &v);
   const char *whatp[2] = {what[0], what[1]};
   render_caption(&c, &v, info, whatp, &key);
   free(present);

@@ -16,11 +16,17 @@
  * (W₁ the M4 kernel of kernel.h with h = 1), so the picture holds the areal density
  * σ = ∫ρ dl [kg/m²], and the film shows the transmitted fraction T = exp(−μ σ) as grey
  * (white: no material). Pixels are square; the mass in the picture is conserved to
- * rounding (kernels that reach past the edge lose only the part outside).
+ * rounding (kernels that reach past the edge lose only the part outside). Unless --mu
+ * gives it, μ is chosen from the picture: the lower quartile of the areal densities of
+ * the pixels that hold a particle's centre gets T = 1/2 (render_auto_mu), so thin aluminium debris shows
+ * as well as a steel plate.
  *
  * Particles: discs of radius 0.6 h, far ones first (painter's algorithm; the viewer sits on
  * the negative side of the view axis), coloured by material or by a quantity through a
  * sequential colour map with monotonic lightness (render_colormap).
+ *
+ * Both modes get axes with ticks in mm along the left and bottom edges of the plot
+ * (axes.c) and each body's name near its projected centre where the label fits.
  *
  * A series (render_series, series.c): every snapshot of a run folder as a frame of a movie,
  * all with one extent, mirroring, size and colour scale, so that the picture does not jump.
@@ -43,7 +49,10 @@ enum render_color {
   RENDER_COLOR_DT             /* the time step a particle allows [s], coloured by its log10 */
 };
 
-#define RENDER_MU_DEFAULT 0.05   /* [m2/kg] film mass attenuation coefficient (grey; iron near 90 keV) */
+#define RENDER_MU_AUTO 0.0      /* --mu not given: chosen from the areal densities in view */
+#define RENDER_MU_FALLBACK 0.05  /* [m2/kg] the automatic μ of a picture without material
+                                    (about iron's at 90 keV) */
+#define RENDER_MAX_COORD 1e6     /* [m] a position farther from the origin is bad data */
 #define RENDER_WIDTH_DEFAULT 1200  /* [px] picture width when --size is not given */
 #define RENDER_MIN_WIDTH 200     /* [px] */
 #define RENDER_MIN_HEIGHT 100    /* [px] */
@@ -61,7 +70,9 @@ struct render_options {
   int have_box;
   double box[6];             /* [m] xmin, xmax, ymin, ymax, zmin, zmax */
   int mirror;                /* -1: automatic (on for a half model), 0 off, 1 on */
-  double mu;                 /* [m2/kg] mass attenuation coefficient (radiograph) */
+  double mu;                 /* [m2/kg] mass attenuation coefficient (radiograph);
+                                RENDER_MU_AUTO: render_auto_mu of the picture */
+  int labels;                /* 1: each body's name where it fits (default), 0: none */
   int have_range;
   double range[2];           /* colour range in SI units of the quantity (particles mode) */
 };
@@ -78,8 +89,10 @@ struct render_view {
                                 supports and the margin */
   double d0, d1;             /* [m] slab along the line of sight (particle centres), ±inf by default */
   double pix;                /* [m] pixel edge */
-  int nu, nv;                /* [px] plot area, at the top of the picture */
-  int width, height;         /* [px] whole picture: plot area + caption band below */
+  int nu, nv;                /* [px] plot area, at the top of the picture right of the
+                                left axis margin: columns ml..ml+nu-1, rows 0..nv-1 */
+  int ml, mb;                /* [px] left margin (y axis' ticks and labels), bottom axis band */
+  int width, height;         /* [px] whole picture: ml + nu wide, nv + mb + band high */
   int band;                  /* [px] caption band height */
   int scale;                 /* font scale of the caption (1 or 2) */
 };
@@ -96,6 +109,31 @@ int render_half_model(const struct particles *p);
 /* F(s) of the header: the M4 cubic spline integrated along a line at distance s·h from the
  * particle, times h²; F(0) = 3/(2π), zero for s >= 2. */
 double render_kernel_column(double s);
+
+/* The attenuation a radiograph of areal densities sigma[0..npix) gets by default: the
+ * lower quartile of σ over the pixels holding material (σ > 0) and, where occupied is not
+ * NULL, a particle's centre (occupied[k] != 0, render_occupied) is given
+ * T = exp(−μσ) = 1/2, so μ = ln 2 / quartile; RENDER_MU_FALLBACK when no pixel
+ * qualifies. *quartile gets that σ (0 when none). radiograph.c and docs/rendering.md argue the choice. */
+double render_auto_mu(const double *sigma, const unsigned char *occupied, size_t npix,
+                      double *quartile);
+/* occupied[j * nu + i] = 1 for the view's plot pixels that hold the centre of a particle
+ * in view (mirror copies included), 0 for the others. */
+void render_occupied(const struct particles *p, const struct render_view *v,
+                     unsigned char *occupied);
+
+/* The tick step of an axis: the smallest 1, 2 or 5 × 10ᵏ (in the units of span) whose
+ * ticks lie at least min_px apart on an axis of npx pixels showing span (> 0). */
+double render_tick_step(double span, double npx, double min_px);
+
+/* Refuses values that cannot be drawn or mean corrupt data: a position not finite or
+ * beyond RENDER_MAX_COORD, a velocity not finite, a mass or smoothing length not
+ * positive, a density negative or not finite, a material index below 0 or not among
+ * the snapshot's nmat materials (nmat 0: names unknown, any index below
+ * RENDER_MATERIAL_CAP), a negative body index. Error (HV_EXIT_INPUT): the file, the
+ * first bad particle (index and id), the field and its value, and how many more. */
+int render_check_particles(const struct particles *p, int nmat, const char *path,
+                           struct hv_error *err);
 
 /* Areal density σ [kg/m²] on the view's nu × nv plot pixels (row 0 at the top, v = v1):
  * sigma[j * nu + i]. Σ sigma · pix² equals the mass in the view (mirror copies included). */
@@ -126,7 +164,16 @@ struct render_info {
                                          same over a series of pictures; NULL: ranked from p's
                                          bodies (render.c) */
   int nslot;
+  const char *const *body_names;      /* body index -> name (labels), may hold NULLs
+                                         ("body N"); NULL: render_png reads them from the
+                                         used_parameters.yaml in source's folder */
+  int nbody;
 };
+
+/* The body names of the run whose used_parameters.yaml is in folder dir (bodies[i].name)
+ * into names[i] (max entries of 64 bytes); returns how many (0: no such file, or one
+ * that cannot be read: the labels then say "body N"). */
+int render_read_body_names(const char *dir, char names[][64], int max);
 
 /* Renders p as the options say and writes the PNG (8-bit RGB) to path, whole or not at all.
  * Errors: HV_EXIT_USAGE (options that cannot work), HV_EXIT_INPUT (data missing, e.g. no

@@ -36,11 +36,13 @@ static void render_usage(FILE *f)
           "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
           "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
           "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
-          "  --mu M                        film mass attenuation [m2/kg] (default %g)\n"
+          "  --mu M|auto                   film mass attenuation [m2/kg] (default auto: the lower\n"
+          "                                quartile of the material's areal densities at T = 1/2)\n"
           "  --range LO,HI                 colour range of the quantity (units allowed)\n"
+          "  --no-labels                   no body names on the picture (default: each body's\n"
+          "                                name from the run's used_parameters.yaml where it fits)\n"
           "  --quiet, -q                   no line per picture written (warnings and errors only)\n"
-          "see docs/rendering.md\n",
-          RENDER_MU_DEFAULT);
+          "see docs/rendering.md\n");
 }
 
 /* "a,b,c" -> n quantities of dimension dim. */
@@ -153,11 +155,12 @@ int render_main(int argc, char **argv)
     } else if (!strcmp(opt, "--quiet") || !strcmp(opt, "-q")) hv_log_level = 1;
     else if (!strcmp(opt, "--mirror")) o.mirror = 1;
     else if (!strcmp(opt, "--no-mirror")) o.mirror = 0;
+    else if (!strcmp(opt, "--no-labels")) o.labels = 0;
     else if (!strcmp(opt, "--mu")) {
-      char *end;
-      o.mu = strtod(val, &end);
-      if (end == val || *end || !(o.mu > 0.0) || !isfinite(o.mu))
-        return fail_usage("--mu needs a positive number in m2/kg, not '%s'", val);
+      char *end = NULL;
+      o.mu = strcmp(val, "auto") ? strtod(val, &end) : RENDER_MU_AUTO;
+      if (end && (end == val || *end || !(o.mu > 0.0) || !isfinite(o.mu)))
+        return fail_usage("--mu needs a positive number in m2/kg or auto, not '%s'", val);
     } else if (!strcmp(opt, "--range")) range = val;
     else if (a[0] == '-' && a[1]) return fail_usage("unknown option '%s'", a);
     else if (in) return fail_usage("unexpected argument '%s': one snapshot at a time", a);
@@ -219,8 +222,10 @@ int render_main(int argc, char **argv)
     const char *ptr[RENDER_MAX_MATERIALS];
     int nm = io_read_material_names(in, names, RENDER_MAX_MATERIALS);
     for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
+    /* the body names: render_png reads them from the snapshot's folder */
     struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
-    rc = render_png(out, &p, &o, &info, &err);
+    rc = render_check_particles(&p, nm, in, &err);
+    if (!rc) rc = render_png(out, &p, &o, &info, &err);
     if (!rc) hv_info("wrote %s (%zu particles)", out, p.n);
   }
   particles_free(&p);

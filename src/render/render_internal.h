@@ -47,6 +47,17 @@ int font_glyph(unsigned long cp, unsigned char rows[FONT_H]);
 void render_film(struct canvas *c, const struct render_view *view, const double *sigma,
                  double mu);
 
+/* Axes with ticks in mm in the margins of the view: left (v) and bottom (u) edges of the
+ * plot area (axes.c). */
+void render_axes(struct canvas *c, const struct render_view *v);
+/* Body labels drawn into the plot canvas (of the plot area's size): each body's name
+ * centred at the mass-weighted centre of its particles in view, where the label lies
+ * wholly in the plot and overlaps no label placed before (bodies in index order).
+ * Returns the count of labels drawn. */
+int render_body_labels(struct canvas *plot, const struct particles *p,
+                       const struct render_view *v, const struct render_info *info);
+#define RENDER_MAX_BODIES 256   /* bodies labelled: indices below this */
+
 /* The palette slot of each material index 0..nmat-1 (slot[m]): the materials ranked by
  * the first body (lowest body index) made of them, ties and materials without particles
  * by index. A case's bodies come in the case file's order whatever order its materials

@@ -15,8 +15,13 @@
  *   - particles mode coloured by a quantity without --range: the range over all of them;
  *   - the material colours: ranked by the first body of each material over all of them
  *     (a projectile whose particles have all left the domain does not pass its colour on).
- * The radiograph needs nothing more: its film, T = exp(−μσ), is a fixed physical mapping
- * of the areal density, the same in every frame, and so is its wedge.
+ *   - the radiograph's μ, when --mu does not give it: the automatic choice
+ *     (render_auto_mu) for the last snapshot in the common view, read once more after
+ *     the first pass. The film, T = exp(−μσ), then maps areal density to grey the same
+ *     way in every frame, and so does its wedge. The last snapshot, because an impact's
+ *     material is thinnest late, when the debris has spread: exposed for it, the cloud
+ *     stays visible to the end, and the earlier, denser frames are darker, as they
+ *     would be on film.
  * The second pass reads each again and writes FRAMEDIR/frame_NNNNN.png (render_png:
  * a temporary file, then renamed), NNNNN = 0, 1, ... in the run's order: contiguous, as
  * ffmpeg's frame_%05d.png pattern wants, also where a snapshot is missing from the folder.
@@ -58,13 +63,16 @@ static int frames_beyond(const char *dir, int n)
   return count;
 }
 
-/* Reads one snapshot into p (initialised, empty); an empty snapshot is an error. */
+/* Reads one snapshot into p (initialised, empty); an empty snapshot, or one holding
+ * values that cannot be drawn (render_check_particles), is an error. */
 static int load(const char *path, struct particles *p, double *t, struct hv_error *err)
 {
   *t = NAN;
   if (io_read_particles(path, p, t, err)) return -1;
   if (p->n == 0) return hv_error_set(err, HV_EXIT_INPUT, "'%s' holds no particles", path);
-  return 0;
+  char names[RENDER_MAX_MATERIALS][64] = {{0}};
+  return render_check_particles(p, io_read_material_names(path, names, RENDER_MAX_MATERIALS),
+                                path, err);
 }
 
 int render_series(const char *rundir, const char *framedir, const struct render_options *opt,
@@ -173,6 +181,30 @@ int render_series(const char *rundir, const char *framedir, const struct render_
       }
     }
   }
+  if (!rc && o.mode == RENDER_RADIOGRAPH && !(o.mu > 0.0)) {  /* μ for every frame */
+    double t;
+    snapshot_path(path, sizeof path, rundir, &frames[nf - 1]);
+    particles_init(&p);
+    struct render_view v;
+    rc = load(path, &p, &t, err) || render_view_setup(&p, &o, &v, err);
+    if (!rc) {
+      const size_t npix = (size_t)v.nu * (size_t)v.nv;
+      double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), quartile;
+      render_areal_density(&p, &v, sigma);
+      unsigned char *occ = hv_malloc(npix, "occupied pixels");
+      render_occupied(&p, &v, occ);
+      o.mu = render_auto_mu(sigma, occ, npix, &quartile);
+      free(occ);
+      free(sigma);
+      hv_info("film mu = %.3g m2/kg for every frame (the lower quartile of the areal "
+              "densities of the material in %s, %.3g kg/m2, at T = 1/2)", o.mu, path, quartile);
+    }
+    particles_free(&p);
+  }
+  static char bnames[RENDER_MAX_BODIES][64];
+  const char *bptr[RENDER_MAX_BODIES];
+  const int nb = o.labels ? render_read_body_names(rundir, bnames, RENDER_MAX_BODIES) : 0;
+  for (int k = 0; k < nb; k++) bptr[k] = bnames[k];
   if (!rc) rc = io_mkdir_p(framedir, err);
 
   /* pass 2: the frames */
@@ -189,7 +221,8 @@ int render_series(const char *rundir, const char *framedir, const struct render_
       const int nm = io_read_material_names(path, names, RENDER_MAX_MATERIALS);
       for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
       const struct render_info info = {.time = t, .material_names = ptr, .nmat = nm,
-                                       .source = path, .material_slot = slot, .nslot = nmat};
+                                       .source = path, .material_slot = slot, .nslot = nmat,
+                                       .body_names = bptr, .nbody = nb};
       rc = render_png(fpath, &p, &o, &info, err);
       /* a failure to write names the frame; one that does not is about the snapshot */
       if (rc && !strstr(err->msg, fpath)) hv_error_prefix(err, "%s: ", path);

@@ -1,6 +1,7 @@
 /* view.c — where a picture lies: line of sight, mirroring, extent and page layout.
  *
- * The plot area takes the top nu × nv pixels of the picture, the caption band the rest.
+ * The plot area takes nu × nv pixels at the top of the picture, right of a margin ml for
+ * the left axis; under it lie the band of the bottom axis (mb) and the caption band.
  * Pixels are square: the extent (the --box, or every particle with its kernel support 2h
  * and a 4 % margin) is grown about its centre until its aspect matches the plot area's.
  * Mirroring is automatic for a half model: on when every particle lies at z >= -h/2.
@@ -18,7 +19,8 @@ void render_options_default(struct render_options *o)
   o->axis = 2;
   o->color = RENDER_COLOR_MATERIAL;
   o->mirror = -1;
-  o->mu = RENDER_MU_DEFAULT;
+  o->mu = RENDER_MU_AUTO;
+  o->labels = 1;
 }
 
 int render_half_model(const struct particles *p)
@@ -97,20 +99,25 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
                         RENDER_MIN_WIDTH, RENDER_MAX_SIDE);
   v.scale = v.width >= 640 ? 2 : 1;
   v.band = 36 * v.scale;
-  v.nu = v.width;
+  /* the left margin holds a label of 5 characters (30 s), the tick (3 s) and a gap, and
+   * the axis name "y [mm]" (36 s); the bottom band a tick, a gap and a line of text */
+  v.ml = 40 * v.scale;
+  v.mb = 16 * v.scale;
+  v.nu = v.width - v.ml;
   if (v.height > 0) {
     if (v.height < RENDER_MIN_HEIGHT || v.height > RENDER_MAX_SIDE)
       return hv_error_set(err, HV_EXIT_USAGE, "--size: the height must be %d to %d pixels",
                           RENDER_MIN_HEIGHT, RENDER_MAX_SIDE);
-    if (v.height - v.band < 40)
+    if (v.height - v.band - v.mb < 40)
       return hv_error_set(err, HV_EXIT_USAGE,
                           "--size: a picture %d pixels wide needs a height of at least %d "
-                          "(%d for the caption)", v.width, v.band + 40, v.band);
-    v.nv = v.height - v.band;
+                          "(%d for the axis and the caption)", v.width, v.band + v.mb + 40,
+                          v.band + v.mb);
+    v.nv = v.height - v.band - v.mb;
   } else {
     double nv = round(v.nu * dv / du);
     v.nv = (int)fmin(fmax(nv, 120.0), 0.75 * v.nu); /* at most 4:3 upright */
-    v.height = v.nv + v.band;
+    v.height = v.nv + v.mb + v.band;
   }
   v.pix = fmax(du / v.nu, dv / v.nv);
   if (!(v.pix > 0.0 && isfinite(0.5 * v.pix * v.nu) && isfinite(0.5 * v.pix * v.nv) &&

@@ -13,9 +13,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <dirent.h>
+#include <unistd.h>
 
 #include "io/snapshot.h"
 #include "render/render.h"
+#include "render/render_internal.h"
 #include "testlib.h"
 #include "testparticles.h"
 
@@ -142,7 +144,9 @@ static void test_colormap(void)
   CHECK(lo < 20.0 && hi > 85.0, "colour map spans L* %.1f to %.1f", lo, hi);
 }
 
-/* No mirror; a 10 mm square box around the origin, 400 px wide (25 µm pixels). */
+/* No mirror; a 10 mm square box around the origin, a plot area of 400 x 400 px (25 µm
+ * pixels): the picture adds the left axis margin (40 px), the bottom axis band (16) and
+ * the caption band (36). */
 static void single_view(struct render_options *o)
 {
   render_options_default(o);
@@ -150,8 +154,8 @@ static void single_view(struct render_options *o)
   o->have_box = 1;
   const double box[6] = {-5e-3, 5e-3, -5e-3, 5e-3, -1, 1};
   memcpy(o->box, box, sizeof box);
-  o->width = 400;
-  o->height = 436;
+  o->width = 440;
+  o->height = 452;
 }
 
 static void test_single_particle(void)
@@ -240,7 +244,7 @@ static void test_plate(void)
   o.width = 300;
   o.height = 200;
   s = areal(&p, &o, 0.0, 0.0, &v);
-  CHECK(v.width == 300 && v.height == 200 && v.nu == 300 && v.nv == 200 - v.band,
+  CHECK(v.width == 300 && v.height == 200 && v.nu == 300 - v.ml && v.nv == 200 - v.mb - v.band,
         "box + size: %dx%d picture, plot %dx%d", v.width, v.height, v.nu, v.nv);
   CHECK(v.u0 <= -8e-3 && v.u1 >= 8e-3 && v.v0 <= -8e-3 && v.v1 >= 8e-3, "box inside the view");
   CHECK_CLOSE(s.at / (RHO_STEEL * t), 1.0, 0.01, "plate in a box: areal density / rho t");
@@ -592,6 +596,391 @@ static void test_command(void)
   }
 }
 
+
+/* ---- exposure, axes, labels, bad data ----------------------------------- */
+
+/* Pixels of two PNG files: -1 when either cannot be read or the sizes differ, else the
+ * count of differing bytes. */
+static long png_differ(const char *a, const char *b)
+{
+  int wa = 0, ha = 0, wb = 0, hb = 0;
+  unsigned char *x = read_png(a, &wa, &ha), *y = read_png(b, &wb, &hb);
+  long d = -1;
+  if (x && y && wa == wb && ha == hb) {
+    d = 0;
+    for (long k = 0; k < 3L * wa * ha; k++) d += x[k] != y[k];
+  }
+  free(x);
+  free(y);
+  return d;
+}
+
+
+/* The tick step: the smallest 1, 2 or 5 x 10^k whose ticks lie min_px apart. */
+static void test_tick_step(void)
+{
+  static const struct {
+    double span, npx, min_px, step;
+  } c[] = {
+      {100.0, 1000.0, 80.0, 10.0},   /* 8 wanted: 10 */
+      {37.0, 500.0, 60.0, 5.0},      /* 4.44: 5 */
+      {3.0, 400.0, 60.0, 0.5},       /* 0.45: 0.5 */
+      {200.0, 1000.0, 10.0, 2.0},    /* exactly 2: 2, not 5 */
+      {0.01, 500.0, 84.0, 0.002},    /* 0.00168: 0.002 */
+      {283.0, 1120.0, 84.0, 50.0},   /* 21.2: 50 (20 is too close) */
+      {1.0, 10.0, 84.0, 10.0},       /* ticks farther apart than the axis: one at most */
+  };
+  for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+    const double st = render_tick_step(c[k].span, c[k].npx, c[k].min_px);
+    CHECK(fabs(st - c[k].step) <= 1e-12 * c[k].step, "tick step for %g mm on %g px, %g px "
+          "apart: %g (%g)", c[k].span, c[k].npx, c[k].min_px, st, c[k].step);
+  }
+  CHECK(render_tick_step(0.0, 100.0, 10.0) == 0.0 && render_tick_step(NAN, 100.0, 10.0) == 0.0,
+        "no step for an empty or undefined span");
+  /* the rule on many spans: a 1-2-5 value, wide enough, and the next smaller of the
+   * series (half, or 0.4 times 5) too narrow */
+  int ok = 1;
+  double worst = 0.0;
+  for (int k = 0; k < 2000; k++) {
+    const double span = pow(10.0, -3.0 + 7.0 * k / 1999.0), want = span * 42.0 / 777.0;
+    const double st = render_tick_step(span, 777.0, 42.0);
+    const double e = pow(10.0, floor(log10(st) + 1e-9)), m = st / e;
+    const int series = fabs(m - 1.0) < 1e-9 || fabs(m - 2.0) < 1e-9 || fabs(m - 5.0) < 1e-9;
+    const double smaller = fabs(m - 5.0) < 1e-9 ? 0.4 * st : 0.5 * st;
+    if (!series || st < want * (1 - 1e-9) || smaller >= want) ok = 0;
+    worst = fmax(worst, st / want);
+  }
+  CHECK(ok && worst <= 2.5 + 1e-9, "2000 spans from 1 um to 10 m: each step 1, 2 or 5 x 10^k, "
+        "the smallest wide enough (at most %.3g times the least)", worst);
+}
+
+/* The automatic exposure: the lower quartile of the pixels holding a particle at
+ * T = 1/2. */
+static void test_auto_mu(void)
+{
+  const double sig[9] = {0.0, 4.0, 0.0, 1.0, 2.0, 100.0, 0.0, 0.01, 3.0};
+  const unsigned char occ[9] = {1, 1, 0, 1, 1, 1, 0, 0, 1};
+  double q = -1.0;
+  CHECK_CLOSE(render_auto_mu(sig, occ, 9, &q), log(2.0) / 2.0, 1e-15,
+              "lower quartile of 1, 2, 3, 4, 100 is 2: mu = ln 2 / 2 (empty pixels and the rim "
+              "without a particle, 0.01, left out)");
+  CHECK(q == 2.0, "quartile %g (2)", q);
+  CHECK_CLOSE(render_auto_mu(sig, NULL, 9, &q), log(2.0), 1e-15,
+              "without the mask: every pixel with sigma > 0, 0.01 to 100, quartile 1");
+  const double none[3] = {0.0, 0.0, 0.0};
+  CHECK(render_auto_mu(none, NULL, 3, &q) == RENDER_MU_FALLBACK && q == 0.0,
+        "no material in view: the fallback mu");
+}
+
+/* Grey levels of the plot pixel under (u, v) [m] in a PNG drawn with view v. */
+static int grey_at(const unsigned char *img, int w, const struct render_view *v, double u,
+                   double vv)
+{
+  const int i = (int)floor((u - v->u0) / v->pix), j = (int)floor((v->v1 - vv) / v->pix);
+  if (i < 0 || j < 0 || i >= v->nu || j >= v->nv) return -1;
+  return img[3 * ((size_t)j * (size_t)w + (size_t)(v->ml + i))];
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+  return *(const int *)a - *(const int *)b;
+}
+
+/* Writes p as dir/name with materials names[0..nmat) and renders it with the options
+ * (library call, as the command does); returns the picture (malloc) and its view. */
+static unsigned char *picture(const struct particles *p, const struct render_options *o,
+                              const char *name, struct render_view *v, int *w, int *h)
+{
+  char path[4200];
+  snprintf(path, sizeof path, "%s/%s", test_tmpdir(), name);
+  struct hv_error err;
+  hv_error_clear(&err);
+  const struct render_info info = {.time = 1e-5};
+  if (render_view_setup(p, o, v, &err) || render_png(path, p, o, &info, &err)) {
+    CHECK(0, "%s: %s", name, err.msg);
+    return NULL;
+  }
+  return read_png(path, w, h);
+}
+
+/* Aluminium debris: a 1.5 mm aluminium plate (a bumper) with a 10 mm hole, seen edge on,
+ * and 300 clusters of 1 to 7 particles (0.4 mm, 0.17 mg each: the fragments of a
+ * Whipple shield at the demo's resolution) on a cone ahead of it. At the old fixed
+ * mu = 0.05 m2/kg a particle's column (m F(0)/h^2 = 0.35 kg/m2 at its centre) transmits
+ * 98 %, a cluster's a few times that: the median cluster centre is under 20 grey levels
+ * (8 %) below white, barely told from the paper. By default the debris must stand out:
+ * at least 60 levels (a quarter of the scale) below white. A steel sphere (13.5 mm) behind a 2 mm steel plate, the scene the old
+ * default was made for, must not turn black: its centre (104 kg/m2) and a column at
+ * 0.8 of its radius (62 kg/m2) both above black and 20 levels apart. */
+static void test_exposure(void)
+{
+  struct particles al, st;
+  particles_init(&al);
+  particles_init(&st);
+  add_plate(&al, 0.0, 1.5e-3, 60e-3, 0.0, 0.5e-3, 2700, 0, 5e-3);
+  double cl[300][2];
+  unsigned long r = 777;
+  for (int k = 0; k < 300; k++) {
+    double a[4];
+    for (int q = 0; q < 4; q++) {
+      r = r * 6364136223846793005UL + 1442695040888963407UL;
+      a[q] = (double)(r >> 11) / 9007199254740992.0;
+    }
+    const double ang = 0.7 * a[0], phi = PI * a[1], dist = 8e-3 + 30e-3 * a[2];
+    const double x = 2e-3 + dist * cos(ang), y = dist * sin(ang) * cos(phi),
+                 z = dist * sin(ang) * sin(phi);
+    cl[k][0] = x;
+    cl[k][1] = z;
+    const int n = 1 + (int)(7 * a[3]);
+    for (int q = 0; q < n; q++)
+      put(&al, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4),
+          2700 * 6.4e-11, 0.48e-3, 2700, 1, 6000 * cos(ang));
+  }
+  for (size_t i = 0; i < al.n; i++) al.body[i] = al.mat[i];
+  struct render_options o;
+  render_options_default(&o);
+  o.axis = 1;
+  o.width = 900;
+  o.labels = 0;
+  struct render_view v;
+  int w = 0, h = 0, dark[2][300];
+  for (int pass = 0; pass < 2; pass++) {
+    o.mu = pass ? 0.05 : RENDER_MU_AUTO;
+    unsigned char *img = picture(&al, &o, pass ? "al_mu005.png" : "al_auto.png", &v, &w, &h);
+    int n = 0;
+    for (int k = 0; img && k < 300; k++) {
+      const int g = grey_at(img, w, &v, cl[k][0], cl[k][1]);
+      if (g >= 0) dark[pass][n++] = 255 - g;
+    }
+    free(img);
+    qsort(dark[pass], (size_t)n, sizeof dark[pass][0], cmp_int);
+    CHECK(n == 300, "the clusters are in the picture (%d of 300)", n);
+    if (n == 300)
+      CHECK(pass ? dark[1][150] < 20 : dark[0][150] >= 60, "aluminium debris, %s: the median "
+            "cluster centre %d grey levels below white (%s)", pass ? "--mu 0.05" : "by default",
+            dark[pass][150], pass ? "under 20: why the default changed" : "at least 60");
+  }
+
+  const double c[3] = {25e-3, 0, 0}, R = 6.75e-3;
+  add_sphere(&st, c, R, 0.45e-3, 7850, 0, 1, 3000);
+  add_plate(&st, 0.0, 2e-3, 60e-3, 0.0, 0.5e-3, 7850, 1, 10e-3);
+  o.mu = RENDER_MU_AUTO;
+  unsigned char *img = picture(&st, &o, "steel_auto.png", &v, &w, &h);
+  const int g0 = img ? grey_at(img, w, &v, c[0], 0.0) : -1,
+            g8 = img ? grey_at(img, w, &v, c[0], 0.8 * R) : -1;
+  free(img);
+  CHECK(g0 >= 8 && g8 >= g0 + 20, "steel sphere and plate by default: not saturated, grey %d "
+        "at the sphere's centre (>= 8), %d at 0.8 R (20 lighter)", g0, g8);
+  particles_free(&al);
+  particles_free(&st);
+}
+
+/* Axes: the ticks along the bottom are the multiples of the step render_tick_step
+ * gives for the view, each a mark in the bottom band; the labels put ink under them
+ * and left of the plot. */
+static void test_axes(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double c[3] = {0, 0, 0};
+  add_sphere(&p, c, 5e-3, 0.5e-3, 2700, 0, 0, 0);
+  struct render_options o;
+  render_options_default(&o);
+  o.have_box = 1;
+  const double box[6] = {-7e-3, 43e-3, -10e-3, 10e-3, -1, 1};
+  memcpy(o.box, box, sizeof box);
+  for (int size = 0; size < 2; size++) {
+    o.width = size ? 1200 : 400;
+    o.height = 0;
+    struct render_view v;
+    int w = 0, h = 0;
+    unsigned char *img = picture(&p, &o, "axes.png", &v, &w, &h);
+    if (!img) continue;
+    const int s = v.scale;
+    const double step = render_tick_step((v.u1 - v.u0) * 1e3, v.nu, 42.0 * s);
+    int expect = 0;
+    for (double t = ceil(v.u0 * 1e3 / step - 1e-9) * step; t <= v.u1 * 1e3; t += step) expect++;
+    /* tick marks: runs of black in a row of the band between the axis line and the text */
+    int runs = 0;
+    const unsigned char *row = img + 3 * (size_t)(v.nv + 2 * s) * (size_t)w;
+    for (int x = v.ml; x < v.ml + v.nu; x++)
+      runs += row[3 * x] == 0 && (x == v.ml || row[3 * (x - 1)] != 0);
+    long ink_bottom = 0, ink_left = 0;
+    for (int y = v.nv + 5 * s; y < v.nv + 12 * s; y++)
+      for (int x = v.ml; x < v.ml + v.nu; x++) ink_bottom += img[3 * ((size_t)y * w + x)] == 0;
+    for (int y = 12 * s; y < v.nv; y++)
+      for (int x = 0; x < v.ml - 5 * s; x++) ink_left += img[3 * ((size_t)y * w + x)] == 0;
+    CHECK(step == (size ? 5.0 : 10.0) && runs == expect && expect >= 4,
+          "%d px wide: %d ticks every %g mm along x (%d; step 5 mm at 1200 px, 10 at 400)", w,
+          runs, step, expect);
+    CHECK(ink_bottom > 20 * expect && ink_left > 20, "%d px wide: tick labels drawn: %ld "
+          "black pixels under the ticks, %ld left of the plot", w, ink_bottom, ink_left);
+    free(img);
+  }
+  particles_free(&p);
+}
+
+/* Labels: the names of used_parameters.yaml, "body N" without it; one per body where
+ * it fits and overlaps no other. */
+static void test_labels(void)
+{
+  char dir[4200], path[4400], args[9000], out[4096];
+  snprintf(dir, sizeof dir, "%s/labelled", test_tmpdir());
+  snprintf(args, sizeof args, "mkdir -p '%s'", dir);
+  CHECK(system(args) == 0, "%s", args);
+  snprintf(path, sizeof path, "%s/used_parameters.yaml", dir);
+  FILE *f = fopen(path, "w");
+  if (f) {
+    fputs("name: labels\nbodies:\n  - name: projectile\n    material: al\n"
+          "  - name: bumper\n    material: al\n", f);
+    fclose(f);
+  }
+  char names[4][64] = {{0}};
+  CHECK(render_read_body_names(dir, names, 4) == 2 && !strcmp(names[0], "projectile") &&
+            !strcmp(names[1], "bumper"),
+        "body names from used_parameters.yaml: '%s', '%s'", names[0], names[1]);
+  CHECK(render_read_body_names(test_tmpdir(), names, 4) == 0, "no used_parameters.yaml: none");
+
+  /* bodies 0 and 1 apart; body 2 centred on body 1 (a plate's refined disc) */
+  struct particles p;
+  particles_init(&p);
+  const double c0[3] = {-20e-3, 0, 0}, c1[3] = {20e-3, 0, 0};
+  add_sphere(&p, c0, 4e-3, 0.5e-3, 2700, 0, 0, 0);
+  const size_t n0 = p.n;
+  add_sphere(&p, c1, 8e-3, 0.5e-3, 2700, 0, 0, 0);
+  for (size_t i = 0; i < p.n; i++)
+    p.body[i] = i < n0 ? 0 : hypot(p.x[1][i], p.x[2][i]) < 3e-3 ? 2 : 1;
+  struct render_options o;
+  render_options_default(&o);
+  o.width = 800;
+  struct render_view v;
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(render_view_setup(&p, &o, &v, &err) == 0, "view: %s", err.msg);
+  const char *bn[3] = {"projectile", "bumper", "bumper-core"};
+  const struct render_info info = {.body_names = bn, .nbody = 3};
+  struct canvas plot;
+  canvas_init(&plot, v.nu, v.nv);
+  const int placed = render_body_labels(&plot, &p, &v, &info);
+  /* the projectile's label: black in its box about the projected centre */
+  const int cx = (int)((c0[0] - v.u0) / v.pix), cy = (int)((v.v1 - c0[1]) / v.pix);
+  const int half = canvas_text_width(v.scale, "projectile") / 2 + 2 * v.scale;
+  long ink = 0, elsewhere = 0;
+  for (int y = 0; y < v.nv; y++)
+    for (int x = 0; x < v.nu; x++) {
+      const int black = plot.rgb[3 * ((size_t)y * v.nu + x)] == 0;
+      if (abs(x - cx) <= half && abs(y - cy) <= 6 * v.scale) ink += black;
+      else if (abs(x - (int)((c1[0] - v.u0) / v.pix)) > 60 * v.scale) elsewhere += black;
+    }
+  canvas_free(&plot);
+  CHECK(placed == 2 && ink > 50 && elsewhere == 0, "labels: %d placed (2: bumper-core's would "
+        "overlap bumper's), %ld black pixels at the projectile's centre, %ld elsewhere (0)",
+        placed, ink, elsewhere);
+  const char *wide[1] = {"a name far too long to fit in a picture of this size, so not drawn "
+                         "anywhere in it at all, however the bodies lie"};
+  const struct render_info winfo = {.body_names = wide, .nbody = 1};
+  canvas_init(&plot, v.nu, v.nv);
+  const int nwide = render_body_labels(&plot, &p, &v, &winfo);
+  canvas_free(&plot);
+  CHECK(nwide == 1, "a label wider than the picture is left out; body 1's says \"body 1\", "
+        "body 2's would overlap it (%d placed, 1)", nwide);
+
+  /* the command: names from the snapshot's folder; --no-labels draws none */
+  const char *mn[1] = {"al"};
+  struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "labels",
+                               .material_names = mn, .nmat = 1};
+  snprintf(path, sizeof path, "%s/particles_00000.csv", dir);
+  CHECK(io_write_particles_csv(path, &p, &meta, &err) == 0, "labelled scene: %s", err.msg);
+  particles_free(&p);
+  long diff[2] = {-1, -1};
+  for (int k = 0; k < 2; k++) {
+    /* the radiograph (k = 0), then the particles, with labels and without */
+    snprintf(args, sizeof args, "'%s' -o '%s/with.png' --size 800 %s", path, dir,
+             k ? "--mode particles --axis y" : "");
+    int st = run(args, out, sizeof out);
+    snprintf(args, sizeof args, "'%s' -o '%s/without.png' --size 800 --no-labels %s", path, dir,
+             k ? "--mode particles --axis y" : "");
+    st |= run(args, out, sizeof out);
+    char a[4400], b[4400];
+    snprintf(a, sizeof a, "%s/with.png", dir);
+    snprintf(b, sizeof b, "%s/without.png", dir);
+    diff[k] = st ? -2 : png_differ(a, b);
+  }
+  CHECK(diff[0] > 200 && diff[1] > 200, "the command labels the bodies (radiograph: %ld bytes "
+        "differ from --no-labels, particles: %ld; > 200)", diff[0], diff[1]);
+  /* the same snapshot in a folder without used_parameters.yaml: "body N", not the names */
+  snprintf(args, sizeof args, "mkdir -p '%s/unnamed' && cp '%s' '%s/unnamed/' && '%s' render "
+           "'%s/unnamed/particles_00000.csv' -o '%s/unnamed.png' --size 800 --mode particles "
+           "--axis y", test_tmpdir(), path, test_tmpdir(), test_bin(), test_tmpdir(), dir);
+  const int st = test_run(args, out, sizeof out);
+  char a[4400], b[4400];
+  snprintf(a, sizeof a, "%s/with.png", dir);
+  snprintf(b, sizeof b, "%s/unnamed.png", dir);
+  const long dn = st ? -2 : png_differ(a, b);
+  CHECK(dn > 100, "names from the snapshot's used_parameters.yaml, \"body N\" without it: %ld "
+        "bytes differ (> 100) %s", dn, out);
+}
+
+/* Bad data: refused with one line naming the file, the particle and the field, exit 2,
+ * for a picture and for a run's frames. */
+static void test_bad_data(void)
+{
+  static const struct {
+    const char *field;
+    int which;      /* 0 x, 1 y, 2 mat, 3 rho, 4 m, 5 h, 6 vx */
+    double value;
+  } bad[] = {
+      {"'x' = nan", 0, NAN},       {"'y' = 1e+300", 1, 1e300}, {"'mat' = 99", 2, 99},
+      {"'rho' = -5", 3, -5},       {"'m' = -1", 4, -1},        {"'h' = 0", 5, 0},
+      {"'vx' = inf", 6, INFINITY},
+  };
+  char dir[4200], path[4400], args[9000], out[4096];
+  snprintf(dir, sizeof dir, "%s/badvalues", test_tmpdir());
+  snprintf(args, sizeof args, "rm -rf '%s' && mkdir -p '%s'", dir, dir);
+  CHECK(system(args) == 0, "%s", args);
+  const char *names[2] = {"al", "steel"};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    struct particles p;
+    particles_init(&p);
+    const double c[3] = {0, 0, 0};
+    add_sphere(&p, c, 2e-3, 0.5e-3, 2700, 1, 0, 0);
+    const size_t i = 17;
+    switch (bad[k].which) {
+    case 0: case 1: p.x[bad[k].which][i] = bad[k].value; break;
+    case 2: p.mat[i] = (int)bad[k].value; break;
+    case 3: p.rho[i] = bad[k].value; break;
+    case 4: p.m[i] = bad[k].value; break;
+    case 5: p.h[i] = bad[k].value; break;
+    default: p.v[0][i] = bad[k].value; break;
+    }
+    p.rho[i + 3] = bad[k].which == 3 ? -1.0 : p.rho[i + 3];   /* a second bad one, counted */
+    struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "bad",
+                                 .material_names = names, .nmat = 2};
+    struct hv_error err;
+    hv_error_clear(&err);
+    snprintf(path, sizeof path, "%s/particles_%05zu.csv", dir, k);
+    CHECK(io_write_particles_csv(path, &p, &meta, &err) == 0, "bad scene written %s", err.msg);
+    particles_free(&p);
+    for (int mode = 0; mode < 2; mode++) {
+      snprintf(args, sizeof args, "'%s' -o '%s/bad.png' --mode %s", path, dir,
+               mode ? "particles" : "radiograph");
+      const int st = run(args, out, sizeof out);
+      char *nl = strchr(out, '\n');
+      CHECK(st == 2 && nl && nl[1] == '\0' && strstr(out, path) && strstr(out, "particle 17 ") &&
+                strstr(out, bad[k].field) && (bad[k].which != 3 || strstr(out, "1 particles more")),
+            "%s %s: exit %d (2), one line naming the file, particle 17 and %s: %s",
+            mode ? "particles" : "radiograph", bad[k].field, st, bad[k].field, out);
+    }
+  }
+  snprintf(path, sizeof path, "%s/bad.png", dir);
+  CHECK(access(path, F_OK) != 0, "no picture of bad data written");
+  /* a run folder's frames: the same check for every snapshot */
+  snprintf(args, sizeof args, "'%s' -o '%s/frames' --size 400", dir, dir);
+  const int st = run(args, out, sizeof out);
+  CHECK(st == 2 && strstr(out, "particles_00000.csv: particle 17 (id 17), field 'x' = nan"),
+        "frames of a folder with bad snapshots: exit %d (2), naming the first: %s", st, out);
+}
+
 /* ---- a run's snapshots as movie frames --------------------------------- */
 
 /* A gas blob on the move and expanding (a half model, z >= 0), four outputs: each
@@ -638,22 +1027,6 @@ static int count_lines(const char *out, const char *what)
   return n;
 }
 
-/* Pixels of two PNG files: -1 when either cannot be read or the sizes differ, else the
- * count of differing bytes. */
-static long png_differ(const char *a, const char *b)
-{
-  int wa = 0, ha = 0, wb = 0, hb = 0;
-  unsigned char *x = read_png(a, &wa, &ha), *y = read_png(b, &wb, &hb);
-  long d = -1;
-  if (x && y && wa == wb && ha == hb) {
-    d = 0;
-    for (long k = 0; k < 3L * wa * ha; k++) d += x[k] != y[k];
-  }
-  free(x);
-  free(y);
-  return d;
-}
-
 /* The one line of out holding `what` contains `also`. */
 static int line_has(const char *out, const char *what, const char *also)
 {
@@ -697,6 +1070,9 @@ static void test_series(void)
   CHECK(count_lines(out, "hvsph: wrote ") == nsnap && !strstr(out, "particles_00007") &&
             count_lines(out, ".vtu, t = ") == nsnap,
         "one line per frame, from the .vtu snapshots, none from particles_00007.vtu: %s", out);
+  CHECK(count_lines(out, "film mu = ") == 1 && strstr(out, "for every frame") &&
+            strstr(out, "particles_00003.vtu"),
+        "one automatic mu for every frame, from the last snapshot: %s", out);
   snprintf(args, sizeof args, "%s/frames_xray/frame_%%05d.png -pix_fmt yuv420p", dir);
   CHECK(strstr(out, "ffmpeg -framerate 10 -i ") && strstr(out, args),
         "the last line names the folder and an ffmpeg command: %s", out);
@@ -923,7 +1299,13 @@ int main(void)
   test_sphere();
   test_plate();
   test_extremes();
+  test_tick_step();
+  test_auto_mu();
+  test_exposure();
+  test_axes();
   test_command();
+  test_labels();
+  test_bad_data();
   test_series();
   return test_finish();
 }
