@@ -6,21 +6,21 @@
  * a 3 mm lattice, and flies 16 mm into it in 5 µs. It has no condensed neighbour, so
  * its density rate, summed over condensed neighbours only, is zero: ρ must stay at
  * ρ₀ = 2780 kg/m³ to rounding at every step. Summed over the gas particles as well (the
- * rule before session 12), whose volumes mⱼ/ρⱼ are a thousand times its own, it was
+ * rule before 6037ca8, 2026-11-23), whose volumes mⱼ/ρⱼ are a thousand times its own, it was
  * compressed to 2.4 ρ₀ (350 GPa) and its step fell to half. The gas still acts on it
  * through the pressure and viscous forces: it must slow down, and the total energy
  * (kinetic + internal, rigid walls all round) must stay within 1e-8 of its start
  * (measured −6.77e-10 over the 830 steps; the bound was 1e-3 before). The
  * work of a gas–condensed pair goes to the gas particle (the condensed one's density
  * does not see the gas, so neither does its energy): the particle's internal energy
- * stays exactly 0, where the even split before session 13 gave it 3.2·10⁵ J/kg (1 GPa).
+ * stays exactly 0, where the even split before 001e252 (2026-11-23) gave it 3.2·10⁵ J/kg (1 GPa).
  *
  * A plate at rest against the gas at rest (al-alloy 1.5 mm on a 0.3 mm lattice, the
  * nitrogen at 1.05 MPa on a 3 mm lattice filling the rest of the box, vacuum behind the
  * plate), 5 µs: the gas pushes the plate back, a = p/(ρ₀ t), −1.26 m/s by 5 µs; the gas
  * follows it and stays at its density. A pair of a gas and a condensed particle pushes
  * with the gas's pressure weighed by volume, 2 p̂_gas/(ρᵢρⱼ); with the mass-weighted
- * pᵢ/ρᵢ² + pⱼ/ρⱼ² (before session 13) the gas next to the plate was blown off at up to
+ * pᵢ/ρᵢ² + pⱼ/ρⱼ² (before 001e252) the gas next to the plate was blown off at up to
  * 312 m/s (Mach 0.93) and compressed to 1.41 ρ₁, and the plate moved at −7.0 m/s; now
  * the gas moves below 0.1 c (5 m/s) and the plate within 30 % of p t/(ρ₀ L) (−1.15).
  */
@@ -184,7 +184,7 @@ static void test_plate_in_plane(void)
  * neighbour of another body by at most twice that neighbour's reference volume,
  * 2mⱼ/ρ₀ⱼ: passing a spray particle it swings by a few per cent and returns, and its
  * density must stay below SPRAY_RHO_MAX ρ₀ at every step. With the spray's own volume
- * mⱼ/ρⱼ (25 times the cap; before session 29) it was compressed to 2.53 ρ₀ (with the
+ * mⱼ/ρⱼ (25 times the cap; before a033786, 2026-11-25) it was compressed to 2.53 ρ₀ (with the
  * cap: 1.038 ρ₀) — the mechanism that held §2.4's step at 0.5 ns (a bumper particle at
  * 4.05 ρ₀ among spray at 37-73 times its reference volume). SPRAY_RHO_MAX = 1.08: twice
  * the measured 3.8 % swing (1.0382 ρ₀; the bound was 1.2 before). */
@@ -284,7 +284,7 @@ int main(void)
         rho0, dev);
   CHECK(s.p.v[0][bit] < 4000.0 - 1.0, "the gas slows it: vx = %.1f m/s", s.p.v[0][bit]);
   CHECK(s.p.e[bit] == 0.0, "the drag's heat goes to the gas: the particle's e = %.3g J/kg "
-        "(it took half, 3.2e5 J/kg, before session 13)", s.p.e[bit]);
+        "(it took half, 3.2e5 J/kg, before 001e252)", s.p.e[bit]);
   /* measured -6.77e-10 (was 1e-3) */
   CHECK(fabs(t1.e_total / t0.e_total - 1.0) < 1e-8, "total energy within 1e-8: %.3g",
         t1.e_total / t0.e_total - 1.0);

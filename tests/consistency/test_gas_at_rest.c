@@ -9,7 +9,7 @@
  * the layout is checked (half a step to 1e-12 of the spacing, 11 × 6 × 6 particles),
  * and the gas must stay at rest to round-off (|v| < 1e-9 m/s, ρ within 1e-12 of ρ₁;
  * measured 1.16e-12 m/s and 5.8e-15; the bounds were 1 mm/s and 1e-9 before). With
- * the lattice laid from the min faces only (before session 13) the last layers ended
+ * the lattice laid from the min faces only (before 000d800, 2026-11-23) the last layers ended
  * 0.5 mm and 0.3 mm from the walls, and the gas moved at up to 81 m/s and its density
  * changed by 52 % by 10 µs
  * (the vessel's: 110–136 m/s near its far wall, 0.88 ρ₁ by 10 µs).

@@ -5,7 +5,7 @@
  * hot particle of the same gas (p = 1000: c = 37.4 m/s) moving at 0.5 m/s.
  *  1. Far from the block (no neighbour): its signal speed must be its own speed,
  *     vsig = |v| = 0.5 m/s exactly, and the step is set by the block (its limit names
- *     the block); with the rule before session 11 (vsig = c(1 + 1.2α), 82 m/s) the
+ *     the block); with the rule before 3aa7778 (2026-11-23; vsig = c(1 + 1.2α), 82 m/s) the
  *     lone particle would have set a step 30 times shorter.
  *  2. Next to the block's face (within reach of its particles): its sound speed counts,
  *     vsig ≥ c(1 + 1.2α), and it sets the step.

@@ -323,7 +323,7 @@ static void test_commands(void)
         "the commit is known (from %s): '%s'", HVSPH_VERSION_SOURCE, HVSPH_COMMIT);
 
   /* render's errors read as every command's: one "hvsph: error: " line (they read
-   * "hvsph render: " before session 58) */
+   * "hvsph render: " before 48553fe, 2026-12-07) */
   snprintf(args0, sizeof args0, "render '%s' -o '%s'", path_of("missing.vtu"), path_of("missing.png"));
   rc = hvsph(args0, out, sizeof out);
   CHECK(rc == 2 && !strncmp(out, "hvsph: error: cannot open '", 27) &&

@@ -422,7 +422,7 @@ static void test_set(void)
   check_msg(rc, &err, "--set time.end.x: 'time.end' is not a mapping");
   cfg_free(c);
   /* a --set below a key the file gives a value: the message names where it is written
-     (tools/fuzz-input.py, session 60: a case file cut short after 'time:\n  e') */
+     (tools/fuzz-input.py, 2026-12-07 at 6f0da84: a case file cut short after 'time:\n  e') */
   c = cfg_load_string("output: {every: 1 us}\ntime:\n  e\n", "case.yaml", &err);
   rc = c ? cfg_apply_set(c, "time.end=1 us", &err) : 0;
   check_msg(rc, &err, "case.yaml:2: --set time.end: 'time' is not a mapping");

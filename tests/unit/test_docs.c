@@ -1,10 +1,11 @@
 /* test_docs.c — the documentation against the code, so that neither drifts from the other.
  *
  *   1. docs/case-files.md has every key a run reads. Every example case
- *      (examples/verification/ as it is, examples/paper/ at resolution 0.01) and a case
- *      of materials (each of the library's, and a few that no example has) is set up with
- *      --set time.end=0, and every key of its used_parameters.yaml (defaults included)
- *      must be a key of the table where case-files.md puts it: `sph.viscosity.alpha` is
+ *      (examples/verification/ and examples/getting-started/ as they are,
+ *      examples/paper/ at resolution 0.01) and a case of materials (each of the
+ *      library's, and a few that no example has) is set up with --set time.end=0, and
+ *      every key of its used_parameters.yaml (defaults included) must be a key of the
+ *      table where case-files.md puts it: `sph.viscosity.alpha` is
  *      `viscosity.alpha` of the sph table; `materials.<m>.gamma` is `gamma` of the
  *      materials table or of its EOS's ("EOS `ideal-gas`"); `materials.<m>.strength.yield`
  *      is `yield` of the strength table (fracture likewise); `bodies[i].spacing` is in the
@@ -440,9 +441,9 @@ static int example_cmp(const void *a, const void *b)
 
 static int list_examples(struct example *ex, int max)
 {
-  static const char *const folders[] = {"verification", "paper"};
+  static const char *const folders[] = {"verification", "paper", "getting-started"};
   int n = 0;
-  for (int f = 0; f < 2; f++) {
+  for (int f = 0; f < 3; f++) {
     char dir[4200];
     snprintf(dir, sizeof dir, "%s/examples/%s", test_source_dir(), folders[f]);
     DIR *d = opendir(dir);
@@ -538,7 +539,8 @@ static int set_up_examples(struct example *ex, int max)
     }
   }
   CHECK(n >= 20 && nfailed == 0, "the %d cases (examples/verification, examples/paper at "
-        "resolution 0.01, a case of materials) set up with time.end=0%s%s", n,
+        "resolution 0.01, examples/getting-started, a case of materials) set up with "
+        "time.end=0%s%s", n,
         nfailed ? "; failed:" : "", text_str(&failed));
   text_free(&failed);
   text_free(&cmd);

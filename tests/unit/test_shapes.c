@@ -315,7 +315,7 @@ static void test_errors(void)
                "more than this machine");
   /* a disc given by its count, a radius in metres where millimetres were meant: one
      whole layer of its thickness would need 3e20 particles; refused at once (it was
-     counted point by point, for hours: tools/fuzz-input.py, session 60) */
+     counted point by point, for hours: tools/fuzz-input.py, 2026-12-07 at 6f0da84) */
   expect_error("count-given disc far too wide",
                body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
                          "particles: 5000"),

@@ -1,6 +1,6 @@
 /* test_cavity_dynamic.c — a thick-walled steel cylinder thrown open from inside and
  * stopped by its own plastic work alone: the dynamic counterpart of the quasi-static
- * cavity expansion of session 18, at the large strains of the rods' channels (the wall
+ * cavity expansion (a gas-driven exploratory run of 2026-11-24), at the large strains of the rods' channels (the wall
  * expands to 2.5 times its radius, hoop strain ln 2.5 = 0.92).
  *
  * Set-up (plane strain: a slab periodic along the axis x): the tube a₀ = 4 mm < r <

@@ -21,7 +21,7 @@
  *     stress over the outputs, every 0.05 µs, is reported and must be below |σ_c|) and
  *     no particle splits.
  *  3. The cumulative criterion as a time to failure (docs/models.md; tried on the
- *     paper's cases in session 6 and not adopted), at 100 m/s with outputs every 0.05 µs: with τ = TAU_SHORT the
+ *     paper's cases on 2026-11-22, 22d7fd5, and not adopted), at 100 m/s with outputs every 0.05 µs: with τ = TAU_SHORT the
  *     target spalls, in a zone centred on x_s (measured: 1.55–2.45 mm, twice as wide as
  *     Tresca's: the tension lasts τ over more layers before they fail), and no particle
  *     away from the contact splits before the tension has exceeded |σ_c| for τ (the
