@@ -32,6 +32,8 @@
 #include "neighbours/grid.h"
 #include "setup/setup.h"
 
+#define HV_SPEED_OF_LIGHT 299792458.0   /* [m/s] */
+
 enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
 static const char *const lattice_names[] = {"cubic", "hcp", NULL};
 
@@ -188,7 +190,25 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
     return -1;
   }
   snprintf(key, sizeof key, "%s.radial_velocity", path);
-  return cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err);
+  if (cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err))
+    return -1;
+  /* hvsph's mechanics are Newtonian: a body at or above the speed of light is a slip
+     (1e300 m/s ran until its first step overflowed; 3e8 m/s ran to exit 0). The
+     fastest natural impactors, meteoroids, reach 72 km/s, four thousand times below. */
+  const double speed = hypot(hypot(bs->vel[0], bs->vel[1]), bs->vel[2]);
+  const char *vkey = cfg_has(c, key2) ? "speed" : "velocity";
+  if (!(speed < HV_SPEED_OF_LIGHT) || !(fabs(bs->vrad) < HV_SPEED_OF_LIGHT) ||
+      !(speed + fabs(bs->vrad) < HV_SPEED_OF_LIGHT)) {
+    const int radial = !(speed < HV_SPEED_OF_LIGHT) ? 0 : 1;
+    snprintf(key, sizeof key, "%s.%s", path, radial ? "radial_velocity" : vkey);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': a speed of %g m/s%s is not "
+                        "below the speed of light (%.0f m/s); hvsph's mechanics are "
+                        "Newtonian, for impacts up to some tens of km/s",
+                        cfg_where(c, key, where, sizeof where), key, name,
+                        radial ? speed + fabs(bs->vrad) : speed,
+                        radial ? " (with its radial velocity)" : "", HV_SPEED_OF_LIGHT);
+  }
+  return 0;
 }
 
 static int read_state(struct cfg *c, const char *path, const char *name,
@@ -351,6 +371,18 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   snprintf(key, sizeof key, "%s.name", path);
   if (cfg_get_string(c, key, defname, &name, err)) return -1;
   snprintf(s->body[b].name, sizeof s->body[b].name, "%s", name);
+  /* names pick bodies out (part_of, measure:, the render's labels, messages): two
+     bodies of one name would leave it to the order which is meant */
+  for (int a = 0; a < b; a++)
+    if (!strcmp(s->body[a].name, s->body[b].name)) {
+      char where[256], first[256], akey[64];
+      snprintf(akey, sizeof akey, "bodies[%d].name", a);
+      if (!cfg_has(c, akey)) snprintf(akey, sizeof akey, "bodies[%d]", a);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a second body named '%s' (the first, "
+                          "bodies[%d], at %s); give each body a name of its own",
+                          cfg_where(c, cfg_has(c, key) ? key : path, where, sizeof where),
+                          key, s->body[b].name, a, cfg_where(c, akey, first, sizeof first));
+    }
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
   bs->mat = material_find_or_load(c, key, mname, s->mat, &s->nmat, HV_MAX_MATERIALS, err);
