@@ -24,6 +24,7 @@
 #include "io/afile.h"
 #include "io/snapshot.h"
 #include "material/material.h"
+#include "run/check.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
 #include "run/sim.h"
@@ -476,7 +477,7 @@ int run_main(const struct run_options *ro)
     goto fail;
   /* a new run's first rates and time step, before anything is written: a set-up that
      the neighbour grid cannot hold is bad input and leaves the output folder as it was */
-  if (!restart && step_init(&s, &err)) goto fail;
+  if (!restart && (step_init(&s, &err) || check_plausible_end(&s, c, &err))) goto fail;
 
   char nbuf[256];
   if (restart) snprintf(o.dir, sizeof o.dir, "%s", restart);
