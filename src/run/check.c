@@ -140,11 +140,13 @@ static int body_planes(const struct sim *s, const int *bodies, int nb, int ax, d
   return planes;
 }
 
-/* The fastest body (its mean speed), or -1 when nothing moves. */
+/* The fastest body (its mean speed), or -1 when nothing moves or there is one body
+ * (a projectile hits something). */
 static int projectile(const struct sim *s, const size_t *first, double *speed, double v[3])
 {
   int best = -1;
   *speed = 0.0;
+  if (s->nbody < 2) return -1;
   for (int b = 0; b < s->nbody; b++) {
     double m[3] = {0, 0, 0};
     const size_t n = s->body[b].count;
@@ -333,9 +335,9 @@ int check_main(int argc, char **argv)
   if ((lim == DT_CFL || lim == DT_ACCELERATION) && lim_body >= 0)
     printf(", particle %lld in '%s'", (long long)lim_id, s.body[lim_body].name);
   printf(")\n");
-  printf("steps            about %.0f to time.end = %g s (an estimate: time.end / the first "
+  printf("steps            about %.*g to time.end = %g s (an estimate: time.end / the first "
          "stable step, %.4g s;\n                 an impact shortens the step, so expect more)\n",
-         steps, s.tp.end, dt);
+         steps < 1e7 ? 7 : 3, steps, s.tp.end, dt);
   if (s.tp.max_steps > 0 && (double)s.tp.max_steps < steps)
     printf("                 time.max_steps = %ld stops it before\n", s.tp.max_steps);
   fflush(stdout);
@@ -358,9 +360,9 @@ int check_main(int argc, char **argv)
   const double capped = s.tp.max_steps > 0 ? fmin(steps, (double)s.tp.max_steps) : steps;
   run_format_duration(wall, sizeof wall, per_step * capped);
   printf("wall time        about %s on this machine with %d thread%s (%d step%s of this case "
-         "timed here:\n                 %.3g s a step x %.0f steps; outputs and the impact's "
+         "timed here:\n                 %.3g s a step x %.*g steps; outputs and the impact's "
          "shorter steps add to it)\n", wall, threads, threads == 1 ? "" : "s", timed,
-         timed == 1 ? "" : "s", per_step, capped);
+         timed == 1 ? "" : "s", per_step, capped < 1e7 ? 7 : 3, capped);
   goto done;
 fail:
   hv_log(0, "%s", err.msg);

@@ -33,6 +33,7 @@
 #include "setup/setup.h"
 
 #define HV_SPEED_OF_LIGHT 299792458.0   /* [m/s] */
+#define BARE_LENGTH_WARN 1.0             /* [m] (read_body) */
 
 enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
 static const char *const lattice_names[] = {"cubic", "hcp", NULL};
@@ -243,6 +244,49 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
 }
 
+/* Wrong units in a shape: a length of body `path` written as a bare number (SI, so
+ * metres) where millimetres were almost certainly meant. The first bare one of the
+ * shape's radius, length, max and min whose magnitude is at least `least` (> 0; not of
+ * its `minus`: a hole does not make a body large); its key goes to key, its value (m)
+ * to *v. 0 when none. */
+static int bare_length(struct cfg *c, const char *path, const struct shape *sh, double least,
+                       char *key, size_t klen, double *v)
+{
+  static const char *const names[] = {"radius", "length", "max", "min"};
+  for (int k = 0; k < 4; k++) {
+    const int vec = k >= 2;
+    for (int d = 0; d < (vec ? 3 : 1); d++) {
+      const double val = k == 0 ? sh->radius : k == 1 ? sh->length
+                         : k == 2 ? sh->max[d] : sh->min[d];
+      if (vec) snprintf(key, klen, "%s.shape.%s[%d]", path, names[k], d);
+      else snprintf(key, klen, "%s.shape.%s", path, names[k]);
+      if (fabs(val) >= least && (sh->kind == SHAPE_BOX) == vec && cfg_is_bare(c, key)) {
+        *v = val;
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+/* A body too large for memory whose shape has a bare length: the error is said at that
+ * key, as the wrong-units check of densities is (cfg_check_typical): "case.yaml:12:
+ * bodies[0].shape.radius: the bare number 1.5 is read as 1.5 m ...; was it 1.5 mm?".
+ * -1 with err set, or 0 (no bare length: the caller says its own error). */
+static int bare_length_error(struct cfg *c, int b, const struct shape *sh, const char *name,
+                             double particles, struct hv_error *err)
+{
+  char path[32], key[96], where[256];
+  double v;
+  snprintf(path, sizeof path, "bodies[%d]", b);
+  if (!bare_length(c, path, sh, DBL_MIN, key, sizeof key, &v)) return 0;
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: the bare number %g is read as %g m (a "
+                      "number without a unit is SI), and body '%s' then needs about %.2g "
+                      "particles, more than this machine's memory holds; was it %g mm? Write "
+                      "the value with its unit", cfg_where(c, key, where, sizeof where), key, v,
+                      v, name, particles, v);
+}
+
 /* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
  * longer than its diameter), filled on a cubic lattice (0 for other shapes and
  * lattices; a shape's `minus` does not change it): a count-given plate's spacing is set
@@ -287,6 +331,9 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
     const double est = bs->vol / cell_volume(bs->lattice, bs->spacing);
     if (!particles_fit(est, 0)) {
       char where[256];
+      /* key is "bodies[b].particles" */
+      if (bare_length_error(c, (int)strtol(key + 7, NULL, 10), &bs->shape, name, est, err))
+        return -1;
       return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %.0f particles asked, but its "
                           "thinnest side, %g mm, in whole layers needs a spacing of at most "
                           "%g mm, which fills its %g m3 with about %.3g particles, more than "
@@ -433,6 +480,21 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
       read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
       read_velocity(c, path, name, bs, err))
     return -1;
+  /* wrong units that still fit in memory: a body of a condensed material at a real
+     density (the range of the density check, so not a case in scaled units like the
+     rubber rings') with a bare length of a metre or more. The bodies of examples/ measure
+     0.3 to 300 mm; a bare "radius: 1.5" there is far more often 1.5 mm without its unit
+     than a sphere of 3 m, but one can be meant and it runs: a warning */
+  if (s->mat[bs->mat].eos != EOS_IDEAL_GAS && bs->rho >= HV_RHO_CONDENSED_LO &&
+      bs->rho <= HV_RHO_CONDENSED_HI) {
+    char lkey[96], where[256];
+    double v;
+    if (bare_length(c, path, &bs->shape, BARE_LENGTH_WARN, lkey, sizeof lkey, &v))
+      hv_warn("%s: %s: body '%s': the bare number %g is read as %g m (a number without a unit "
+              "is SI), large for a solid body of this code's cases; was it %g mm? (write the "
+              "value with its unit: '%g m' keeps this one)",
+              cfg_where(c, lkey, where, sizeof where), lkey, name, v, v, v, v);
+  }
   /* initial damage: 1 makes a body of broken (split) material, e.g. to test the
      fracture.friction of split material or to start from a rubble target */
   const double zero = 0.0;
@@ -522,25 +584,39 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
                             s->body[a].name, s->body[b].name, x[0], x[1], x[2]);
     if (s->bnd.has_box)
       for (int d = 0; d < 3; d++)
-        if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d])
+        if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d]) {
+          /* a bare length of the shape (metres) beyond half the domain's largest side is
+             the likely cause (a radius of 0.5 in a domain of millimetres) */
+          char lkey[96], hint[256] = "";
+          double v, side = 0.0;
+          for (int e = 0; e < 3; e++) side = fmax(side, s->bnd.hi[e] - s->bnd.lo[e]);
+          if (bare_length(c, key, &bs[b].shape, fmax(0.5 * side, DBL_MIN), lkey, sizeof lkey, &v))
+            snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m: was it %g mm?",
+                     lkey, v, v, v);
           return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s' reaches outside the domain "
-                              "(%c = %g m, domain %g to %g m)", cfg_where(c, key, where, sizeof where),
-                              s->body[b].name, "xyz"[d], x[d], s->bnd.lo[d], s->bnd.hi[d]);
+                              "(%c = %g m, domain %g to %g m)%s",
+                              cfg_where(c, key, where, sizeof where), s->body[b].name, "xyz"[d],
+                              x[d], s->bnd.lo[d], s->bnd.hi[d], hint);
+        }
   }
   return 0;
 }
 
-/* Refuses, before allocating, a body that would not fit in memory. */
-static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struct hv_error *err)
+/* Refuses, before allocating, a body that would not fit in memory (at a bare length of
+ * its shape, bare_length_error, when it has one). */
+static int check_memory(struct sim *s, struct cfg *c, int b, const struct shape *sh, size_t total,
+                        struct hv_error *err)
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
   const double avail = machine_bytes(), need = particles_need((double)total, s->p.solid);
-  if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid))
+  if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid)) {
+    if (bare_length_error(c, b, sh, s->body[b].name, (double)(total - s->p.n), err)) return -1;
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
                         "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
                         "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
                         s->body[b].name, total, need / 1073741824.0, avail / 1073741824.0);
+  }
   return 0;
 }
 
@@ -878,10 +954,14 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     double bound = 1.0;
     for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
     const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-    if (est > 1e8 && check_memory(s, c, b, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
+    if (est > 1e8 && check_memory(s, c, b, sh, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
     double scan;
     size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
     if (cnt == SIZE_MAX) {
+      if (bare_length_error(c, b, sh, s->body[b].name, est, err)) {
+        rc = -1;
+        break;
+      }
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
                         "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
                         "particles this machine's memory holds); check the shape's size and units",
@@ -896,7 +976,7 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
                         bs[b].spacing);
       break;
     }
-    if (check_memory(s, c, b, s->p.n + cnt, err)) { rc = -1; break; }
+    if (check_memory(s, c, b, sh, s->p.n + cnt, err)) { rc = -1; break; }
     size_t first = particles_add(&s->p, cnt);
     first_of[b] = first;
     lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
