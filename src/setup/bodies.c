@@ -269,22 +269,83 @@ static int bare_length(struct cfg *c, const char *path, const struct shape *sh, 
   return 0;
 }
 
-/* A body too large for memory whose shape has a bare length: the error is said at that
- * key, as the wrong-units check of densities is (cfg_check_typical): "case.yaml:12:
- * bodies[0].shape.radius: the bare number 1.5 is read as 1.5 m ...; was it 1.5 mm?".
- * -1 with err set, or 0 (no bare length: the caller says its own error). */
-static int bare_length_error(struct cfg *c, int b, const struct shape *sh, const char *name,
-                             double particles, struct hv_error *err)
+/* The bare lengths of body b's shape that, read in millimetres, would make it fit in
+ * memory at its spacing: its radius, its length, or a box's bare corners together (one
+ * corner alone read in millimetres could turn the box inside out). The one of largest
+ * magnitude: its key to key, its value (m) to *v; 0 when none fits. */
+static int bare_length_culprit(struct cfg *c, int b, const struct body_spec *bs, char *key,
+                               size_t klen, double *v)
 {
-  char path[32], key[96], where[256];
+  const struct shape *sh = &bs->shape;
+  const double cell = cell_volume(bs->lattice, bs->spacing);
+  char k[96];
+  int found = 0;
+  *v = 0.0;
+  if (sh->kind != SHAPE_BOX) {
+    for (int which = 0; which < 2; which++) {   /* radius, length */
+      double r = sh->radius, len = sh->length;
+      const double val = which ? len : r;
+      snprintf(k, sizeof k, "bodies[%d].shape.%s", b, which ? "length" : "radius");
+      if ((which && sh->kind != SHAPE_CYLINDER) || val == 0.0 || !cfg_is_bare(c, k)) continue;
+      if (which) len *= 1e-3;
+      else r *= 1e-3;
+      const double vol = sh->kind == SHAPE_SPHERE ? 4.0 / 3.0 * HV_KERNEL_PI * r * r * r
+                                                  : HV_KERNEL_PI * r * r * len;
+      double box = 1.0;   /* its bounding box, which lattice_points scans */
+      for (int d = 0; d < 3; d++)
+        box *= sh->kind == SHAPE_SPHERE ? 2.0 * r
+               : len * fabs(sh->axis[d]) + 2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
+      if (particles_fit(vol / cell, 1) && box / cell <= lattice_scan_max() &&
+          fabs(val) > fabs(*v)) {
+        snprintf(key, klen, "%s", k);
+        *v = val;
+        found = 1;
+      }
+    }
+    return found;
+  }
+  double lo[3], hi[3], vol = 1.0;
+  for (int d = 0; d < 3; d++) {
+    for (int m = 0; m < 2; m++) {
+      double *x = m ? &hi[d] : &lo[d];
+      *x = m ? sh->max[d] : sh->min[d];
+      snprintf(k, sizeof k, "bodies[%d].shape.%s[%d]", b, m ? "max" : "min", d);
+      if (*x == 0.0 || !cfg_is_bare(c, k)) continue;
+      if (fabs(*x) > fabs(*v)) {
+        snprintf(key, klen, "%s", k);
+        *v = *x;
+      }
+      *x *= 1e-3;
+    }
+    vol *= hi[d] - lo[d];
+  }
+  return *v != 0.0 && vol > 0.0 && particles_fit(vol / cell, 1) && vol / cell <= lattice_scan_max();
+}
+
+/* A body too large for memory whose shape has a bare length that, in millimetres, makes
+ * it fit: the error is said at that key, as the wrong-units check of densities is
+ * (cfg_check_typical): "case.yaml:12: bodies[0].shape.radius: the bare number 1.5 is
+ * read as 1.5 m ...; was it 1.5 mm?". `then` says what the body would need ("needs about
+ * 9e+11 particles, more than this machine's memory holds"). -1 with err set, or 0 (no
+ * such length: the caller says its own error). */
+static int bare_length_error(struct cfg *c, int b, const struct body_spec *bs, const char *name,
+                             const char *then, struct hv_error *err)
+{
+  char key[96], where[256];
   double v;
-  snprintf(path, sizeof path, "bodies[%d]", b);
-  if (!bare_length(c, path, sh, DBL_MIN, key, sizeof key, &v)) return 0;
+  if (!bare_length_culprit(c, b, bs, key, sizeof key, &v)) return 0;
   return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: the bare number %g is read as %g m (a "
-                      "number without a unit is SI), and body '%s' then needs about %.2g "
-                      "particles, more than this machine's memory holds; was it %g mm? Write "
+                      "number without a unit is SI), and body '%s' then %s; was it %g mm? Write "
                       "the value with its unit", cfg_where(c, key, where, sizeof where), key, v,
-                      v, name, particles, v);
+                      v, name, then, v);
+}
+
+/* "needs about 9e+11 particles, more than this machine's memory holds" */
+static const char *needs_text(char *buf, size_t len, double particles)
+{
+  snprintf(buf, len, "needs about %.2g particles, more than this machine's memory holds",
+           particles);
+  return buf;
 }
 
 /* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
@@ -332,7 +393,9 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
     if (!particles_fit(est, 0)) {
       char where[256];
       /* key is "bodies[b].particles" */
-      if (bare_length_error(c, (int)strtol(key + 7, NULL, 10), &bs->shape, name, est, err))
+      char then[128];
+      if (bare_length_error(c, (int)strtol(key + 7, NULL, 10), bs, name,
+                            needs_text(then, sizeof then, est), err))
         return -1;
       return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %.0f particles asked, but its "
                           "thinnest side, %g mm, in whole layers needs a spacing of at most "
@@ -604,14 +667,17 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
 
 /* Refuses, before allocating, a body that would not fit in memory (at a bare length of
  * its shape, bare_length_error, when it has one). */
-static int check_memory(struct sim *s, struct cfg *c, int b, const struct shape *sh, size_t total,
+static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_spec *bs, size_t total,
                         struct hv_error *err)
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
   const double avail = machine_bytes(), need = particles_need((double)total, s->p.solid);
   if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid)) {
-    if (bare_length_error(c, b, sh, s->body[b].name, (double)(total - s->p.n), err)) return -1;
+    char then[128];
+    if (bare_length_error(c, b, bs, s->body[b].name,
+                          needs_text(then, sizeof then, (double)(total - s->p.n)), err))
+      return -1;
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
                         "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
                         "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
@@ -954,11 +1020,14 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     double bound = 1.0;
     for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
     const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-    if (est > 1e8 && check_memory(s, c, b, sh, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
+    if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
     double scan;
     size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
     if (cnt == SIZE_MAX) {
-      if (bare_length_error(c, b, sh, s->body[b].name, est, err)) {
+      char then[160];
+      snprintf(then, sizeof then, "spans %.3g lattice points in its bounding box, more than "
+               "%.3g to scan", scan, lattice_scan_max());
+      if (bare_length_error(c, b, &bs[b], s->body[b].name, then, err)) {
         rc = -1;
         break;
       }
@@ -976,7 +1045,7 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
                         bs[b].spacing);
       break;
     }
-    if (check_memory(s, c, b, sh, s->p.n + cnt, err)) { rc = -1; break; }
+    if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) { rc = -1; break; }
     size_t first = particles_add(&s->p, cnt);
     first_of[b] = first;
     lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
