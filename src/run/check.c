@@ -49,10 +49,11 @@ double check_first_stable_step(const struct sim *s)
   return dt;
 }
 
-/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps
- * (rod-1929: 353 us; `hvsph check` on each), a run at four times the resolution some
- * 1e5; 1e8 steps of even a thousand particles are 1e11 particle-steps, more than a day
- * at this code's 1e6 particle-steps per second on two cores (docs/performance.md).
+/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps at
+ * its first stable step (wp2: 250 us, 34 201; the rods 1.1e4-1.8e4; `hvsph check` on
+ * each, 2026-12-07), a run at four times the resolution some 1e5; 1e8 steps of even a
+ * thousand particles are 1e11 particle-steps, more than a day at this code's 1e6
+ * particle-steps per second on two cores (docs/performance.md).
  * Beyond it a bare time.end is a unit left out: `end: 20` (20 s) for 20 us. */
 int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err)
 {
@@ -181,7 +182,7 @@ static void report_bodies(const struct sim *s, const size_t *first)
 {
   double speed, v[3];
   const int pj = projectile(s, first, &speed, v);
-  printf("\n%-16s %-16s %10s %11s  %s\n", "body", "material", "particles", "spacing", "");
+  printf("\n%-16s %-16s %10s %11s\n", "body", "material", "particles", "spacing");
   for (int b = 0; b < s->nbody; b++) {
     const struct body_info *bi = &s->body[b];
     char note[256] = "", sp[32];
