@@ -39,14 +39,44 @@
 #define CHECK_CALIB_STEPS 3
 #define CHECK_CALIB_WALL 10.0   /* [s] */
 
-double check_first_stable_step(const struct sim *s)
+/* The particles' own smallest limit at the start (CFL and acceleration), before
+ * time.dt_max. */
+static double particle_step(const struct sim *s)
 {
   double dt = HUGE_VAL;
   for (size_t i = 0; i < s->p.n; i++)
     if (s->p.dt[i] > 0 && s->p.dt[i] < dt) dt = s->p.dt[i];
-  if (!(dt < HUGE_VAL)) dt = s->dt;
-  if (s->tp.dt_max > 0 && dt > s->tp.dt_max) dt = s->tp.dt_max;
-  return dt;
+  return dt < HUGE_VAL ? dt : s->dt;
+}
+
+double check_first_stable_step(const struct sim *s)
+{
+  const double dt = particle_step(s);
+  return s->tp.dt_max > 0 && dt > s->tp.dt_max ? s->tp.dt_max : dt;
+}
+
+/* time.dt_min at or above the first stable step: the first step's successor falls
+ * below it and the run stops as failed (exit 3, after its folder was prepared); and
+ * time.dt_init far above it: a first step that the stability limits do not allow. */
+static int check_step_keys(const struct sim *s, struct cfg *c, double dt, struct hv_error *err)
+{
+  char where[256];
+  /* only a dt_min the case gives: the default (1e-30 s) is no real floor, and a step
+     below it is made so by something else (a gas at 1e306 Pa), which the run shows */
+  if (cfg_has(c, "time.dt_min") && s->tp.dt_min > 0 && s->tp.dt_min >= dt)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: time.dt_min: %g s is not below the first "
+                        "stable step, %.3g s: the run would stop as failed at its first "
+                        "step%s", cfg_where(c, "time.dt_min", where, sizeof where),
+                        s->tp.dt_min, dt, cfg_is_bare(c, "time.dt_min")
+                        ? " (a number without a unit is SI: seconds)" : "");
+  /* a warning: a deliberately unstable first step is how a failing run is made on
+     purpose (tests/unit/test_cli.c) */
+  if (s->tp.dt_init > 10.0 * particle_step(s))
+    hv_warn("%s: time.dt_init = %g s is %.2g times the first stable step, %.3g s: the first "
+            "step is unstable%s", cfg_where(c, "time.dt_init", where, sizeof where),
+            s->tp.dt_init, s->tp.dt_init / particle_step(s), particle_step(s),
+            cfg_is_bare(c, "time.dt_init") ? " (a number without a unit is SI: seconds)" : "");
+  return 0;
 }
 
 /* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps at
@@ -59,9 +89,17 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
 {
   const double dt = check_first_stable_step(s), left = s->tp.end - s->t;
   if (!(dt > 0) || !(left > 0)) return 0;
+  if (check_step_keys(s, c, dt, err)) return -1;
   const double steps = left / dt;
   if (!(steps > HV_CHECK_STEPS_MAX)) return 0;
   char where[256];
+  if (dt < particle_step(s)) {   /* time.dt_max holds it down, not the time span */
+    hv_warn("%s: time.dt_max = %g s, below the first stable step (%.3g s), makes time.end "
+            "about %.2g steps: this run may take very long (hvsph check estimates its wall "
+            "time)", cfg_where(c, "time.dt_max", where, sizeof where), s->tp.dt_max,
+            particle_step(s), steps);
+    return 0;
+  }
   cfg_where(c, "time.end", where, sizeof where);
   const int bare = cfg_is_bare(c, "time.end");
   static const struct {

@@ -15,6 +15,8 @@ struct sim;
  * time.end (SI, so seconds) that needs more than HV_CHECK_STEPS_MAX is bad input naming
  * the file, line and key, with the unit that brings it within ("end: 20" with a 6 ns
  * step: 3e9 steps, "was it 20 us?"); one written with its unit is meant, and warned
+ * of. Also the step keys against the first stable step: a time.dt_min not below it is
+ * bad input (the run would fail at once), a time.dt_init ten times above it is warned
  * of. Returns 0 or -1 with err set. */
 int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err);
 

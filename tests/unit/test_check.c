@@ -8,6 +8,8 @@
  *     mm?"; a bare time.end of 20 (s) for a solid's 4 ns step, "was it 20 us?"; the
  *     verification cases in scaled units (Sod's time.end 0.2, the rubber rings' radius
  *     4) pass;
+ *   - time.dt_min not below the first stable step is refused, a large dt_init and a
+ *     tiny dt_max are warned of;
  *   - a misspelt required key, duplicate body names and a body at the speed of light are
  *     refused (exit 2) with file, line and key, an earlier run's files untouched;
  *   - the progress line gives a long remaining time as h:mm:ss.
@@ -184,6 +186,21 @@ static void test_wrong_units(void)
   /* bare 20 us-scale values pass */
   rc = hvsph("check impact.yaml --set time.end=2e-6");
   CHECK(rc == 0, "a bare time.end of 2e-6 (s): exit %d: %s", rc, out);
+  /* the step keys against the first stable step (about 4 ns): a dt_min above it would
+     fail the first step (refused), a dt_init 250 times it is an unstable first step and
+     a dt_max far below it makes 2e10 steps (both warned of, not blamed on time.end) */
+  rc = hvsph("check impact.yaml --set time.dt_min=1e-6");
+  CHECK(rc == 2, "time.dt_min above the first step: exit %d (want 2)", rc);
+  check_error("dt_min", (const char *const[]){"--set: time.dt_min: 1e-06 s is not below the "
+                                              "first stable step", "would stop as failed",
+                                              NULL});
+  rc = hvsph("check impact.yaml --set time.dt_init=1e-6");
+  CHECK(rc == 0 && has("warning: --set: time.dt_init = 1e-06 s is 2.5e+02 times the first "
+                       "stable step"), "a large dt_init is warned of (exit %d): %s", rc, out);
+  rc = hvsph("check impact.yaml --set time.dt_max=1e-16 --set time.end=2e-6");
+  CHECK(rc == 0 && has("warning: --set: time.dt_max = 1e-16 s, below the first stable step") &&
+            !has("time.end: the bare number"),
+        "a tiny dt_max is warned of, time.end not blamed (exit %d): %s", rc, out);
   /* the verification cases in scaled units: Sod (time.end 0.2, lengths 0.5, gas) and
      the rubber rings (radius 4, time.end 140, a non-gas of rho0 = 1) */
   const char *scaled[] = {"examples/verification/sod.yaml", "examples/verification/rings.yaml"};
