@@ -199,8 +199,8 @@ int main(int argc, char **argv)
     printf("hvsph %s\n", HVSPH_VERSION);
     return 0;
   }
-  if ((!strcmp(cmd, "run") || !strcmp(cmd, "check") || !strcmp(cmd, "restart") || !strcmp(cmd, "bench") ||
-       !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
+  if ((!strcmp(cmd, "run") || !strcmp(cmd, "check") || !strcmp(cmd, "restart") ||
+       !strcmp(cmd, "bench") || !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
     usage(stdout, cmd);
     return 0;
   }

@@ -105,7 +105,7 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
 
 void run_format_duration(char *buf, size_t len, double sec)
 {
-  if (!(sec < 60.0)) {
+  if (!(sec < 59.95)) {   /* what "%.1f" would write as 60.0 is a minute */
     if (!(sec < 1e12)) {   /* inf, or beyond any clock */
       snprintf(buf, len, "%.3g s", sec);
       return;

@@ -294,7 +294,8 @@ static int bare_length_culprit(struct cfg *c, int b, const struct body_spec *bs,
       double box = 1.0;   /* its bounding box, which lattice_points scans */
       for (int d = 0; d < 3; d++)
         box *= sh->kind == SHAPE_SPHERE ? 2.0 * r
-               : len * fabs(sh->axis[d]) + 2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
+               : len * fabs(sh->axis[d]) +
+                     2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
       if (particles_fit(vol / cell, 1) && box / cell <= lattice_scan_max() &&
           fabs(val) > fabs(*v)) {
         snprintf(key, klen, "%s", k);
@@ -667,8 +668,8 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
 
 /* Refuses, before allocating, a body that would not fit in memory (at a bare length of
  * its shape, bare_length_error, when it has one). */
-static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_spec *bs, size_t total,
-                        struct hv_error *err)
+static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_spec *bs,
+                        size_t total, struct hv_error *err)
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
@@ -1020,7 +1021,10 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     double bound = 1.0;
     for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
     const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-    if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
+    if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) {
+      rc = -1;
+      break;
+    }
     double scan;
     size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
     if (cnt == SIZE_MAX) {
