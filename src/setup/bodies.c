@@ -1044,9 +1044,18 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
       break;
     }
     if (cnt == 0) {
+      /* a bare spacing (metres) wider than the body: `spacing: 0.25` for 0.25 mm */
+      char skey[96], hint[256] = "";
+      double ext = 0.0;
+      for (int d = 0; d < 3; d++) ext = fmax(ext, sh->max[d] - sh->min[d]);
+      snprintf(skey, sizeof skey, "%s.spacing", key);
+      if (cfg_is_bare(c, skey) && bs[b].spacing > ext)
+        snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m (a number "
+                 "without a unit is SI): was it %g mm?", skey, bs[b].spacing, bs[b].spacing,
+                 bs[b].spacing);
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
-                        "the shape", cfg_where(c, key, where, sizeof where), s->body[b].name,
-                        bs[b].spacing);
+                        "the shape%s", cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        bs[b].spacing, hint);
       break;
     }
     if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) { rc = -1; break; }

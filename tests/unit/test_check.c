@@ -167,6 +167,13 @@ static void test_wrong_units(void)
   CHECK(has("warning: radius.yaml:8: bodies[0].shape.radius: body 'projectile': the bare "
             "number 1.5 is read as 1.5 m") && has("was it 1.5 mm?"),
         "a bare metre-sized solid is warned of (exit %d): %s", rc, out);
+  /* a bare spacing wider than the body: no particle, and the unit meant */
+  rc = hvsph("check impact.yaml --set bodies[0].spacing=0.25");
+  CHECK(rc == 2, "a bare spacing of 0.25 (m) for a 2 mm sphere: exit %d (want 2)", rc);
+  check_error("bare spacing", (const char *const[]){"impact.yaml:6: body 'projectile': spacing "
+                                                    "0.25 m gives no particle inside the shape",
+                                                    "bodies[0].spacing is the bare number 0.25",
+                                                    "was it 0.25 mm?", NULL});
   /* time.end: 20 (s) at a first step of about 4 ns: 5e9 steps */
   test_write_file("end.yaml", variant(16, "  end: 20"));
   rc = hvsph("check end.yaml");
