@@ -1,4 +1,5 @@
-/* main.c — the hvsph command line: subcommands run, restart, bench, materials, help, version. */
+/* main.c — the hvsph command line: subcommands run, check, restart, bench, materials, render,
+ * measure, validate, help, version. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,6 +9,7 @@
 #include "material/material.h"
 #include "render/render.h"
 #include "run/bench.h"
+#include "run/check.h"
 #include "run/remeasure.h"
 #include "run/run.h"
 #include "run/validate.h"
@@ -25,6 +27,10 @@ static const struct {
             "      --force lets a case write more than 10000 outputs (refused otherwise)\n"
             "      --set overrides any key of the case file, e.g. --set time.end=\"35 us\"\n"
             "      --material gives the bodies of material OLD the material NEW instead\n"},
+    {"check", "  hvsph check CASE.yaml [--set KEY=VALUE]... [--material OLD=NEW]... [--threads N]\n"
+              "      set the case up as run would, write nothing, and print per body its\n"
+              "      particles, plate layers and projectile resolution, the first time step,\n"
+              "      the estimated steps, memory and wall time (a few steps timed here)\n"},
     {"restart", "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet] [--force]\n"
                 "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
                 "      --set time.end=\"60 us\" carries a finished run further\n"},
@@ -197,12 +203,13 @@ int main(int argc, char **argv)
     printf("hvsph %s\n", HVSPH_VERSION);
     return 0;
   }
-  if ((!strcmp(cmd, "run") || !strcmp(cmd, "restart") || !strcmp(cmd, "bench") ||
-       !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
+  if ((!strcmp(cmd, "run") || !strcmp(cmd, "check") || !strcmp(cmd, "restart") ||
+       !strcmp(cmd, "bench") || !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
     usage(stdout, cmd);
     return 0;
   }
   if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2, 0);
+  if (!strcmp(cmd, "check")) return check_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "restart")) return cmd_run(argc - 2, argv + 2, 1);
   if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
   if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);

@@ -109,6 +109,42 @@ static int value_error(struct cfg *c, const struct cfg_node *n, const char *path
   return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", where, path, msg);
 }
 
+/* A required key is missing, but its mapping holds a key no getter has read that is
+ * one or two edits from it (`time: {ennd: 0.02}` for time.end): that key (and *node its
+ * value, *want the key asked for), else NULL. The same distance as the unknown-key hints
+ * (config_used.c), so the two messages agree on what a misspelling is. */
+static const char *missing_near_miss(struct cfg *c, const char *path, const struct cfg_node *deepest,
+                                     const struct cfg_node **node, const char **want)
+{
+  struct path_comp comp[CFG_MAX_DEPTH];
+  const int nc = cfg_path_parse(path, comp, CFG_MAX_DEPTH);
+  if (nc < 1 || !comp[nc - 1].key || deepest->kind != CFG_MAP) return NULL;
+  /* the mapping reached must be the key's own parent (not a mapping higher up) */
+  char parent[1024];
+  const int plen = (int)(comp[nc - 1].start - path) - 1;
+  const struct cfg_node *p = c->root;
+  if (plen > 0) {
+    if ((size_t)plen >= sizeof parent) return NULL;
+    snprintf(parent, sizeof parent, "%.*s", plen, path);
+    p = cfg_lookup(c, parent, NULL);
+  }
+  if (p != deepest) return NULL;
+  const char *key = comp[nc - 1].key, *best = NULL;
+  const size_t klen = comp[nc - 1].klen;
+  int bdist = 3;
+  for (int i = 0; i < p->n; i++) {
+    if (p->items[i]->used) continue;
+    const int d = cfg_edit_distance(p->keys[i], strlen(p->keys[i]), key, klen);
+    if (d < bdist && d < (int)klen) {
+      bdist = d;
+      best = p->keys[i];
+      *node = p->items[i];
+    }
+  }
+  *want = key;   /* the last component runs to the end of the path */
+  return best;
+}
+
 /* Finds the node of a getter: 1 found, 0 absent (and has_def), -1 error. */
 static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node **out,
                  struct hv_error *err)
@@ -124,6 +160,13 @@ static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node *
   }
   if (has_def) return 0;
   char where[512];
+  const struct cfg_node *near;
+  const char *want, *near_key = missing_near_miss(c, path, deepest, &near, &want);
+  if (near_key)   /* `time: {ennd: 0.02}`: the misspelt key's line, and the key meant */
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: missing required key '%s': this line has "
+                        "'%s' instead; did you mean '%s'?",
+                        cfg_where_line(c, near->file, near->line, where, sizeof where), path,
+                        near_key, want);
   return hv_error_set(err, HV_EXIT_INPUT, "%s: missing required key '%s'",
                       cfg_where_line(c, deepest->file, deepest->line, where, sizeof where), path);
 }

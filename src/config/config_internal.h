@@ -87,6 +87,10 @@ const char *cfg_where_line(const struct cfg *c, const char *file, int line, char
 /* A scalar written without a value: empty, `~` or `null`, unquoted (YAML's null). */
 int cfg_scalar_is_null(const struct cfg_node *n);
 
+/* config_used.c: optimal string alignment distance of a (la bytes) and b (lb bytes):
+ * edits and adjacent swaps, capped at 9 (the "did you mean" hints). */
+int cfg_edit_distance(const char *a, size_t la, const char *b, size_t lb);
+
 /* config_get.c: a YAML double-quoted string (escapes ", \ and control characters);
  * malloc'ed. */
 char *cfg_yaml_quote(const char *s);

@@ -30,7 +30,7 @@ static int node_any_used(const struct cfg_node *n)
 }
 
 /* Optimal string alignment distance (edits and adjacent swaps), capped at 9. */
-static int edit_distance(const char *a, size_t la, const char *b, size_t lb)
+int cfg_edit_distance(const char *a, size_t la, const char *b, size_t lb)
 {
   enum { MAXL = 64 };
   if (la >= MAXL || lb >= MAXL) return 9;
@@ -53,7 +53,7 @@ static int edit_distance(const char *a, size_t la, const char *b, size_t lb)
 static void consider(const char *cand, size_t len, const char *key, const char **best, size_t *blen,
                      int *bdist)
 {
-  int dist = edit_distance(cand, len, key, strlen(key));
+  int dist = cfg_edit_distance(cand, len, key, strlen(key));
   if (dist <= 2 && dist < *bdist && dist < (int)strlen(key)) {
     *best = cand;
     *blen = len;

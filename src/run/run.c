@@ -30,6 +30,7 @@
 #include "io/afile.h"
 #include "io/snapshot.h"
 #include "material/material.h"
+#include "run/check.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
 #include "run/runfolder.h"
@@ -160,11 +161,27 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
   return io_write_table_csv(path, summary_cols, RUN_SUMMARY_COLS, o->rows, o->nrows, comment, err);
 }
 
+void run_format_duration(char *buf, size_t len, double sec)
+{
+  if (!(sec < 59.95)) {   /* what "%.1f" would write as 60.0 is a minute */
+    if (!(sec < 1e12)) {   /* inf, or beyond any clock */
+      snprintf(buf, len, "%.3g s", sec);
+      return;
+    }
+    const long long t = (long long)(sec + 0.5);
+    const int n = snprintf(buf, len, "%lld:%02lld:%02lld", t / 3600, t / 60 % 60, t % 60);
+    if (sec >= 2 * 86400.0 && n > 0 && (size_t)n < len)
+      snprintf(buf + n, len - (size_t)n, " (%.0f days)", sec / 86400.0);
+  } else {
+    snprintf(buf, len, "%.1f s", sec);
+  }
+}
+
 static void progress(const struct sim *s, double t0, double wall0, int tty, int final)
 {
   double el = wall_time() - wall0, frac = (s->t - t0) / (s->tp.end - t0 > 0 ? s->tp.end - t0 : 1);
   double eta = frac > 0 ? el * (1 - frac) / frac : 0.0;
-  char line[448], head[96], mid[96], tail[96];
+  char line[480], head[96], mid[96], tail[128];
   char lim[160] = "";
   if (s->step > 0 && (s->dt_limit == DT_CFL || s->dt_limit == DT_ACCELERATION)) {
     const char *body = s->dt_limit_body >= 0 ? s->body[s->dt_limit_body].name : "?";
@@ -175,7 +192,10 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
   }
   snprintf(head, sizeof head, "step %ld  t = %.4e / %.4e s", s->step, s->t, s->tp.end);
   snprintf(mid, sizeof mid, "  dt = %.3e s  n = %zu", s->dt, s->p.n);
-  snprintf(tail, sizeof tail, "  elapsed %.1f s  remaining %.1f s", el, eta);
+  char els[48], rem[48];
+  run_format_duration(els, sizeof els, el);
+  run_format_duration(rem, sizeof rem, eta);
+  snprintf(tail, sizeof tail, "  elapsed %s  remaining %s", els, rem);
   snprintf(line, sizeof line, "%s%s%s%s", head, mid, tail, lim);
   if (tty) {
     /* one line rewritten in place: it must not wrap (a carriage return goes back to the
@@ -535,7 +555,7 @@ int run_main(const struct run_options *ro)
     goto fail;
   /* a new run's first rates and time step, before anything is written: a set-up that
      the neighbour grid cannot hold is bad input and leaves the output folder as it was */
-  if (!restart && step_init(&s, &err)) goto fail;
+  if (!restart && (step_init(&s, &err) || check_plausible_end(&s, c, &err))) goto fail;
 
   char nbuf[256];
   if (restart) snprintf(o.dir, sizeof o.dir, "%s", restart);

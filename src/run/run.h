@@ -47,6 +47,11 @@ int run_interrupted(void);
 int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict,
                     int *hits, struct hv_error *err);
 
+/* A wall-clock duration as the progress line and hvsph check write it: "7.6 s" under a
+ * minute, else h:mm:ss ("27:46:40": a run that promises days shows it at a glance, where
+ * "100000.0 s" did not), with the days added from two on ("52:00:00 (2 days)"). */
+void run_format_duration(char *buf, size_t len, double sec);
+
 /* Reads a case file (with overrides) into a ready simulation; used by run and bench. */
 struct sim;
 int run_setup(struct sim *s, struct cfg *c, struct hv_error *err);

@@ -32,6 +32,9 @@
 #include "neighbours/grid.h"
 #include "setup/setup.h"
 
+#define HV_SPEED_OF_LIGHT 299792458.0   /* [m/s] */
+#define BARE_LENGTH_WARN 1.0             /* [m] (read_body) */
+
 enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
 static const char *const lattice_names[] = {"cubic", "hcp", NULL};
 
@@ -188,7 +191,25 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
     return -1;
   }
   snprintf(key, sizeof key, "%s.radial_velocity", path);
-  return cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err);
+  if (cfg_get_quantity(c, key, UNIT_VELOCITY, &zero, -HUGE_VAL, HUGE_VAL, &bs->vrad, err))
+    return -1;
+  /* hvsph's mechanics are Newtonian: a body at or above the speed of light is a slip
+     (1e300 m/s ran until its first step overflowed; 3e8 m/s ran to exit 0). The
+     fastest natural impactors, meteoroids, reach 72 km/s, four thousand times below. */
+  const double speed = hypot(hypot(bs->vel[0], bs->vel[1]), bs->vel[2]);
+  const char *vkey = cfg_has(c, key2) ? "speed" : "velocity";
+  if (!(speed < HV_SPEED_OF_LIGHT) || !(fabs(bs->vrad) < HV_SPEED_OF_LIGHT) ||
+      !(speed + fabs(bs->vrad) < HV_SPEED_OF_LIGHT)) {
+    const int radial = !(speed < HV_SPEED_OF_LIGHT) ? 0 : 1;
+    snprintf(key, sizeof key, "%s.%s", path, radial ? "radial_velocity" : vkey);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': a speed of %g m/s%s is not "
+                        "below the speed of light (%.0f m/s); hvsph's mechanics are "
+                        "Newtonian, for impacts up to some tens of km/s",
+                        cfg_where(c, key, where, sizeof where), key, name,
+                        radial ? speed + fabs(bs->vrad) : speed,
+                        radial ? " (with its radial velocity)" : "", HV_SPEED_OF_LIGHT);
+  }
+  return 0;
 }
 
 static int read_state(struct cfg *c, const char *path, const char *name,
@@ -221,6 +242,111 @@ static int read_state(struct cfg *c, const char *path, const char *name,
   }
   double zero = 0.0;
   return cfg_get_quantity(c, key2, UNIT_SPECIFIC_ENERGY, &zero, -HUGE_VAL, HUGE_VAL, &bs->e, err);
+}
+
+/* Wrong units in a shape: a length of body `path` written as a bare number (SI, so
+ * metres) where millimetres were almost certainly meant. The first bare one of the
+ * shape's radius, length, max and min whose magnitude is at least `least` (> 0; not of
+ * its `minus`: a hole does not make a body large); its key goes to key, its value (m)
+ * to *v. 0 when none. */
+static int bare_length(struct cfg *c, const char *path, const struct shape *sh, double least,
+                       char *key, size_t klen, double *v)
+{
+  static const char *const names[] = {"radius", "length", "max", "min"};
+  for (int k = 0; k < 4; k++) {
+    const int vec = k >= 2;
+    for (int d = 0; d < (vec ? 3 : 1); d++) {
+      const double val = k == 0 ? sh->radius : k == 1 ? sh->length
+                         : k == 2 ? sh->max[d] : sh->min[d];
+      if (vec) snprintf(key, klen, "%s.shape.%s[%d]", path, names[k], d);
+      else snprintf(key, klen, "%s.shape.%s", path, names[k]);
+      if (fabs(val) >= least && (sh->kind == SHAPE_BOX) == vec && cfg_is_bare(c, key)) {
+        *v = val;
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+/* The bare lengths of body b's shape that, read in millimetres, would make it fit in
+ * memory at its spacing: its radius, its length, or a box's bare corners together (one
+ * corner alone read in millimetres could turn the box inside out). The one of largest
+ * magnitude: its key to key, its value (m) to *v; 0 when none fits. */
+static int bare_length_culprit(struct cfg *c, int b, const struct body_spec *bs, char *key,
+                               size_t klen, double *v)
+{
+  const struct shape *sh = &bs->shape;
+  const double cell = cell_volume(bs->lattice, bs->spacing);
+  char k[96];
+  int found = 0;
+  *v = 0.0;
+  if (sh->kind != SHAPE_BOX) {
+    for (int which = 0; which < 2; which++) {   /* radius, length */
+      double r = sh->radius, len = sh->length;
+      const double val = which ? len : r;
+      snprintf(k, sizeof k, "bodies[%d].shape.%s", b, which ? "length" : "radius");
+      if ((which && sh->kind != SHAPE_CYLINDER) || val == 0.0 || !cfg_is_bare(c, k)) continue;
+      if (which) len *= 1e-3;
+      else r *= 1e-3;
+      const double vol = sh->kind == SHAPE_SPHERE ? 4.0 / 3.0 * HV_KERNEL_PI * r * r * r
+                                                  : HV_KERNEL_PI * r * r * len;
+      double box = 1.0;   /* its bounding box, which lattice_points scans */
+      for (int d = 0; d < 3; d++)
+        box *= sh->kind == SHAPE_SPHERE ? 2.0 * r
+               : len * fabs(sh->axis[d]) +
+                     2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
+      if (particles_fit(vol / cell, 1) && box / cell <= lattice_scan_max() &&
+          fabs(val) > fabs(*v)) {
+        snprintf(key, klen, "%s", k);
+        *v = val;
+        found = 1;
+      }
+    }
+    return found;
+  }
+  double lo[3], hi[3], vol = 1.0;
+  for (int d = 0; d < 3; d++) {
+    for (int m = 0; m < 2; m++) {
+      double *x = m ? &hi[d] : &lo[d];
+      *x = m ? sh->max[d] : sh->min[d];
+      snprintf(k, sizeof k, "bodies[%d].shape.%s[%d]", b, m ? "max" : "min", d);
+      if (*x == 0.0 || !cfg_is_bare(c, k)) continue;
+      if (fabs(*x) > fabs(*v)) {
+        snprintf(key, klen, "%s", k);
+        *v = *x;
+      }
+      *x *= 1e-3;
+    }
+    vol *= hi[d] - lo[d];
+  }
+  return *v != 0.0 && vol > 0.0 && particles_fit(vol / cell, 1) && vol / cell <= lattice_scan_max();
+}
+
+/* A body too large for memory whose shape has a bare length that, in millimetres, makes
+ * it fit: the error is said at that key, as the wrong-units check of densities is
+ * (cfg_check_typical): "case.yaml:12: bodies[0].shape.radius: the bare number 1.5 is
+ * read as 1.5 m ...; was it 1.5 mm?". `then` says what the body would need ("needs about
+ * 9e+11 particles, more than this machine's memory holds"). -1 with err set, or 0 (no
+ * such length: the caller says its own error). */
+static int bare_length_error(struct cfg *c, int b, const struct body_spec *bs, const char *name,
+                             const char *then, struct hv_error *err)
+{
+  char key[96], where[256];
+  double v;
+  if (!bare_length_culprit(c, b, bs, key, sizeof key, &v)) return 0;
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: the bare number %g is read as %g m (a "
+                      "number without a unit is SI), and body '%s' then %s; was it %g mm? Write "
+                      "the value with its unit", cfg_where(c, key, where, sizeof where), key, v,
+                      v, name, then, v);
+}
+
+/* "needs about 9e+11 particles, more than this machine's memory holds" */
+static const char *needs_text(char *buf, size_t len, double particles)
+{
+  snprintf(buf, len, "needs about %.2g particles, more than this machine's memory holds",
+           particles);
+  return buf;
 }
 
 /* The thinnest side of a box, or the length of a disc (a cylinder along x, y or z no
@@ -267,6 +393,11 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
     const double est = bs->vol / cell_volume(bs->lattice, bs->spacing);
     if (!particles_fit(est, 0)) {
       char where[256];
+      /* key is "bodies[b].particles" */
+      char then[128];
+      if (bare_length_error(c, (int)strtol(key + 7, NULL, 10), bs, name,
+                            needs_text(then, sizeof then, est), err))
+        return -1;
       return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %.0f particles asked, but its "
                           "thinnest side, %g mm, in whole layers needs a spacing of at most "
                           "%g mm, which fills its %g m3 with about %.3g particles, more than "
@@ -351,6 +482,18 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   snprintf(key, sizeof key, "%s.name", path);
   if (cfg_get_string(c, key, defname, &name, err)) return -1;
   snprintf(s->body[b].name, sizeof s->body[b].name, "%s", name);
+  /* names pick bodies out (part_of, measure:, the render's labels, messages): two
+     bodies of one name would leave it to the order which is meant */
+  for (int a = 0; a < b; a++)
+    if (!strcmp(s->body[a].name, s->body[b].name)) {
+      char where[256], first[256], akey[64];
+      snprintf(akey, sizeof akey, "bodies[%d].name", a);
+      if (!cfg_has(c, akey)) snprintf(akey, sizeof akey, "bodies[%d]", a);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a second body named '%s' (the first, "
+                          "bodies[%d], at %s); give each body a name of its own",
+                          cfg_where(c, cfg_has(c, key) ? key : path, where, sizeof where),
+                          key, s->body[b].name, a, cfg_where(c, akey, first, sizeof first));
+    }
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
   bs->mat = material_find_or_load(c, key, mname, s->mat, &s->nmat, HV_MAX_MATERIALS, err);
@@ -401,6 +544,21 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
       read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
       read_velocity(c, path, name, bs, err))
     return -1;
+  /* wrong units that still fit in memory: a body of a condensed material at a real
+     density (the range of the density check, so not a case in scaled units like the
+     rubber rings') with a bare length of a metre or more. The bodies of examples/ measure
+     0.3 to 300 mm; a bare "radius: 1.5" there is far more often 1.5 mm without its unit
+     than a sphere of 3 m, but one can be meant and it runs: a warning */
+  if (s->mat[bs->mat].eos != EOS_IDEAL_GAS && bs->rho >= HV_RHO_CONDENSED_LO &&
+      bs->rho <= HV_RHO_CONDENSED_HI) {
+    char lkey[96], where[256];
+    double v;
+    if (bare_length(c, path, &bs->shape, BARE_LENGTH_WARN, lkey, sizeof lkey, &v))
+      hv_warn("%s: %s: body '%s': the bare number %g is read as %g m (a number without a unit "
+              "is SI), large for a solid body of this code's cases; was it %g mm? (write the "
+              "value with its unit: '%g m' keeps this one)",
+              cfg_where(c, lkey, where, sizeof where), lkey, name, v, v, v, v);
+  }
   /* initial damage: 1 makes a body of broken (split) material, e.g. to test the
      fracture.friction of split material or to start from a rubble target */
   const double zero = 0.0;
@@ -490,25 +648,42 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
                             s->body[a].name, s->body[b].name, x[0], x[1], x[2]);
     if (s->bnd.has_box)
       for (int d = 0; d < 3; d++)
-        if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d])
+        if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d]) {
+          /* a bare length of the shape (metres) beyond half the domain's largest side is
+             the likely cause (a radius of 0.5 in a domain of millimetres) */
+          char lkey[96], hint[256] = "";
+          double v, side = 0.0;
+          for (int e = 0; e < 3; e++) side = fmax(side, s->bnd.hi[e] - s->bnd.lo[e]);
+          if (bare_length(c, key, &bs[b].shape, fmax(0.5 * side, DBL_MIN), lkey, sizeof lkey, &v))
+            snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m: was it %g mm?",
+                     lkey, v, v, v);
           return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s' reaches outside the domain "
-                              "(%c = %g m, domain %g to %g m)", cfg_where(c, key, where, sizeof where),
-                              s->body[b].name, "xyz"[d], x[d], s->bnd.lo[d], s->bnd.hi[d]);
+                              "(%c = %g m, domain %g to %g m)%s",
+                              cfg_where(c, key, where, sizeof where), s->body[b].name, "xyz"[d],
+                              x[d], s->bnd.lo[d], s->bnd.hi[d], hint);
+        }
   }
   return 0;
 }
 
-/* Refuses, before allocating, a body that would not fit in memory. */
-static int check_memory(struct sim *s, struct cfg *c, int b, size_t total, struct hv_error *err)
+/* Refuses, before allocating, a body that would not fit in memory (at a bare length of
+ * its shape, bare_length_error, when it has one). */
+static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_spec *bs,
+                        size_t total, struct hv_error *err)
 {
   char key[64], where[256];
   snprintf(key, sizeof key, "bodies[%d]", b);
   const double avail = machine_bytes(), need = particles_need((double)total, s->p.solid);
-  if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid))
+  if (total >= ((size_t)1 << 31) || !particles_fit((double)total, s->p.solid)) {
+    char then[128];
+    if (bare_length_error(c, b, bs, s->body[b].name,
+                          needs_text(then, sizeof then, (double)(total - s->p.n)), err))
+      return -1;
     return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
                         "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
                         "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
                         s->body[b].name, total, need / 1073741824.0, avail / 1073741824.0);
+  }
   return 0;
 }
 
@@ -846,10 +1021,20 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     double bound = 1.0;
     for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
     const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-    if (est > 1e8 && check_memory(s, c, b, s->p.n + (size_t)fmin(est, 1e18), err)) { rc = -1; break; }
+    if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) {
+      rc = -1;
+      break;
+    }
     double scan;
     size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
     if (cnt == SIZE_MAX) {
+      char then[160];
+      snprintf(then, sizeof then, "spans %.3g lattice points in its bounding box, more than "
+               "%.3g to scan", scan, lattice_scan_max());
+      if (bare_length_error(c, b, &bs[b], s->body[b].name, then, err)) {
+        rc = -1;
+        break;
+      }
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
                         "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
                         "particles this machine's memory holds); check the shape's size and units",
@@ -859,12 +1044,21 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
       break;
     }
     if (cnt == 0) {
+      /* a bare spacing (metres) wider than the body: `spacing: 0.25` for 0.25 mm */
+      char skey[96], hint[256] = "";
+      double ext = 0.0;
+      for (int d = 0; d < 3; d++) ext = fmax(ext, sh->max[d] - sh->min[d]);
+      snprintf(skey, sizeof skey, "%s.spacing", key);
+      if (cfg_is_bare(c, skey) && bs[b].spacing > ext)
+        snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m (a number "
+                 "without a unit is SI): was it %g mm?", skey, bs[b].spacing, bs[b].spacing,
+                 bs[b].spacing);
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
-                        "the shape", cfg_where(c, key, where, sizeof where), s->body[b].name,
-                        bs[b].spacing);
+                        "the shape%s", cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        bs[b].spacing, hint);
       break;
     }
-    if (check_memory(s, c, b, s->p.n + cnt, err)) { rc = -1; break; }
+    if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) { rc = -1; break; }
     size_t first = particles_add(&s->p, cnt);
     first_of[b] = first;
     lattice_points(&bs[b], s->bnd.half_model, &s->p, first);

@@ -242,6 +242,49 @@ static void test_unknown_keys(void)
   cfg_free(c);
 }
 
+/* A required key that is missing because it is misspelt (`time: {ennd: 0.02}`): the
+ * message names the misspelt key's line and the key meant. Only a key of the same mapping
+ * that nothing read, one or two edits away: an unrelated key gets the plain message. */
+static void test_missing_near_miss(void)
+{
+  struct hv_error err = {0};
+  struct cfg *c = cfg_load_string("name: x\ntime:\n  cfl: 0.3\n  ennd: 0.02\n", "case.yaml", &err);
+  CHECK(c != NULL, "loads");
+  if (!c) return;
+  double v;
+  int rc = cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
+  check_msg(rc, &err, "case.yaml:4: missing required key 'time.end': this line has 'ennd' "
+            "instead; did you mean 'end'?");
+  cfg_free(c);
+  c = cfg_load_string("time: {ennd: 0.02}\n", "case.yaml", &err);
+  CHECK(c != NULL, "loads");
+  if (!c) return;
+  rc = cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
+  check_msg(rc, &err, "case.yaml:1: missing required key 'time.end': this line has 'ennd' "
+            "instead; did you mean 'end'?");
+  cfg_free(c);
+  /* far from it (three edits): the plain message at the mapping's line */
+  c = cfg_load_string("name: x\ntime:\n  stop: 0.02\n", "case.yaml", &err);
+  CHECK(c != NULL, "loads");
+  if (!c) return;
+  rc = cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
+  check_msg(rc, &err, "case.yaml:2: missing required key 'time.end'");
+  /* a near key in another mapping is not taken for it */
+  rc = cfg_get_quantity(c, "name.x", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
+  CHECK(rc == -1 && !strstr(err.msg, "did you mean"), "no hint across mappings: %s", err.msg);
+  cfg_free(c);
+  /* a key already read is not offered (bodies[0].spacing read, particles missing) */
+  c = cfg_load_string("b: {particle: 5, particles2: 1}\n", "case.yaml", &err);
+  CHECK(c != NULL, "loads");
+  if (!c) return;
+  long n;
+  cfg_get_int(c, "b.particle", NULL, 0, 10, &n, &err);
+  rc = cfg_get_int(c, "b.particles", NULL, 0, 10, &n, &err);
+  check_msg(rc, &err, "case.yaml:1: missing required key 'b.particles': this line has "
+            "'particles2' instead; did you mean 'particles'?");
+  cfg_free(c);
+}
+
 static void test_yaml_errors(void)
 {
   struct hv_error err = {0};
@@ -597,6 +640,7 @@ int main(void)
   test_defaults_and_errors();
   test_scalar_forms();
   test_unknown_keys();
+  test_missing_near_miss();
   test_yaml_errors();
   test_not_utf8();
   test_alias_limits();

@@ -322,11 +322,28 @@ static void test_errors(void)
                "whole layers needs a spacing of at most 100 mm");
   /* a rod along a diagonal 1000 m long (metres where millimetres were meant): 5 000
      particles, but its bounding box holds 3e14 lattice points to scan, hours; refused
-     at once */
+     at once; written bare, at the length, with the unit it was likely meant in */
   expect_error("diagonal rod of 1000 m",
                body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
-                         "length: 1000}", "particles: 5000"),
+                         "length: 1000 m}", "particles: 5000"),
                "body 'b': its bounding box, 577.352 x 577.352 x 577.352 m, spans 3.06e+14 lattice points");
+  expect_error("diagonal rod of a bare 1000",
+               body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
+                         "length: 1000}", "particles: 5000"),
+               "bodies[0].shape.length: the bare number 1000 is read as 1000 m (a number "
+               "without a unit is SI), and body 'b' then spans 3.06e+14 lattice points in its "
+               "bounding box, more than");
+  /* a bare box of 1 m at 0.1 mm, 1e12 particles: in millimetres it would fit */
+  expect_error("bare box too large",
+               body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
+               "bodies[0].shape.max[0]: the bare number 1 is read as 1 m (a number without a "
+               "unit is SI), and body 'b' then needs about 1e+12 particles, more than this "
+               "machine's memory holds; was it 1 mm?");
+  /* and not where millimetres would not help either (a radius of 1e9 is 1000 km so) */
+  expect_error("no mm hint where it would not fit either",
+               body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
+                         "particles: 5000"),
+               "check the shape's size and units");
   expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
   expect_error("damage without fracture",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"

@@ -1,0 +1,32 @@
+/* check.h — `hvsph check`: a case set up and described, nothing written; and the
+ * plausibility checks of a set-up case that `hvsph run` makes too. */
+#ifndef HV_CHECK_H
+#define HV_CHECK_H
+
+#include "config/config.h"
+#include "core/error.h"
+
+struct sim;
+
+/* Steps beyond which a run is not plausible for this code (check.c argues the number). */
+#define HV_CHECK_STEPS_MAX 1e8
+
+/* After step_init of a new run: the steps to time.end at the first stable step. A bare
+ * time.end (SI, so seconds) that needs more than HV_CHECK_STEPS_MAX is bad input naming
+ * the file, line and key, with the unit that brings it within ("end: 20" with a 6 ns
+ * step: 3e9 steps, "was it 20 us?"); one written with its unit is meant, and warned
+ * of. Also the step keys against the first stable step: a time.dt_min not below it is
+ * bad input (the run would fail at once), a time.dt_init ten times above it is warned
+ * of. Returns 0 or -1 with err set. */
+int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err);
+
+/* The smallest step the particles allow at the start [s] (each particle's own CFL and
+ * acceleration limit after step_init, within time.dt_max): what the steps to the end
+ * are estimated from, time.dt_init aside (the growth limit hands over to it at once). */
+double check_first_stable_step(const struct sim *s);
+
+/* `hvsph check CASE [--set K=V]... [--material OLD=NEW]... [--threads N]`; returns an
+ * exit status (enum hv_exit). */
+int check_main(int argc, char **argv);
+
+#endif
