@@ -1037,6 +1037,61 @@ static void test_not_regular(void)
   check_message("FIFO snapshot", out, (const char *const[]){want, NULL});
 }
 
+/* Lines of a file that do not start with '#' (-1: no file). */
+static int data_lines(const char *path)
+{
+  char *t = test_slurp(path, NULL);
+  if (!t) return -1;
+  int n = 0;
+  for (char *q = t; *q; q = strchr(q, '\n') ? strchr(q, '\n') + 1 : q + strlen(q))
+    if (*q != '#' && *q != '\n') n++;
+  free(t);
+  return n;
+}
+
+/* An output whose snapshot is missing: hvsph measure dropped its rows from
+ * measurements.csv without a word and exited 0. Now it is an error naming the snapshot
+ * (exit 2, measurements.csv as it was, nothing temporary left); with --skip-missing the
+ * others are measured, a warning names the missing one, and its rows are absent. */
+static void test_measure_missing(void)
+{
+  char out[16384], args[9000], names[512], want[4500];
+  const char *casefile =
+      test_write_file("measured_gap.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
+                                                       "fragments: true}"));
+  const char *dir = fresh_path("measured_gap");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the measured case runs (exit %d): %s", rc, out);
+  char mp[4400], sp[4400];
+  snprintf(mp, sizeof mp, "%s/measurements.csv", dir);
+  snprintf(sp, sizeof sp, "%s/particles_00001.csv", dir);
+  char *m0 = test_slurp(mp, NULL);
+  const int rows0 = data_lines(mp);
+  CHECK(remove(sp) == 0, "removed %s", sp);
+  snprintf(args, sizeof args, "measure '%s' --quiet", dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "hvsph measure with particles_00001.csv missing: exit %d (want 2)", rc);
+  snprintf(want, sizeof want, "%s is missing (summary.csv lists it; 1 of the run's 3 outputs", sp);
+  check_message("measure, missing snapshot", out,
+                (const char *const[]){want, "--skip-missing", NULL});
+  char *m1 = test_slurp(mp, NULL);
+  CHECK(m0 && m1 && !strcmp(m0, m1), "... and measurements.csv is left as it was");
+  int ntmp, n = count_entries(dir, &ntmp, names, sizeof names);
+  CHECK(ntmp == 0 && n > 0, "... and nothing temporary is left (has:%s)", names);
+  free(m1);
+  /* the others measured on request, the missing one named */
+  snprintf(args, sizeof args, "'%s' measure '%s' --skip-missing --quiet 2>&1", test_bin(), dir);
+  rc = test_run(args, out, sizeof out);
+  snprintf(want, sizeof want, "hvsph: warning: %s is missing: output 1 is not measured", sp);
+  const int rows1 = data_lines(mp);
+  CHECK(rc == 0 && strstr(out, want) && rows0 > 3 && rows1 > 1 && rows1 < rows0 &&
+            (rows0 - 1) % 3 == 0 && rows1 - 1 == (rows0 - 1) / 3 * 2,
+        "--skip-missing: exit %d, the warning names it, 2 of 3 outputs' rows (%d rows of %d, "
+        "headers included): %s", rc, rows1, rows0, out);
+  free(m0);
+}
+
 /* A snapshot that reads but cannot be measured is bad input of that file: an aluminium
  * slab's run with fragments, one particle's x in particles_00001.csv damaged to 1e129 m
  * (beyond the fragment search's 2e6 linking lengths). It was exit status 3, a failed
@@ -1141,6 +1196,7 @@ int main(void)
   test_measure();
   test_measure_damaged();
   test_not_regular();
+  test_measure_missing();
   test_scaled_units_restart();
   test_every_warning();
   failed_run("negative_density",
