@@ -311,7 +311,8 @@ int io_read_particles(const char *path, struct particles *p, double *time, struc
 
 int io_read_material_names(const char *path, char names[][64], int max)
 {
-  FILE *f = fopen(path, "r");
+  struct hv_error ignored;
+  FILE *f = hv_open_input(path, NULL, 0, NULL, &ignored);   /* a FIFO would block */
   if (!f) return 0;
   char line[8192];
   int n = 0;

@@ -1090,6 +1090,16 @@ static void test_measure_missing(void)
         "--skip-missing: exit %d, the warning names it, 2 of 3 outputs' rows (%d rows of %d, "
         "headers included): %s", rc, rows1, rows0, out);
   free(m0);
+  /* summary.csv a FIFO (it blocked the open): not read, with a warning naming it; the
+     outputs are then the numbers up to the last snapshot, and the gap is found */
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  CHECK(remove(sp) == 0 && mkfifo(sp, 0600) == 0, "summary.csv replaced by a FIFO");
+  snprintf(args, sizeof args, "timeout 20 '%s' measure '%s' --quiet 2>&1", test_bin(), dir);
+  rc = test_run(args, out, sizeof out);
+  snprintf(want, sizeof want, "'%s' is a FIFO", sp);
+  CHECK(rc == 2 && strstr(out, want) && strstr(out, "particles_00001.csv is missing (1 of the "
+        "run's 3 outputs has no snapshot)"), "measure with summary.csv a FIFO: exit %d (want "
+        "2; 124: it hung), the FIFO and the gap named: %s", rc, out);
 }
 
 /* A snapshot that reads but cannot be measured is bad input of that file: an aluminium
