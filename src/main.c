@@ -44,7 +44,7 @@ static const struct {
                "  hvsph render RUNDIR -o FRAMEDIR [options]\n"
                "      simulated flash radiograph or particle picture; of a run folder, one\n"
                "      frame per snapshot for a movie (hvsph render --help)\n"},
-    {"measure", "  hvsph measure RUNDIR [--case FILE] [--quiet]\n"
+    {"measure", "  hvsph measure RUNDIR [--case FILE] [--skip-missing] [--quiet]\n"
                 "      take a run's measurements again from its particle snapshots\n"
                 "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"},
     {"validate", "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"

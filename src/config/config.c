@@ -25,6 +25,7 @@
 #include <libfyaml.h>
 
 #include "config/config_internal.h"
+#include "core/infile.h"
 #include "core/utf8.h"
 
 /* ---------------------------------------------------------------- nodes */
@@ -496,18 +497,28 @@ struct cfg *cfg_load_string(const char *yaml, const char *name, struct hv_error 
   return c;
 }
 
+/* The largest case file read: 1 MiB. hvsph's case files and used_parameters.yaml are
+ * 1-7 kB (the largest in the tree, data/paper_results.yaml, 7 kB); the most a case can
+ * describe (64 bodies and 64 materials, each key on a line of its own, with comments)
+ * stays under 100 kB, a tenth of the limit. Above it lies no case but a wrong file
+ * (`hvsph run /dev/zero` read 23 GiB before the kernel stopped it; infile.h refuses
+ * devices and FIFOs, this the regular file that is too large), and a time: the parser's
+ * duplicate-key check is quadratic in the keys of one mapping, and a 1 MiB mapping of
+ * 95,000 keys took 41 s to refuse (measured 2026-12-07 at d88c065), 16 MiB would take
+ * hours. */
+#define CFG_MAX_FILE_BYTES (1LL << 20)
+
 /* Reads a whole file into a malloc'ed, NUL-terminated buffer. */
 static char *read_file(const char *path, size_t *len, struct hv_error *err)
 {
-  FILE *f = fopen(path, "rb");
-  if (!f) {
-    hv_error_set(err, HV_EXIT_INPUT, "cannot open case file '%s': %s", path, strerror(errno));
-    return NULL;
-  }
-  size_t cap = 4096, n = 0;
+  long long size;
+  FILE *f = hv_open_input(path, "case file", CFG_MAX_FILE_BYTES, &size, err);
+  if (!f) return NULL;
+  /* sized by fstat; a file that grows while it is read is read on, up to the limit */
+  size_t cap = (size_t)size + 2, n = 0;
   char *buf = hv_malloc(cap, "case file");
   size_t r;
-  while ((r = fread(buf + n, 1, cap - 1 - n, f)) > 0) {
+  while (n <= (size_t)CFG_MAX_FILE_BYTES && (r = fread(buf + n, 1, cap - 1 - n, f)) > 0) {
     n += r;
     if (n == cap - 1) {
       cap *= 2;
@@ -523,6 +534,12 @@ static char *read_file(const char *path, size_t *len, struct hv_error *err)
   if (bad) {
     free(buf);
     hv_error_set(err, HV_EXIT_INPUT, "cannot read case file '%s': %s", path, strerror(e));
+    return NULL;
+  }
+  if (n > (size_t)CFG_MAX_FILE_BYTES) {
+    free(buf);
+    hv_error_set(err, HV_EXIT_INPUT, "case file '%s' grew past %lld bytes (1 MiB) while it "
+                 "was read: is it the right file?", path, CFG_MAX_FILE_BYTES);
     return NULL;
   }
   buf[n] = '\0';

@@ -81,6 +81,11 @@ int cfg_get_bool(struct cfg *c, const char *path, const int *def, int *out,
 /* *out valid until cfg_free. */
 int cfg_get_string(struct cfg *c, const char *path, const char *def, const char **out,
                    struct hv_error *err);
+/* Records the string `value` for path in used_parameters.yaml, in place of what a getter
+ * recorded there (or as a new key): what the program used where it differs from what
+ * was written, so that the file runs the same from anywhere (an EOS table's path,
+ * resolved; its checksum). Marks nothing used. */
+void cfg_record_string(struct cfg *c, const char *path, const char *value);
 /* One of `choices` (NULL-terminated); *out is its index. */
 int cfg_get_choice(struct cfg *c, const char *path, const char *def,
                    const char *const *choices, int *out, struct hv_error *err);

@@ -471,6 +471,14 @@ int cfg_get_string(struct cfg *c, const char *path, const char *def, const char 
   return 0;
 }
 
+void cfg_record_string(struct cfg *c, const char *path, const char *value)
+{
+  int line = 0;
+  for (int i = 0; i < c->nrec; i++)
+    if (!strcmp(c->rec[i].path, path)) line = c->rec[i].line;
+  record(c, path, cfg_yaml_quote(value), "", 0, line);
+}
+
 int cfg_get_choice(struct cfg *c, const char *path, const char *def, const char *const *choices,
                    int *out, struct hv_error *err)
 {

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/infile.h"
 #include "io/afile.h"
 
 void meas_table_init(struct meas_table *t) { memset(t, 0, sizeof *t); }
@@ -216,8 +217,8 @@ static int next_field(const char **s, char *buf, size_t len)
 
 int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err)
 {
-  FILE *f = fopen(path, "r");
-  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s'", path);
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  if (!f) return -1;
   char *line = NULL, *more = NULL;
   size_t cap = 0, mcap = 0;
   int header = 1;

@@ -32,7 +32,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
+#include "core/infile.h"
 #include "eos/eos.h"
 
 /* ---------------------------------------------------------------- reading */
@@ -41,6 +43,9 @@
 
 struct tab_reader {
   FILE *f;
+  unsigned char chunk[1 << 16]; /* the file is read by chunks, each added to the CRC */
+  size_t clen, cpos;
+  unsigned long crc;
   const char *path;
   int line;          /* number of the last line read */
   char *buf;         /* current line, comments removed */
@@ -49,12 +54,24 @@ struct tab_reader {
   struct hv_error *err;
 };
 
+/* The next byte of the file, EOF at its end (or a read error: ferror). */
+static int tab_getc(struct tab_reader *r)
+{
+  if (r->cpos == r->clen) {
+    r->clen = fread(r->chunk, 1, sizeof r->chunk, r->f);
+    r->cpos = 0;
+    if (!r->clen) return EOF;
+    r->crc = crc32(r->crc, r->chunk, (uInt)r->clen);
+  }
+  return r->chunk[r->cpos++];
+}
+
 /* Reads the next line into r->buf (comment cut); 0 at end of file. */
 static int tab_next_line(struct tab_reader *r)
 {
   size_t n = 0;
   int ch, any = 0;
-  while ((ch = fgetc(r->f)) != EOF) {
+  while ((ch = tab_getc(r)) != EOF) {
     any = 1;
     if (n + 2 > r->cap) {
       r->cap = r->cap ? 2 * r->cap : 256;
@@ -233,44 +250,60 @@ static double tab_cs_max(const struct eos_table *t)
   return cmax;
 }
 
-int eos_table_load(const char *path, struct eos_table *t, struct hv_error *err)
+/* The table's values, read from r into t (arrays allocated; freed by the caller). */
+static int tab_read(struct tab_reader *r, struct eos_table *t)
 {
-  memset(t, 0, sizeof *t);
-  snprintf(t->path, sizeof t->path, "%s", path);
-  struct tab_reader r = {.path = path, .err = err};
-  r.f = fopen(path, "r");
-  if (!r.f)
-    return hv_error_set(err, HV_EXIT_INPUT, "cannot open EOS table '%s': %s", path,
-                        strerror(errno));
+  const char *path = r->path;
+  struct hv_error *err = r->err;
   long nrho = 0, ne = 0;
-  int rc = tab_header(&r, &nrho, &ne);
+  int rc = tab_header(r, &nrho, &ne);
   if (!rc) {
     t->nrho = (int)nrho;
     t->ne = (int)ne;
     t->rho = hv_malloc((size_t)nrho * sizeof *t->rho, "EOS table");
     t->e = hv_malloc((size_t)ne * sizeof *t->e, "EOS table");
     t->p = hv_malloc((size_t)(nrho * ne) * sizeof *t->p, "EOS table");
-    rc = tab_axis(&r, "rho", t->rho, nrho, 0.0) || tab_axis(&r, "e", t->e, ne, -HUGE_VAL);
+    rc = tab_axis(r, "rho", t->rho, nrho, 0.0) || tab_axis(r, "e", t->e, ne, -HUGE_VAL);
   }
   if (!rc) {
     size_t len;
-    if (tab_token_here(&r, &len))
+    if (tab_token_here(r, &len))
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: more values than e_count = %ld on the line "
                         "of the last e value (each pressure row starts on a new line)", path,
-                        r.line, ne);
+                        r->line, ne);
   }
-  if (!rc) rc = tab_rows(&r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL, HUGE_VAL);
-  if (!rc && tab_next_nonblank(&r)) {
+  if (!rc) rc = tab_rows(r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL, HUGE_VAL);
+  if (!rc && tab_next_nonblank(r)) {
     t->cs = hv_malloc((size_t)(nrho * ne) * sizeof *t->cs, "EOS table");
-    rc = tab_rows(&r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0, 299792458.0);
-    if (!rc && tab_next_nonblank(&r))
+    rc = tab_rows(r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0, 299792458.0);
+    if (!rc && tab_next_nonblank(r))
       rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: unexpected values after the %ld sound-speed "
-                        "rows", path, r.line, nrho);
+                        "rows", path, r->line, nrho);
   }
-  if (!rc && ferror(r.f))
+  return rc;
+}
+
+int eos_table_load(const char *path, struct eos_table *t, struct hv_error *err)
+{
+  memset(t, 0, sizeof *t);
+  snprintf(t->path, sizeof t->path, "%s", path);
+  /* a regular file only: a FIFO would block the open, a device might never end */
+  FILE *f = hv_open_input(path, "EOS table", 0, NULL, err);
+  if (!f) return -1;
+  struct tab_reader *r = hv_calloc(1, sizeof *r, "EOS table reader");   /* 64 KiB chunk */
+  r->f = f;
+  r->path = path;
+  r->err = err;
+  r->crc = crc32(0L, Z_NULL, 0);
+  int rc = tab_read(r, t);
+  /* the CRC covers the whole file, also comments after the last value */
+  while (!rc && tab_getc(r) != EOF) continue;
+  if (!rc && ferror(f))
     rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read EOS table '%s': %s", path, strerror(errno));
-  fclose(r.f);
-  free(r.buf);
+  fclose(f);
+  t->crc32 = r->crc;
+  free(r->buf);
+  free(r);
   if (rc) {
     eos_table_free(t);
     return -1;

@@ -1,6 +1,8 @@
 /* checkpoint.c — see checkpoint.h. */
 #include "io/checkpoint.h"
 
+#include "core/infile.h"
+
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -128,10 +130,10 @@ int ckpt_open(struct ckpt_file *c, const char *path, struct hv_error *err)
 {
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot open the checkpoint: %s", path,
-                        strerror(errno));
+  /* a regular file only (a FIFO would block the open for ever); no bound on its size,
+     which the particles set: every record's count is checked against it below */
+  FILE *f = hv_open_input(path, "checkpoint", 0, NULL, err);
+  if (!f) return -1;
   c->f = f;
   if (fseeko(f, 0, SEEK_END)) return bad(c, err, "cannot seek");
   const long long size = (long long)ftello(f);

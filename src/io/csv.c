@@ -19,6 +19,7 @@
 #include <sys/types.h>
 
 #include "io/afile.h"
+#include "core/infile.h"
 #include "io/io_internal.h"
 #include "io/snapshot.h"
 
@@ -284,8 +285,8 @@ int io_read_particles_csv(const char *path, struct particles *p, double *time,
                           struct hv_error *err)
 {
   if (time) *time = NAN;
-  FILE *f = fopen(path, "r");
-  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot open '%s': %s", path, strerror(errno));
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  if (!f) return -1;
   struct csv_reader *r = hv_calloc(1, sizeof *r, "CSV reader");
   struct pfield fv[HV_MAX_FIELDS];
   int nf = particles_fields_all(NULL, fv);

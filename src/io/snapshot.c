@@ -16,6 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/infile.h"
 #include "core/utf8.h"
 #include "io/afile.h"
 #include "io/io_internal.h"
@@ -176,8 +177,8 @@ int io_write_table_csv(const char *path, const char *const *cols, int ncols, con
 int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err)
 {
   *vals = NULL;
-  FILE *f = fopen(path, "r");
-  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(errno));
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  if (!f) return -1;
   char line[8192];
   int which = -1, n = 0;
   errno = 0;
@@ -290,8 +291,8 @@ int io_read_pvd(const char *path, double **times, char ***files, struct hv_error
 {
   *times = NULL;
   *files = NULL;
-  FILE *f = fopen(path, "rb");
-  if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(errno));
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  if (!f) return -1;
   char *text = NULL;
   size_t len = 0, cap = 0, got;
   errno = 0;

@@ -21,6 +21,7 @@
 #include <sys/stat.h>
 #include <zlib.h>
 
+#include "core/infile.h"
 #include "io/io_internal.h"
 #include "io/snapshot.h"
 
@@ -302,15 +303,9 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
                           struct hv_error *err)
 {
   if (time) *time = NAN;
-  FILE *fp = fopen(path, "rb");
-  if (!fp) return hv_error_set(err, HV_EXIT_INPUT, "cannot open '%s': %s", path, strerror(errno));
-  struct stat st;
-  if (fstat(fileno(fp), &st)) {
-    int e = errno;
-    fclose(fp);
-    return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
-  }
-  const long long fsize = (long long)st.st_size;
+  long long fsize;   /* a regular file only: a FIFO would block the open */
+  FILE *fp = hv_open_input(path, NULL, 0, &fsize, err);
+  if (!fp) return -1;
   /* the header: read until the appended block's '_' is in the buffer */
   size_t cap = 65536, len = 0;
   char *h = NULL;
@@ -418,7 +413,8 @@ int io_read_particles(const char *path, struct particles *p, double *time, struc
 
 int io_read_material_names(const char *path, char names[][64], int max)
 {
-  FILE *f = fopen(path, "r");
+  struct hv_error ignored;
+  FILE *f = hv_open_input(path, NULL, 0, NULL, &ignored);   /* a FIFO would block */
   if (!f) return 0;
   char line[8192];
   int n = 0;

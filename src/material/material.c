@@ -15,12 +15,15 @@
  * (hardening under model: constant, eps_f under tresca), the case's choice wins and the
  * library's key is ignored; the same conflict within one file is an error.
  */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "material/material.h"
 
+#include <ctype.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "eos/eos.h"
@@ -129,22 +132,50 @@ static int read_tillotson(struct cfg *c, const char *path, struct material *m,
   return 0;
 }
 
-/* The table file, relative to the folder of the file the key was written in. */
+/* The table file, relative to the folder of the file the key was written in.
+ * used_parameters.yaml records the file's absolute path (resolved when it was read), so
+ * that `hvsph restart` and a rerun of that file, which lies in another folder, find the
+ * same table from any working folder, and the file's CRC-32 as file_crc32: a table
+ * changed since (a rerun or restart would continue under another equation of state) is
+ * refused. A case may give file_crc32 too, to pin its table. */
 static int read_table(struct cfg *c, const char *path, struct material *m, struct hv_error *err)
 {
-  char k[320], full[1024];
+  char k[320], kc[320], full[1024], where[512];
   const char *file;
   key_of(k, sizeof k, path, "file");
+  key_of(kc, sizeof kc, path, "file_crc32");
   if (cfg_get_string(c, k, NULL, &file, err)) return -1;
   const char *src = cfg_node_file(c, k), *slash = strrchr(src, '/');
   if (file[0] == '/' || !slash)
     snprintf(full, sizeof full, "%s", file);
   else
     snprintf(full, sizeof full, "%.*s/%s", (int)(slash - src), src, file);
-  if (eos_table_load(full, &m->eosp.tab, err)) {
-    char where[512];
+  if (eos_table_load(full, &m->eosp.tab, err))
     return hv_error_prefix(err, "%s: %s: ", cfg_where(c, k, where, sizeof where), k);
+  char *abs = realpath(full, NULL);   /* the file exists: it was just read */
+  cfg_record_string(c, k, abs ? abs : full);
+  char crc[16];
+  snprintf(crc, sizeof crc, "%08lx", m->eosp.tab.crc32 & 0xffffffffUL);
+  if (cfg_has(c, kc)) {
+    const char *want;
+    if (cfg_get_string(c, kc, NULL, &want, err)) return -1;
+    char *end;
+    const unsigned long w = strtoul(want, &end, 16);
+    if (strlen(want) != 8 || *end || !isxdigit((unsigned char)want[0])) {
+      free(abs);
+      return key_error(c, kc, err, "'%s' is not a CRC-32 (8 hexadecimal digits, as hvsph "
+                       "writes it in used_parameters.yaml)", want);
+    }
+    if (w != (m->eosp.tab.crc32 & 0xffffffffUL)) {
+      key_error(c, kc, err, "EOS table '%s' has CRC-32 %s, not the %s recorded here: the "
+                "table changed since the run that used it (restore it, or remove file_crc32 "
+                "to run with the table as it is now)", abs ? abs : full, crc, want);
+      free(abs);
+      return -1;
+    }
   }
+  free(abs);
+  cfg_record_string(c, kc, crc);
   const double zero = 0.0, floor_def = m->eosp.tab.cs_max / 100.0;
   if (get_q(c, path, "rho0", UNIT_DENSITY, &zero, 0.0, HUGE_VAL, &m->rho0, err) ||
       get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, HUGE_VAL,

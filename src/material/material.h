@@ -51,6 +51,7 @@ struct eos_table {
   double cs_floor;     /* [m/s] smallest sound speed returned; default 0.01 cs_max */
   double cs_max;       /* [m/s] largest sound speed in the table (set when loaded) */
   char path[512];      /* the file, for messages */
+  unsigned long crc32; /* CRC-32 (zlib's, as checkpoints) of the file's bytes as read */
 };
 
 enum yield_kind { YIELD_CONSTANT = 0, YIELD_LINEAR, YIELD_JOHNSON_COOK, YIELD_KIND_COUNT };

@@ -36,11 +36,13 @@
 
 static void usage(FILE *f)
 {
-  fprintf(f, "usage: hvsph measure RUNDIR [--case FILE] [--quiet]\n"
+  fprintf(f, "usage: hvsph measure RUNDIR [--case FILE] [--skip-missing] [--quiet]\n"
              "  takes the measurements of a run again from its particle snapshots\n"
              "  (RUNDIR/particles_NNNNN.csv, or its .vtu files when it has no CSV) and rewrites\n"
              "  RUNDIR/measurements.csv and fragments_NNNNN.csv; the case is\n"
-             "  RUNDIR/used_parameters.yaml unless --case names another (docs/measurements.md)\n");
+             "  RUNDIR/used_parameters.yaml unless --case names another (docs/measurements.md).\n"
+             "  An output without its snapshot is an error (nothing rewritten) unless\n"
+             "  --skip-missing: then the others are measured and each missing one is named\n");
 }
 
 /* The files of folder `stage` moved into `dir` (each by a rename, so each whole), or
@@ -70,10 +72,35 @@ static int unstage(const char *stage, const char *dir, int move, struct hv_error
   return rc;
 }
 
+/* The outputs of the run (0 to nt - 1 by summary.csv; without it, 0 to the last
+ * snapshot found) that have no snapshot among snaps[0..ns-1] (sorted). Their rows would
+ * vanish from measurements.csv, which would look complete: an error naming the first
+ * (and how many), unless skip (--skip-missing), where each is a warning. */
+static int report_missing(const char *dir, const char *ext, const int *snaps, int ns, int nt,
+                          int skip, struct hv_error *err)
+{
+  const int nout = nt >= 0 ? nt : snaps[ns - 1] + 1;
+  int nmiss = 0, first = -1;
+  for (int k = 0, j = 0; k < nout; k++) {
+    while (j < ns && snaps[j] < k) j++;
+    if (j < ns && snaps[j] == k) continue;
+    if (!nmiss++) first = k;
+    if (skip) hv_warn("%s/particles_%05d.%s is missing: output %d is not measured (its rows "
+                      "are not in measurements.csv)", dir, k, ext, k);
+  }
+  if (!nmiss || skip) return 0;
+  return hv_error_set(err, HV_EXIT_INPUT, "%s/particles_%05d.%s is missing%s%d of the run's %d "
+                      "outputs %s no snapshot): measurements.csv would lack their rows, so "
+                      "nothing is rewritten; restore the snapshot%s, or give --skip-missing "
+                      "to measure the others", dir, first, ext, nt >= 0 ?
+                      " (summary.csv lists it; " : " (", nmiss, nout, nmiss == 1 ? "has" : "have",
+                      nmiss == 1 ? "" : "s");
+}
+
 int remeasure_main(int argc, char **argv)
 {
   const char *dir = NULL, *casefile = NULL;
-  int quiet = 0;
+  int quiet = 0, skip_missing = 0;
   for (int i = 0; i < argc; i++) {
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
       usage(stdout);
@@ -82,6 +109,8 @@ int remeasure_main(int argc, char **argv)
       casefile = argv[++i];
     } else if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) {
       quiet = 1;
+    } else if (!strcmp(argv[i], "--skip-missing")) {
+      skip_missing = 1;
     } else if (argv[i][0] != '-' && !dir) {
       dir = argv[i];
     } else {
@@ -139,9 +168,16 @@ int remeasure_main(int argc, char **argv)
     hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv or .vtu snapshots", dir);
     goto fail;
   }
+  /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
+     those that match this run's summary.csv (number and time) are its own */
+  char spath[4400];
+  snprintf(spath, sizeof spath, "%s/summary.csv", dir);
+  struct hv_error ignored;
+  const int nt = io_read_table_column(spath, "time", &times, &ignored);
+  if (nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
+  if (report_missing(dir, ext, snaps, ns, nt, skip_missing, &err)) goto fail;
   char mpath[4400];
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
-  struct hv_error ignored;
   meas_table_read(&old, mpath, &ignored);   /* none: no earlier peak pressures */
   /* the new files go to a hidden folder of their own and replace the run's only when
      every snapshot has been measured: a snapshot that fails leaves the earlier
@@ -154,12 +190,6 @@ int remeasure_main(int argc, char **argv)
   }
   const char *matnames[HV_MAX_MATERIALS];
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
-  /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
-     those that match this run's summary.csv (number and time) are its own */
-  char spath[4400];
-  snprintf(spath, sizeof spath, "%s/summary.csv", dir);
-  const int nt = io_read_table_column(spath, "time", &times, &ignored);
-  if (nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
   int measured = 0;
   for (int j = 0; j < ns; j++) {
     const int k = snaps[j];

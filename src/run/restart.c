@@ -1,6 +1,8 @@
 /* restart.c — see restart.h. */
 #include "run/restart.h"
 
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -151,6 +153,44 @@ static int mismatch(struct ckpt_file *c, struct hv_error *err, const char *what,
                       a, b);
 }
 
+static int bad_record(const struct ckpt_file *c, const char *rec, struct hv_error *err,
+                      const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+/* A record whose values hvsph never writes (the CRC matched, so the file was made so):
+ * "PATH: checkpoint record 'REC': what is wrong". Every value is checked before it is
+ * used: a count of 10^8 summary rows ended in SIGSEGV, a particle count of 2^40 asked
+ * for 11.7 TB, an output index of 2^62 never ended, a NaN time went into run.pvd. */
+static int bad_record(const struct ckpt_file *c, const char *rec, struct hv_error *err,
+                      const char *fmt, ...)
+{
+  char msg[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s': %s (hvsph writes no "
+                      "such value: the file was made or altered by something else)", c->path,
+                      rec, msg);
+}
+
+/* The most outputs (and output or measurement time indices) a checkpoint may count:
+ * 10^8, as many as summary rows of 144 bytes fill 14 GB; the loops that step an index
+ * to the checkpoint's time run at most that many times (a fraction of a second). */
+#define RESTART_MAX_OUTPUTS 100000000LL
+
+/* Record `rec` holds exactly `count` elements (checked before anything is allocated
+ * for them: a count in another record must agree with the data the file holds). */
+static int want_count(const struct ckpt_file *c, const char *rec, enum ckpt_type type,
+                      uint64_t count, const char *from, struct hv_error *err)
+{
+  const struct ckpt_record *r = ckpt_find(c, rec);
+  if (!r) return hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint has no record '%s'",
+                              c->path, rec);
+  if (r->type == type && r->count == count) return 0;
+  return bad_record(c, from, err, "it counts %llu elements for record '%s', which holds %llu",
+                    (unsigned long long)count, rec, (unsigned long long)r->count);
+}
+
 /* Compares a joined name list with the case's. */
 static int check_names(struct ckpt_file *c, const char *rec, const char *what,
                        const char *const *names, int n, struct hv_error *err)
@@ -176,55 +216,103 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
                         struct hv_error *err)
 {
   int64_t ints[3], ncols;
-  if (ckpt_get(c, "out.count.next_k.nrows", CKPT_I64, 3, ints, err) ||
+  const char *const ro = "out.count.next_k.nrows";
+  if (ckpt_get(c, ro, CKPT_I64, 3, ints, err) ||
       ckpt_get(c, "out.t_start", CKPT_F64, 1, &o->t_start, err) ||
-
       ckpt_get(c, "out.summary_cols", CKPT_I64, 1, &ncols, err))
     return -1;
-  if (ncols != RUN_SUMMARY_COLS || ints[0] < 0 || ints[0] > 100000000 || ints[2] < 0 ||
-      ints[2] > 100000000)
+  if (ncols != RUN_SUMMARY_COLS)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: output bookkeeping not understood by this "
-                        "hvsph (%lld summary columns, %lld outputs)", c->path,
-                        (long long)ncols, (long long)ints[0]);
-  o->count = (int)ints[0];
+                        "hvsph (%lld summary columns, %d expected)", c->path, (long long)ncols,
+                        RUN_SUMMARY_COLS);
+  /* one summary row per output, written together (run.c, write_outputs) */
+  if (ints[0] < 0 || ints[0] > RESTART_MAX_OUTPUTS || ints[2] != ints[0])
+    return bad_record(c, ro, err, "%lld outputs and %lld summary rows (a run writes one "
+                      "row per output, at most %lld)", (long long)ints[0], (long long)ints[2],
+                      RESTART_MAX_OUTPUTS);
+  if (ints[1] < 1 || ints[1] > RESTART_MAX_OUTPUTS)
+    return bad_record(c, ro, err, "index of the next output time %lld (from 1 to %lld)",
+                      (long long)ints[1], RESTART_MAX_OUTPUTS);
+  if (!isfinite(o->t_start) || o->t_start < 0 || o->t_start > s->t)
+    return bad_record(c, "out.t_start", err, "start time %g s (finite, from 0 to the "
+                      "checkpoint's time %g s)", o->t_start, s->t);
+  const int count = (int)ints[0];
   o->next_k = (long)ints[1];
-  o->nrows = (int)ints[2];
-  o->rows = hv_malloc(((size_t)o->nrows * RUN_SUMMARY_COLS + 1) * sizeof *o->rows, "summary");
-  if (ckpt_get(c, "out.summary", CKPT_F64, (size_t)o->nrows * RUN_SUMMARY_COLS, o->rows, err))
+  if (want_count(c, "out.summary", CKPT_F64, (uint64_t)count * RUN_SUMMARY_COLS, ro, err))
     return -1;
+  o->rows = hv_malloc(((size_t)count * RUN_SUMMARY_COLS + 1) * sizeof *o->rows, "summary");
+  o->nrows = count;
+  if (ckpt_get(c, "out.summary", CKPT_F64, (size_t)count * RUN_SUMMARY_COLS, o->rows, err))
+    return -1;
+  for (int k = 0; k < count; k++) {   /* finite; step and time (columns 0, 1) in order */
+    const double *row = o->rows + (size_t)k * RUN_SUMMARY_COLS;
+    for (int q = 0; q < RUN_SUMMARY_COLS; q++)
+      if (!isfinite(row[q]))
+        return bad_record(c, "out.summary", err, "row %d column %d is %g", k, q + 1, row[q]);
+    if (row[0] < 0 || row[0] > (double)s->step || row[1] < o->t_start || row[1] > s->t ||
+        (k > 0 && (row[0] < row[-RUN_SUMMARY_COLS] || row[1] < row[1 - RUN_SUMMARY_COLS])))
+      return bad_record(c, "out.summary", err, "row %d: step %g at t = %g s, not in order "
+                        "between the start (t = %g s) and the checkpoint (step %ld, t = %g s)",
+                        k, row[0], row[1], o->t_start, s->step, s->t);
+  }
   char *b;
   size_t len, nt;
   if (ckpt_get_alloc(c, "out.snapshot_files", CKPT_BYTES, (void **)&b, &len, err)) return -1;
-  const char **names = hv_malloc(((size_t)o->count + 1) * sizeof *names, "checkpoint");
-  o->files = hv_malloc(((size_t)o->count + 1) * sizeof *o->files, "pvd");
-  int rc = split(b, len, names, (size_t)o->count);
-  for (int k = 0; k < o->count; k++) o->files[k] = rc || !*names[k] ? NULL : strdup(names[k]);
+  const char **names = hv_malloc(((size_t)count + 1) * sizeof *names, "checkpoint");
+  int rc = split(b, len, names, (size_t)count);
+  if (rc)
+    bad_record(c, "out.snapshot_files", err, "it does not hold %d names", count);
+  /* each name is the one write_outputs gives output k, or empty (no .vtu): run.pvd
+     lists them, and no other name may get into it */
+  for (int k = 0; k < count && !rc; k++) {
+    char want[32];
+    snprintf(want, sizeof want, "particles_%05d.vtu", k);
+    if (*names[k] && strcmp(names[k], want))
+      rc = bad_record(c, "out.snapshot_files", err, "name %d is '%.80s', not '%s'", k,
+                      names[k], want);
+  }
+  if (!rc) {
+    o->files = hv_malloc(((size_t)count + 1) * sizeof *o->files, "pvd");
+    for (int k = 0; k < count; k++) o->files[k] = *names[k] ? strdup(names[k]) : NULL;
+    o->count = count;   /* outputs_free frees count names: set only once they exist */
+  }
   free(names);
   free(b);
-  if (rc)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record 'out.snapshot_files' does "
-                        "not hold %d names", c->path, o->count);
+  if (rc) return -1;
   if (ckpt_get_alloc(c, "out.snapshot_times", CKPT_F64, (void **)&o->times, &nt, err)) return -1;
   if (s->out.vtu && nt != (size_t)o->count)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: the run that wrote the checkpoint wrote no "
                         ".vtu snapshots (output.vtu: false); continue it without them",
                         c->path);
+  if (nt != 0 && nt != (size_t)o->count)
+    return bad_record(c, "out.snapshot_times", err, "%zu times for %d outputs", nt, o->count);
+  for (size_t k = 0; k < nt; k++)
+    if (!isfinite(o->times[k]) || o->times[k] != o->rows[k * RUN_SUMMARY_COLS + 1])
+      return bad_record(c, "out.snapshot_times", err, "time %zu is %g s, where summary row "
+                        "%zu has t = %g s", k, o->times[k], k, o->rows[k * RUN_SUMMARY_COLS + 1]);
   return 0;
 }
 
-static int read_measure(struct ckpt_file *c, struct run_outputs *o, struct hv_error *err)
+static int read_measure(struct ckpt_file *c, const struct sim *s, struct run_outputs *o,
+                        struct hv_error *err)
 {
   struct measure_run *mr = &o->mr;
   int64_t mk = 0;   /* absent in checkpoints before measure.every: the loop finds it */
   if (ckpt_find(c, "measure.next_k") && ckpt_get(c, "measure.next_k", CKPT_I64, 1, &mk, err))
     return -1;
+  if (mk < 0 || mk > RESTART_MAX_OUTPUTS)
+    return bad_record(c, "measure.next_k", err, "index of the next measurement time %lld "
+                      "(from 0 to %lld)", (long long)mk, RESTART_MAX_OUTPUTS);
   o->next_mk = (long)mk;
   double *tv;
   char *b;
   size_t ntv, len;
-  if (ckpt_get(c, "measure.peak_pressure", CKPT_F64, 1, &mr->peak_pressure, err) ||
-      ckpt_get_alloc(c, "measure.time_value", CKPT_F64, (void **)&tv, &ntv, err))
+  if (ckpt_get(c, "measure.peak_pressure", CKPT_F64, 1, &mr->peak_pressure, err))
     return -1;
+  if (isnan(mr->peak_pressure) || mr->peak_pressure == HUGE_VAL)   /* -inf: none yet */
+    return bad_record(c, "measure.peak_pressure", err, "peak pressure %g Pa",
+                      mr->peak_pressure);
+  if (ckpt_get_alloc(c, "measure.time_value", CKPT_F64, (void **)&tv, &ntv, err)) return -1;
   if (ckpt_get_alloc(c, "measure.text", CKPT_BYTES, (void **)&b, &len, err)) {
     free(tv);
     return -1;
@@ -235,6 +323,15 @@ static int read_measure(struct ckpt_file *c, struct run_outputs *o, struct hv_er
   if (rc)
     hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint's measurement records do not match",
                  c->path);
+  /* times of the outputs so far, in order; texts that measurements.csv can hold */
+  for (size_t k = 0; k < n && !rc; k++)
+    if (!isfinite(tv[k]) || tv[k] < o->t_start || tv[k] > s->t || (k > 0 && tv[k] < tv[k - 1]))
+      rc = bad_record(c, "measure.time_value", err, "time %zu is %g s, not in order between "
+                      "the start (%g s) and the checkpoint (%g s)", k, tv[k], o->t_start, s->t);
+  for (size_t q = 0; q < len && !rc; q++)
+    if (b[q] && (unsigned char)b[q] < 0x20)
+      rc = bad_record(c, "measure.text", err, "control character 0x%02x at byte %zu",
+                      (unsigned char)b[q], q);
   meas_table_free(&mr->table);
   meas_table_init(&mr->table);
   for (size_t k = 0; k < n && !rc; k++)
@@ -243,6 +340,31 @@ static int read_measure(struct ckpt_file *c, struct run_outputs *o, struct hv_er
   free(b);
   free(tv);
   return rc ? -1 : 0;
+}
+
+/* Every state value finite, and m, h, rho > 0, as every step leaves them (step.c's
+ * check_state, the EOS): a NaN position or a smoothing length of 0 would reach the
+ * neighbour grid. Names the first offender's record, particle and component. */
+static int check_particles(const struct ckpt_file *c, const struct particles *p,
+                           const struct pfield *f, int nf, struct hv_error *err)
+{
+  for (int i = 0; i < nf; i++) {
+    if (!(f[i].flags & PF_STATE) || f[i].type != PF_DOUBLE) continue;
+    const int positive = !strcmp(f[i].name, "m") || !strcmp(f[i].name, "h") ||
+                         !strcmp(f[i].name, "rho");
+    for (int q = 0; q < f[i].ncomp; q++) {
+      const double *v = f[i].comp[q];
+      for (size_t k = 0; k < p->n; k++)
+        if (!isfinite(v[k]) || (positive && !(v[k] > 0))) {
+          char rn[CKPT_NAME_LEN + 1], comp[32] = "";
+          snprintf(rn, sizeof rn, "p.%s", f[i].name);
+          if (f[i].ncomp > 1) snprintf(comp, sizeof comp, ", component %d", q + 1);
+          return bad_record(c, rn, err, "particle %lld%s: %s = %g %s%s", (long long)p->id[k],
+                            comp, f[i].name, v[k], f[i].unit, positive ? " (must be > 0)" : "");
+        }
+    }
+  }
+  return 0;
 }
 
 int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct hv_error *err)
@@ -293,11 +415,33 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
       ckpt_get(&c, "absorbed", CKPT_F64, 6, ab, err) ||
       ckpt_get(&c, "absorbed.n", CKPT_I64, 1, &abn, err))
     goto out;
-  if (ints[2] != s->p.solid || ints[1] < 0) {
+  if (ints[2] != s->p.solid) {
     mismatch(&c, err, "solid fields", ints[2] ? "present" : "absent",
              s->p.solid ? "present" : "absent");
     goto out;
   }
+  /* the clock: a time, a next step and a proposed one that a run reaches */
+  if (!isfinite(clock[0]) || clock[0] < 0 || !isfinite(clock[1]) || !(clock[1] > 0) ||
+      !isfinite(clock[2]) || clock[2] < 0) {
+    bad_record(&c, "clock", err, "t = %g s, dt = %g s, proposed dt = %g s (t finite and "
+               ">= 0, dt finite and > 0)", clock[0], clock[1], clock[2]);
+    goto out;
+  }
+  if (ints[0] < 0 || ints[1] < 0) {
+    bad_record(&c, "step.n.solid", err, "step %lld, %lld particles", (long long)ints[0],
+               (long long)ints[1]);
+    goto out;
+  }
+  /* what absorbing faces removed: at most the particles there were, finite tallies */
+  if (abn < 0 || abn > ints[1] + (int64_t)s->p.n) {
+    bad_record(&c, "absorbed.n", err, "%lld particles absorbed", (long long)abn);
+    goto out;
+  }
+  for (int k = 0; k < 6; k++)
+    if (!isfinite(ab[k]) || (k == 0 && ab[k] < 0)) {
+      bad_record(&c, "absorbed", err, "value %d is %g", k + 1, ab[k]);
+      goto out;
+    }
   s->t = clock[0];
   s->dt = clock[1];
   s->dt_prop = clock[2];
@@ -312,9 +456,6 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   /* the particles: as many as the checkpoint holds (absorbing faces remove some) */
   struct particles *p = &s->p;
   const size_t n = (size_t)ints[1];
-  p->n_ghost = 0;
-  if (n > p->n) particles_add(p, n - p->n);
-  p->n = n;
   if (p->av && !ckpt_find(&c, "p.alpha")) {
     hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without sph.viscosity.switch, "
                  "whose per-particle alpha it does not hold: a run cannot take the switch up "
@@ -328,8 +469,22 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
                  "when continued (start it again, or continue it without it)", path);
     goto out;
   }
+  /* the count against the data the file holds, before the particles are allocated (a
+     count of 2^40 asked for 11.7 TB): every state field's record, n elements a part */
   struct pfield f[HV_MAX_FIELDS];
-  const int nf = particles_fields(p, f);
+  int nf = particles_fields(p, f);
+  for (int i = 0; i < nf; i++) {
+    if (!(f[i].flags & PF_STATE)) continue;
+    char rn[CKPT_NAME_LEN + 1];
+    snprintf(rn, sizeof rn, "p.%s", f[i].name);
+    if (want_count(&c, rn, ckpt_type_of(f[i].type), (uint64_t)n * (uint64_t)f[i].ncomp,
+                   "step.n.solid", err))
+      goto out;
+  }
+  p->n_ghost = 0;
+  if (n > p->n) particles_add(p, n - p->n);
+  p->n = n;
+  nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
     if (!(f[i].flags & PF_STATE)) continue;
     char rn[CKPT_NAME_LEN + 1];
@@ -344,8 +499,9 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
                    p->mat[i], p->body[i], s->nmat, s->nbody);
       goto out;
     }
+  if (check_particles(&c, p, f, nf, err)) goto out;
 
-  if (read_outputs(&c, s, o, err) || read_measure(&c, o, err)) goto out;
+  if (read_outputs(&c, s, o, err) || read_measure(&c, s, o, err)) goto out;
   rc = 0;
 out:
   free(cname);

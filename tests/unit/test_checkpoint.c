@@ -8,9 +8,18 @@
  * unknown format version (with a valid CRC), a file written on a machine of the other byte
  * order (its CRC in that order too), a file that is no checkpoint at all, a missing file.
  * A failed write (its folder missing) leaves no file.
+ *
+ * Then the records of a run's checkpoint (run/restart.c), each altered with the CRC
+ * recomputed, so that only the checks of the values can refuse them: `hvsph restart`
+ * must exit 2 with one line naming the checkpoint and the record, and leave the run's
+ * files as they were. Before those checks a row count of 10^8 ended in SIGSEGV, an
+ * output index of 2^62 never ended, a particle count of 2^40 asked for 11.7 TB and a
+ * NaN time went into run.pvd; each restart runs under `timeout 20` (and the test under
+ * alarm) so that a regression fails instead of hanging.
  */
 #include <math.h>
 #include <stdint.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,6 +67,149 @@ static void write_bytes(const char *path, const unsigned char *b, size_t n)
     fwrite(b, 1, n, f);
     fclose(f);
   }
+}
+
+/* ---------------------------------------------------------------- a run's records */
+
+static const char *run_case =
+    "name: ck\n"
+    "materials:\n"
+    "  gas: {eos: ideal-gas, gamma: 1.4}\n"
+    "domain: {min: [0, 0, 0], max: [0.1, 0.05, 0.05],\n"
+    "         boundary: {x: wall, y: periodic, z: periodic}}\n"
+    "bodies:\n"
+    "  - {name: slab, material: gas, shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]},\n"
+    "     spacing: 6.25 mm, density: 1.0, pressure: 1.0, velocity: [0.3, 0.1, -0.05]}\n"
+    "time: {end: 0.01}\n"
+    "output: {every: 0.005}\n";
+
+/* One alteration: element `index` of record `rec` set to an int64 or a double. */
+struct alteration {
+  const char *rec;
+  size_t index;
+  int is_double;
+  int64_t i;
+  double d;
+  const char *what;
+};
+
+/* Copies run folder `from` to `to` and alters its checkpoint as a says (the CRC
+ * recomputed); 0 on success. */
+static int altered_copy(const char *from, const char *to, const struct alteration *a)
+{
+  char cmd[9000], ck[4400];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && cp -r '%s' '%s'", to, from, to);
+  if (test_run(cmd, NULL, 0)) return -1;
+  snprintf(ck, sizeof ck, "%s/checkpoint.hvc", to);
+  struct ckpt_file c;
+  struct hv_error err;
+  if (ckpt_open(&c, ck, &err)) return -1;
+  const struct ckpt_record *r = ckpt_find(&c, a->rec);
+  const long long off = r && a->index < r->count ? r->offset + (long long)(8 * a->index) : -1;
+  const int type = r ? (int)r->type : 0;
+  ckpt_close(&c);
+  if (off < 0 || type != (a->is_double ? CKPT_F64 : CKPT_I64)) return -1;
+  size_t len;
+  unsigned char *raw = (unsigned char *)test_slurp(ck, &len);
+  if (!raw) return -1;
+  if (a->is_double)
+    memcpy(raw + off, &a->d, 8);
+  else
+    memcpy(raw + off, &a->i, 8);
+  const uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), raw, (uInt)(len - 4));
+  memcpy(raw + len - 4, &crc, 4);
+  write_bytes(ck, raw, len);
+  free(raw);
+  return 0;
+}
+
+static void test_run_records(void)
+{
+  char base[4200], dir[4200], cmd[13000], out[8192];
+  snprintf(base, sizeof base, "%s/run", test_tmpdir());
+  char casefile[4200];
+  snprintf(casefile, sizeof casefile, "%s/ck.yaml", test_tmpdir());
+  write_bytes(casefile, (const unsigned char *)run_case, strlen(run_case));
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --quiet 2>&1", base,
+           test_bin(), casefile, base);
+  int rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "the run writes its checkpoint (exit %d): %s", rc, out);
+  char pvd[4400], sum[4400];
+  snprintf(pvd, sizeof pvd, "%s/run.pvd", base);
+  snprintf(sum, sizeof sum, "%s/summary.csv", base);
+  char *pvd0 = test_slurp(pvd, NULL), *sum0 = test_slurp(sum, NULL);
+  const double nan = NAN;
+  const struct alteration alt[] = {
+      {"out.count.next_k.nrows", 2, 0, 100000000, 0, "10^8 summary rows (was SIGSEGV)"},
+      {"out.count.next_k.nrows", 0, 0, 100000000, 0, "10^8 outputs"},
+      {"out.count.next_k.nrows", 1, 0, INT64_C(1) << 62, 0, "output index 2^62 (hung)"},
+      {"out.count.next_k.nrows", 1, 0, 0, 0, "output index 0"},
+      {"step.n.solid", 1, 0, INT64_C(1) << 40, 0, "2^40 particles (asked for 11.7 TB)"},
+      {"step.n.solid", 0, 0, -3, 0, "step -3"},
+      {"clock", 0, 1, 0, nan, "a NaN time"},
+      {"clock", 0, 1, 0, -1.0, "a negative time"},
+      {"clock", 1, 1, 0, 0.0, "a next step of 0 s"},
+      {"clock", 2, 1, 0, HUGE_VAL, "an infinite proposed step"},
+      {"out.t_start", 0, 1, 0, 1.0, "a start after the checkpoint's time"},
+      {"out.summary", 18 + 1, 1, 0, nan, "a NaN time in summary row 1"},
+      {"out.summary", 2 * 18 + 1, 1, 0, 0.001, "summary times out of order"},
+      {"out.snapshot_times", 1, 1, 0, nan, "a NaN snapshot time (went into run.pvd)"},
+      {"out.snapshot_times", 2, 1, 0, 0.007, "a snapshot time not its row's"},
+      {"absorbed.n", 0, 0, -5, 0, "-5 particles absorbed"},
+      {"absorbed", 0, 1, 0, nan, "a NaN absorbed mass"},
+      {"measure.next_k", 0, 0, INT64_C(1) << 62, 0, "measurement index 2^62"},
+      {"measure.peak_pressure", 0, 1, 0, nan, "a NaN peak pressure"},
+      {"p.x", 5, 1, 0, nan, "a NaN position"},
+      {"p.h", 3, 1, 0, 0.0, "a smoothing length of 0"},
+      {"p.m", 7, 1, 0, -1.0, "a negative mass"},
+      {"p.e", 2, 1, 0, HUGE_VAL, "an infinite energy"},
+  };
+  snprintf(dir, sizeof dir, "%s/altered", test_tmpdir());
+  for (size_t k = 0; k < sizeof alt / sizeof alt[0]; k++) {
+    if (altered_copy(base, dir, &alt[k])) {
+      CHECK(0, "%s: could not prepare the altered copy of record '%s'", alt[k].what, alt[k].rec);
+      continue;
+    }
+    snprintf(cmd, sizeof cmd, "timeout 20 '%s' restart '%s' --set time.end=0.02 --quiet 2>&1",
+             test_bin(), dir);
+    rc = test_run(cmd, out, sizeof out);
+    char ck[4400], rec[128];
+    snprintf(ck, sizeof ck, "%s/checkpoint.hvc", dir);
+    snprintf(rec, sizeof rec, "record '%s'", alt[k].rec);
+    const char *e = strstr(out, "hvsph: error: ");
+    const int one = e && e == strstr(out, "hvsph: error: ") && !strstr(e + 1, "hvsph: error: ");
+    /* a count in one record is checked against the record it counts: 2^40 particles
+       name step.n.solid (the count), the others their own record */
+    CHECK(rc == 2 && one && strstr(e, ck) && strstr(e, rec),
+          "%s: exit %d (want 2; 124: it hung), one line naming the checkpoint and %s: %s",
+          alt[k].what, rc, rec, out);
+    char apvd[4400], asum[4400];
+    snprintf(apvd, sizeof apvd, "%s/run.pvd", dir);
+    snprintf(asum, sizeof asum, "%s/summary.csv", dir);
+    char *pvd1 = test_slurp(apvd, NULL), *sum1 = test_slurp(asum, NULL);
+    CHECK(pvd0 && sum0 && pvd1 && sum1 && !strcmp(pvd0, pvd1) && !strcmp(sum0, sum1),
+          "%s: run.pvd and summary.csv left as they were", alt[k].what);
+    free(pvd1);
+    free(sum1);
+  }
+  /* the copy unaltered (an alteration that writes the value it holds) continues */
+  struct ckpt_file c;
+  struct hv_error err;
+  int64_t ints[3] = {0, 0, 0};
+  char ck[4400];
+  snprintf(ck, sizeof ck, "%s/checkpoint.hvc", base);
+  if (!ckpt_open(&c, ck, &err)) {
+    ckpt_get(&c, "out.count.next_k.nrows", CKPT_I64, 3, ints, &err);
+    ckpt_close(&c);
+  }
+  const struct alteration same = {"out.count.next_k.nrows", 1, 0, ints[1], 0, "unaltered"};
+  CHECK(altered_copy(base, dir, &same) == 0, "copied the run");
+  snprintf(cmd, sizeof cmd, "timeout 60 '%s' restart '%s' --set time.end=0.02 --quiet 2>&1",
+           test_bin(), dir);
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "the unaltered checkpoint continues (exit %d): %s", rc, out);
+  free(pvd0);
+  free(sum0);
 }
 
 int main(void)
@@ -179,5 +331,9 @@ int main(void)
         "write into a missing folder fails: %s", err.msg);
   free(big);
   free(big2);
+
+  alarm(600);   /* the restarts below run under timeout 20 each; this is the backstop */
+  test_run_records();
+  alarm(0);
   return test_finish();
 }

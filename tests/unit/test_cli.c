@@ -1063,6 +1063,163 @@ static void test_measure(void)
   free(f1);
 }
 
+/* Inputs that are no regular file, or too large: a FIFO as case file or checkpoint
+ * blocked the open for ever, `hvsph run /dev/zero` read until the kernel killed it
+ * (23 GiB). Each is refused at once with exit 2 and one line naming the file and what
+ * it is. Every command runs under `timeout 20`, so that a regression fails (exit 124)
+ * instead of hanging the suite; each takes well under a second when refused. */
+/* path_of(name), removed (a run folder of an earlier `make check`). */
+static const char *fresh_path(const char *name)
+{
+  const char *p = path_of(name);
+  char cmd[4400];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", p);
+  if (test_run(cmd, NULL, 0) != 0) {
+    fprintf(stderr, "cannot remove %s\n", p);
+    exit(1);
+  }
+  return p;
+}
+
+static void test_not_regular(void)
+{
+  char out[16384], args[9000], want[4500];
+  const char *fifo = fresh_path("fifo.yaml");
+  CHECK(mkfifo(fifo, 0600) == 0, "made the FIFO %s", fifo);
+  const char *dir = fresh_path("notreg");
+  const struct {
+    const char *path, *what;
+  } cases[] = {{fifo, "is a FIFO"}, {"/dev/zero", "is a character device"},
+               {test_tmpdir(), "is a directory"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char full[13400];
+    snprintf(full, sizeof full, "{ timeout 20 '%s' run '%s' -o '%s' --quiet 2>&1 >/dev/null; }",
+             test_bin(), cases[k].path, dir);
+    const int rc = test_run(full, out, sizeof out);
+    CHECK(rc == 2, "case file %s: exit status %d (want 2; 124: it hung)", cases[k].path, rc);
+    snprintf(want, sizeof want, "case file '%s' %s", cases[k].path, cases[k].what);
+    check_message(cases[k].path, out, (const char *const[]){want, "regular file", NULL});
+  }
+  struct stat st;
+  CHECK(stat(dir, &st) != 0, "... and no output folder is created");
+
+  /* 1 MiB (src/config/config.c argues the limit): the base case padded with comments to
+     exactly the limit runs; one byte more is refused before it is read */
+  static char big[(1 << 20) + 2];
+  const char *base = variant(0, "");
+  size_t n = (size_t)snprintf(big, sizeof big, "%s", base);
+  while (n < (1u << 20)) {
+    const size_t line = (1u << 20) - n < 100 ? (1u << 20) - n : 100;
+    memset(big + n, '#', line - 1);
+    big[n + line - 1] = '\n';
+    n += line;
+  }
+  big[n] = '\0';
+  const char *at = test_write_file("limit.yaml", big);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", at, fresh_path("limit"));
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "a case file of exactly 1 MiB runs (exit %d): %.300s", rc, out);
+  big[n] = '\n';
+  big[n + 1] = '\0';
+  const char *over = test_write_file("over.yaml", big);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", over, fresh_path("over"));
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "a case file of 1 MiB + 1 byte: exit status %d (want 2)", rc);
+  snprintf(want, sizeof want, "case file '%s' is 1048577 bytes, more than the 1048576", over);
+  check_message("1 MiB + 1", out, (const char *const[]){want, NULL});
+
+  /* a FIFO in place of the checkpoint: hvsph restart refuses it, naming it */
+  const char *casefile = test_write_file("base.yaml", base);
+  const char *rdir = fresh_path("fifo_ckpt");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, rdir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the run for the FIFO checkpoint (exit %d): %s", rc, out);
+  char ck[4400], full[13400];
+  snprintf(ck, sizeof ck, "%s/checkpoint.hvc", rdir);
+  CHECK(remove(ck) == 0 && mkfifo(ck, 0600) == 0, "checkpoint.hvc replaced by a FIFO");
+  snprintf(full, sizeof full, "{ timeout 20 '%s' restart '%s' --set time.end=0.02 --quiet "
+           "2>&1 >/dev/null; }", test_bin(), rdir);
+  rc = test_run(full, out, sizeof out);
+  CHECK(rc == 2, "restart from a FIFO checkpoint: exit status %d (want 2; 124: it hung)", rc);
+  snprintf(want, sizeof want, "checkpoint '%s' is a FIFO", ck);
+  check_message("FIFO checkpoint", out, (const char *const[]){want, NULL});
+
+  /* a FIFO as the snapshot hvsph render reads */
+  const char *sfifo = fresh_path("fifo.vtu");
+  CHECK(mkfifo(sfifo, 0600) == 0, "made the FIFO %s", sfifo);
+  snprintf(full, sizeof full, "{ timeout 20 '%s' render '%s' -o '%s' 2>&1 >/dev/null; }",
+           test_bin(), sfifo, path_of("fifo.png"));
+  rc = test_run(full, out, sizeof out);
+  CHECK(rc == 2, "render of a FIFO: exit status %d (want 2; 124: it hung)", rc);
+  snprintf(want, sizeof want, "'%s' is a FIFO", sfifo);
+  check_message("FIFO snapshot", out, (const char *const[]){want, NULL});
+}
+
+/* Lines of a file that do not start with '#' (-1: no file). */
+static int data_lines(const char *path)
+{
+  char *t = test_slurp(path, NULL);
+  if (!t) return -1;
+  int n = 0;
+  for (char *q = t; *q; q = strchr(q, '\n') ? strchr(q, '\n') + 1 : q + strlen(q))
+    if (*q != '#' && *q != '\n') n++;
+  free(t);
+  return n;
+}
+
+/* An output whose snapshot is missing: hvsph measure dropped its rows from
+ * measurements.csv without a word and exited 0. Now it is an error naming the snapshot
+ * (exit 2, measurements.csv as it was, nothing temporary left); with --skip-missing the
+ * others are measured, a warning names the missing one, and its rows are absent. */
+static void test_measure_missing(void)
+{
+  char out[16384], args[9000], names[512], want[4500];
+  const char *casefile =
+      test_write_file("measured_gap.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
+                                                       "fragments: true}"));
+  const char *dir = fresh_path("measured_gap");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet", casefile, dir);
+  int rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the measured case runs (exit %d): %s", rc, out);
+  char mp[4400], sp[4400];
+  snprintf(mp, sizeof mp, "%s/measurements.csv", dir);
+  snprintf(sp, sizeof sp, "%s/particles_00001.csv", dir);
+  char *m0 = test_slurp(mp, NULL);
+  const int rows0 = data_lines(mp);
+  CHECK(remove(sp) == 0, "removed %s", sp);
+  snprintf(args, sizeof args, "measure '%s' --quiet", dir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 2, "hvsph measure with particles_00001.csv missing: exit %d (want 2)", rc);
+  snprintf(want, sizeof want, "%s is missing (summary.csv lists it; 1 of the run's 3 outputs", sp);
+  check_message("measure, missing snapshot", out,
+                (const char *const[]){want, "--skip-missing", NULL});
+  char *m1 = test_slurp(mp, NULL);
+  CHECK(m0 && m1 && !strcmp(m0, m1), "... and measurements.csv is left as it was");
+  int ntmp, n = count_entries(dir, &ntmp, names, sizeof names);
+  CHECK(ntmp == 0 && n > 0, "... and nothing temporary is left (has:%s)", names);
+  free(m1);
+  /* the others measured on request, the missing one named */
+  snprintf(args, sizeof args, "'%s' measure '%s' --skip-missing --quiet 2>&1", test_bin(), dir);
+  rc = test_run(args, out, sizeof out);
+  snprintf(want, sizeof want, "hvsph: warning: %s is missing: output 1 is not measured", sp);
+  const int rows1 = data_lines(mp);
+  CHECK(rc == 0 && strstr(out, want) && rows0 > 3 && rows1 > 1 && rows1 < rows0 &&
+            (rows0 - 1) % 3 == 0 && rows1 - 1 == (rows0 - 1) / 3 * 2,
+        "--skip-missing: exit %d, the warning names it, 2 of 3 outputs' rows (%d rows of %d, "
+        "headers included): %s", rc, rows1, rows0, out);
+  free(m0);
+  /* summary.csv a FIFO (it blocked the open): not read, with a warning naming it; the
+     outputs are then the numbers up to the last snapshot, and the gap is found */
+  snprintf(sp, sizeof sp, "%s/summary.csv", dir);
+  CHECK(remove(sp) == 0 && mkfifo(sp, 0600) == 0, "summary.csv replaced by a FIFO");
+  snprintf(args, sizeof args, "timeout 20 '%s' measure '%s' --quiet 2>&1", test_bin(), dir);
+  rc = test_run(args, out, sizeof out);
+  snprintf(want, sizeof want, "'%s' is a FIFO", sp);
+  CHECK(rc == 2 && strstr(out, want) && strstr(out, "particles_00001.csv is missing (1 of the "
+        "run's 3 outputs has no snapshot)"), "measure with summary.csv a FIFO: exit %d (want "
+        "2; 124: it hung), the FIFO and the gap named: %s", rc, out);
+}
+
 /* A snapshot that reads but cannot be measured is bad input of that file: an aluminium
  * slab's run with fragments, one particle's x in particles_00001.csv damaged to 1e129 m
  * (beyond the fragment search's 2e6 linking lengths). It was exit status 3, a failed
@@ -1287,6 +1444,8 @@ int main(void)
   test_validate();
   test_measure();
   test_measure_damaged();
+  test_not_regular();
+  test_measure_missing();
   test_scaled_units_restart();
   test_every_warning();
   test_run_folders();

@@ -1,15 +1,20 @@
 /* test_eos.c — the equations of state: Mie–Grüneisen/Murnaghan (the paper's §2.1),
  * Tillotson, tabulated; their limits, continuity, sound speeds, inverse, and the table
  * reader's errors. Thresholds are written at each check. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "config/config.h"
 #include "eos/eos.h"
 #include "material/material.h"
 #include "testlib.h"
 
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
 
 /* ---------------------------------------------------------------- materials */
 
@@ -474,6 +479,148 @@ static void test_table_errors(void)
   if (!rc) eos_table_free(&t);
 }
 
+/* ---------------------------------------------------------------- the table's file */
+
+/* The value of `key: "..."` in a used_parameters.yaml text ("" if absent). */
+static const char *used_value(const char *text, const char *key, char *buf, size_t len)
+{
+  buf[0] = '\0';
+  const char *q = text ? strstr(text, key) : NULL;
+  if (!q || !(q = strchr(q, '"'))) return buf;
+  const size_t n = strcspn(q + 1, "\"");
+  snprintf(buf, len, "%.*s", (int)(n < len ? n : len - 1), q + 1);
+  return buf;
+}
+
+/* Exactly one error line in the output. */
+static int one_error(const char *s)
+{
+  const char *e = strstr(s, "hvsph: error: ");
+  return e && !strstr(e + 1, "hvsph: error: ");
+}
+
+/* A table named by a relative path in a case file: the run's used_parameters.yaml
+ * records the resolved absolute path and the file's CRC-32 (file_crc32), so that
+ * `hvsph restart` from another working folder and a rerun of used_parameters.yaml find
+ * the table (both failed with "cannot open EOS table 'num/T2/wide.txt'", the path taken
+ * relative to the run folder); a table changed since is refused by both, naming the
+ * file, and the run folder stays as it was. A FIFO as the table is refused (alarm: a
+ * regression blocks in open() and must fail, not hang). */
+static void test_table_file(void)
+{
+  char dir[4200], cmd[12000], out[8192], path[4400];
+  snprintf(dir, sizeof dir, "%s/proj", test_tmpdir());
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s/num/T2'", dir, dir);
+  CHECK(test_run(cmd, NULL, 0) == 0, "prepared %s", dir);
+  /* p = p(ρ, e) linear in each: any state of the gas-like slab below lies inside */
+  const char *table = "rho_count 4 e_count 3\n500 1000 1500 2000\n0 1e5 1e6\n"
+                      "-4.99e7 -2.99e7 1.501e8\n1e5 4.01e7 4.001e8\n5.01e7 1.101e8 6.501e8\n"
+                      "1.001e8 1.801e8 9.001e8\n";
+  snprintf(path, sizeof path, "%s/num/T2/wide.txt", dir);
+  FILE *f = fopen(path, "w");
+  if (f) {
+    fputs(table, f);
+    fclose(f);
+  }
+  snprintf(path, sizeof path, "%s/case.yaml", dir);
+  f = fopen(path, "w");
+  if (f) {
+    fputs("name: tab\n"
+          "materials:\n"
+          "  w: {eos: table, file: num/T2/wide.txt, rho0: 1000}\n"
+          "domain: {min: [0, 0, 0], max: [0.1, 0.05, 0.05],\n"
+          "         boundary: {x: wall, y: periodic, z: periodic}}\n"
+          "bodies:\n"
+          "  - {name: slab, material: w, shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]},\n"
+          "     spacing: 6.25 mm, density: 1000, energy: 5e5}\n"
+          "time: {end: 1e-5}\n"
+          "output: {every: 5e-6}\n", f);
+    fclose(f);
+  }
+  snprintf(cmd, sizeof cmd, "cd '%s' && '%s' run case.yaml -o out/tab -q 2>&1", dir, test_bin());
+  int rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "run with the table at num/T2/wide.txt: exit %d (%s)", rc, out);
+  char used[4400], rec[4200], want[4400];
+  snprintf(used, sizeof used, "%s/out/tab/used_parameters.yaml", dir);
+  char *text = test_slurp(used, NULL);
+  char *real = realpath(dir, NULL);
+  snprintf(want, sizeof want, "%s/num/T2/wide.txt", real ? real : dir);
+  free(real);
+  used_value(text, "    file:", rec, sizeof rec);
+  CHECK(!strcmp(rec, want), "used_parameters.yaml records the resolved path '%s' (got '%s')",
+        want, rec);
+  char crc[16];
+  snprintf(crc, sizeof crc, "%08lx",
+           crc32(crc32(0L, Z_NULL, 0), (const Bytef *)table, (uInt)strlen(table)) & 0xffffffffUL);
+  used_value(text, "file_crc32:", rec, sizeof rec);
+  CHECK(!strcmp(rec, crc), "and the table's CRC-32 %s (got '%s')", crc, rec);
+  free(text);
+
+  /* restart from another working folder; rerun used_parameters.yaml from the run folder */
+  snprintf(cmd, sizeof cmd, "cd / && '%s' restart '%s/out/tab' --set time.end=2e-5 -q 2>&1",
+           test_bin(), dir);
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "restart from /: exit %d (%s)", rc, out);
+  snprintf(cmd, sizeof cmd, "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun -q "
+           "2>&1", dir, test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "rerun of used_parameters.yaml from the run folder: exit %d (%s)", rc, out);
+
+  /* the table changed (one comment line added): both refused, naming the file */
+  snprintf(path, sizeof path, "%s/num/T2/wide.txt", dir);
+  f = fopen(path, "a");
+  if (f) {
+    fputs("# edited\n", f);
+    fclose(f);
+  }
+  char sum[4400];
+  snprintf(sum, sizeof sum, "%s/out/tab/summary.csv", dir);
+  char *before = test_slurp(sum, NULL);
+  snprintf(cmd, sizeof cmd, "cd / && '%s' restart '%s/out/tab' --set time.end=3e-5 -q 2>&1",
+           test_bin(), dir);
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, want) && strstr(out, "file_crc32") && strstr(out, crc) &&
+        one_error(out), "restart with the table changed: exit %d (want 2), one line "
+        "naming the table and its recorded CRC: %s", rc, out);
+  char *after = test_slurp(sum, NULL);
+  CHECK(before && after && !strcmp(before, after), "the run's summary.csv is untouched");
+  free(before);
+  free(after);
+  snprintf(cmd, sizeof cmd, "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun2 -q "
+           "2>&1", dir, test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, want) && strstr(out, "used_parameters.yaml:") &&
+        strstr(out, "file_crc32"), "rerun with the table changed: exit %d (want 2): %s", rc, out);
+  snprintf(cmd, sizeof cmd, "cd '%s' && '%s' run case.yaml --set materials.w.file_crc32=1234 "
+           "-o out/bad -q 2>&1", dir, test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, "materials.w.file_crc32") && strstr(out, "'1234' is not a CRC-32"),
+        "a malformed file_crc32: exit %d (want 2): %s", rc, out);
+
+  /* eos_table_load's CRC is that of the file's bytes */
+  struct eos_table t;
+  struct hv_error err = {0};
+  rc = eos_table_load(path, &t, &err);
+  char *bytes = test_slurp(path, NULL);
+  CHECK(rc == 0 && bytes && t.crc32 == (crc32(crc32(0L, Z_NULL, 0), (const Bytef *)bytes,
+                                                (uInt)strlen(bytes)) & 0xffffffffUL),
+        "eos_table_load's crc32 is zlib's of the file (%s)", rc ? err.msg : "ok");
+  free(bytes);
+  if (!rc) eos_table_free(&t);
+
+  /* a FIFO or a device as the table */
+  snprintf(path, sizeof path, "%s/fifo.txt", dir);
+  CHECK(mkfifo(path, 0600) == 0, "made the FIFO %s", path);
+  alarm(30);
+  rc = eos_table_load(path, &t, &err);
+  alarm(0);
+  CHECK(rc == -1 && err.code == HV_EXIT_INPUT && strstr(err.msg, path) &&
+        strstr(err.msg, "FIFO"), "a FIFO as the table refused: '%s'", err.msg);
+  rc = eos_table_load("/dev/zero", &t, &err);
+  CHECK(rc == -1 && strstr(err.msg, "'/dev/zero' is a character device"),
+        "/dev/zero as the table refused: '%s'", err.msg);
+}
+
 /* ---------------------------------------------------------------- extreme densities */
 
 /* ρ → 0: the pressure has a finite limit, and the code must return it, not −inf or NaN
@@ -612,6 +759,7 @@ int main(void)
   test_tillotson_rho_iv();
   test_table_interpolation();
   test_table_errors();
+  test_table_file();
   test_energy_from_pressure();
   test_low_density();
   return test_finish();
