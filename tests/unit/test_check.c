@@ -282,7 +282,7 @@ static void test_progress(void)
   }
   /* 1000 s of a gas lattice at steps of 0.4 ms: hours left after three steps */
   char cmd[4400];
-  snprintf(cmd, sizeof cmd, "run '%s/examples/verification/tiny.yaml' -o progress --threads 1 "
+  snprintf(cmd, sizeof cmd, "run '%s/examples/verification/tiny.yaml' -o progress --overwrite --threads 1 "
            "--set 'time.end=1000 s' --set time.max_steps=3 --set output.log_every=1 "
            "--set output.every=0", test_source_dir());
   const int rc = hvsph(cmd);
