@@ -2,7 +2,7 @@
 """Plot hvsph verification profiles: SPH particles against the exact solution.
 
 Usage:
-    /usr/bin/python3 tools/plot_verification.py [-o OUTDIR] PROFILE.csv [PROFILE.csv ...]
+    /usr/bin/python3 tools/figures/plot_verification.py -o FILE.png PROFILE.csv [PROFILE.csv ...]
 
 Each PROFILE.csv is written by a verification test (tests/verification/test_*.c) into
 its scratch folder, e.g. build/testtmp/test_sod/sod_profile.csv. Its first line is a
@@ -10,14 +10,15 @@ comment "# <problem> t=<time> n=<particles>: ...", then a header whose first col
 the coordinate (x or r) followed by pairs "q,q_exact", one row per particle. When the
 same folder holds <problem>_exact.csv (coordinate and q_exact columns on a fine grid,
 also written by the tests) the exact line is drawn from it, else from the particles'
-own exact values. One PNG per problem, OUTDIR/verif_<problem>.png (default OUTDIR:
-docs/img), with one panel per pair: the particles as small dots, the exact solution as
-a line; profiles of the same problem (e.g. test_noh's two resolutions) share a figure,
-one colour each. The vertical range covers the exact solution and 99.9 % of the particles; the
+own exact values. The profiles given must be of one problem (e.g. test_noh's two
+resolutions, one colour each); they make one PNG, FILE.png, with one panel per pair: the
+particles as small dots, the exact solution as a line. The vertical range covers the exact solution and 99.9 % of the particles; the
 few beyond it (e.g. the hot particles at the centre of the Sedov blast) are counted in
 the panel's corner.
 
-Needs python3-numpy and python3-matplotlib (tools/install-deps.sh --docs).
+Needs python3-numpy and python3-matplotlib (tools/install-deps.sh --docs). The figure
+scripts tools/figures/{sod-shock-tube,noh-implosion,sedov-blast}.sh run the tests and call
+this (tools/README.md, `make figures`).
 """
 import argparse
 import os
@@ -72,7 +73,7 @@ def run_label(comment):
     return " ".join(words) if words else "SPH particles"
 
 
-def plot(paths, outdir):
+def plot(paths, out):
     runs = [read_profile(p) for p in paths]
     comment, header, _ = runs[0]
     problem = comment.split()[0]
@@ -115,9 +116,7 @@ def plot(paths, outdir):
     axes[-1, 0].set_xlabel(LABELS.get(header[0], header[0]))
     fig.suptitle("\n".join(cm for cm, _, _ in runs), fontsize=8)
     fig.tight_layout()
-    os.makedirs(outdir, exist_ok=True)
-    out = os.path.join(outdir, f"verif_{problem}.png")
-    fig.savefig(out, dpi=110)
+    fig.savefig(out, dpi=110, format="png")
     plt.close(fig)
     print(f"{', '.join(paths)} -> {out}")
 
@@ -125,14 +124,19 @@ def plot(paths, outdir):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("profiles", nargs="+", help="profile CSV files written by the tests")
-    ap.add_argument("-o", "--outdir", default="docs/img", help="output folder (docs/img)")
+    ap.add_argument("-o", "--output", required=True, help="the PNG file to write")
     args = ap.parse_args()
-    groups = {}
+    problems = set()
     for p in args.profiles:
-        with open(p) as f:
-            groups.setdefault(f.readline()[1:].split()[0], []).append(p)
-    for paths in groups.values():
-        plot(paths, args.outdir)
+        try:
+            with open(p) as f:
+                problems.add((f.readline()[1:].split() or ["?"])[0])
+        except OSError as e:
+            sys.exit(f"{p}: {e.strerror}")
+    if len(problems) != 1:
+        sys.exit(f"the profiles are of {len(problems)} problems ({', '.join(sorted(problems))}); "
+                 "one figure takes one problem")
+    plot(args.profiles, args.output)
 
 
 if __name__ == "__main__":

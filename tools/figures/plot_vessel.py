@@ -4,7 +4,7 @@ the debris on it, like the paper's Fig. 3, and a table of the shock front, the d
 leading edge and the largest fragment at each output.
 
 Usage:
-    /usr/bin/python3 tools/plot_vessel.py RUNDIR [-o FILE.png] [--times 10,20,30,40]
+    /usr/bin/python3 tools/figures/plot_vessel.py RUNDIR [-o FILE.png] [--times 10,20,30,40]
                                           [--gas nitrogen] [--slab 4] [--csv FILE]
 
 RUNDIR is a run of examples/paper/vessel.yaml with `output.csv: true` (hvsph validate

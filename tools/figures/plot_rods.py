@@ -4,7 +4,7 @@ Tables 1-3) over impact velocity: hvsph beside the experiments and the paper's K
 simulations.
 
 Usage:
-    /usr/bin/python3 tools/plot_rods.py VALIDATION.csv [-o FILE.png] [--label TEXT]
+    /usr/bin/python3 tools/figures/plot_rods.py VALIDATION.csv -o FILE.png [--label TEXT]
 
 VALIDATION.csv is the table `hvsph validate` writes (columns case, quantity,
 simulated, experiment, paper_simulation, unit, rel_error; lengths in the unit column's
@@ -26,7 +26,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# the repository root: this file is tools/figures/plot_rods.py
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def impact_velocity(case):
@@ -56,7 +57,7 @@ def number(s):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("table")
-    ap.add_argument("-o", "--output", default=os.path.join(ROOT, "docs", "img", "val_rods.png"))
+    ap.add_argument("-o", "--output", required=True, help="the PNG file to write")
     ap.add_argument("--label", default="hvsph")
     a = ap.parse_args()
     rows = {}
@@ -97,7 +98,7 @@ def main():
         ax.grid(alpha=0.3)
     fig.suptitle("Long rods into steel (seed paper, Tables 1-3)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(a.output, dpi=100)
+    fig.savefig(a.output, dpi=100, format="png")
     print("%s -> %s" % (a.table, a.output))
 
 

@@ -2,18 +2,21 @@
 """Plots of the solid verification problems (docs/verification-solids.md).
 
 Reads the particle snapshots (particles_NNNNN.csv) the verification tests leave in
-their scratch folders and writes docs/img/verif_solid_{hugoniot,elastic_wave,rings,
-taylor,spall,porous_impact}.png. Needs Debian's python3-numpy and python3-matplotlib
-(/usr/bin/python3).
+their scratch folders and draws one problem's figure: hugoniot, elastic_wave, rings,
+taylor, spall or porous_impact. Needs Debian's python3-numpy and python3-matplotlib
+(/usr/bin/python3, tools/install-deps.sh --docs).
 
 usage:
-  tools/plot_solids.py [--tmp BUILD/testtmp] [--out docs/img] [--only NAME ...]
-  tools/plot_solids.py --hugoniot DIR --elastic-wave DIR --rings DIR --rings-eps0 DIR
-                       --rings-eps06 DIR --taylor DIR --spall DIR --spall-low DIR
+  tools/figures/plot_solids.py NAME -o FILE.png [--tmp BUILD/testtmp]
+                               [--hugoniot DIR] [--elastic-wave DIR] [--rings DIR]
+                               [--rings-eps0 DIR] [--rings-eps06 DIR] [--taylor DIR]
+                               [--spall DIR] [--spall-low DIR]
 
-By default the folders are those of `ctest` in BUILD (default build): e.g.
-build/testtmp/test_hugoniot/hugoniot. Any folder can be given instead (a run of
-`hvsph run examples/verification/X.yaml -o DIR` with output.csv on).
+By default the folders are those the tests make under --tmp (default build/testtmp,
+ctest's): e.g. build/testtmp/test_hugoniot/hugoniot. Any folder can be given instead (a
+run of `hvsph run examples/verification/X.yaml -o DIR` with output.csv on). The figure
+scripts tools/figures/{hugoniot-planar-shock,elastic-wave,rubber-rings,taylor-bar,
+spall-flyer-plate,porous-impact}.sh run the tests and call this (`make figures`).
 """
 import argparse
 import glob
@@ -393,12 +396,13 @@ def plot_porous_impact(dirs, out, area=1.8e-3 ** 2):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("name", choices=["hugoniot", "elastic_wave", "rings", "taylor", "spall",
+                                     "porous_impact"])
+    ap.add_argument("-o", "--output", required=True, help="the PNG file to write")
     ap.add_argument("--tmp", default="build/testtmp", help="the tests' scratch root")
-    ap.add_argument("--out", default="docs/img")
     for k in ("hugoniot", "elastic-wave", "rings", "rings-eps0", "rings-eps06", "taylor", "spall",
               "spall-low"):
         ap.add_argument("--" + k)
-    ap.add_argument("--only", nargs="*")
     o = ap.parse_args()
     T = o.tmp
     dirs = {
@@ -413,7 +417,6 @@ def main():
     }
     porous = [(f, os.path.join(T, "test_porous_impact", "porous_impact_%02d" % round(100 * f)))
               for f in (0.3, 0.1, 0.03)]
-    os.makedirs(o.out, exist_ok=True)
     jobs = {
         "hugoniot": lambda p: plot_hugoniot(dirs["hugoniot"], p),
         "elastic_wave": lambda p: plot_elastic_wave(dirs["elastic_wave"], p),
@@ -426,16 +429,8 @@ def main():
                                       if os.path.isdir(dirs["spall_low"]) else None, p),
         "porous_impact": lambda p: plot_porous_impact(porous, p),
     }
-    for name, job in jobs.items():
-        if o.only and name not in o.only:
-            continue
-        path = os.path.join(o.out, "verif_solid_%s.png" % name)
-        try:
-            job(path)
-        except SystemExit as e:   # a missing folder: skip this plot, do the others
-            print("skipped %s: %s" % (name, e))
-            continue
-        print("wrote", path)
+    jobs[o.name](o.output)   # a missing folder ends it with SystemExit and its message
+    print("wrote", o.output)
 
 
 if __name__ == "__main__":
