@@ -43,9 +43,9 @@ for s in "${scripts[@]}"; do
   name=$(basename "$s" .sh)
   start=$(date +%s)
   touch "$stamp"
-  bash "$s" > "$log" 2>&1
-  rc=$?
-  sed 's/^/  /' "$log"
+  # the script's lines as they come (a run can take minutes), and kept for the skip check
+  bash "$s" 2>&1 | tee "$log" | sed -u 's/^/  /'
+  rc=${PIPESTATUS[0]}
   took=$(( $(date +%s) - start ))
   if [ $rc -ne 0 ]; then
     failed=$((failed + 1)); failures="$failures $name"

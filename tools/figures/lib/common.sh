@@ -64,24 +64,25 @@ fig_fresh_work() {
 }
 
 # fig_test NAME [ARGS...]: runs the test program FIG_BUILD/test_NAME as ctest does, its
-# scratch folder FIG_WORK/test_NAME (the layout plot_solids.py --tmp reads), with
-# THREADS threads. A test that misses a threshold (exit 1) still leaves its profiles and
+# scratch folder FIG_WORK/test_NAME (the layout plot_solids.py --tmp reads; FIG_TEST_DIR
+# names another), with THREADS threads; ARGS go to the test (e.g. test_noh --spacings). A test that misses a threshold (exit 1) still leaves its profiles and
 # snapshots, and the figure shows them: a warning, not a failure (make check is where
 # thresholds fail). A crash or a missing program is a failure.
 fig_test() {
   local name=$1 rc=0
   shift
+  local dir=${FIG_TEST_DIR:-$FIG_WORK/test_$name}
   [ -x "$FIG_BUILD/test_$name" ] ||
     fig_fail "$FIG_BUILD/test_$name: no such test program (build the tests: make build)"
   fig_need_hvsph
-  echo "$FIG_NAME: running test_$name ($THREADS threads) in $FIG_WORK/test_$name"
-  HVSPH_BIN=$HVSPH HVSPH_SOURCE_DIR=$ROOT HVSPH_TMP=$FIG_WORK/test_$name \
+  echo "$FIG_NAME: running test_$name${*:+ $*} ($THREADS threads) in $dir"
+  HVSPH_BIN=$HVSPH HVSPH_SOURCE_DIR=$ROOT HVSPH_TMP=$dir \
     HVSPH_TEST_THREADS=$THREADS OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} \
-    "$FIG_BUILD/test_$name" "$@" > "$FIG_WORK/test_$name.log" 2>&1 || rc=$?
+    "$FIG_BUILD/test_$name" "$@" > "$dir.log" 2>&1 || rc=$?
   case $rc in
     0) ;;
-    1) echo "$FIG_NAME: warning: test_$name missed a threshold (see $FIG_WORK/test_$name.log)" ;;
-    *) fig_fail "test_$name ended with status $rc (see $FIG_WORK/test_$name.log)" ;;
+    1) echo "$FIG_NAME: warning: test_$name missed a threshold (see $dir.log)" ;;
+    *) fig_fail "test_$name ended with status $rc (see $dir.log)" ;;
   esac
 }
 
@@ -102,7 +103,9 @@ fig_demo() {
   DEMO=$ROOT/out/demo-whipple
   local want have
   want=$("$HVSPH" --version | awk '{print $2}')
-  have=$(tail -n 1 "$DEMO/run_segments.csv" 2>/dev/null | awk -F, '$NF == "done" {print $2}')
+  # (under pipefail a missing file must not end the script: hence the || true)
+  have=$( { tail -n 1 "$DEMO/run_segments.csv" 2>/dev/null || true; } |
+          awk -F, '$NF == "done" {print $2}')
   if [ -z "$want" ] || [ "$have" != "$want" ]; then
     echo "$FIG_NAME: running the demo (tools/demo.sh $FIG_BUILD) into $DEMO"
     HVSPH_THREADS=$THREADS bash tools/demo.sh "$FIG_BUILD" > "$WORK/demo.log" 2>&1 ||
@@ -110,6 +113,6 @@ fig_demo() {
   else
     echo "$FIG_NAME: the demo run in $DEMO is of this hvsph ($want): reused"
   fi
-  DEMO_LAST=$(ls "$DEMO"/particles_*.csv 2>/dev/null | sort | tail -n 1)
+  DEMO_LAST=$( { ls "$DEMO"/particles_*.csv 2>/dev/null || true; } | sort | tail -n 1)
   [ -n "$DEMO_LAST" ] || fig_fail "$DEMO: no particles_*.csv after the demo"
 }
