@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo check bench analyze sanitize clean
+.PHONY: all deps build demo check bench figures analyze sanitize clean
 
 all: build
 
@@ -32,6 +32,15 @@ check: build
 
 bench: build
 	@$(BUILD)/hvsph bench
+
+# The documentation's pictures (tools/README.md, "Figures"): every tools/figures/*.sh,
+# or only those named in FIGURES (make figures FIGURES="sod-shock-tube taylor-bar"), with
+# HVSPH, RUNS (default out/validation, `hvsph validate --scale 1 -o out/validation`:
+# hours) and OUT (default docs/img) from the environment. A figure whose runs are missing
+# is skipped; the target fails if any figure failed.
+figures: build
+	@bash tools/install-deps.sh --docs
+	@HVSPH="$${HVSPH:-$(BUILD)/hvsph}" bash tools/figures/make-figures.sh $(FIGURES)
 
 # Static analysis of the library, build/hvsph and the tests (clang's analyser through
 # scan-build, a Debug build in $(BUILD)-analyze): fails when it reports anything; the

@@ -25,30 +25,30 @@ def fmt(v):
 # ---------------------------------------------------------------- the model of every case
 # The model of all the paper's cases: the paper's materials and its fracture rule (Tresca
 # splitting at once; the library's materials as they are), with the artificial
-# viscosity's reconstruction (sph.viscosity.reconstruct, adopted in session 7: the rods'
-# crater floor then depends far less on the particle spacing; docs/validation.md,
-# "The viscosity reconstruction"). Two switches:
+# viscosity's reconstruction (sph.viscosity.reconstruct, adopted 2026-11-22 at
+# 074b587: the rods' crater floor then depends far less on the particle spacing;
+# docs/validation.md, "The viscosity reconstruction"). Two switches:
 # - FRACTURE_TAU (e.g. "1 us"): every material with fracture uses the library's cumulative
 #   criterion as a time to failure, a particle splitting after that much (cumulated) time
-#   beyond the paper's |sigma_c|; None: the paper's rule (tried in session 6, not adopted);
-# - RECONSTRUCT: sph.viscosity.reconstruct; False gives the standard viscosity of
-#   sessions 1-6.
+#   beyond the paper's |sigma_c|; None: the paper's rule (tried 2026-11-22, not adopted);
+# - RECONSTRUCT: sph.viscosity.reconstruct; False gives the standard viscosity of the
+#   cases before 074b587.
 FRACTURE_TAU = None
 RECONSTRUCT = True
 # - PLATE_LAYERS: the thin plates that are perforated (the bumpers of Table 4, 2.4 and
 #   2.5, the vessel's wall) get a disc around the impact point with at least this many
 #   particle layers through their thickness, the coarse plate of the paper's count
-#   around it (adopted in session 8: with the paper's counts, one or two layers, the
-#   2.4 bumper's hole is 37-44 % too large and W.P.1's 15 %; from four layers on they
-#   no longer change, at +17 % and -2.6 %; the hole is measured on the two bodies as
-#   one, measure.plates: [[bumper, bumper-core]]).
+#   around it (adopted 2026-11-22 at ce61e1e: with the paper's counts, one or two
+#   layers, the 2.4 bumper's hole is 37-44 % too large and W.P.1's 15 %; from four
+#   layers on they no longer change, at +17 % and -2.6 %; the hole is measured on the
+#   two bodies as one, measure.plates: [[bumper, bumper-core]]).
 #   None: plain plates.
 PLATE_LAYERS = 5
 # - BACKWALL_MASS_RATIO: a backwall's spacing is made fine enough (whole layers, more of
 #   them) that its particles are at most this many times heavier than the lightest
 #   particles of the debris that reach it (the projectile's, the refined plate discs').
-#   Adopted in session 10: behind the refined bumpers the backwalls of 2.4 and W.P.2 were
-#   237 and 72 times heavier; in 2.4 the fine debris reached rho/rho0 = 2.25 and 920 GPa
+#   Adopted 2026-11-23 at e93bb96: behind the refined bumpers the backwalls of 2.4 and
+#   W.P.2 were 237 and 72 times heavier; in 2.4 the fine debris reached rho/rho0 = 2.25 and 920 GPa
 #   on the backwall and held the time step at 1.6 ns. A planar steel slab at 6.2 km/s
 #   onto aluminium (docs/validation.md, "Light debris on a heavy backwall") stays at
 #   rho/rho0 <= 1.61 up to a mass ratio of 28, reaches 1.84 at 37 and 2.2-2.8 from 52
@@ -56,8 +56,8 @@ PLATE_LAYERS = 5
 BACKWALL_MASS_RATIO = 30
 # - BACKWALL_DISC: (radius mm, layers): a backwall that has fewer than `layers` particle
 #   layers (after BACKWALL_MASS_RATIO) gets a disc of that many layers within that radius
-#   of the axis, inside the ring of its own layers (session 12: W.P.1's 1.5 mm backwall
-#   of two layers of 0.75 mm was split along its rows by the debris and opened a 1.6 mm
+#   of the axis, inside the ring of its own layers (2026-11-23, 3ddf934: W.P.1's 1.5 mm
+#   backwall of two layers of 0.75 mm was split along its rows by the debris and opened a 1.6 mm
 #   hole and gaps over +-35 mm from 40 us, where the experiment's is not perforated; with
 #   four layers within 40 mm it is not; W.P.3's 3.2 mm backwall has two layers of 1.6
 #   mm). (None, None): plain backwalls.
@@ -66,7 +66,7 @@ BACKWALL_DISC = (40, 4)
 #   the plate it strikes gets the count that makes them as heavy (never fewer than the
 #   paper's): the two bodies meet with particles of one mass (one size where the two
 #   densities are one).
-#   Adopted in session 46 (docs/validation.md, "The projectile's spacing against the
+#   Adopted 2026-12-05 at 9268410 (docs/validation.md, "The projectile's spacing against the
 #   plate's disc"): at the paper's counts the projectiles of 2.4, W.P.2 and W.P.3 were
 #   1.8, 1.27 and 1.27 times coarser than the discs; matched, the holes at 12 us move
 #   from 12.60 to 12.13 mm (2.4), 17.33 to 16.63 (W.P.2) and 8.20 to 8.15 (W.P.3).
@@ -183,7 +183,7 @@ RODS = {  # test: v0 km/s, l cm, r cm, m g, L_exp cm
 
 # The steel block of the rod tests stands for the experiments' semi-infinite target. The
 # paper's rigid walls at y = +-50 mm, z = 50 mm send the target's radial waves back onto
-# the cavity and stop its afterflow: rod-5844 at resolution 0.3 (session 10) penetrates
+# the cavity and stop its afterflow: rod-5844 at resolution 0.3 (2026-11-23) penetrates
 # 142 mm with them, 158 mm inside a shell of the same steel at twice the spacing out to
 # 150 mm, 163 mm with free faces at 50 mm; but its cavity widens from 35 to 45 and 69 mm
 # (docs/validation.md, "The target's box"). ROD_SHELL = (half-width mm, spacing factor)
@@ -478,7 +478,7 @@ def whipples():
              "mm), where an absorbing face takes what flies off its rear; bumper 100 x 100 mm",
              "(size not given in the paper).",
              "Ends at 250 us: the backwall's bulge, which its crater depth includes, grows until",
-             "220-240 us at the paper's counts (docs/validation.md, session 52)."],
+             "220-240 us at the paper's counts (docs/validation.md; measured 2026-12-06 at 2cb1852)."],
             "al-alloy", 10, 3.1,
             [("bumper", "al-alloy", 0, 2, 50, 2.5 * 10), ("backwall", "al-alloy", 202, 10, 100, None)],
             ((-50, 242), 100, 100), (2000, 10000, 30000), 250, 5)

@@ -8,7 +8,7 @@
  * returns the exit status. N is $HVSPH_TEST_THREADS, default 1 (`make check` runs
  * two tests at a time on two cores). verif_read_last() reads the
  * last particles_NNNNN.csv of that output folder. Profiles are CSV files under
- * $HVSPH_TMP for tools/plot_verification.py: a comment line naming the problem,
+ * $HVSPH_TMP for tools/figures/plot_verification.py: a comment line naming the problem,
  * time and measured numbers, then a header whose first column is the coordinate
  * (x or r [m]) followed by pairs `q,q_exact` (one row per particle) — see
  * docs/verification.md.

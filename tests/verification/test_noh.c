@@ -25,7 +25,7 @@
  * 0.02 (65 498), and the errors of the plateau and of the shock radius must fall.
  * Writes $HVSPH_TMP/noh_profile.csv and noh_fine_profile.csv (r, ρ, ρ_exact, v_r,
  * v_r_exact per particle) and noh_exact.csv (the exact solution on a fine grid) for
- * tools/plot_verification.py.
+ * tools/figures/plot_verification.py.
  * Arguments: `--spacings A B` (default 0.025 0.02) replaces the two spacings; the others
  * are passed to both `hvsph run`s.
  */

@@ -30,7 +30,8 @@
  * bookkeeping of the scheme (energy equation, time integration), not the physics.
  * Writes $HVSPH_TMP/sedov_profile.csv (r, ρ, ρ_exact, v_r, v_r_exact, p, p_exact per
  * particle) and sedov_exact.csv (the exact solution on a fine grid) for
- * tools/plot_verification.py. Extra arguments are passed to `hvsph run` (finer runs).
+ * tools/figures/plot_verification.py. Extra arguments are passed to `hvsph run` (finer
+ * runs).
  */
 #include <math.h>
 #include <stdio.h>

@@ -16,7 +16,7 @@
  * right star 0.20 < x < 0.33, shock 0.33 < x < 0.37), to show where the error lies.
  * Writes $HVSPH_TMP/sod_profile.csv (x, ρ, ρ_exact, vx, vx_exact, p, p_exact per
  * particle) and sod_exact.csv (the exact solution on a fine grid) for
- * tools/plot_verification.py.
+ * tools/figures/plot_verification.py.
  * Extra arguments are passed to `hvsph run` (a finer run for docs/verification.md:
  * test_sod --set bodies[0].spacing=0.0025 --set bodies[1].spacing=0.005); the
  * thresholds are for the CI resolution.
