@@ -186,7 +186,10 @@ static int want_count(const struct ckpt_file *c, const char *rec, enum ckpt_type
   const struct ckpt_record *r = ckpt_find(c, rec);
   if (!r) return hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint has no record '%s'",
                               c->path, rec);
-  if (r->type == type && r->count == count) return 0;
+  if (r->type != type)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s' holds values of "
+                        "another type than this hvsph writes there", c->path, rec);
+  if (r->count == count) return 0;
   return bad_record(c, from, err, "it counts %llu elements for record '%s', which holds %llu",
                     (unsigned long long)count, rec, (unsigned long long)r->count);
 }
@@ -280,12 +283,12 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   free(b);
   if (rc) return -1;
   if (ckpt_get_alloc(c, "out.snapshot_times", CKPT_F64, (void **)&o->times, &nt, err)) return -1;
+  if (nt != 0 && nt != (size_t)o->count)
+    return bad_record(c, "out.snapshot_times", err, "%zu times for %d outputs", nt, o->count);
   if (s->out.vtu && nt != (size_t)o->count)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: the run that wrote the checkpoint wrote no "
                         ".vtu snapshots (output.vtu: false); continue it without them",
                         c->path);
-  if (nt != 0 && nt != (size_t)o->count)
-    return bad_record(c, "out.snapshot_times", err, "%zu times for %d outputs", nt, o->count);
   for (size_t k = 0; k < nt; k++)
     if (!isfinite(o->times[k]) || o->times[k] != o->rows[k * RUN_SUMMARY_COLS + 1])
       return bad_record(c, "out.snapshot_times", err, "time %zu is %g s, where summary row "

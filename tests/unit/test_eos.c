@@ -531,7 +531,8 @@ static void test_table_file(void)
           "domain: {min: [0, 0, 0], max: [0.1, 0.05, 0.05],\n"
           "         boundary: {x: wall, y: periodic, z: periodic}}\n"
           "bodies:\n"
-          "  - {name: slab, material: w, shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]},\n"
+          "  - {name: slab, material: w,\n"
+          "     shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]},\n"
           "     spacing: 6.25 mm, density: 1000, energy: 5e5}\n"
           "time: {end: 1e-5}\n"
           "output: {every: 5e-6}\n", f);
