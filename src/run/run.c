@@ -25,6 +25,7 @@
 #include <unistd.h>
 
 #include "config/config.h"
+#include "core/infile.h"
 #include "diag/conservation.h"
 #include "integrate/step.h"
 #include "io/afile.h"
@@ -279,7 +280,9 @@ static void segment_begin(struct segment *g, const char *dir, int restart, const
   memset(g, 0, sizeof *g);
   char path[4200];
   snprintf(path, sizeof path, "%s/run_segments.csv", dir);
-  FILE *f = restart ? fopen(path, "rb") : NULL;
+  /* a regular file only (a FIFO would block the restart): anything else starts afresh */
+  struct hv_error open_err = {0};
+  FILE *f = restart ? hv_open_input(path, "run segments", 64LL << 20, NULL, &open_err) : NULL;
   if (f) {
     size_t len = 0, cap = 4096;
     g->prev = hv_malloc(cap, "run segments");

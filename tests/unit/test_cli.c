@@ -1147,6 +1147,23 @@ static void test_not_regular(void)
   snprintf(want, sizeof want, "checkpoint '%s' is a FIFO", ck);
   check_message("FIFO checkpoint", out, (const char *const[]){want, NULL});
 
+  /* a FIFO in place of run_segments.csv (read on restart to append a row) blocked the
+   * restart: it is taken as no earlier segments and replaced by a regular file */
+  char seg[4400];
+  snprintf(seg, sizeof seg, "%s/run_segments.csv", rdir);
+  CHECK(remove(ck) == 0, "the FIFO checkpoint removed");
+  snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --overwrite", casefile, rdir);
+  rc = hvsph(args, out, sizeof out);
+  CHECK(rc == 0, "the run for the FIFO run_segments.csv (exit %d): %s", rc, out);
+  CHECK(remove(seg) == 0 && mkfifo(seg, 0600) == 0, "run_segments.csv replaced by a FIFO");
+  snprintf(full, sizeof full, "{ timeout -k 5 20 '%s' restart '%s' --set time.end=0.03 --quiet "
+           "2>&1 >/dev/null; }", test_bin(), rdir);
+  rc = test_run(full, out, sizeof out);
+  struct stat sst;
+  CHECK(rc == 0 && stat(seg, &sst) == 0 && S_ISREG(sst.st_mode),
+        "restart with a FIFO run_segments.csv: exit status %d (want 0; 124 or 137: it hung), "
+        "the file regular again", rc);
+
   /* a FIFO as the snapshot hvsph render reads */
   const char *sfifo = fresh_path("fifo.vtu");
   CHECK(mkfifo(sfifo, 0600) == 0, "made the FIFO %s", sfifo);
