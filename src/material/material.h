@@ -144,17 +144,10 @@ struct material {
 /* Releases what material_read allocated (the arrays of a table EOS). */
 void material_free(struct material *m);
 
-/* ---- the table of models (material.c) ----
- * An EOS model: its case-file name and its operations on a material whose `eos` is
- * its kind. read: reads the keys under `path` into m->eosp (and sets m->rho0, and m->K0
- * where the EOS has a bulk modulus at rest), through material_read.h's helpers; 0 or -1
- * with err set. print: every parameter with its unit (`hvsph materials NAME`).
- * evaluate, energy_from_pressure: the physics, pure (eos.h). typical: the keys whose bare
- * numbers far outside what real materials span are refused as a wrong unit (a density in
- * g/cm3), ended by {NULL}; NULL marks the EOS of a gas, which is not checked (material.c,
- * check_units). Optional (NULL): release, what read allocated; describe_name and
- * describe_outside, text appended to the material's name in eos_describe's messages
- * (" 'file'") and to its "outside the table" message (" (rho 1 to 2 kg/m3, ...)"). */
+/* ---- the table of models (material.c) ---- */
+
+/* A key whose bare number far outside what real materials span is refused as a wrong
+ * unit (a density in g/cm3; material.c, check_units). */
 struct material_typical {
   const char *key;     /* under the material, e.g. "c0" */
   int dim;             /* enum unit_dim (core/units.h) */
@@ -162,6 +155,15 @@ struct material_typical {
   const char *what;    /* "bulk sound speeds of condensed materials" */
 };
 
+/* An EOS model: its case-file name and its operations on a material whose `eos` is
+ * its kind. read: reads the keys under `path` into m->eosp (and sets m->rho0, and m->K0
+ * where the EOS has a bulk modulus at rest), through material_read.h's helpers; 0 or -1
+ * with err set. print: every parameter with its unit (`hvsph materials NAME`).
+ * evaluate, energy_from_pressure: the physics, pure (eos.h). typical: its keys' spans,
+ * ended by {NULL}; NULL marks the EOS of a gas, whose keys are not checked. Optional
+ * (NULL): release, what read allocated; describe_name and describe_outside, text
+ * appended to the material's name in eos_describe's messages (" 'file'") and to its
+ * "outside the table" message (" (rho 1 to 2 kg/m3, ...)"). */
 struct eos_model {
   const char *name;
   int (*read)(struct cfg *c, const char *path, struct material *m, struct hv_error *err);
@@ -177,7 +179,8 @@ struct eos_model {
 /* A yield model of the von Mises strength (strength.h): the yield stress Y(eps_p, rate,
  * e). read: its keys under `sp` (the material's strength mapping) into m->str, setting
  * Y0 to the initial yield stress; the shear modulus is read before it (material.c).
- * yield_max: the largest yield stress the parameters give (0: the material is a fluid). */
+ * yield_max: a yield stress of the parameters that is 0 only when they give none: the
+ * material is a solid when G > 0 and yield_max > 0, else a fluid. */
 struct yield_model {
   const char *name;
   int (*read)(struct cfg *c, const char *sp, struct material *m, struct hv_error *err);

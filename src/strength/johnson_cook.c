@@ -25,8 +25,8 @@ static double jc_yield(const struct strength_params *sp, double eps_p, double ra
   return Y;
 }
 
-/* the largest yield stress at rest and below the melt, whatever the strain: A + B for
- * the strains of interest (A = B = 0 is a fluid) */
+/* A + B, the yield stress at unit plastic strain, at rest and cold: 0 only when A = B =
+ * 0, a fluid (which is all material.c asks of it) */
 static double jc_yield_max(const struct strength_params *s) { return s->jc_A + s->jc_B; }
 
 static int jc_read_keys(struct cfg *c, const char *sp, struct material *m, struct hv_error *err)

@@ -25,7 +25,7 @@ static double linear_yield(const struct strength_params *s, double eps_p, double
   return s->Y0 + s->H * eps_p;
 }
 
-/* the largest yield stress is Y₀'s order for both: Y₀ = 0 means a fluid */
+/* Y₀: 0 means a fluid for both (linear hardening starts from it) */
 static double y0_max(const struct strength_params *s) { return s->Y0; }
 
 static int constant_read_keys(struct cfg *c, const char *sp, struct material *m,
