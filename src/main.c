@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
-#include "material/material.h"
+#include "material/material_read.h"
 #include "render/render.h"
 #include "run/bench.h"
 #include "run/check.h"

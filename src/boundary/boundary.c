@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
 #include "core/error.h"
 
 const char *const bnd_kind_names[] = {"open", "periodic", "wall", "symmetry", "absorbing", NULL};

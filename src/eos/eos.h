@@ -1,8 +1,9 @@
 /* eos.h — equations of state: p(ρ, e) and the sound speed, one dispatch.
  *
- * eos.c is the only place that switches on the EOS kind; each EOS has its own file
- * (ideal_gas.c, mie_gruneisen.c, tillotson.c, table.c) with its equations and
- * references in the file header, and docs/models.md gives them all.
+ * eos.c dispatches through the table of models (material.h, eos_models[m->eos]); each
+ * EOS has its own file (ideal_gas.c, mie_gruneisen.c, tillotson.c, table.c) with its
+ * equations and references in the file header, its reader, its listing and its row,
+ * and docs/models.md gives them all.
  * Every function here is pure: values and a const parameter pointer in, values out.
  */
 #ifndef HV_EOS_H
@@ -10,6 +11,7 @@
 
 #include <stddef.h>
 
+#include "core/error.h"
 #include "material/material.h"
 
 struct eos_state {
@@ -41,7 +43,7 @@ int eos_energy_from_pressure(const struct material *m, double rho, double p, dou
 void eos_describe(const struct material *m, double rho, double e, int status, char *buf,
                   size_t len);
 
-/* ---- per-EOS functions (pure; called by eos.c only) ---- */
+/* ---- per-EOS functions (pure; called through their models' rows, and by the tests) ---- */
 
 void eos_ideal_gas_evaluate(const struct eos_ideal_gas *g, double rho, double e,
                             struct eos_state *out);

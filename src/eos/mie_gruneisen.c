@@ -1,4 +1,6 @@
-/* mie_gruneisen.c — Mie–Grüneisen EOS with the Murnaghan cold curve (the paper's §2.1).
+/* mie_gruneisen.c — the EOS `mie-gruneisen`: Mie–Grüneisen with the Murnaghan cold curve
+ * (the paper's §2.1). Keys: rho0, c0, n (>= 1), gamma (Γ), cs_floor (default 0.1 c0);
+ * its bulk modulus at rest, K0 = ρ₀c₀², gives G from Poisson's ratio.
  *
  *   p    = p_c(ρ) + Γ ρ (E − E_c(ρ))
  *   p_c  = ρ₀c₀²/n · [(ρ/ρ₀)ⁿ − 1]                                   (Murnaghan 1944)
@@ -30,9 +32,11 @@
  * touches a physically reachable state; it only keeps the time step and the artificial
  * viscosity finite for particles driven there numerically.
  */
+#include <float.h>
 #include <math.h>
 
 #include "eos/eos.h"
+#include "material/material_read.h"
 
 /* The cold curve at x = ρ/ρ₀ from one log and one expm1: t = (ρ/ρ₀)ⁿ⁻¹ − 1, then
  * (ρ/ρ₀)ⁿ − 1 = x t + (x − 1) (both terms of one sign: no cancellation) and
@@ -104,3 +108,59 @@ int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, d
   *e = Ec;
   return EOS_OK;
 }
+
+/* ---------------------------------------------------------------- the model's row */
+
+static int mg_evaluate(const struct material *m, double rho, double e, struct eos_state *out)
+{
+  eos_mg_evaluate(&m->eosp.mg, rho, e, out);
+  return EOS_OK;
+}
+
+static int mg_energy(const struct material *m, double rho, double p, double *e)
+{
+  return eos_mg_energy_from_pressure(&m->eosp.mg, rho, p, e);
+}
+
+static int mg_read_keys(struct cfg *c, const char *path, struct material *m, struct hv_error *err)
+{
+  struct eos_mie_gruneisen *g = &m->eosp.mg;
+  if (material_get_q(c, path, "rho0", UNIT_DENSITY, NULL, DBL_MIN, HUGE_VAL, &g->rho0, err) ||
+      material_get_q(c, path, "c0", UNIT_VELOCITY, NULL, DBL_MIN, HUGE_VAL, &g->c0, err) ||
+      material_get_q(c, path, "n", UNIT_NONE, NULL, 1.0, 100.0, &g->n, err) ||
+      material_get_q(c, path, "gamma", UNIT_NONE, NULL, 0.0, 100.0, &g->Gamma, err))
+    return -1;
+  const double floor_def = g->c0 / 10.0;
+  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, HUGE_VAL,
+                     &g->cs_floor, err))
+    return -1;
+  m->rho0 = g->rho0;
+  m->K0 = g->rho0 * g->c0 * g->c0;
+  return 0;
+}
+
+static void mg_print(FILE *f, const struct material *m)
+{
+  const struct eos_mie_gruneisen *g = &m->eosp.mg;
+  material_print_quantity(f, "rho0", g->rho0, "kg/m3");
+  material_print_quantity(f, "c0", g->c0, "m/s");
+  material_print_quantity(f, "n", g->n, "");
+  material_print_quantity(f, "gamma", g->Gamma, "");
+  material_print_quantity(f, "cs_floor", g->cs_floor, "m/s");
+  material_print_quantity(f, "K0 (rho0 c0^2)", m->K0, "Pa");
+}
+
+static const struct material_typical mg_typical[] = {
+    {"rho0", UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI, HV_RHO_CONDENSED_WHAT},
+    {"c0", UNIT_VELOCITY, 100.0, 5e4, "bulk sound speeds of condensed materials"},
+    {NULL, 0, 0.0, 0.0, NULL},
+};
+
+const struct eos_model eos_mie_gruneisen_model = {
+    .name = "mie-gruneisen",
+    .read = mg_read_keys,
+    .print = mg_print,
+    .evaluate = mg_evaluate,
+    .energy_from_pressure = mg_energy,
+    .typical = mg_typical,
+};

@@ -1,5 +1,7 @@
-/* table.c — a tabulated equation of state: p(ρ, e) (and optionally c(ρ, e)) on a
- * rectangular grid, interpolated bilinearly.
+/* table.c — the EOS `table`: a tabulated equation of state, p(ρ, e) (and optionally
+ * c(ρ, e)) on a rectangular grid, interpolated bilinearly. Keys: file (relative to the
+ * folder of the file that names it), file_crc32 (optional: pins the table), rho0
+ * (default 0), cs_floor (default 0.01 of the table's largest sound speed).
  *
  * File format (text, SI units; docs/models.md shows an example):
  *
@@ -26,6 +28,7 @@
  * A state outside the grid is not extrapolated: eos_evaluate returns
  * EOS_ERR_OUTSIDE_TABLE and eos_describe() names the material, (ρ, e) and the ranges.
  */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -36,6 +39,7 @@
 
 #include "core/infile.h"
 #include "eos/eos.h"
+#include "material/material_read.h"
 
 /* ---------------------------------------------------------------- reading */
 
@@ -387,3 +391,119 @@ int eos_table_energy_from_pressure(const struct eos_table *t, double rho, double
   }
   return EOS_ERR_NO_SOLUTION;
 }
+
+/* ---------------------------------------------------------------- the model's row */
+
+static int table_evaluate(const struct material *m, double rho, double e, struct eos_state *out)
+{
+  return eos_table_evaluate(&m->eosp.tab, rho, e, out);
+}
+
+static int table_energy(const struct material *m, double rho, double p, double *e)
+{
+  return eos_table_energy_from_pressure(&m->eosp.tab, rho, p, e);
+}
+
+/* The table file, relative to the folder of the file the key was written in.
+ * used_parameters.yaml records the file's absolute path (resolved when it was read), so
+ * that `hvsph restart` and a rerun of that file, which lies in another folder, find the
+ * same table from any working folder, and the file's CRC-32 as file_crc32: a table
+ * changed since (a rerun or restart would continue under another equation of state) is
+ * refused. A case may give file_crc32 too, to pin its table. */
+static int table_read_keys(struct cfg *c, const char *path, struct material *m,
+                           struct hv_error *err)
+{
+  char k[320], kc[320], full[1024], where[512];
+  const char *file;
+  material_key(k, sizeof k, path, "file");
+  material_key(kc, sizeof kc, path, "file_crc32");
+  if (cfg_get_string(c, k, NULL, &file, err)) return -1;
+  const char *src = cfg_node_file(c, k), *slash = strrchr(src, '/');
+  if (file[0] == '/' || !slash)
+    snprintf(full, sizeof full, "%s", file);
+  else
+    snprintf(full, sizeof full, "%.*s/%s", (int)(slash - src), src, file);
+  if (eos_table_load(full, &m->eosp.tab, err))
+    return hv_error_prefix(err, "%s: %s: ", cfg_where(c, k, where, sizeof where), k);
+  char *abs = realpath(full, NULL);   /* the file exists: it was just read */
+  cfg_record_string(c, k, abs ? abs : full);
+  char crc[16];
+  snprintf(crc, sizeof crc, "%08lx", m->eosp.tab.crc32 & 0xffffffffUL);
+  if (cfg_has(c, kc)) {
+    const char *want;
+    if (cfg_get_string(c, kc, NULL, &want, err)) return -1;
+    char *end;
+    const unsigned long w = strtoul(want, &end, 16);
+    if (strlen(want) != 8 || *end || !isxdigit((unsigned char)want[0])) {
+      free(abs);
+      return material_key_error(c, kc, err, "'%s' is not a CRC-32 (8 hexadecimal digits, as "
+                                "hvsph writes it in used_parameters.yaml)", want);
+    }
+    if (w != (m->eosp.tab.crc32 & 0xffffffffUL)) {
+      material_key_error(c, kc, err, "EOS table '%s' has CRC-32 %s, not the %s recorded here: "
+                         "the table changed since the run that used it (restore it, or remove "
+                         "file_crc32 to run with the table as it is now)", abs ? abs : full,
+                         crc, want);
+      free(abs);
+      return -1;
+    }
+  }
+  free(abs);
+  cfg_record_string(c, kc, crc);
+  const double zero = 0.0, floor_def = m->eosp.tab.cs_max / 100.0;
+  if (material_get_q(c, path, "rho0", UNIT_DENSITY, &zero, 0.0, HUGE_VAL, &m->rho0, err) ||
+      material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, HUGE_VAL,
+                     &m->eosp.tab.cs_floor, err))
+    return -1;
+  return 0;
+}
+
+static void table_print(FILE *f, const struct material *m)
+{
+  const struct eos_table *t = &m->eosp.tab;
+  fprintf(f, "    %-15s %s\n", "file", t->path);
+  fprintf(f, "    %-15s %d x %d%s\n", "grid (rho x e)", t->nrho, t->ne,
+          t->cs ? ", with sound speeds" : ", c from dp");
+  material_print_quantity(f, "rho min", t->rho[0], "kg/m3");
+  material_print_quantity(f, "rho max", t->rho[t->nrho - 1], "kg/m3");
+  material_print_quantity(f, "e min", t->e[0], "J/kg");
+  material_print_quantity(f, "e max", t->e[t->ne - 1], "J/kg");
+  material_print_quantity(f, "rho0", m->rho0, "kg/m3");
+  material_print_quantity(f, "cs_floor", t->cs_floor, "m/s");
+}
+
+static void table_release(struct material *m) { eos_table_free(&m->eosp.tab); }
+
+/* " 'x.txt'" after the EOS's name in eos_describe's messages */
+static void table_describe_name(const struct material *m, char *buf, size_t len)
+{
+  snprintf(buf, len, " '%s'", m->eosp.tab.path);
+}
+
+/* " (rho 7000 to 9000 kg/m3, e 0 to 1e6 J/kg)" after "is outside the table" */
+static void table_describe_outside(const struct material *m, char *buf, size_t len)
+{
+  const struct eos_table *t = &m->eosp.tab;
+  if (t->nrho >= 2 && t->ne >= 2)
+    snprintf(buf, len, " (rho %.6g to %.6g kg/m3, e %.6g to %.6g J/kg)", t->rho[0],
+             t->rho[t->nrho - 1], t->e[0], t->e[t->ne - 1]);
+  else if (len)
+    buf[0] = '\0';
+}
+
+static const struct material_typical table_typical[] = {
+    {"rho0", UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI, HV_RHO_CONDENSED_WHAT},
+    {NULL, 0, 0.0, 0.0, NULL},
+};
+
+const struct eos_model eos_table_model = {
+    .name = "table",
+    .read = table_read_keys,
+    .print = table_print,
+    .evaluate = table_evaluate,
+    .energy_from_pressure = table_energy,
+    .typical = table_typical,
+    .release = table_release,
+    .describe_name = table_describe_name,
+    .describe_outside = table_describe_outside,
+};

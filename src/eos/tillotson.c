@@ -1,4 +1,6 @@
-/* tillotson.c — the Tillotson (1962) equation of state for metals and rock.
+/* tillotson.c — the EOS `tillotson`: Tillotson (1962) for metals and rock. Keys: rho0, a,
+ * b, A, B, E0, alpha, beta, E_iv, E_cv (> E_iv), rho_iv (default 0, < rho0), cs_floor;
+ * its bulk modulus at rest, K0 = A, gives G from Poisson's ratio.
  *
  * Notation of Melosh (1989), Impact Cratering, appendix II, and Benz & Asphaug (1999),
  * Icarus 142:5, eqs. (A1)–(A3); η = ρ/ρ₀, μ = η − 1, z = ρ₀/ρ − 1, ω = E/(E₀η²) + 1:
@@ -38,6 +40,7 @@
 #include <math.h>
 
 #include "eos/eos.h"
+#include "material/material_read.h"
 
 /* ω = E/(E₀η²) + 1. At E = 0 it is 1, also where η² underflows to 0 (ρ below ~1e-160
  * kg/m3), which would give 0/0. */
@@ -156,3 +159,86 @@ int eos_tillotson_energy_from_pressure(const struct eos_tillotson *t, double rho
   *e = fabs(bl.p - p) < fabs(b.p - p) ? lo : hi;
   return EOS_OK;
 }
+
+/* ---------------------------------------------------------------- the model's row */
+
+static int til_evaluate(const struct material *m, double rho, double e, struct eos_state *out)
+{
+  eos_tillotson_evaluate(&m->eosp.til, rho, e, out);
+  return EOS_OK;
+}
+
+static int til_energy(const struct material *m, double rho, double p, double *e)
+{
+  return eos_tillotson_energy_from_pressure(&m->eosp.til, rho, p, e);
+}
+
+static int til_read_keys(struct cfg *c, const char *path, struct material *m, struct hv_error *err)
+{
+  struct eos_tillotson *t = &m->eosp.til;
+  const double inf = HUGE_VAL, zero = 0.0;
+  char k[320];
+  if (material_get_q(c, path, "rho0", UNIT_DENSITY, NULL, DBL_MIN, inf, &t->rho0, err) ||
+      material_get_q(c, path, "a", UNIT_NONE, NULL, 0.0, inf, &t->a, err) ||
+      material_get_q(c, path, "b", UNIT_NONE, NULL, 0.0, inf, &t->b, err) ||
+      material_get_q(c, path, "A", UNIT_PRESSURE, NULL, DBL_MIN, inf, &t->A, err) ||
+      material_get_q(c, path, "B", UNIT_PRESSURE, NULL, -inf, inf, &t->B, err) ||
+      material_get_q(c, path, "E0", UNIT_SPECIFIC_ENERGY, NULL, DBL_MIN, inf, &t->E0, err) ||
+      material_get_q(c, path, "alpha", UNIT_NONE, NULL, 0.0, inf, &t->alpha, err) ||
+      material_get_q(c, path, "beta", UNIT_NONE, NULL, 0.0, inf, &t->beta, err) ||
+      material_get_q(c, path, "E_iv", UNIT_SPECIFIC_ENERGY, NULL, 0.0, inf, &t->E_iv, err) ||
+      material_get_q(c, path, "E_cv", UNIT_SPECIFIC_ENERGY, NULL, 0.0, inf, &t->E_cv, err))
+    return -1;
+  if (!(t->E_cv > t->E_iv))
+    return material_key_error(c, material_key(k, sizeof k, path, "E_cv"), err,
+                              "E_cv = %.9g J/kg must be greater than E_iv = %.9g J/kg "
+                              "(complete vaporisation after incipient)", t->E_cv, t->E_iv);
+  if (material_get_q(c, path, "rho_iv", UNIT_DENSITY, &zero, 0.0, inf, &t->rho_iv, err))
+    return -1;
+  if (!(t->rho_iv < t->rho0))
+    return material_key_error(c, material_key(k, sizeof k, path, "rho_iv"), err,
+                              "rho_iv = %.9g kg/m3 must be below rho0 = %.9g kg/m3", t->rho_iv,
+                              t->rho0);
+  const double floor_def = sqrt(t->A / t->rho0) / 100.0;
+  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, inf, &t->cs_floor,
+                     err))
+    return -1;
+  m->rho0 = t->rho0;
+  m->K0 = t->A;
+  return 0;
+}
+
+static void til_print(FILE *f, const struct material *m)
+{
+  const struct eos_tillotson *t = &m->eosp.til;
+  material_print_quantity(f, "rho0", t->rho0, "kg/m3");
+  material_print_quantity(f, "a", t->a, "");
+  material_print_quantity(f, "b", t->b, "");
+  material_print_quantity(f, "A", t->A, "Pa");
+  material_print_quantity(f, "B", t->B, "Pa");
+  material_print_quantity(f, "E0", t->E0, "J/kg");
+  material_print_quantity(f, "alpha", t->alpha, "");
+  material_print_quantity(f, "beta", t->beta, "");
+  material_print_quantity(f, "E_iv", t->E_iv, "J/kg");
+  material_print_quantity(f, "E_cv", t->E_cv, "J/kg");
+  material_print_quantity(f, "rho_iv", t->rho_iv, "kg/m3");
+  material_print_quantity(f, "cs_floor", t->cs_floor, "m/s");
+}
+
+static const struct material_typical til_typical[] = {
+    {"rho0", UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI, HV_RHO_CONDENSED_WHAT},
+    {"A", UNIT_PRESSURE, 1e6, 1e13, "bulk moduli of condensed materials (Tillotson A)"},
+    {"E0", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "Tillotson E0 of real materials"},
+    {"E_iv", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "vaporisation energies of real materials"},
+    {"E_cv", UNIT_SPECIFIC_ENERGY, 1e4, 1e10, "vaporisation energies of real materials"},
+    {NULL, 0, 0.0, 0.0, NULL},
+};
+
+const struct eos_model eos_tillotson_model = {
+    .name = "tillotson",
+    .read = til_read_keys,
+    .print = til_print,
+    .evaluate = til_evaluate,
+    .energy_from_pressure = til_energy,
+    .typical = til_typical,
+};

@@ -15,7 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "material/material.h"
+#include "material/material_read.h"
 
 static int file_exists(const char *path) { return access(path, R_OK) == 0; }
 
@@ -137,8 +137,7 @@ int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
 
 /* ---------------------------------------------------------------- printing */
 
-/* One parameter: name, SI value and unit, and a familiar unit alongside. */
-static void pq(FILE *f, const char *name, double v, const char *unit)
+void material_print_quantity(FILE *f, const char *name, double v, const char *unit)
 {
   char extra[64] = "";
   if (!strcmp(unit, "Pa") && fabs(v) >= 1e5 && fabs(v) < 1e20)
@@ -153,88 +152,27 @@ static void pq(FILE *f, const char *name, double v, const char *unit)
   fprintf(f, "    %-15s %-14.9g %-7s %s\n", name, v, unit, extra);
 }
 
-static void print_eos(FILE *f, const struct material *m)
-{
-  fprintf(f, "  eos: %s\n", eos_kind_names[m->eos]);
-  switch (m->eos) {
-  case EOS_IDEAL_GAS:
-    pq(f, "gamma", m->eosp.gas.gamma, "");
-    pq(f, "rho0", m->rho0, "kg/m3");
-    break;
-  case EOS_MIE_GRUNEISEN: {
-    const struct eos_mie_gruneisen *g = &m->eosp.mg;
-    pq(f, "rho0", g->rho0, "kg/m3");
-    pq(f, "c0", g->c0, "m/s");
-    pq(f, "n", g->n, "");
-    pq(f, "gamma", g->Gamma, "");
-    pq(f, "cs_floor", g->cs_floor, "m/s");
-    pq(f, "K0 (rho0 c0^2)", m->K0, "Pa");
-    break;
-  }
-  case EOS_TILLOTSON: {
-    const struct eos_tillotson *t = &m->eosp.til;
-    pq(f, "rho0", t->rho0, "kg/m3");
-    pq(f, "a", t->a, "");
-    pq(f, "b", t->b, "");
-    pq(f, "A", t->A, "Pa");
-    pq(f, "B", t->B, "Pa");
-    pq(f, "E0", t->E0, "J/kg");
-    pq(f, "alpha", t->alpha, "");
-    pq(f, "beta", t->beta, "");
-    pq(f, "E_iv", t->E_iv, "J/kg");
-    pq(f, "E_cv", t->E_cv, "J/kg");
-    pq(f, "rho_iv", t->rho_iv, "kg/m3");
-    pq(f, "cs_floor", t->cs_floor, "m/s");
-    break;
-  }
-  case EOS_TABLE: {
-    const struct eos_table *t = &m->eosp.tab;
-    fprintf(f, "    %-15s %s\n", "file", t->path);
-    fprintf(f, "    %-15s %d x %d%s\n", "grid (rho x e)", t->nrho, t->ne,
-            t->cs ? ", with sound speeds" : ", c from dp");
-    pq(f, "rho min", t->rho[0], "kg/m3");
-    pq(f, "rho max", t->rho[t->nrho - 1], "kg/m3");
-    pq(f, "e min", t->e[0], "J/kg");
-    pq(f, "e max", t->e[t->ne - 1], "J/kg");
-    pq(f, "rho0", m->rho0, "kg/m3");
-    pq(f, "cs_floor", t->cs_floor, "m/s");
-    break;
-  }
-  case EOS_KIND_COUNT:
-    break;
-  }
-}
+/* The short name the listing below uses. */
+#define pq material_print_quantity
 
+/* The EOS's and the yield model's parameters are listed by their rows (material.h). */
 void material_print(FILE *f, const struct material *m)
 {
-  static const char *const yields[] = {"constant", "linear", "johnson-cook"};
   static const char *const fracs[] = {"none", "tresca", "cumulative"};
   fprintf(f, "%s\n", m->name);
   if (m->library[0] && strcmp(m->library, m->name)) fprintf(f, "  library: %s\n", m->library);
   if (m->source[0]) fprintf(f, "  source: %s\n", m->source);
-  print_eos(f, m);
+  fprintf(f, "  eos: %s\n", eos_models[m->eos]->name);
+  eos_models[m->eos]->print(f, m);
   const struct strength_params *s = &m->str;
   if (!s->enabled && s->G == 0.0 && s->Y0 == 0.0 && s->jc_A == 0.0) {
     fprintf(f, "  strength: none (fluid)\n");
   } else {
-    fprintf(f, "  strength: von Mises, model %s%s\n", yields[s->yield],
+    fprintf(f, "  strength: von Mises, model %s%s\n", yield_models[s->yield]->name,
             s->enabled ? "" : " (G = 0 or Y = 0: treated as a fluid)");
     pq(f, "shear_modulus", s->G, "Pa");
     if (s->nu != 0.0) pq(f, "poisson", s->nu, "");
-    if (s->yield == YIELD_JOHNSON_COOK) {
-      pq(f, "A", s->jc_A, "Pa");
-      pq(f, "B", s->jc_B, "Pa");
-      pq(f, "N", s->jc_N, "");
-      pq(f, "C", s->jc_C, "");
-      pq(f, "M", s->jc_M, "");
-      pq(f, "rate0", s->jc_rate0, "1/s");
-      pq(f, "T_ref", s->T_ref, "K");
-      pq(f, "T_melt", s->T_melt, "K");
-      pq(f, "cv", s->cv, "J/kg/K");
-    } else {
-      pq(f, "yield", s->Y0, "Pa");
-      if (s->yield == YIELD_LINEAR) pq(f, "hardening", s->H, "Pa");
-    }
+    yield_models[s->yield]->print(f, s);
   }
   const struct fracture_params *fr = &m->frac;
   fprintf(f, "  fracture: %s\n", fracs[fr->kind]);
@@ -295,7 +233,7 @@ int material_library_main(int argc, char **argv)
     if (argc == 1)
       material_print(stdout, &m);
     else
-      printf("%-20s %-14s %-13.6g %s\n", m.name, eos_kind_names[m.eos], m.rho0, m.source);
+      printf("%-20s %-14s %-13.6g %s\n", m.name, eos_models[m.eos]->name, m.rho0, m.source);
     material_free(&m);
   }
   if (st == HV_EXIT_OK && argc == 0 && cfg_check_unused(lib, &err)) {

@@ -1,16 +1,27 @@
-/* material.h — a material: equation of state, strength and fracture parameters.
+/* material.h — a material: equation of state, strength and fracture parameters, and the
+ * table of models that gives each EOS and yield model its operations.
  *
  * Materials are named in case files or taken from the library data/materials.yaml,
  * and chosen at run time; every physics function takes a `const struct material *`.
  * The EOS is named ("ideal-gas", "mie-gruneisen", "tillotson", "table"), never a
  * number. A material with no strength (G = 0 or Y = 0) is a fluid.
+ *
+ * Each model lives in one file (eos/<name>.c, strength/<name>.c) that reads its keys,
+ * lists its parameters and holds its physics; material.c maps a name to the model's
+ * row of operations (struct eos_model, struct yield_model). The parameter structs are
+ * declared here only because struct material holds them by value in a union: no
+ * allocation and no indirection for the step's loops. This header does not include
+ * the config layer; reading a material from a case file is material/material_read.h.
  */
 #ifndef HV_MATERIAL_H
 #define HV_MATERIAL_H
 
 #include <stdio.h>
 
-#include "config/config.h"
+struct cfg;
+struct hv_error;
+struct eos_state;
+struct material;
 
 enum eos_kind { EOS_IDEAL_GAS = 0, EOS_MIE_GRUNEISEN, EOS_TILLOTSON, EOS_TABLE, EOS_KIND_COUNT };
 
@@ -130,43 +141,56 @@ struct material {
 #define HV_RHO_CONDENSED_HI 1e5
 #define HV_RHO_CONDENSED_WHAT "densities of condensed materials"
 
-/* Reads the material defined at `path` (a mapping, e.g. "materials.steel") from the
- * case, after grafting the library entry it names (`library: NAME`) under it: keys the
- * case gives override the library's (cfg_graft). Keys: see docs/models.md, "Material
- * library". Errors name the file and line (the library's for library values), the key
- * path (which holds the material name) and the rule broken. */
-int material_read(struct cfg *c, const char *path, const char *name, struct material *m,
-                  struct hv_error *err);
 /* Releases what material_read allocated (the arrays of a table EOS). */
 void material_free(struct material *m);
-/* Names of the EOS kinds, in enum order (NULL-terminated). */
-extern const char *const eos_kind_names[];
 
-/* ---- the material library, data/materials.yaml (material/library.c) ---- */
+/* ---- the table of models (material.c) ---- */
 
-/* The library file: $HVSPH_DATA/materials.yaml if HVSPH_DATA is set; else
- * HVSPH_DATA_DIR/materials.yaml if that compile definition exists and the file is there;
- * else <folder of the running program>/../data/materials.yaml (the build folder inside
- * the source tree), then <program folder>/../share/hvsph/materials.yaml (installed). */
-int material_library_path(char *buf, size_t len, struct hv_error *err);
-/* Loads the library (path NULL: material_library_path()). *lib is freed with cfg_free. */
-int material_library_load(const char *path, struct cfg **lib, struct hv_error *err);
-/* Reads library entry `name` as the case's material: grafts it into the case as
- * materials.NAME (so used_parameters.yaml records it) and reads it from there.
- * Unknown name: error listing the library's names. */
-int material_read_from_library(struct cfg *c, const char *name, struct material *m,
-                               struct hv_error *err);
-/* The material a key names (e.g. key_path "bodies[0].material", value `name`): its index
- * in mats[0 .. *nmat) if already read; else the case's materials.NAME or, failing that,
- * the library entry NAME, read into mats[*nmat] (and *nmat incremented). Returns the
- * index, or -1: "case.yaml:12: bodies[0].material: unknown material 'x' (the case
- * defines: a, b; the library data/materials.yaml has: ...)". */
-int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
-                          struct material *mats, int *nmat, int max, struct hv_error *err);
-/* Prints every parameter of a material with its unit (hvsph materials NAME). */
-void material_print(FILE *f, const struct material *m);
-/* `hvsph materials [NAME]`: lists the library, or one entry in full. Returns the exit
- * status (2 for an unknown name or a bad library). */
-int material_library_main(int argc, char **argv);
+/* A key whose bare number far outside what real materials span is refused as a wrong
+ * unit (a density in g/cm3; material.c, check_units). */
+struct material_typical {
+  const char *key;     /* under the material, e.g. "c0" */
+  int dim;             /* enum unit_dim (core/units.h) */
+  double lo, hi;       /* [SI] the span of real condensed materials */
+  const char *what;    /* "bulk sound speeds of condensed materials" */
+};
+
+/* An EOS model: its case-file name and its operations on a material whose `eos` is
+ * its kind. read: reads the keys under `path` into m->eosp (and sets m->rho0, and m->K0
+ * where the EOS has a bulk modulus at rest), through material_read.h's helpers; 0 or -1
+ * with err set. print: every parameter with its unit (`hvsph materials NAME`).
+ * evaluate, energy_from_pressure: the physics, pure (eos.h). typical: its keys' spans,
+ * ended by {NULL}; NULL marks the EOS of a gas, whose keys are not checked. Optional
+ * (NULL): release, what read allocated; describe_name and describe_outside, text
+ * appended to the material's name in eos_describe's messages (" 'file'") and to its
+ * "outside the table" message (" (rho 1 to 2 kg/m3, ...)"). */
+struct eos_model {
+  const char *name;
+  int (*read)(struct cfg *c, const char *path, struct material *m, struct hv_error *err);
+  void (*print)(FILE *f, const struct material *m);
+  int (*evaluate)(const struct material *m, double rho, double e, struct eos_state *out);
+  int (*energy_from_pressure)(const struct material *m, double rho, double p, double *e);
+  const struct material_typical *typical;
+  void (*release)(struct material *m);
+  void (*describe_name)(const struct material *m, char *buf, size_t len);
+  void (*describe_outside)(const struct material *m, char *buf, size_t len);
+};
+
+/* A yield model of the von Mises strength (strength.h): the yield stress Y(eps_p, rate,
+ * e). read: its keys under `sp` (the material's strength mapping) into m->str, setting
+ * Y0 to the initial yield stress; the shear modulus is read before it (material.c).
+ * yield_max: a yield stress of the parameters that is 0 only when they give none: the
+ * material is a solid when G > 0 and yield_max > 0, else a fluid. */
+struct yield_model {
+  const char *name;
+  int (*read)(struct cfg *c, const char *sp, struct material *m, struct hv_error *err);
+  void (*print)(FILE *f, const struct strength_params *s);
+  double (*yield)(const struct strength_params *s, double eps_p, double rate, double e);
+  double (*yield_max)(const struct strength_params *s);
+};
+
+/* Indexed by enum eos_kind and enum yield_kind: eos_models[m->eos]. */
+extern const struct eos_model *const eos_models[EOS_KIND_COUNT];
+extern const struct yield_model *const yield_models[YIELD_KIND_COUNT];
 
 #endif

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "material/material_read.h"
 #include "run/sim.h"
 
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)

@@ -30,7 +30,7 @@
 #include "integrate/step.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
-#include "material/material.h"
+#include "material/material_read.h"
 #include "run/check.h"
 #include "run/measure_run.h"
 #include "run/restart.h"

@@ -30,7 +30,7 @@
 #include "run/restart.h"
 #include "io/afile.h"
 #include "io/snapshot.h"
-#include "material/material.h"
+#include "material/material_read.h"
 #include "render/render.h"
 #include "run/run.h"
 #include "run/runfolder.h"

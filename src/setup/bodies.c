@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "eos/eos.h"
+#include "material/material_read.h"
 #include "neighbours/grid.h"
 #include "setup/setup.h"
 

@@ -1,4 +1,7 @@
-/* strength.c — see strength.h for the equations and references. */
+/* strength.c — the elastic–plastic stress update shared by every yield model: the
+ * Jaumann rate, the radial return and the dispatch to the yield model's row
+ * (material.h, yield_models[]); the yield models are von_mises.c (constant, linear)
+ * and johnson_cook.c. See strength.h for the equations and references. */
 #include "strength/strength.h"
 
 #include <math.h>
@@ -47,23 +50,8 @@ double strength_equivalent_rate(const double L[9])
 
 double strength_yield(const struct strength_params *sp, double eps_p, double rate, double e)
 {
-  switch (sp->yield) {
-  case YIELD_CONSTANT: return sp->Y0;
-  case YIELD_LINEAR: return sp->Y0 + sp->H * eps_p;
-  case YIELD_JOHNSON_COOK: {
-    double Y = sp->jc_A + sp->jc_B * (eps_p > 0 ? pow(eps_p, sp->jc_N) : 0.0);
-    if (sp->jc_C > 0 && sp->jc_rate0 > 0 && rate > sp->jc_rate0) Y *= 1.0 + sp->jc_C * log(rate / sp->jc_rate0);
-    if (sp->cv > 0 && sp->T_melt > sp->T_ref) {
-      double T = sp->T_ref + (e > 0 ? e : 0.0) / sp->cv;
-      double Ts = (T - sp->T_ref) / (sp->T_melt - sp->T_ref);
-      if (Ts >= 1.0) return 0.0;
-      if (Ts > 0.0) Y *= 1.0 - pow(Ts, sp->jc_M);
-    }
-    return Y;
-  }
-  case YIELD_KIND_COUNT: break;
-  }
-  return sp->Y0;
+  if ((unsigned)sp->yield >= YIELD_KIND_COUNT) return sp->Y0;
+  return yield_models[sp->yield]->yield(sp, eps_p, rate, e);
 }
 
 double strength_return(double G, double Y, double S[6])

@@ -5,9 +5,10 @@
  *   ε̇ = ½(L + Lᵀ), Ω = ½(L − Lᵀ), L_ab = ∂v_a/∂x_b.
  * von Mises yield with radial return (Wilkins 1964): if √(3J₂) > Y then
  *   S ← S · Y/√(3J₂), and the equivalent plastic strain grows by (√(3J₂) − Y)/(3G).
- * Yield: constant Y₀; linear hardening Y = Y₀ + H ε_p; Johnson–Cook (1983)
- *   Y = (A + B ε_pᴺ)(1 + C ln(ε̇_eq / ε̇₀))(1 − T*ᴹ), T* = (T − T_ref)/(T_melt − T_ref),
- *   T = T_ref + e/c_v.
+ * Yield, one model per file with its keys and its listing (a row of the table of
+ * models, material.h): constant Y₀ and linear hardening Y = Y₀ + H ε_p (von_mises.c);
+ * Johnson–Cook (1983) Y = (A + B ε_pᴺ)(1 + C ln(ε̇_eq / ε̇₀))(1 − T*ᴹ),
+ *   T* = (T − T_ref)/(T_melt − T_ref), T = T_ref + e/c_v (johnson_cook.c).
  */
 #ifndef HV_STRENGTH_H
 #define HV_STRENGTH_H

@@ -3,7 +3,7 @@
  * input errors with file and line, bodies naming library materials, `hvsph materials`. */
 #include "config/config.h"
 #include "eos/eos.h"
-#include "material/material.h"
+#include "material/material_read.h"
 #include "strength/strength.h"
 #include "testlib.h"
 
