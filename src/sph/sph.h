@@ -59,7 +59,7 @@ struct sph_params {
   int skip_resting;    /* solids: a cell whose neighbour cells hold only particles at
                           rest and free of stress (v = 0, p = 0, S = 0, R = 0, exactly)
                           is not computed: its rates are exactly zero, so the results
-                          are the same bits (sph_solid.c); not with the switch, whose
+                          are the same bits (rest.c); not with the switch, whose
                           αᵢ decays at rest */
   double rest_tol;     /* solids: a particle of a condensed material (ρ₀, K₀ > 0)
                           whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
@@ -90,7 +90,7 @@ struct sph_cache {
      the heap grow by their size at every step (hvsph bench --solid with the
      reconstruction: peak RSS 2 705 bytes per particle after 10 steps, 988 with a fixed
      threshold) */
-  double *partner;       /* SPH_PARTNER_LEN doubles per slot (pair.h, PR_*) */
+  double *partner;       /* SPH_PARTNER_LEN doubles per slot (partner.h, PR_*) */
   int32_t *partner_tag;  /* per slot: piece × 2, + 1 when its artificial stress R ≠ 0 */
   size_t partner_cap;    /* slots allocated */
   /* sph.skip_resting: per cell, whether it holds only particles at rest (quiet) and

@@ -19,6 +19,12 @@
  * push but never pull each other. (Wall ghosts belong to their source's body: a wall
  * is a mirror, exact for compression; it can hold a body that rebounds from it.)
  * Tensors are 6-component, VTK order (particles.h).
+ *
+ * Layout: each pass is a loop over cells (resting cells left to rest.c) calling a
+ * per-particle function, whose loop over pairs takes the pair's geometry and viscosity
+ * from pair.h (shared with the gas loops, sph.c) and its physics with the contact rules
+ * from density_contact (first pass) and pair_force (second pass); the second pass reads
+ * its partners from the records of partner.c.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -28,17 +34,14 @@
 #include "sph/avswitch.h"
 #include "sph/nsearch.h"
 #include "sph/pair.h"
+#include "sph/partner.h"
 #include "sph/recon.h"
+#include "sph/rest.h"
 #include "sph/sph.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
 
 /* The piece of body b (bodies[i].part_of; every body its own without a table). */
-static inline int32_t piece_of(const int32_t *piece, int32_t b)
-{
-  return piece ? piece[b] : b;
-}
-
 /* Whether particle i carries a deviatoric stress: a material with strength, intact or
  * split with friction (fracture.friction). */
 static int has_strength(const struct material *m, double damage)
@@ -95,125 +98,6 @@ static void update_stress(struct particles *p, size_t i, const struct material *
     p->S[k][i] = Sm[k];
     p->S1[k][i] = S1[k];
   }
-}
-
-/* sph.skip_resting. A particle whose neighbours (itself included) all have v = 0,
- * p = 0, S = 0 and R = 0, exactly, has exactly zero rates: no velocity difference for
- * the density rate, the velocity gradient and the viscosity, no stress for the forces;
- * its stress stays (S = 0, L = 0: nothing to update or return). A cell is skipped when
- * every cell of its candidate list (which covers every particle's search) holds only
- * such particles, "quiet". The first pass tests v and S at the step's start (the pass
- * changes S only from L); the second pass tests the mid-step v, p, S and R, and skips
- * only cells the first pass skipped. What a skipped particle's pass would have written
- * is written: 0 for ρ̇, the heating and a, S for S₁, and its signal speed, which
- * depends only on whether it has a neighbour (nsearch_any). The switch is excluded: its
- * αᵢ decays at rest. rest[c]: bit 0 the first pass skipped c, bit 1 the second. */
-static void rest_alloc(struct sph_cache *cache, size_t ncells)
-{
-  if (ncells > cache->rcap) {
-    cache->rcap = ncells + ncells / 4 + 64;
-    free(cache->quiet);
-    free(cache->rest);
-    cache->quiet = hv_malloc(cache->rcap, "rest flags");
-    cache->rest = hv_malloc(cache->rcap, "rest flags");
-  }
-}
-
-/* Sets bit `bit` of rest[c] where every neighbour cell of c is quiet (and, for bit 1,
- * bit 0 is set). */
-static void rest_mark(const struct nbr_grid *g, struct sph_cache *cache, int bit)
-{
-  const uint8_t *quiet = cache->quiet;
-  uint8_t *rest = cache->rest;
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    int r = bit == 0 || (rest[c] & 1);
-    for (uint32_t k = g->nbr_start[c]; r && k < g->nbr_start[c + 1]; k++)
-      r = quiet[g->nbr_list[k]];
-    rest[c] = (uint8_t)(bit == 0 ? r : (rest[c] & 1) | (r << 1));
-  }
-}
-
-/* A partner's record in the force pass: each particle's data as a partner (ghosts
- * included) in two cache lines, read together for every pair instead of from 17 arrays:
- * x, y, z, h, v, m, then p/ρ², S/ρ² (computed once instead of once per pair: the same
- * operations, so the same bits) and ρ; a third line with the artificial stress R, read
- * only when a pair has one (the tag's bit 0). Kept in the cache between steps. */
-enum {
-  PR_X = 0, PR_H = 3, PR_V = 4, PR_M = 7, PR_P = 8, PR_S = 9, PR_RHO = 15,
-  PR_AS = 16,   /* the artificial stress R, 6 doubles and 2 of padding */
-  PR_LEN = SPH_PARTNER_LEN
-};
-
-/* The first pass's quiet cells: v = 0 and S = 0 at the step's start. */
-static void rest_mark_first(const struct particles *p, const struct nbr_grid *g,
-                            struct sph_cache *cache)
-{
-  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
-  rest_alloc(cache, g->ncells);
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    int q = 1;
-    for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
-      const uint32_t j = g->order[ii];
-      q = vx[j] == 0.0 && vy[j] == 0.0 && vz[j] == 0.0;
-      for (int k = 0; q && k < 6; k++) q = p->S[k][j] == 0.0;
-    }
-    cache->quiet[c] = (uint8_t)q;
-  }
-  rest_mark(g, cache, 0);
-}
-
-/* What the first pass would write for the reals of a resting cell c. */
-static void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c,
-                             double *gradv)
-{
-  for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-    const uint32_t i = g->order[ii];
-    if (i >= p->n) continue;
-    p->drho[i] = 0.0;
-    p->de[i] = 0.0;
-    for (int k = 0; k < 6; k++) p->S1[k][i] = p->S[k][i];
-    if (gradv)
-      for (int t = 0; t < 9; t++) gradv[9 * (size_t)i + t] = 0.0;
-  }
-}
-
-/* The second pass's quiet cells, from the mid-step state in the partner records
- * (v, p/ρ², S/ρ², and R through the tag) and p itself. */
-static void rest_mark_second(const struct particles *p, const struct nbr_grid *g,
-                             struct sph_cache *cache, const double *rec, const int32_t *tag)
-{
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    int q = 1;
-    for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
-      const uint32_t j = g->order[ii];
-      const double *w = rec + PR_LEN * (size_t)j;
-      q = w[PR_V] == 0.0 && w[PR_V + 1] == 0.0 && w[PR_V + 2] == 0.0 && w[PR_P] == 0.0 &&
-          p->p[j] == 0.0 && !(tag[j] & 1);
-      for (int t = 0; q && t < 6; t++) q = w[PR_S + t] == 0.0;
-    }
-    cache->quiet[c] = (uint8_t)q;
-  }
-  rest_mark(g, cache, 1);
-}
-
-/* What the second pass would write for the reals of a resting cell c: a = 0, de
- * unchanged, the signal speed. Returns the number of reals. */
-static long rest_write_second(struct particles *p, const struct nbr_grid *g, size_t c,
-                              const struct sph_params *sp)
-{
-  long rested = 0;
-  for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-    const uint32_t i = g->order[ii];
-    if (i >= p->n) continue;
-    p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
-    p->vsig[i] = sph_signal_speed(nsearch_any(g, c, p, i), p->cs[i], sp->alpha, sp->beta, 0.0,
-                                  0.0);
-    rested++;
-  }
-  return rested;
 }
 
 /* The first pass's inputs, set once per call. */
@@ -291,7 +175,7 @@ static inline void density_pair_sums(const struct density_pass *dp, const struct
     const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
     const double ux = vx[j] - I->vx, uy = vy[j] - I->vy, uz = vz[j] - I->vz;
     const double w = m[j] / rho[j] * f, udx = ux * dx + uy * dy + uz * dz;
-    const int32_t bj = piece_of(piece, body[j]);
+    const int32_t bj = sph_piece_of(piece, body[j]);
     double wd;
     if (!density_contact(dp, I, i, j, bj, w, udx, f, &wd)) continue;
     sum -= wd * udx;
@@ -355,7 +239,7 @@ static inline void density_rate_particle(const struct density_pass *dp,
   /* the reconstruction's gradient: intact strength particles only (split ones with
      friction keep the standard viscosity, as without it) */
   const int recon = I.strong && p->damage[i] < 1.0;
-  I.piece = piece_of(sp->piece, p->body[i]);
+  I.piece = sph_piece_of(sp->piece, p->body[i]);
   I.cond = mi->eos != EOS_IDEAL_GAS;
   /* the correction matrix: for the stress with sph.gradient_correction, and for the
      reconstruction always (its limiter needs gradients exact for linear fields) */
@@ -453,69 +337,6 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
       if (any) sym3_from_eigen(Q, d, R);
     }
     for (int k = 0; k < 6; k++) p->R[k][i] = R[k];
-  }
-}
-
-/* The partner records and tags for nt slots: the cache's, grown when short, or (a
- * call without a cache) allocated for this call only. */
-static void partner_reserve(struct sph_cache *cache, size_t nt, double **rec, int32_t **tag)
-{
-  if (cache && cache->partner_cap >= nt + 1) {
-    *rec = cache->partner;
-    *tag = cache->partner_tag;
-    return;
-  }
-  const size_t cap = cache ? nt + nt / 4 + 64 : nt + 1;
-  if (cache) {
-    free(cache->partner);
-    free(cache->partner_tag);
-    cache->partner = NULL;
-    cache->partner_tag = NULL;
-    cache->partner_cap = 0;
-  }
-  *rec = aligned_alloc(64, cap * PR_LEN * sizeof **rec);
-  *tag = malloc(cap * sizeof **tag);
-  if (!*rec || !*tag)
-    HV_FATAL("out of memory: %zu bytes for the pair terms", cap * (PR_LEN * sizeof **rec + 4));
-  if (cache) {
-    cache->partner = *rec;
-    cache->partner_tag = *tag;
-    cache->partner_cap = cap;
-  }
-}
-
-/* Packs every slot's partner record and its tag, piece × 2 + 1 when R ≠ 0. */
-static void partner_pack(const struct particles *p, const struct sph_params *sp,
-                         const struct material *mat, double *restrict rec,
-                         int32_t *restrict tag)
-{
-  const size_t nt = p->n + p->n_ghost;
-#pragma omp parallel for schedule(static)
-  for (size_t j = 0; j < nt; j++) {
-    const double rj2 = 1.0 / (p->rho[j] * p->rho[j]);
-    double *w = rec + PR_LEN * j;
-    w[PR_X] = p->x[0][j];
-    w[PR_X + 1] = p->x[1][j];
-    w[PR_X + 2] = p->x[2][j];
-    w[PR_H] = p->h[j];
-    w[PR_V] = p->v[0][j];
-    w[PR_V + 1] = p->v[1][j];
-    w[PR_V + 2] = p->v[2][j];
-    w[PR_M] = p->m[j];
-    double Sj[6], pj = p->p[j];
-    for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
-    if (p->damage[j] >= 1.0 && fracture_no_tension(&mat[p->mat[j]].frac, p->damage[j]))
-      pj = fracture_effective(p->p[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
-    w[PR_P] = pj * rj2;
-    for (int t = 0; t < 6; t++) w[PR_S + t] = Sj[t] * rj2;
-    w[PR_RHO] = p->rho[j];
-    int rany = 0;
-    for (int t = 0; t < 6; t++) {
-      w[PR_AS + t] = p->R[t][j];
-      rany |= p->R[t][j] != 0.0;
-    }
-    w[PR_AS + 6] = w[PR_AS + 7] = 0.0;
-    tag[j] = 2 * (piece_of(sp->piece, p->body[j])) + rany;
   }
 }
 
@@ -626,7 +447,7 @@ static inline void forces_particle(const struct force_pass *fp, const struct nse
     I.R[k] = p->R[k][i];
     I.R_any |= I.R[k] != 0.0;
   }
-  I.piece = piece_of(fp->piece, p->body[i]);
+  I.piece = sph_piece_of(fp->piece, p->body[i]);
   I.gas = fp->mat[p->mat[i]].eos == EOS_IDEAL_GAS;
   double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
   double amax = fp->pv.av ? fp->pv.av[i] : fp->pv.alpha;   /* the largest pair α (time step) */
@@ -675,7 +496,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
       p, mat, sp->piece, rec, tag, sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL,
       pair_visc_params(sp, av), sp->kernel, sp->as_eps > 0, sp->reconstruct_contact, sp->as_n,
       1.0 / kernel_w_h3(sp->kernel, 1.0 / sp->eta)};
-  /* sph.skip_resting (see rest_alloc): the mid-step state of the cells the first pass
+  /* sph.skip_resting (rest.c): the mid-step state of the cells the first pass
      skipped */
   const int skip = sp->skip_resting && cache && cache->valid && !av;
   if (skip) rest_mark_second(p, g, cache, rec, tag);
