@@ -339,7 +339,7 @@ static long end_stress(struct sim *s, double dt)
  * the default 1e-14 this changes nothing above that fraction of the material's own
  * scales; a particle that any physical signal has reached is far above it. Before the
  * end-of-step EOS, so that p is the EOS's at (ρ₀, 0). */
-static void snap_rest(struct sim *s, double dt)
+static void clamp_to_rest(struct sim *s, double dt)
 {
   struct particles *p = &s->p;
   const double tol = s->sph.rest_tol;
@@ -483,7 +483,7 @@ int step_advance(struct sim *s, struct hv_error *err)
   /* 6. pressure, stress, fracture, smoothing length, next step */
   s->t += dt;
   s->step++;
-  snap_rest(s, dt);
+  clamp_to_rest(s, dt);
   if (check_state(s, err) || update_eos(s, err)) return -1;
   if (p->solid) {
     /* new splits in tension lose it: re-evaluate only when there are some */

@@ -74,21 +74,6 @@ static inline void avsw_add(double L[9], double A[9], double w, double dx, doubl
   A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
 }
 
-/* The viscosity Πᵢⱼ of an approaching pair (sph.h) with approach μ, mean sound speed
- * from cᵢ, cⱼ and mean density from ρᵢ, ρⱼ: with the switch (av: αᵢ of every slot) the
- * pair's ½(αᵢ + αⱼ), β scaled by bfac = β/α, and *amax raised to it; without, α and β. */
-static inline double sph_pair_visc(const double *av, size_t i, size_t j, double alpha,
-                                   double beta, double bfac, double ci, double cj, double mu,
-                                   double rhoi, double rhoj, double *amax)
-{
-  if (av) {
-    const double aij = 0.5 * (av[i] + av[j]);
-    if (aij > *amax) *amax = aij;
-    return aij * (-0.5 * (ci + cj) * mu + bfac * mu * mu) / (0.5 * (rhoi + rhoj));
-  }
-  return (-alpha * 0.5 * (ci + cj) * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
-}
-
 /* The limiter ξ of a velocity gradient G (row-major, G[3a+b] = ∂v_a/∂x_b). */
 static inline double avsw_xi(const double G[9])
 {

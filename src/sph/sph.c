@@ -1,7 +1,8 @@
 /* sph.c — continuity and momentum/energy sums; see sph.h for the equations.
  *
  * These are the gas loops (no strength); sph_solid.c has the loops with stress.
- * Neighbours come from the candidate machinery in cand.c.
+ * Neighbours come from the neighbour search (nsearch.c); a pair's geometry and its
+ * viscosity from pair.h, shared with the solid loops.
  */
 #include "sph/sph.h"
 
@@ -11,7 +12,8 @@
 
 #include "core/error.h"
 #include "sph/avswitch.h"
-#include "sph/cand.h"
+#include "sph/nsearch.h"
+#include "sph/pair.h"
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g,
                       const struct sph_params *sp, struct sph_cache *cache,
@@ -39,25 +41,24 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
 
 #pragma omp parallel
   {
-    struct cand cd = {0};
+    struct nsearch cd = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
+        const size_t nsel = nsearch_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         double sum = 0.0, rsum = 0.0, Lsw[9] = {0}, Asw[9] = {0};
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
-          const double r = sqrt(dx * dx + dy * dy + dz * dz), hij = 0.5 * (hi + cd.h[q]);
-          const double f = kernel_f(kk, r, hij);
+          const struct pair pq = pair_geometry(kk, xi, yi, zi, hi, cd.x[q], cd.y[q], cd.z[q], cd.h[q]);
+          const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           sum += (massform ? m[j] : vol[j]) * vdx * f;
-          if (summation) rsum += m[j] * kernel_w(kk, r, hij);
+          if (summation) rsum += m[j] * kernel_w(kk, pq.r, pq.hij);
           if (sw)   /* with Vⱼ = mⱼ/ρⱼ (vol: before a summation writes ρ) */
             avsw_add(Lsw, Asw, (massform ? m[j] / rho[j] : vol[j]) * f, dx, dy, dz,
                      vx[j] - vxi, vy[j] - vyi, vz[j] - vzi);
@@ -75,7 +76,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
         p->de[i] = 0.0;
       }
     }
-    cand_free_all(&cd);
+    nsearch_free(&cd);
   }
   if (cache) cache->valid = 1;
 }
@@ -96,37 +97,32 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
   for (size_t i = 0; i < nall; i++) pr2[i] = p->p[i] / (rho[i] * rho[i]);
   double *ax = p->a[0], *ay = p->a[1], *az = p->a[2], *de = p->de, *vsig = p->vsig;
   const enum kernel_kind kk = sp->kernel;
-  const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps;
+  const double alpha = sp->alpha, beta = sp->beta;
   const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
-  const double bfac = av ? beta / alpha : 0.0;
+  const struct pair_visc pv = pair_visc_params(sp, av);
 
 #pragma omp parallel
   {
-    struct cand cd = {0};
+    struct nsearch cd = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= n) continue;
-        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
+        const size_t nsel = nsearch_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double Pi = pr2[i], ci = cs[i], rhoi = rho[i];
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
         double amax = av ? av[i] : alpha;   /* the largest pair α (time step) */
         for (size_t k = 0; k < nsel; k++) {
-          const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + h[j]);
-          const double f = kernel_f(kk, sqrt(r2), hij);
+          const uint32_t j = cd.j[cd.sel[k]];
+          const struct pair pq = pair_geometry(kk, xi, yi, zi, hi, x[j], y[j], z[j], h[j]);
+          const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
-          double visc = 0.0;
-          if (vdx < 0.0) {
-            const double mu = hij * vdx / (r2 + eps * hij * hij);
-            visc = sph_pair_visc(av, i, j, alpha, beta, bfac, ci, cs[j], mu, rhoi, rho[j], &amax);
-            if (-mu > mumax) mumax = -mu;
-          }
+          const double visc = pair_viscosity(&pv, i, j, &pq, vdx, NULL, NULL, ci, cs[j], rhoi,
+                                             rho[j], &mumax, &amax);
           const double fac = m[j] * (Pi + pr2[j] + visc) * f;
           sx -= fac * dx;
           sy -= fac * dy;
@@ -144,7 +140,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
                                    sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
       }
     }
-    cand_free_all(&cd);
+    nsearch_free(&cd);
   }
 }
 
@@ -153,10 +149,10 @@ int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, si
   for (size_t c = 0; c < g->ncells; c++)
     for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
       if (g->order[ii] != i) continue;
-      struct cand cd = {0};
-      cand_gather(&cd, g, c, p);
-      int count = (int)cand_select(&cd, (uint32_t)i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
-      cand_free_all(&cd);
+      struct nsearch cd = {0};
+      nsearch_gather(&cd, g, c, p);
+      int count = (int)nsearch_select(&cd, (uint32_t)i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
+      nsearch_free(&cd);
       return count;
     }
   return -1;

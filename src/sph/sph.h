@@ -59,18 +59,18 @@ struct sph_params {
   int skip_resting;    /* solids: a cell whose neighbour cells hold only particles at
                           rest and free of stress (v = 0, p = 0, S = 0, R = 0, exactly)
                           is not computed: its rates are exactly zero, so the results
-                          are the same bits (sph_solid.c); not with the switch, whose
+                          are the same bits (rest.c); not with the switch, whose
                           αᵢ decays at rest */
   double rest_tol;     /* solids: a particle of a condensed material (ρ₀, K₀ > 0)
                           whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
                           their scales (c = √(K₀/ρ₀), c², ρ₀, K₀) at the end of a step
-                          is set exactly at rest (step.c, snap_rest); 0: never */
+                          is set exactly at rest (step.c, clamp_to_rest); 0: never */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
  * bit per candidate (a particle of a neighbour cell) for every particle — about 50
  * bytes per particle instead of 4 bytes per neighbour. */
-enum { SPH_TW = 24 };   /* doubles in a partner record of the solid force pass */
+enum { SPH_PARTNER_LEN = 24 };   /* doubles in a partner record of the solid force pass */
 
 struct sph_cache {
   uint64_t *mask;        /* rows of bits */
@@ -90,9 +90,9 @@ struct sph_cache {
      the heap grow by their size at every step (hvsph bench --solid with the
      reconstruction: peak RSS 2 705 bytes per particle after 10 steps, 988 with a fixed
      threshold) */
-  double *tw;            /* SPH_TW doubles per slot */
-  int32_t *bf;
-  size_t tcap;           /* slots allocated */
+  double *partner;       /* SPH_PARTNER_LEN doubles per slot (partner.h, PR_*) */
+  int32_t *partner_tag;  /* per slot: piece × 2, + 1 when its artificial stress R ≠ 0 */
+  size_t partner_cap;    /* slots allocated */
   /* sph.skip_resting: per cell, whether it holds only particles at rest (quiet) and
      whether the first pass skipped it (rest: every neighbour cell quiet) */
   uint8_t *quiet, *rest;

@@ -19,6 +19,12 @@
  * push but never pull each other. (Wall ghosts belong to their source's body: a wall
  * is a mirror, exact for compression; it can hold a body that rebounds from it.)
  * Tensors are 6-component, VTK order (particles.h).
+ *
+ * Layout: each pass is a loop over cells (resting cells left to rest.c) calling a
+ * per-particle function, whose loop over pairs takes the pair's geometry and viscosity
+ * from pair.h (shared with the gas loops, sph.c) and its physics with the contact rules
+ * from density_contact (first pass) and pair_force (second pass); the second pass reads
+ * its partners from the records of partner.c.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -26,18 +32,16 @@
 #include "eos/eos.h"
 #include "fracture/fracture.h"
 #include "sph/avswitch.h"
-#include "sph/cand.h"
+#include "sph/nsearch.h"
+#include "sph/pair.h"
+#include "sph/partner.h"
 #include "sph/recon.h"
+#include "sph/rest.h"
 #include "sph/sph.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
 
 /* The piece of body b (bodies[i].part_of; every body its own without a table). */
-static inline int32_t piece_of(const int32_t *piece, int32_t b)
-{
-  return piece ? piece[b] : b;
-}
-
 /* Whether particle i carries a deviatoric stress: a material with strength, intact or
  * split with friction (fracture.friction). */
 static int has_strength(const struct material *m, double damage)
@@ -96,41 +100,184 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   }
 }
 
-/* sph.skip_resting. A particle whose neighbours (itself included) all have v = 0,
- * p = 0, S = 0 and R = 0, exactly, has exactly zero rates: no velocity difference for
- * the density rate, the velocity gradient and the viscosity, no stress for the forces;
- * its stress stays (S = 0, L = 0: nothing to update or return). A cell is skipped when
- * every cell of its candidate list (which covers every particle's search) holds only
- * such particles, "quiet". The first pass tests v and S at the step's start (the pass
- * changes S only from L); the second pass tests the mid-step v, p, S and R, and skips
- * only cells the first pass skipped. What a skipped particle's pass would have written
- * is written: 0 for ρ̇, the heating and a, S for S₁, and its signal speed, which
- * depends only on whether it has a neighbour (cand_any). The switch is excluded: its
- * αᵢ decays at rest. rest[c]: bit 0 the first pass skipped c, bit 1 the second. */
-static void rest_alloc(struct sph_cache *cache, size_t ncells)
+/* The first pass's inputs, set once per call. */
+struct density_pass {
+  struct particles *p;
+  const struct sph_params *sp;
+  const struct material *mat;
+  double *gradv;   /* sph.viscosity.reconstruct: L of every real (else NULL) */
+  double dt;
+};
+
+/* Particle i's side of its first-pass sums, the same for all its pairs. */
+struct density_i {
+  double x, y, z, h, vx, vy, vz;
+  const struct material *m;
+  int32_t piece;
+  int cond;     /* a condensed material (any EOS but the ideal gas) */
+  int strong;   /* carries a deviatoric stress: sums L (and A with corr) */
+  int corr;     /* sums the correction matrix A */
+  int sw;       /* the viscosity switch's gradient, every neighbour */
+  int dd;       /* density diffusion, with neighbours at ρ ≥ dd_rho */
+  double dd_rho;
+};
+
+/* The first pass's sums of particle i over its neighbours. */
+struct density_sums {
+  double sum, ddiff, L[9], A[9], Lsw[9], Asw[9];
+};
+
+/* The contact rules of the continuity sum: whether neighbour j (piece bj) enters i's
+ * sums at all, and its weight there, *wd, from w = Vⱼ f. */
+static inline int density_contact(const struct density_pass *dp, const struct density_i *I,
+                                  uint32_t i, uint32_t j, int32_t bj, double w, double udx,
+                                  double f, double *wd)
 {
-  if (ncells > cache->rcap) {
-    cache->rcap = ncells + ncells / 4 + 64;
-    free(cache->quiet);
-    free(cache->rest);
-    cache->quiet = hv_malloc(cache->rcap, "rest flags");
-    cache->rest = hv_malloc(cache->rcap, "rest flags");
+  const struct particles *p = dp->p;
+  const double *m = p->m, *rho = p->rho;
+  /* a pair of different bodies separating may unload a compressed particle back to its
+     reference density, but not stretch it beyond: contact carries no tension, in the
+     density as in the forces */
+  if (bj != I->piece && udx <= 0.0 && rho[i] <= I->m->rho0) return 0;
+  /* a condensed particle's density follows condensed neighbours only: a gas particle's
+     volume mⱼ/ρⱼ is hundreds of times its own, and its velocity would set the
+     compression of a fragment flying through the gas; the gas still pushes it through
+     the pressure force (docs/models.md) */
+  if (I->cond && dp->mat[p->mat[j]].eos == EOS_IDEAL_GAS) return 0;
+  /* a neighbour counts with at most twice its reference volume, 2mⱼ/ρ₀ⱼ: sprayed debris
+     of another body far below ρ₀ would otherwise weigh a lone particle's compression by
+     many times its mass's volume, and within a body of condensed material a cluster of
+     expanding debris whose volumes mⱼ/ρⱼ overlap would feed its own expansion
+     (docs/models.md, "Contact between bodies"). Above ρ₀/2 nothing changes */
+  *wd = w;
+  if (bj != I->piece || I->cond) {
+    const double rho0j = dp->mat[p->mat[j]].rho0;
+    if (rho[j] < 0.5 * rho0j) *wd = 2.0 * m[j] / rho0j * f;
+  }
+  return 1;
+}
+
+/* Sums the first pass over the nsel neighbours of real i selected in ns. */
+static inline void density_pair_sums(const struct density_pass *dp, const struct nsearch *ns,
+                                     size_t nsel, uint32_t i, const struct density_i *I,
+                                     struct density_sums *s)
+{
+  const struct particles *p = dp->p;
+  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
+  const double *m = p->m, *rho = p->rho;
+  const int32_t *body = p->body, *piece = dp->sp->piece;
+  const enum kernel_kind kk = dp->sp->kernel;
+  double sum = 0.0, ddiff = 0.0;
+  for (size_t k = 0; k < nsel; k++) {
+    const uint32_t q = ns->sel[k], j = ns->j[q];
+    const struct pair pq = pair_geometry(kk, I->x, I->y, I->z, I->h, ns->x[q], ns->y[q],
+                                         ns->z[q], ns->h[q]);
+    const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
+    const double ux = vx[j] - I->vx, uy = vy[j] - I->vy, uz = vz[j] - I->vz;
+    const double w = m[j] / rho[j] * f, udx = ux * dx + uy * dy + uz * dz;
+    const int32_t bj = sph_piece_of(piece, body[j]);
+    double wd;
+    if (!density_contact(dp, I, i, j, bj, w, udx, f, &wd)) continue;
+    sum -= wd * udx;
+    /* sph.density_diffusion (Molteni & Colagrossi 2009): ψᵢⱼ·∇ᵢWᵢⱼ =
+       2(ρⱼ − ρᵢ)(xⱼ − xᵢ)·(xᵢ − xⱼ) f/r² = −2(ρⱼ − ρᵢ) f (f < 0): the particle's
+       density relaxes towards its neighbours' — a discrete Laplacian of ρ, zero in a
+       uniform or linear density field; never across two pieces or two materials,
+       whose densities differ by right, nor with expanded material */
+    if (I->dd && bj == I->piece && p->mat[j] == p->mat[i] && rho[j] >= I->dd_rho)
+      ddiff -= w * 2.0 * (rho[j] - rho[i]) * 0.5 * (I->h + ns->h[q]);
+    if (I->sw) avsw_add(s->Lsw, s->Asw, w, dx, dy, dz, ux, uy, uz);
+    if (I->strong && bj == I->piece) {
+      double *L = s->L, *A = s->A;
+      L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
+      L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
+      L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
+      if (I->corr) { /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
+        A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
+        A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
+        A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
+      }
+    }
+  }
+  s->sum = sum;
+  s->ddiff = ddiff;
+}
+
+/* The velocity gradient L of real i from its sums, corrected where asked; with the
+ * reconstruction also its stored gradient (0 without strength: no reconstruction for
+ * its pairs). */
+static inline void density_gradient(const struct density_pass *dp, uint32_t i,
+                                    const struct density_i *I, int recon,
+                                    struct density_sums *s)
+{
+  double *L = s->L;
+  if (dp->gradv) {
+    double *Gi = dp->gradv + 9 * (size_t)i;
+    for (int t = 0; t < 9; t++) Gi[t] = recon ? L[t] : 0.0;
+    if (recon) {
+      sph_correct_gradient(Gi, s->A);
+      if (dp->sp->grad_correction)   /* the stress uses the same corrected gradient */
+        for (int t = 0; t < 9; t++) L[t] = Gi[t];
+    } else if (I->strong && dp->sp->grad_correction) {
+      sph_correct_gradient(L, s->A);
+    }
+  } else if (I->corr) {
+    sph_correct_gradient(L, s->A);
   }
 }
 
-/* Sets bit `bit` of rest[c] where every neighbour cell of c is quiet (and, for bit 1,
- * bit 0 is set). */
-static void rest_mark(const struct nbr_grid *g, struct sph_cache *cache, int bit)
+/* The first pass for real i with its nsel neighbours in ns. */
+static inline void density_rate_particle(const struct density_pass *dp,
+                                         const struct nsearch *ns, size_t nsel, uint32_t i)
 {
-  const uint8_t *quiet = cache->quiet;
-  uint8_t *rest = cache->rest;
-#pragma omp parallel for schedule(static)
-  for (size_t c = 0; c < g->ncells; c++) {
-    int r = bit == 0 || (rest[c] & 1);
-    for (uint32_t k = g->nbr_start[c]; r && k < g->nbr_start[c + 1]; k++)
-      r = quiet[g->nbr_list[k]];
-    rest[c] = (uint8_t)(bit == 0 ? r : (rest[c] & 1) | (r << 1));
+  struct particles *p = dp->p;
+  const struct sph_params *sp = dp->sp;
+  const struct material *mi = &dp->mat[p->mat[i]];
+  struct density_i I = {.x = p->x[0][i], .y = p->x[1][i], .z = p->x[2][i], .h = p->h[i],
+                        .vx = p->v[0][i], .vy = p->v[1][i], .vz = p->v[2][i], .m = mi};
+  I.strong = has_strength(mi, p->damage[i]);
+  /* the reconstruction's gradient: intact strength particles only (split ones with
+     friction keep the standard viscosity, as without it) */
+  const int recon = I.strong && p->damage[i] < 1.0;
+  I.piece = sph_piece_of(sp->piece, p->body[i]);
+  I.cond = mi->eos != EOS_IDEAL_GAS;
+  /* the correction matrix: for the stress with sph.gradient_correction, and for the
+     reconstruction always (its limiter needs gradients exact for linear fields) */
+  I.corr = I.strong && (sp->grad_correction || (dp->gradv && recon));
+  I.sw = p->av;
+  /* density diffusion between condensed states only (ρ ≥ ρ₀/2 on both sides), where it
+     was tested (docs/models.md) */
+  I.dd_rho = 0.5 * mi->rho0;
+  I.dd = sp->density_diffusion > 0.0 && I.cond && p->rho[i] >= I.dd_rho;
+  struct density_sums s = {0};
+  density_pair_sums(dp, ns, nsel, i, &I, &s);
+  p->drho[i] = p->rho[i] * s.sum + (I.dd ? sp->density_diffusion * p->cs[i] * s.ddiff : 0.0);
+  if (I.sw)
+    p->alpha[i] = avsw_update(sp, s.Lsw, s.Asw, p->alpha[i], p->divv[i], I.h, p->cs[i],
+                              dp->dt, &p->divv[i]);
+  density_gradient(dp, i, &I, recon, &s);
+  if (I.strong) {
+    update_stress(p, i, mi, s.L, dp->dt);
+  } else {
+    p->de[i] = 0.0;
+    for (int k = 0; k < 6; k++) p->S[k][i] = p->S1[k][i] = 0.0;
   }
+}
+
+/* sph.viscosity.reconstruct: the cache's velocity gradients, sized for every slot and
+ * marked stale until the ghosts' are refreshed; NULL without it. */
+static double *gradv_reserve(const struct particles *p, const struct sph_params *sp,
+                             struct sph_cache *cache)
+{
+  if (!(sp->reconstruct && cache)) return NULL;
+  const size_t nall = p->n + p->n_ghost;
+  if (nall > cache->gcap) {
+    cache->gcap = nall + nall / 4 + 64;
+    free(cache->gradv);
+    cache->gradv = hv_malloc(cache->gcap * 9 * sizeof *cache->gradv, "velocity gradients");
+  }
+  cache->gradv_valid = 0;
+  return cache->gradv;
 }
 
 void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
@@ -138,160 +285,27 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct material *mat, double dt)
 {
   if (cache) cache_layout(cache, g);
-  const size_t n = p->n;
-  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
-  const double *m = p->m, *rho = p->rho;
-  const int32_t *body = p->body, *piece = sp->piece;
-  const enum kernel_kind kk = sp->kernel;
-  double *gradv = NULL;   /* sph.viscosity.reconstruct: L of every real */
-  if (sp->reconstruct && cache) {
-    const size_t nall = p->n + p->n_ghost;
-    if (nall > cache->gcap) {
-      cache->gcap = nall + nall / 4 + 64;
-      free(cache->gradv);
-      cache->gradv = hv_malloc(cache->gcap * 9 * sizeof *cache->gradv, "velocity gradients");
-    }
-    gradv = cache->gradv;
-    cache->gradv_valid = 0;
-  }
+  const struct density_pass dp = {p, sp, mat, gradv_reserve(p, sp, cache), dt};
   const int skip = sp->skip_resting && cache && !p->av;
-  const double ddelta = sp->density_diffusion;
-  if (skip) {
-    rest_alloc(cache, g->ncells);
-#pragma omp parallel for schedule(static)
-    for (size_t c = 0; c < g->ncells; c++) {
-      int q = 1;
-      for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
-        const uint32_t j = g->order[ii];
-        q = vx[j] == 0.0 && vy[j] == 0.0 && vz[j] == 0.0;
-        for (int k = 0; q && k < 6; k++) q = p->S[k][j] == 0.0;
-      }
-      cache->quiet[c] = (uint8_t)q;
-    }
-    rest_mark(g, cache, 0);
-  }
-
+  if (skip) rest_mark_first(p, g, cache);
 #pragma omp parallel
   {
-    struct cand cd = {0};
+    struct nsearch ns = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
-      int gathered = 0;
       if (skip && cache->rest[c]) {   /* at rest: what the pass would write */
-        for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-          const uint32_t i = g->order[ii];
-          if (i >= n) continue;
-          p->drho[i] = 0.0;
-          p->de[i] = 0.0;
-          for (int k = 0; k < 6; k++) p->S1[k][i] = p->S[k][i];
-          if (gradv)
-            for (int t = 0; t < 9; t++) gradv[9 * (size_t)i + t] = 0.0;
-        }
+        rest_write_first(p, g, c, dp.gradv);
         continue;
       }
+      int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= n) continue;
-        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
-        const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
-        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const struct material *mi = &mat[p->mat[i]];
-        const int strong = has_strength(mi, p->damage[i]);
-        /* the reconstruction's gradient: intact strength particles only (split ones
-           with friction keep the standard viscosity, as without it) */
-        const int recon = strong && p->damage[i] < 1.0;
-        const int32_t bi = piece_of(piece, body[i]);
-        const int cond_i = mi->eos != EOS_IDEAL_GAS;
-        double sum = 0.0, L[9] = {0}, A[9] = {0};
-        /* the correction matrix: for the stress with sph.gradient_correction, and for the
-           reconstruction always (its limiter needs gradients exact for linear fields) */
-        const int corr = strong && (sp->grad_correction || (gradv && recon));
-        const int sw = p->av;   /* the viscosity switch's gradient, every neighbour */
-        double Lsw[9] = {0}, Asw[9] = {0};
-        /* density diffusion between condensed states only (ρ ≥ ρ₀/2 on both sides), where
-           it was tested (W.P.3's debris failure once blamed on it was the continuity sum's:
-           the volume bound below) */
-        const double dd_rho = 0.5 * mi->rho0;
-        const int dd = ddelta > 0.0 && cond_i && rho[i] >= dd_rho;
-        double ddiff = 0.0;   /* Σⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ hᵢⱼ, the density diffusion */
-        for (size_t k = 0; k < nsel; k++) {
-          const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double dx = xi - cd.x[q], dy = yi - cd.y[q], dz = zi - cd.z[q];
-          const double r = sqrt(dx * dx + dy * dy + dz * dz);
-          const double f = kernel_f(kk, r, 0.5 * (hi + cd.h[q]));
-          const double ux = vx[j] - vxi, uy = vy[j] - vyi, uz = vz[j] - vzi;
-          const double w = m[j] / rho[j] * f, udx = ux * dx + uy * dy + uz * dz;
-          /* a pair of different bodies separating may unload a compressed particle
-             back to its reference density, but not stretch it beyond: contact carries
-             no tension, in the density as in the forces */
-          const int32_t bj = piece_of(piece, body[j]);
-          if (bj != bi && udx <= 0.0 && rho[i] <= mi->rho0) continue;
-          /* a condensed particle's density follows condensed neighbours only: a gas
-             particle's volume mⱼ/ρⱼ is hundreds of times its own, and its velocity
-             would set the compression of a fragment flying through the gas (lone
-             aluminium at 4 km/s in nitrogen reached 2.4 ρ₀); the gas still pushes it
-             through the pressure force */
-          if (cond_i && mat[p->mat[j]].eos == EOS_IDEAL_GAS) continue;
-          /* a neighbour counts with at most twice its reference volume, 2mⱼ/ρ₀ⱼ:
-             sprayed debris of another body far below ρ₀ (a hundredth of it in §2.4's
-             cloud) would otherwise weigh a lone particle's compression by 37-73 times
-             its mass's volume and drive it to 4 ρ₀ (docs/models.md, "Contact between
-             bodies"); within a body of condensed material, a cluster of expanding
-             debris whose volumes mⱼ/ρⱼ overlap feeds its own expansion (each one's
-             divergence weighted by the others' growing volumes: W.P.3's projectile
-             with density diffusion, ρ from 465 to 0 in 210 steps with up to 1 700
-             neighbours at h_max). Above ρ₀/2 nothing changes */
-          double wd = w;
-          if (bj != bi || cond_i) {
-            const double rho0j = mat[p->mat[j]].rho0;
-            if (rho[j] < 0.5 * rho0j) wd = 2.0 * m[j] / rho0j * f;
-          }
-          sum -= wd * udx;
-          /* sph.density_diffusion (Molteni & Colagrossi 2009): ψᵢⱼ·∇ᵢWᵢⱼ =
-             2(ρⱼ − ρᵢ)(xⱼ − xᵢ)·(xᵢ − xⱼ) f/r² = −2(ρⱼ − ρᵢ) f (f < 0): the particle's
-             density relaxes towards its neighbours' — a discrete Laplacian of ρ, zero
-             in a uniform or linear density field; never across two pieces or two
-             materials, whose densities differ by right, nor with expanded material */
-          if (dd && bj == bi && p->mat[j] == p->mat[i] && rho[j] >= dd_rho)
-            ddiff -= w * 2.0 * (rho[j] - rho[i]) * 0.5 * (hi + cd.h[q]);
-          if (sw) avsw_add(Lsw, Asw, w, dx, dy, dz, ux, uy, uz);
-          if (strong && bj == bi) {
-            L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
-            L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
-            L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
-            if (corr) { /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
-              A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
-              A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
-              A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
-            }
-          }
-        }
-        p->drho[i] = rho[i] * sum + (dd ? ddelta * p->cs[i] * ddiff : 0.0);
-        if (sw)
-          p->alpha[i] = avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt,
-                                    &p->divv[i]);
-        if (gradv) {   /* corrected; 0 without strength: no reconstruction for its pairs */
-          double *Gi = gradv + 9 * (size_t)i;
-          for (int t = 0; t < 9; t++) Gi[t] = recon ? L[t] : 0.0;
-          if (recon) {
-            sph_correct_gradient(Gi, A);
-            if (sp->grad_correction)   /* the stress uses the same corrected gradient */
-              for (int t = 0; t < 9; t++) L[t] = Gi[t];
-          } else if (strong && sp->grad_correction) {
-            sph_correct_gradient(L, A);
-          }
-        } else if (corr) {
-          sph_correct_gradient(L, A);
-        }
-        if (strong) {
-          update_stress(p, i, mi, L, dt);
-        } else {
-          p->de[i] = 0.0;
-          for (int k = 0; k < 6; k++) p->S[k][i] = p->S1[k][i] = 0.0;
-        }
+        if (i >= p->n) continue;
+        const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, NULL, cache);
+        density_rate_particle(&dp, &ns, nsel, i);
       }
     }
-    cand_free_all(&cd);
+    nsearch_free(&ns);
   }
   if (cache) cache->valid = 1;
 }
@@ -326,241 +340,191 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
   }
 }
 
-/* layout of a partner's record in sph_forces_solid (TW doubles, two cache lines) */
-enum { TW_X = 0, TW_H = 3, TW_V = 4, TW_M = 7, TW_P = 8, TW_S = 9, TW_RHO = 15, TW_R = 16, TW = SPH_TW };
+/* The force pass's inputs, set once per call. */
+struct force_pass {
+  struct particles *p;
+  const struct material *mat;
+  const int32_t *piece;    /* sph_params.piece */
+  const double *rec;       /* partner records */
+  const int32_t *tag;      /* partner tags */
+  const double *gradv;     /* sph.viscosity.reconstruct's gradients, else NULL */
+  struct pair_visc pv;
+  enum kernel_kind kk;
+  int use_as;              /* artificial stress */
+  int recon_contact;       /* the reconstruction for pairs of two pieces too */
+  double as_n, inv_w_dp;   /* its exponent n, and 1/(W(Δp, h)·h³) with Δp = h/η */
+};
+
+/* Particle i's side of the force pass, the same for all its pairs: p/ρ² and S/ρ² from
+ * its own record (σ' for a split particle without tension), max(p/ρ², 0), its R. */
+struct force_i {
+  double x, y, z, h, vx, vy, vz, c, rho, pr, P, Pic, S[6], R[6];
+  int R_any, gas;
+  int32_t piece;
+};
+
+/* The pair force within one piece, per unit mⱼ, into acc: T = σᵢ/ρᵢ² + σⱼ/ρⱼ² (+ the
+ * artificial stress), its deviatoric part explicit. Returns the artificial stress's
+ * work per unit mⱼ. */
+static inline double pair_stress(const struct force_pass *fp, const struct force_i *I,
+                                 const double *wj, int32_t tj, const struct pair *q,
+                                 double dvx, double dvy, double dvz, double visc, double acc[3])
+{
+  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz;   /* ∇ᵢWᵢⱼ */
+  double T[6], eas = 0.0;
+  for (int t = 0; t < 6; t++) T[t] = I->S[t] + wj[PR_S + t];
+  if (fp->use_as && (I->R_any | (tj & 1))) {
+    double Rs[6];
+    for (int t = 0; t < 6; t++) Rs[t] = I->R[t] + wj[PR_AS + t];
+    const double fr = kernel_w_h3(fp->kk, q->r * (1.0 / q->hij)) * fp->inv_w_dp;
+    const double fn = fp->as_n == 4.0 ? (fr * fr) * (fr * fr) : pow(fr, fp->as_n);
+    for (int t = 0; t < 6; t++) T[t] += Rs[t] * fn;
+    /* its work, −½ vᵢⱼ·(Rₛ fⁿ ∇ᵢW) per unit m_j: the pair force is symmetric, so
+       this keeps the total energy */
+    const double rx = (Rs[T_XX] * gx + Rs[T_XY] * gy + Rs[T_XZ] * gz) * fn;
+    const double ry = (Rs[T_XY] * gx + Rs[T_YY] * gy + Rs[T_YZ] * gz) * fn;
+    const double rz = (Rs[T_XZ] * gx + Rs[T_YZ] * gy + Rs[T_ZZ] * gz) * fn;
+    eas = -0.5 * (dvx * rx + dvy * ry + dvz * rz);
+  }
+  const double P = I->P + wj[PR_P] + visc;
+  acc[0] = (T[T_XX] - P) * gx + T[T_XY] * gy + T[T_XZ] * gz;
+  acc[1] = T[T_XY] * gx + (T[T_YY] - P) * gy + T[T_YZ] * gz;
+  acc[2] = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
+  return eas;
+}
+
+/* The pair force of i and its partner j (record wj, tag tj) per unit mⱼ, into acc, with
+ * the contact rules; returns i's energy rate per unit mⱼ. */
+static inline double pair_force(const struct force_pass *fp, const struct force_i *I,
+                                uint32_t j, const double *wj, int32_t tj,
+                                const struct pair *q, double dvx, double dvy, double dvz,
+                                double vdx, double visc, double acc[3])
+{
+  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz;   /* ∇ᵢWᵢⱼ */
+  double P, Pme, vw = 0.5, eas = 0.0;
+  if ((tj >> 1) == I->piece) {
+    eas = pair_stress(fp, I, wj, tj, q, dvx, dvy, dvz, visc, acc);
+    return (I->P + vw * visc) * vdx * q->f + eas;
+  } else if (I->gas != (fp->mat[fp->p->mat[j]].eos == EOS_IDEAL_GAS)) {
+    /* gas against condensed material: the interface pressure is the gas's,
+       2 p̂_gas/(ρᵢρⱼ) (p̂ = max(p, 0)): a uniform gas against a wall at rest is in
+       balance (the wall particle's volume stands in for a gas particle's), and the
+       condensed side's stress does not enter — at an SPH free surface it is not the
+       traction there, and the soft gas sets the interface pressure: the condensed side
+       acts through its motion, which compresses the gas (its density rate sums over
+       every neighbour). The mass-weighted pᵢ/ρᵢ² + pⱼ/ρⱼ² blew the gas off a plate at
+       rest. The pair's whole work goes to the gas: the condensed particle's density
+       does not see the gas (pass 1), so neither does its energy, and the drag's heat
+       is the gas's bow shock */
+    const double rr = 1.0 / (I->rho * wj[PR_RHO]);
+    const double pg = I->gas ? I->pr : wj[PR_P] * wj[PR_RHO] * wj[PR_RHO];
+    const double pgc = pg > 0.0 ? 2.0 * pg * rr : 0.0;
+    P = pgc + visc;
+    Pme = I->gas ? pgc : 0.0;
+    vw = I->gas ? 1.0 : 0.0;
+  } else { /* contact: compression only */
+    P = I->Pic + (wj[PR_P] > 0 ? wj[PR_P] : 0.0) + visc;
+    Pme = I->Pic;
+  }
+  acc[0] = -P * gx;
+  acc[1] = -P * gy;
+  acc[2] = -P * gz;
+  return (Pme + vw * visc) * vdx * q->f + eas;
+}
+
+/* The second pass for real i with its nsel neighbours in ns. */
+static inline void forces_particle(const struct force_pass *fp, const struct nsearch *ns,
+                                   size_t nsel, uint32_t i)
+{
+  struct particles *p = fp->p;
+  const double *wi = fp->rec + PR_LEN * (size_t)i, *cs = p->cs, *gradv = fp->gradv;
+  struct force_i I = {.x = p->x[0][i], .y = p->x[1][i], .z = p->x[2][i], .h = p->h[i],
+                      .vx = p->v[0][i], .vy = p->v[1][i], .vz = p->v[2][i], .c = cs[i],
+                      .rho = p->rho[i], .pr = p->p[i], .P = wi[PR_P]};
+  I.Pic = I.P > 0 ? I.P : 0.0;
+  for (int k = 0; k < 6; k++) {
+    I.S[k] = wi[PR_S + k];
+    I.R[k] = p->R[k][i];
+    I.R_any |= I.R[k] != 0.0;
+  }
+  I.piece = sph_piece_of(fp->piece, p->body[i]);
+  I.gas = fp->mat[p->mat[i]].eos == EOS_IDEAL_GAS;
+  double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
+  double amax = fp->pv.av ? fp->pv.av[i] : fp->pv.alpha;   /* the largest pair α (time step) */
+  for (size_t k = 0; k < nsel; k++) {
+    const uint32_t j = ns->j[ns->sel[k]];
+    const double *wj = fp->rec + PR_LEN * (size_t)j;
+    const int32_t tj = fp->tag[j];
+    const struct pair pq = pair_geometry(fp->kk, I.x, I.y, I.z, I.h, wj[PR_X], wj[PR_X + 1],
+                                         wj[PR_X + 2], wj[PR_H]);
+    const double dvx = I.vx - wj[PR_V], dvy = I.vy - wj[PR_V + 1], dvz = I.vz - wj[PR_V + 2];
+    const double vdx = dvx * pq.dx + dvy * pq.dy + dvz * pq.dz;
+    const int recon = gradv && ((tj >> 1) == I.piece || fp->recon_contact);
+    const double visc = pair_viscosity(&fp->pv, i, j, &pq, vdx, recon ? gradv + 9 * (size_t)i : NULL,
+                                       recon ? gradv + 9 * (size_t)j : NULL, I.c, cs[j], I.rho,
+                                       wj[PR_RHO], &mumax, &amax);
+    double acc[3];
+    const double e = pair_force(fp, &I, j, wj, tj, &pq, dvx, dvy, dvz, vdx, visc, acc);
+    const double mj = wj[PR_M];
+    sx += mj * acc[0];
+    sy += mj * acc[1];
+    sz += mj * acc[2];
+    se += mj * e;
+  }
+  p->a[0][i] = sx;
+  p->a[1][i] = sy;
+  p->a[2][i] = sz;
+  p->de[i] += se;
+  /* with the switch the α c part takes the largest pair α, and the β μ part stays whole:
+     it follows the approach speed, which the step must resolve whatever α (Noh's first
+     step, every α still 0, crossed particles with it scaled too) */
+  p->vsig[i] = sph_signal_speed(nsel > 0, I.c, amax, fp->pv.beta, mumax,   /* amax = α without it */
+                                sqrt(I.vx * I.vx + I.vy * I.vy + I.vz * I.vz));
+}
 
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
                       const struct sph_params *sp, struct sph_cache *cache,
                       const struct material *mat)
 {
-  const size_t n = p->n;
-  const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
-  const double *m = p->m, *rho = p->rho, *pr = p->p, *cs = p->cs;
-  const double *px = p->x[0], *py = p->x[1], *pz = p->x[2], *ph = p->h;
-  const int32_t *body = p->body, *piece = sp->piece;
-  const enum kernel_kind kk = sp->kernel;
-  const double alpha = sp->alpha, beta = sp->beta, eps = sp->eps, as_n = sp->as_n;
-  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
-  const double bfac = av ? beta / alpha : 0.0;
-  const int use_as = sp->as_eps > 0;
-  const double *gradv = sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL;
-  const int recon_contact = sp->reconstruct_contact;   /* and for pairs of two pieces */
-  /* W(Δp, h)·h³ with Δp = h/η: the reference value of the artificial-stress factor */
-  const double inv_w_dp = 1.0 / kernel_w_h3(kk, 1.0 / sp->eta);
-  /* Each particle's data as a partner (ghosts included) in two cache lines, read
-     together for every pair instead of from 17 arrays: x, y, z, h, v, m, then p/ρ²,
-     S/ρ² (computed once instead of once per pair: the same operations, so the same
-     bits) and ρ; a third line with the artificial stress R, read only when a pair has
-     one (bf: body × 2 + 1 when R ≠ 0). 196 bytes per particle, kept in the cache
-     between steps (allocated here for a call without one). */
   const size_t nt = p->n + p->n_ghost;
-  double *tw0 = NULL;
-  int32_t *bf0 = NULL;
-  if (cache && cache->tcap >= nt + 1) {
-    tw0 = cache->tw;
-    bf0 = cache->bf;
-  } else {
-    const size_t cap = cache ? nt + nt / 4 + 64 : nt + 1;
-    if (cache) {
-      free(cache->tw);
-      free(cache->bf);
-      cache->tw = NULL;
-      cache->bf = NULL;
-      cache->tcap = 0;
-    }
-    tw0 = aligned_alloc(64, cap * TW * sizeof *tw0);
-    bf0 = malloc(cap * sizeof *bf0);
-    if (!tw0 || !bf0)
-      HV_FATAL("out of memory: %zu bytes for the pair terms", cap * (TW * sizeof *tw0 + 4));
-    if (cache) {
-      cache->tw = tw0;
-      cache->bf = bf0;
-      cache->tcap = cap;
-    }
-  }
-  double *restrict tw = tw0;
-  int32_t *restrict bf = bf0;
-#pragma omp parallel for schedule(static)
-  for (size_t j = 0; j < nt; j++) {
-    const double rj2 = 1.0 / (rho[j] * rho[j]);
-    double *w = tw + TW * j;
-    w[TW_X] = px[j];
-    w[TW_X + 1] = py[j];
-    w[TW_X + 2] = pz[j];
-    w[TW_H] = ph[j];
-    w[TW_V] = vx[j];
-    w[TW_V + 1] = vy[j];
-    w[TW_V + 2] = vz[j];
-    w[TW_M] = m[j];
-    double Sj[6], pj = pr[j];
-    for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
-    if (p->damage[j] >= 1.0 && fracture_no_tension(&mat[p->mat[j]].frac, p->damage[j]))
-      pj = fracture_effective(pr[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
-    w[TW_P] = pj * rj2;
-    for (int t = 0; t < 6; t++) w[TW_S + t] = Sj[t] * rj2;
-    w[TW_RHO] = rho[j];
-    int rany = 0;
-    for (int t = 0; t < 6; t++) {
-      w[TW_R + t] = p->R[t][j];
-      rany |= p->R[t][j] != 0.0;
-    }
-    w[TW_R + 6] = w[TW_R + 7] = 0.0;
-    bf[j] = 2 * (piece_of(piece, body[j])) + rany;
-  }
-  /* sph.skip_resting (see rest_alloc): the mid-step state of the cells the first pass
+  double *rec;
+  int32_t *tag;
+  partner_reserve(cache, nt, &rec, &tag);
+  partner_pack(p, sp, mat, rec, tag);
+  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
+  const struct force_pass fp = {
+      p, mat, sp->piece, rec, tag, sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL,
+      pair_visc_params(sp, av), sp->kernel, sp->as_eps > 0, sp->reconstruct_contact, sp->as_n,
+      1.0 / kernel_w_h3(sp->kernel, 1.0 / sp->eta)};
+  /* sph.skip_resting (rest.c): the mid-step state of the cells the first pass
      skipped */
   const int skip = sp->skip_resting && cache && cache->valid && !av;
+  if (skip) rest_mark_second(p, g, cache, rec, tag);
   long rested = 0;
-  if (skip) {
-#pragma omp parallel for schedule(static)
-    for (size_t c = 0; c < g->ncells; c++) {
-      int q = 1;
-      for (uint32_t ii = g->cell_start[c]; q && ii < g->cell_start[c + 1]; ii++) {
-        const uint32_t j = g->order[ii];
-        const double *w = tw + TW * (size_t)j;
-        q = w[TW_V] == 0.0 && w[TW_V + 1] == 0.0 && w[TW_V + 2] == 0.0 && w[TW_P] == 0.0 &&
-            pr[j] == 0.0 && !(bf[j] & 1);
-        for (int t = 0; q && t < 6; t++) q = w[TW_S + t] == 0.0;
-      }
-      cache->quiet[c] = (uint8_t)q;
-    }
-    rest_mark(g, cache, 1);
-  }
-
 #pragma omp parallel reduction(+ : rested)
   {
-    struct cand cd = {0};
+    struct nsearch ns = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
-      int gathered = 0;
-      if (skip && (cache->rest[c] & 2)) {   /* at rest: a = 0, de unchanged, the signal */
-        for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
-          const uint32_t i = g->order[ii];
-          if (i >= n) continue;
-          p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
-          p->vsig[i] = sph_signal_speed(cand_any(g, c, p, i), cs[i], alpha, beta, 0.0, 0.0);
-          rested++;
-        }
+      if (skip && (cache->rest[c] & 2)) {
+        rested += rest_write_second(p, g, c, sp);
         continue;
       }
       /* a cell the first pass skipped has no stored neighbours: search */
       const struct sph_cache *load = skip && (cache->rest[c] & 1) ? NULL : cache;
+      int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= n) continue;
-        const size_t nsel = cand_neighbours(&cd, &gathered, g, c, ii, p, load, NULL);
-        const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
-        const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
-        const double ci = cs[i], rhoi = rho[i];
-        /* p/ρ² and S/ρ² from i's own record (σ' for a split particle without tension) */
-        const double *wi = tw + TW * (size_t)i;
-        const double Pi = wi[TW_P], Pic = Pi > 0 ? Pi : 0.0;
-        double Si[6], Ri[6];
-        int Ri_any = 0;
-        for (int k = 0; k < 6; k++) {
-          Si[k] = wi[TW_S + k];
-          Ri[k] = p->R[k][i];
-          Ri_any |= Ri[k] != 0.0;
-        }
-        const int32_t bi = piece_of(piece, body[i]);
-        const int gas_i = mat[p->mat[i]].eos == EOS_IDEAL_GAS;
-        double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
-        double amax = av ? av[i] : alpha;   /* the largest pair α (time step) */
-        for (size_t k = 0; k < nsel; k++) {
-          const uint32_t q = cd.sel[k], j = cd.j[q];
-          const double *wj = tw + TW * (size_t)j;
-          const double dx = xi - wj[TW_X], dy = yi - wj[TW_X + 1], dz = zi - wj[TW_X + 2];
-          const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + wj[TW_H]);
-          const double r = sqrt(r2), f = kernel_f(kk, r, hij);
-          const double dvx = vxi - wj[TW_V], dvy = vyi - wj[TW_V + 1], dvz = vzi - wj[TW_V + 2];
-          const double vdx = dvx * dx + dvy * dy + dvz * dz;
-          double visc = 0.0;
-          if (vdx < 0.0) {
-            double mu = hij * vdx / (r2 + eps * hij * hij);
-            if (-mu > mumax) mumax = -mu;   /* the time step sees the whole jump */
-            if (gradv && ((bf[j] >> 1) == bi || recon_contact))
-              mu = hij *
-                   sph_recon_approach(vdx, gradv + 9 * (size_t)i, gradv + 9 * (size_t)j, dx, dy, dz) /
-                   (r2 + eps * hij * hij);
-            visc = sph_pair_visc(av, i, j, alpha, beta, bfac, ci, cs[j], mu, rhoi, wj[TW_RHO], &amax);
-          }
-          const double gx = f * dx, gy = f * dy, gz = f * dz;   /* ∇ᵢWᵢⱼ */
-          double ax, ay, az, Pme, vw = 0.5, eas = 0.0;
-          const int32_t bfj = bf[j];
-          if ((bfj >> 1) == bi) {
-            /* T = σᵢ/ρᵢ² + σⱼ/ρⱼ² (+ artificial stress), deviatoric part explicitly */
-            double T[6];
-            for (int t = 0; t < 6; t++) T[t] = Si[t] + wj[TW_S + t];
-            if (use_as) {
-              double Rs[6];
-              if (Ri_any | (bfj & 1)) {
-                for (int t = 0; t < 6; t++) Rs[t] = Ri[t] + wj[TW_R + t];
-                const double fr = kernel_w_h3(kk, r * (1.0 / hij)) * inv_w_dp;
-                const double fn = as_n == 4.0 ? (fr * fr) * (fr * fr) : pow(fr, as_n);
-                for (int t = 0; t < 6; t++) T[t] += Rs[t] * fn;
-                /* its work, −½ vᵢⱼ·(Rₛ fⁿ ∇ᵢW) per unit m_j: the pair force is
-                   symmetric, so this keeps the total energy */
-                const double rx = (Rs[T_XX] * gx + Rs[T_XY] * gy + Rs[T_XZ] * gz) * fn;
-                const double ry = (Rs[T_XY] * gx + Rs[T_YY] * gy + Rs[T_YZ] * gz) * fn;
-                const double rz = (Rs[T_XZ] * gx + Rs[T_YZ] * gy + Rs[T_ZZ] * gz) * fn;
-                eas = -0.5 * (dvx * rx + dvy * ry + dvz * rz);
-              }
-            }
-            const double P = Pi + wj[TW_P] + visc;
-            ax = (T[T_XX] - P) * gx + T[T_XY] * gy + T[T_XZ] * gz;
-            ay = T[T_XY] * gx + (T[T_YY] - P) * gy + T[T_YZ] * gz;
-            az = T[T_XZ] * gx + T[T_YZ] * gy + (T[T_ZZ] - P) * gz;
-            Pme = Pi;
-          } else if (gas_i != (mat[p->mat[j]].eos == EOS_IDEAL_GAS)) {
-            /* gas against condensed material: the interface pressure is the gas's,
-               2 p̂_gas/(ρᵢρⱼ) (p̂ = max(p, 0)): a uniform gas against a wall at rest is in
-               balance (the wall particle's volume stands in for a gas particle's), and the
-               condensed side's stress does not enter — at an SPH free surface it is not the
-               traction there (a thin plate under in-plane compression has p and σ_xx of tens
-               of MPa at its face), and the soft gas sets the interface pressure: the
-               condensed side acts through its motion, which compresses the gas (its density
-               rate sums over every neighbour). The mass-weighted pᵢ/ρᵢ² + pⱼ/ρⱼ² blew the
-               gas off a plate at rest. The pair's whole work goes to the gas: the condensed
-               particle's density does not see the gas (pass 1), so neither does its
-               energy, and the drag's heat is the gas's bow shock */
-            const double rr = 1.0 / (rhoi * wj[TW_RHO]);
-            const double pg = gas_i ? pr[i] : wj[TW_P] * wj[TW_RHO] * wj[TW_RHO];
-            const double pgc = pg > 0.0 ? 2.0 * pg * rr : 0.0;
-            const double P = pgc + visc;
-            ax = -P * gx;
-            ay = -P * gy;
-            az = -P * gz;
-            Pme = gas_i ? pgc : 0.0;
-            vw = gas_i ? 1.0 : 0.0;
-          } else { /* contact: compression only */
-            const double P = Pic + (wj[TW_P] > 0 ? wj[TW_P] : 0.0) + visc;
-            ax = -P * gx;
-            ay = -P * gy;
-            az = -P * gz;
-            Pme = Pic;
-          }
-          const double mj = wj[TW_M];
-          sx += mj * ax;
-          sy += mj * ay;
-          sz += mj * az;
-          se += mj * ((Pme + vw * visc) * vdx * f + eas);
-        }
-        p->a[0][i] = sx;
-        p->a[1][i] = sy;
-        p->a[2][i] = sz;
-        p->de[i] += se;
-        /* with the switch the α c part takes the largest pair α, and the β μ part stays
-           whole: it follows the approach speed, which the step must resolve whatever α
-           (Noh's first step, every α still 0, crossed particles with it scaled too) */
-        p->vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax,   /* amax = α without it */
-                                      sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
+        if (i >= p->n) continue;
+        const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, load, NULL);
+        forces_particle(&fp, &ns, nsel, i);
       }
     }
-    cand_free_all(&cd);
+    nsearch_free(&ns);
   }
   if (cache) cache->rested = rested;
   if (!cache) {
-    free(tw0);
-    free(bf0);
+    free(rec);
+    free(tag);
   }
 }

@@ -1,4 +1,4 @@
-/* test_rest_snap.c — sph.rest_tolerance (step.c, snap_rest): material that no physical
+/* test_rest_snap.c — sph.rest_tolerance (step.c, clamp_to_rest): material that no physical
  * signal can have reached is exactly at rest, so that sph.skip_resting can skip it, and
  * the material the wave has reached is not changed.
  *

@@ -1,4 +1,5 @@
-/* cand.h — internal to src/sph: the candidate neighbours of a cell, and the
+/* nsearch.h — internal to src/sph: the neighbour search (a cell's candidate
+ * neighbours gathered, each particle's neighbours selected among them), and the
  * neighbour bit-cache kept between the two passes of a step.
  *
  * For each cell, the positions and smoothing lengths of all particles in its
@@ -8,12 +9,13 @@
  * compaction. The order (cells in grid order, then particles in cell order) is
  * fixed, so sums do not depend on the number of threads.
  */
-#ifndef HV_SPH_CAND_H
-#define HV_SPH_CAND_H
+#ifndef HV_SPH_NSEARCH_H
+#define HV_SPH_NSEARCH_H
 
 #include "sph/sph.h"
 
-struct cand {
+/* One thread's search state: the candidates of the current cell and the selection. */
+struct nsearch {
   size_t cap, n;
   double *x, *y, *z, *h;
   uint32_t *j;        /* particle slot of each candidate */
@@ -28,19 +30,19 @@ struct cand {
   double *hc;         /* [ncell] */
 };
 
-void cand_free_all(struct cand *cd);
+void nsearch_free(struct nsearch *cd);
 /* Copies the candidates of cell c. */
-void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c, const struct particles *p);
+void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c, const struct particles *p);
 /* Selects into cd->sel the candidates within reach of particle i; returns the count. */
-size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi, double hi);
-/* Whether cand_select would select anything for the real at slot i of cell c: the same
+size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, double zi, double hi);
+/* Whether nsearch_select would select anything for the real at slot i of cell c: the same
  * distance test on the same candidates, read from the grid, stopping at the first. */
-int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i);
+int nsearch_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i);
 /* The neighbours of the real particle at position ii of cell c, into cd->sel: the
  * cell's candidates are gathered on first use (*gathered), then read from `load`
  * when it holds this grid's neighbours, else selected (and kept in `store` if given).
  * Returns the count. */
-size_t cand_neighbours(struct cand *cd, int *gathered, const struct nbr_grid *g, size_t c,
+size_t nsearch_neighbours(struct nsearch *cd, int *gathered, const struct nbr_grid *g, size_t c,
                        uint32_t ii, const struct particles *p, const struct sph_cache *load,
                        const struct sph_cache *store);
 

@@ -1,5 +1,5 @@
-/* cand.c — candidate neighbours and the neighbour cache; see cand.h. */
-#include "sph/cand.h"
+/* nsearch.c — the neighbour search and the neighbour cache; see nsearch.h. */
+#include "sph/nsearch.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,7 +12,7 @@
 #endif
 
 
-static void cand_free_arrays(struct cand *cd)
+static void nsearch_free_arrays(struct nsearch *cd)
 {
   free(cd->x);
   free(cd->y);
@@ -23,19 +23,19 @@ static void cand_free_arrays(struct cand *cd)
   free(cd->d);
 }
 
-void cand_free_all(struct cand *cd)
+void nsearch_free(struct nsearch *cd)
 {
-  cand_free_arrays(cd);
+  nsearch_free_arrays(cd);
   free(cd->off);
   free(cd->lo);
   free(cd->hc);
 }
 
 /* Room for the n candidates of a cell. */
-static void cand_reserve(struct cand *cd, size_t n)
+static void nsearch_reserve(struct nsearch *cd, size_t n)
 {
   if (n > cd->cap) {
-    cand_free_arrays(cd);
+    nsearch_free_arrays(cd);
     cd->cap = n + n / 2 + 64;
     cd->x = hv_malloc(cd->cap * sizeof(double), "candidates");
     cd->y = hv_malloc(cd->cap * sizeof(double), "candidates");
@@ -50,13 +50,13 @@ static void cand_reserve(struct cand *cd, size_t n)
 }
 
 /* r² − (hᵢ + hⱼ)² of a pair (< 0: within reach): the portable selection's test and
- * cand_any's, the same operations as the AVX-512 lanes. */
-static inline double cand_gap(double dx, double dy, double dz, double s)
+ * nsearch_any's, the same operations as the AVX-512 lanes. */
+static inline double nsearch_gap(double dx, double dy, double dz, double s)
 {
   return dx * dx + dy * dy + dz * dz - s * s;
 }
 
-static size_t cand_count(const struct nbr_grid *g, size_t c)
+static size_t nsearch_count(const struct nbr_grid *g, size_t c)
 {
   const int32_t *nb = g->nbr_list + g->nbr_start[c];
   const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
@@ -65,10 +65,10 @@ static size_t cand_count(const struct nbr_grid *g, size_t c)
   return n;
 }
 
-/* Only the slots (cd->j) of the candidates of cell c, in the order cand_gather uses. */
-static void cand_gather_slots(struct cand *cd, const struct nbr_grid *g, size_t c)
+/* Only the slots (cd->j) of the candidates of cell c, in the order nsearch_gather uses. */
+static void nsearch_gather_slots(struct nsearch *cd, const struct nbr_grid *g, size_t c)
 {
-  cand_reserve(cd, cand_count(g, c));
+  nsearch_reserve(cd, nsearch_count(g, c));
   const int32_t *nb = g->nbr_list + g->nbr_start[c];
   const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
   size_t q = 0;
@@ -78,12 +78,12 @@ static void cand_gather_slots(struct cand *cd, const struct nbr_grid *g, size_t 
   cd->n = q;
 }
 
-void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
+void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c,
                         const struct particles *p)
 {
   const int32_t *nb = g->nbr_list + g->nbr_start[c];
   const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
-  cand_reserve(cd, cand_count(g, c));
+  nsearch_reserve(cd, nsearch_count(g, c));
   if (nnb + 1 > cd->ccap) {
     cd->ccap = nnb + 32;
     cd->off = hv_realloc(cd->off, cd->ccap * sizeof *cd->off, "candidate cells");
@@ -118,7 +118,7 @@ void cand_gather(struct cand *cd, const struct nbr_grid *g, size_t c,
 /* Selects the candidates within reach of particle i (r < h_i + h_j, j != i): whole
  * cells out of reach are skipped, then a vectorisable distance test and a
  * compaction. Order: cells, then particles, as gathered. */
-size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
+size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, double zi,
                           double hi)
 {
   const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
@@ -171,7 +171,7 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
 #else
     for (size_t q = q0; q < q1; q++) {
       const double dx = xi - x[q], dy = yi - y[q], dz = zi - z[q], s = hi + h[q];
-      d[q] = cand_gap(dx, dy, dz, s);
+      d[q] = nsearch_gap(dx, dy, dz, s);
     }
     for (size_t q = q0; q < q1; q++) {
       sel[k] = (uint32_t)q;
@@ -185,13 +185,13 @@ size_t cand_select(struct cand *cd, uint32_t i, double xi, double yi, double zi,
 /* Whether particle i of cell c has any neighbour: the answer only, so the cells are
  * searched in any order, c itself first (in a lattice at rest, where the resting cells
  * ask this every step, it holds one within reach nearly always). */
-int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i)
+int nsearch_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint32_t i)
 {
   const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
   for (uint32_t jj = g->cell_start[c]; jj < g->cell_start[c + 1]; jj++) {
     const uint32_t j = g->order[jj];
     const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
-    if (cand_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
+    if (nsearch_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
   }
   for (uint32_t k = g->nbr_start[c]; k < g->nbr_start[c + 1]; k++) {
     const int32_t nb = g->nbr_list[k];
@@ -199,7 +199,7 @@ int cand_any(const struct nbr_grid *g, size_t c, const struct particles *p, uint
     for (uint32_t jj = g->cell_start[nb]; jj < g->cell_start[nb + 1]; jj++) {
       const uint32_t j = g->order[jj];
       const double dx = xi - p->x[0][j], dy = yi - p->x[1][j], dz = zi - p->x[2][j];
-      if (cand_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
+      if (nsearch_gap(dx, dy, dz, hi + p->h[j]) < 0.0 && j != i) return 1;
     }
   }
   return 0;
@@ -211,8 +211,8 @@ void sph_cache_free(struct sph_cache *c)
   free(c->cell_off);
   free(c->cell_words);
   free(c->gradv);
-  free(c->tw);
-  free(c->bf);
+  free(c->partner);
+  free(c->partner_tag);
   free(c->quiet);
   free(c->rest);
   memset(c, 0, sizeof *c);
@@ -221,7 +221,7 @@ void sph_cache_free(struct sph_cache *c)
 size_t sph_cache_bytes(const struct sph_cache *c)
 {
   return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words) +
-         c->gcap * 9 * sizeof *c->gradv + c->tcap * (SPH_TW * sizeof *c->tw + sizeof *c->bf) +
+         c->gcap * 9 * sizeof *c->gradv + c->partner_cap * (SPH_PARTNER_LEN * sizeof *c->partner + sizeof *c->partner_tag) +
          c->rcap * 2;
 }
 
@@ -280,23 +280,23 @@ size_t cache_load(const struct sph_cache *cache, size_t c, uint32_t slot, uint32
 }
 
 
-size_t cand_neighbours(struct cand *cd, int *gathered, const struct nbr_grid *g, size_t c,
+size_t nsearch_neighbours(struct nsearch *cd, int *gathered, const struct nbr_grid *g, size_t c,
                        uint32_t ii, const struct particles *p, const struct sph_cache *load,
                        const struct sph_cache *store)
 {
   const uint32_t slot = ii - g->cell_start[c], i = g->order[ii];
   if (load && load->valid) {   /* the stored selection needs only the candidates' slots */
     if (!*gathered) {
-      cand_gather_slots(cd, g, c);
+      nsearch_gather_slots(cd, g, c);
       *gathered = 1;
     }
     return cache_load(load, c, slot, cd->sel);
   }
   if (!*gathered) {
-    cand_gather(cd, g, c, p);
+    nsearch_gather(cd, g, c, p);
     *gathered = 1;
   }
-  const size_t nsel = cand_select(cd, i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
+  const size_t nsel = nsearch_select(cd, i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
   if (store) cache_store(store, c, slot, cd->sel, nsel);
   return nsel;
 }
