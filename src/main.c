@@ -7,12 +7,12 @@
 
 #include "core/error.h"
 #include "material/material.h"
-#include "render/render.h"
-#include "run/bench.h"
-#include "run/check.h"
-#include "run/remeasure.h"
+#include "cli/render.h"
+#include "cli/bench.h"
+#include "cli/check.h"
+#include "cli/measure.h"
 #include "run/run.h"
-#include "run/validate.h"
+#include "cli/validate.h"
 #include "version.h"
 
 /* Each command's lines of the usage: `hvsph --help` prints them all, `hvsph CMD --help`

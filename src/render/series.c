@@ -33,7 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "render/render_internal.h"
 

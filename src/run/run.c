@@ -27,14 +27,14 @@
 #include "config/config.h"
 #include "diag/conservation.h"
 #include "integrate/step.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "material/material.h"
-#include "run/check.h"
+#include "run/plausible.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
 #include "run/runfolder.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "setup/setup.h"
 #include "version.h"
 
@@ -260,7 +260,7 @@ static const char *default_name(const char *path, char *buf, size_t len)
 
 /* run_segments.csv: one row per run or restart of this folder — which hvsph, how many
  * threads, when, from which step and time to which, how long, how it ended — rewritten
- * (through afile) at every checkpoint and at the end. A restart keeps the rows before
+ * (through atomic_file) at every checkpoint and at the end. A restart keeps the rows before
  * it. Provenance only: nothing reads it back but `validate` (the total wall time). */
 struct segment {
   char *prev;         /* the rows of the earlier segments (with the header), or NULL */
@@ -310,16 +310,16 @@ static int segment_write(const struct segment *g, const char *dir, const struct 
 {
   char path[4200];
   snprintf(path, sizeof path, "%s/run_segments.csv", dir);
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
-  if (afile_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
-      afile_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
+  if (atomic_file_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
+      atomic_file_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
                    omp_get_max_threads(), g->started, g->step0, g->t0, s->step, s->t,
                    wall_time() - g->wall0, end)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 /* Checkpoints: at every output time, every output.checkpoint_wall seconds of wall-clock
@@ -568,7 +568,7 @@ int run_main(const struct run_options *ro)
     if (restart_read(&s, &o, ckpt, &err) ||
         run_check_output_count(&s, c, s.t, o.count, ro->force, &err))
       goto fail;
-    const int stale = afile_remove_stale(o.dir);
+    const int stale = atomic_file_remove_stale(o.dir);
     if (stale > 0 && !ro->quiet)
       hv_info("removed %d unfinished temporary file%s of the stopped run", stale,
               stale == 1 ? "" : "s");
@@ -589,7 +589,7 @@ int run_main(const struct run_options *ro)
       }
       const int gone = runfolder_remove_run(o.dir, &err);
       if (gone < 0) goto fail;
-      afile_remove_stale(o.dir);
+      atomic_file_remove_stale(o.dir);
       if (!ro->quiet)
         hv_info("--overwrite: removed the earlier run's %d file%s from %s (%s)", gone,
                 gone == 1 ? "" : "s", o.dir, what);

@@ -1,4 +1,4 @@
-/* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`, and
+/* render.c (cli) — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`, and
  * `hvsph render RUNDIR -o FRAMEDIR [options]`.
  *
  * Reads a particle snapshot, CSV or VTU (io_read_particles; the time from its comment
@@ -18,6 +18,7 @@
 
 #include "core/units.h"
 #include "io/snapshot.h"
+#include "cli/render.h"
 #include "render/render_internal.h"
 
 static void render_usage(FILE *f)

@@ -16,7 +16,7 @@
  * (hvsph run --overwrite). DIR is locked for the whole validation and each case's folder
  * while it runs (run/runfolder.h), so that two validations do not write one DIR.
  */
-#include "run/validate.h"
+#include "cli/validate.h"
 
 #include <math.h>
 #include <omp.h>
@@ -28,7 +28,7 @@
 #include "config/config.h"
 #include "diag/measure_table.h"
 #include "run/restart.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "material/material.h"
 #include "render/render.h"
@@ -219,12 +219,12 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
                          const struct val_overrides *ov, struct hv_error *err)
 {
   char path[4200];
-  struct afile af;
+  struct atomic_file af;
   snprintf(path, sizeof path, "%s/validation.csv", dir);
-  if (afile_open(&af, path, err)) return -1;
+  if (atomic_file_open(&af, path, err)) return -1;
   /* a comment line first, as every CSV table of hvsph has (pandas' comment="#" and the
      numpy recipe of docs/output-files.md skip it) */
-  afile_printf(&af, err, "# hvsph %s: validation against the seed paper%s (validation.md)\n"
+  atomic_file_printf(&af, err, "# hvsph %s: validation against the seed paper%s (validation.md)\n"
                "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n",
                HVSPH_VERSION, norun ? ", re-read from earlier runs" : "");
   for (int k = 0; k < nrows; k++) {
@@ -235,30 +235,30 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
     if (isnan(paper)) paper = 0.5 * (r->paper_lo + r->paper_hi);
     double rel = NAN;
     if (!isnan(r->exp) && r->exp != 0) rel = (r->sim - r->exp) / r->exp;
-    afile_printf(&af, err, "%s,%s%s%s,%.6g,%.6g,%.6g,%s,%.4g\n", r->cas, r->quantity,
+    atomic_file_printf(&af, err, "%s,%s%s%s,%.6g,%.6g,%.6g,%s,%.4g\n", r->cas, r->quantity,
                  strchr(r->object, ':') || strcmp(r->object, "") ? ":" : "", r->object,
                  r->sim * f, r->exp * f, paper * f, u, rel);
   }
-  if (afile_commit(&af, err)) return -1;
+  if (atomic_file_commit(&af, err)) return -1;
 
   snprintf(path, sizeof path, "%s/validation.md", dir);
-  if (afile_open(&af, path, err)) return -1;
+  if (atomic_file_open(&af, path, err)) return -1;
   if (norun)
-    afile_printf(&af, err, "# Validation against the seed paper\n\nTables re-read by hvsph %s "
+    atomic_file_printf(&af, err, "# Validation against the seed paper\n\nTables re-read by hvsph %s "
                  "(`--no-run`) from earlier runs; the version, resolution and thread count "
                  "of each run are in its `used_parameters.yaml` and log.\n\n", HVSPH_VERSION);
   else
-    afile_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
+    atomic_file_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
                  "of the paper's (resolution %g), %d thread%s.\n\n", HVSPH_VERSION, scale, scale,
                  omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s");
   if (ov->nsets + ov->nswaps) {
-    afile_printf(&af, err, "Every case run with");
+    atomic_file_printf(&af, err, "Every case run with");
     for (int k = 0; k < ov->nswaps; k++)
-      afile_printf(&af, err, " `--material %s`", ov->swaps[k]);
-    for (int k = 0; k < ov->nsets; k++) afile_printf(&af, err, " `--set %s`", ov->sets[k]);
-    afile_printf(&af, err, " (the case files otherwise as committed).\n\n");
+      atomic_file_printf(&af, err, " `--material %s`", ov->swaps[k]);
+    for (int k = 0; k < ov->nsets; k++) atomic_file_printf(&af, err, " `--set %s`", ov->sets[k]);
+    atomic_file_printf(&af, err, " (the case files otherwise as committed).\n\n");
   }
-  afile_printf(&af, err,
+  atomic_file_printf(&af, err,
                "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
                "|---|---|---|---|---|---|---|---|\n");
   double sum_us = 0, sum_paper = 0;
@@ -286,12 +286,12 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
         }
       }
     }
-    afile_printf(&af, err, "| %s | %s (%s)%s%s | %s | %s%s | %s%s | %s | %s | %s |\n", r->cas,
+    atomic_file_printf(&af, err, "| %s | %s (%s)%s%s | %s | %s%s | %s%s | %s | %s | %s |\n", r->cas,
                  r->quantity, r->object, r->note[0] ? " ¹" : "", r->in_mean ? "" : " ²", s,
                  r->approx ? "~" : "", e, r->approx ? "~" : "", pp, u, eu, ep);
   }
   if (n_both)
-    afile_printf(&af, err, "\nMean |relative error| against the experiments, over the %d "
+    atomic_file_printf(&af, err, "\nMean |relative error| against the experiments, over the %d "
                  "quantities where both simulations give a number: hvsph %.1f %%, the paper's "
                  "KERNEL code %.1f %%. Rows marked ² are a second reading of an experimental "
                  "value already counted and are left out of the mean.\n", n_both,
@@ -299,22 +299,22 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   int noted = 0;   /* the notes' heading only where a row has one */
   for (int k = 0; k < nrows; k++)
     if (rows[k].note[0])
-      afile_printf(&af, err, "%s- %s, %s (%s): %s\n", noted++ ? "" : "\n¹ notes:\n\n",
+      atomic_file_printf(&af, err, "%s- %s, %s (%s): %s\n", noted++ ? "" : "\n¹ notes:\n\n",
                    rows[k].cas, rows[k].quantity, rows[k].object, rows[k].note);
-  afile_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
+  atomic_file_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
   for (int k = 0; k < ncase; k++) {
     char rt[64];
     if (isnan(cs[k].runtime)) snprintf(rt, sizeof rt, "(earlier run)");
     else if (cs[k].segments > 1)
       snprintf(rt, sizeof rt, "%.0f (%d segments)", cs[k].runtime, cs[k].segments);
     else snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
-    afile_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
+    atomic_file_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
                  cs[k].particles, rt,
                  cs[k].status == 0 ? "ok" : cs[k].status < 0 ? "not run"
                  : cs[k].status == HV_EXIT_INTERRUPTED ? "interrupted" : "failed", cs[k].name,
                  cs[k].name);
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 static int usage(void)

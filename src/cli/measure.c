@@ -1,4 +1,4 @@
-/* remeasure.c — `hvsph measure RUNDIR [--case FILE]`: the measurements of a finished
+/* measure.c — `hvsph measure RUNDIR [--case FILE]`: the measurements of a finished
  * (or interrupted) run taken again from its particle snapshots.
  *
  * A run writes measurements.csv as it goes; when the definitions of the measurements
@@ -15,7 +15,7 @@
  * It takes the run folder's lock (run/runfolder.h) as a run does: a run still going
  * rewrites measurements.csv at each output, so measuring it then is refused (exit 2).
  */
-#include "run/remeasure.h"
+#include "cli/measure.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -32,7 +32,7 @@
 #include "run/measure_run.h"
 #include "run/run.h"
 #include "run/runfolder.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 static void usage(FILE *f)
 {

@@ -1,6 +1,6 @@
 /* bench.h — `hvsph bench`: throughput of the solver on a uniform gas lattice. */
-#ifndef HV_BENCH_H
-#define HV_BENCH_H
+#ifndef HV_CLI_BENCH_H
+#define HV_CLI_BENCH_H
 
 struct bench_options {
   long particles;   /* approximate number (a cube of side round(cbrt(N))) */

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "run/sim.h"
+#include "sim/sim.h"
 
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {

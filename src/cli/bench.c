@@ -4,7 +4,7 @@
  * The material is an ideal gas, or with --solid the paper's aluminium alloy (library
  * al-alloy: Mie-Gruneisen EOS, von Mises strength, Tresca fracture, artificial
  * stress on). */
-#include "run/bench.h"
+#include "cli/bench.h"
 
 #include <math.h>
 #include <omp.h>
@@ -14,7 +14,7 @@
 
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 static long peak_rss_kib(void)
 {
