@@ -15,7 +15,7 @@
  * It takes the run folder's lock (run/runfolder.h) as a run does: a run still going
  * rewrites measurements.csv at each output, so measuring it then is refused (exit 2).
  */
-#include "cli/measure.h"
+#include "cli/cli.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -26,6 +26,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cli/options.h"
 #include "config/config.h"
 #include "diag/measure_table.h"
 #include "io/snapshot.h"
@@ -97,28 +98,31 @@ static int report_missing(const char *dir, const char *ext, const int *snaps, in
                       nmiss == 1 ? "" : "s");
 }
 
-int remeasure_main(int argc, char **argv)
+/* Every mistake on measure's command line is "bad argument", with the usage. */
+static int measure_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
+{
+  (void)c;
+  (void)e;
+  fprintf(stderr, "hvsph measure: bad argument '%s'\n", arg);
+  usage(stderr);
+  return HV_EXIT_USAGE;
+}
+
+int cli_measure(int argc, char **argv)
 {
   const char *dir = NULL, *casefile = NULL;
   int quiet = 0, skip_missing = 0;
-  for (int i = 0; i < argc; i++) {
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      usage(stdout);
-      return HV_EXIT_OK;
-    } else if (!strcmp(argv[i], "--case") && i + 1 < argc) {
-      casefile = argv[++i];
-    } else if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) {
-      quiet = 1;
-    } else if (!strcmp(argv[i], "--skip-missing")) {
-      skip_missing = 1;
-    } else if (argv[i][0] != '-' && !dir) {
-      dir = argv[i];
-    } else {
-      fprintf(stderr, "hvsph measure: bad argument '%s'\n", argv[i]);
-      usage(stderr);
-      return HV_EXIT_USAGE;
-    }
-  }
+  const struct cli_opt opts[] = {
+      {"--help", "-h", CLI_HELP, .dest = NULL},
+      {"--case", NULL, CLI_VALUE, .dest = &casefile},
+      {"--quiet", "-q", CLI_FLAG, .dest = &quiet, .flag = 1},
+      {"--skip-missing", NULL, CLI_FLAG, .dest = &skip_missing, .flag = 1},
+  };
+  const struct cli_cmd cmd = {.name = "measure", .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]), .positional = &dir,
+                              .fail = measure_fail, .help = usage};
+  const int st = cli_parse(&cmd, argc, argv);
+  if (st != CLI_GO_ON) return st;
   if (!dir) {
     usage(stderr);
     return HV_EXIT_USAGE;

@@ -16,7 +16,7 @@
  * (hvsph run --overwrite). DIR is locked for the whole validation and each case's folder
  * while it runs (run/runfolder.h), so that two validations do not write one DIR.
  */
-#include "cli/validate.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <omp.h>
@@ -25,6 +25,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cli/options.h"
 #include "config/config.h"
 #include "diag/measure_table.h"
 #include "run/restart.h"
@@ -325,234 +326,307 @@ static int usage(void)
   return HV_EXIT_USAGE;
 }
 
-static int validate(int argc, char **argv, struct runfolder_lock *lock);
+/* validate's command line */
+struct val_args {
+  double scale;                       /* on the particle counts */
+  const char *outdir, *cases;         /* DIR; the case files' folder (NULL: the paper's) */
+  const char *only[VAL_MAX_CASES];    /* --only: the cases run (none: all) */
+  int nonly;
+  int threads, norun, resume;
+  struct val_overrides ov;
+};
 
-int validate_main(int argc, char **argv)
+/* Every mistake on validate's command line prints the usage. */
+static int val_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
 {
-  struct runfolder_lock lock;
-  runfolder_lock_init(&lock);
-  const int status = validate(argc, argv, &lock);
-  runfolder_unlock(&lock);
-  return status;
+  (void)c;
+  (void)e;
+  (void)arg;
+  return usage();
 }
 
-static int validate(int argc, char **argv, struct runfolder_lock *lock)
+/* --scale: a positive finite factor on the particle counts */
+static int val_scale(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                     const char *val)
 {
-  double scale = 1.0;
-  const char *outdir = "out/validation", *cases = NULL, *only[VAL_MAX_CASES];
-  int nonly = 0, threads = 0, norun = 0, resume = 0;
-  static struct val_overrides ov;
-  for (int i = 0; i < argc; i++) {
-    if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
-      char *end;
-      scale = strtod(argv[++i], &end);
-      if (*end || !(scale > 0) || !isfinite(scale)) return usage();
-    } else if ((!strcmp(argv[i], "-o") || !strcmp(argv[i], "--output")) && i + 1 < argc) {
-      outdir = argv[++i];
-    } else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
-      char *end;   /* as hvsph run's: 1 to 4096, the whole argument a number */
-      const long v = strtol(argv[++i], &end, 10);
-      if (end == argv[i] || *end || v < 1 || v > 4096) return usage();
-      threads = (int)v;
-    } else if (!strcmp(argv[i], "--cases") && i + 1 < argc) {
-      cases = argv[++i];
-    } else if (!strcmp(argv[i], "--no-run")) {
-      norun = 1;
-    } else if (!strcmp(argv[i], "--resume")) {
-      resume = 1;
-    } else if (!strcmp(argv[i], "--set") && i + 1 < argc && ov.nsets < VAL_MAX_OVERRIDES) {
-      ov.sets[ov.nsets++] = argv[++i];
-    } else if (!strcmp(argv[i], "--material") && i + 1 < argc && ov.nswaps < VAL_MAX_OVERRIDES) {
-      ov.swaps[ov.nswaps++] = argv[++i];
-    } else if (!strcmp(argv[i], "--only")) {
-      const int before = nonly;
-      while (i + 1 < argc && argv[i + 1][0] != '-' && nonly < VAL_MAX_CASES) only[nonly++] = argv[++i];
-      if (nonly == before) return usage();   /* no name: not every case */
-    } else {
-      return usage();
-    }
-  }
-  if (norun && ov.nsets + ov.nswaps) {
+  (void)c;
+  (void)opt;
+  char *end;
+  const double v = strtod(val, &end);
+  if (*end || !(v > 0) || !isfinite(v)) return usage();
+  *(double *)o->dest = v;
+  return CLI_GO_ON;
+}
+
+/* --threads: as hvsph check's, 1 to 4096, the whole argument a decimal number */
+static int val_threads(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                       const char *val)
+{
+  (void)c;
+  (void)opt;
+  long v;
+  if (cli_decimal(val, o->lo, o->hi, &v)) return usage();
+  *(int *)o->dest = (int)v;
+  return CLI_GO_ON;
+}
+
+/* Reads the command line into a; returns CLI_GO_ON or the exit status. */
+static int parse_args(int argc, char **argv, struct val_args *a)
+{
+  struct cli_list sets = {a->ov.sets, 0, VAL_MAX_OVERRIDES};
+  struct cli_list swaps = {a->ov.swaps, 0, VAL_MAX_OVERRIDES};
+  struct cli_list only = {a->only, 0, VAL_MAX_CASES};
+  const struct cli_opt opts[] = {
+      {"--scale", NULL, CLI_VALUE, .dest = &a->scale, .convert = val_scale},
+      {"--output", "-o", CLI_VALUE, .dest = &a->outdir},
+      {"--threads", NULL, CLI_VALUE, .dest = &a->threads, .convert = val_threads, .lo = 1,
+       .hi = 4096},
+      {"--cases", NULL, CLI_VALUE, .dest = &a->cases},
+      {"--no-run", NULL, CLI_FLAG, .dest = &a->norun, .flag = 1},
+      {"--resume", NULL, CLI_FLAG, .dest = &a->resume, .flag = 1},
+      {"--set", NULL, CLI_LIST, .dest = &sets},
+      {"--material", NULL, CLI_LIST, .dest = &swaps},
+      {"--only", NULL, CLI_WORDS, .dest = &only},   /* no name: not every case */
+  };
+  const struct cli_cmd cmd = {.name = "validate", .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]), .fail = val_fail};
+  const int st = cli_parse(&cmd, argc, argv);
+  a->ov.nsets = sets.n;
+  a->ov.nswaps = swaps.n;
+  a->nonly = only.n;
+  if (st != CLI_GO_ON) return st;
+  if (a->norun && a->ov.nsets + a->ov.nswaps) {
     fprintf(stderr, "hvsph validate: --set and --material change the runs; with --no-run "
                     "nothing is run (each run's used_parameters.yaml holds what it ran with)\n");
     return HV_EXIT_USAGE;
   }
-  if (threads > 0) omp_set_num_threads(threads);
+  return CLI_GO_ON;
+}
+
+/* Whether the case `name` is one this validation takes (--only, or all). */
+static int wanted(const struct val_args *a, const char *name)
+{
+  int want = a->nonly == 0;
+  for (int k = 0; k < a->nonly; k++) want |= !strcmp(name, a->only[k]);
+  return want;
+}
+
+/* Every --only name is a case of refpath's. */
+static int check_only(const struct val_args *a, const char *const *names, int nnames,
+                      const char *refpath, struct hv_error *err)
+{
+  for (int k = 0; k < a->nonly; k++) {
+    int found = 0;
+    for (int j = 0; j < nnames; j++) found |= !strcmp(names[j], a->only[k]);
+    if (!found)
+      return hv_error_set(err, HV_EXIT_INPUT, "validate: no case '%s' in %s", a->only[k],
+                          refpath);
+  }
+  return 0;
+}
+
+/* Each --material swap is taken by a body of some selected case: checked on the case
+ * files before anything runs (a misspelt name would run every case unchanged). */
+static int check_swaps(const struct val_args *a, const char *const *names, int nnames,
+                       const char *casedir, struct hv_error *err)
+{
+  int hits[VAL_MAX_OVERRIDES] = {0};
+  for (int j = 0; j < nnames; j++) {
+    if (!wanted(a, names[j])) continue;
+    char cf[8400];
+    snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
+    struct cfg *cc = cfg_load(cf, err);
+    if (!cc) return -1;   /* a case that cannot be read: said here, not as a swap that took nothing */
+    struct hv_error serr;
+    const int level = hv_log_level;
+    hv_log_level = 1;   /* the runs log their overrides */
+    for (int k = 0; k < a->ov.nsets; k++) {
+      hv_error_clear(&serr);
+      cfg_apply_set(cc, a->ov.sets[k], &serr);
+    }
+    const int rc = run_apply_swaps(cc, a->ov.swaps, a->ov.nswaps, 0, hits, err);
+    hv_log_level = level;
+    cfg_free(cc);
+    if (rc) return -1;
+  }
+  for (int k = 0; k < a->ov.nswaps; k++)
+    if (!hits[k])
+      return hv_error_set(err, HV_EXIT_INPUT, "validate: --material %s: no body of the "
+                          "selected case(s) in %s has that material", a->ov.swaps[k], casedir);
+  return 0;
+}
+
+/* The run's wall time over all its segments (runs and restarts), when recorded. */
+static void case_runtime(const char *dir, struct val_case *vc)
+{
+  char spath[4300];
+  snprintf(spath, sizeof spath, "%s/run_segments.csv", dir);
+  double *wall = NULL;
+  struct hv_error serr;
+  const int nseg = access(spath, R_OK) ? 0 : io_read_table_column(spath, "wall_s", &wall, &serr);
+  if (nseg > 0) {
+    vc->runtime = 0.0;
+    for (int k = 0; k < nseg; k++) vc->runtime += wall[k];
+    vc->segments = nseg;
+  }
+  free(wall);
+}
+
+/* A validation under way: the reference, the rows and cases so far. */
+struct val_run {
+  struct val_args *a;
+  struct cfg *ref;             /* data/paper_results.yaml */
+  char casedir[4200];
+  struct val_row *rows;
+  int nrows;
+  struct val_case *cs;
+  int ncase, failed, interrupted;
+  struct meas_table mt;        /* the measurements of the case at hand */
+};
+
+/* The rows of case `name`: each quantity of the reference with its experiment's and the
+ * paper's values, and the simulated one from v->mt. Returns 0 or -1 with err set. */
+static int read_rows(struct val_run *v, const char *name, struct hv_error *err)
+{
+  char key[256];
+  const int nq = cfg_len(v->ref, name);
+  for (int q = 0; q < nq && v->nrows < VAL_MAX_ROWS; q++) {
+    struct val_row *r = &v->rows[v->nrows++];
+    const char *s;
+    memset(r, 0, sizeof *r);
+    snprintf(r->cas, sizeof r->cas, "%s", name);
+    snprintf(key, sizeof key, "%s[%d].quantity", name, q);
+    if (cfg_get_string(v->ref, key, NULL, &s, err)) return -1;
+    snprintf(r->quantity, sizeof r->quantity, "%s", s);
+    snprintf(key, sizeof key, "%s[%d].object", name, q);
+    if (cfg_get_string(v->ref, key, "", &s, err)) return -1;
+    snprintf(r->object, sizeof r->object, "%s", s);
+    snprintf(key, sizeof key, "%s[%d].note", name, q);
+    if (cfg_get_string(v->ref, key, "", &s, err)) return -1;
+    snprintf(r->note, sizeof r->note, "%s", s);
+    snprintf(key, sizeof key, "%s[%d].approx", name, q);
+    int no = 0;
+    if (cfg_get_bool(v->ref, key, &no, &r->approx, err)) return -1;
+    snprintf(key, sizeof key, "%s[%d].in_mean", name, q);
+    int yes = 1;
+    if (cfg_get_bool(v->ref, key, &yes, &r->in_mean, err)) return -1;
+    enum unit_dim d = dim_of(r->quantity);
+    double one = 1.0, sc;
+    snprintf(key, sizeof key, "%s[%d].scale", name, q);
+    if (cfg_get_quantity(v->ref, key, UNIT_NONE, &one, -HUGE_VAL, HUGE_VAL, &sc, err)) return -1;
+    snprintf(key, sizeof key, "%s[%d].experiment", name, q);
+    r->exp = get_opt(v->ref, key, d, err);
+    snprintf(key, sizeof key, "%s[%d].paper", name, q);
+    r->paper = get_opt(v->ref, key, d, err);
+    snprintf(key, sizeof key, "%s[%d].paper_low", name, q);
+    r->paper_lo = get_opt(v->ref, key, d, err);
+    snprintf(key, sizeof key, "%s[%d].paper_high", name, q);
+    r->paper_hi = get_opt(v->ref, key, d, err);
+    if (err->code) return -1;
+    char unit[16];
+    double val = pick_measurement(&v->mt, r->quantity, r->object, unit, sizeof unit);
+    if (d == UNIT_ANGLE) val *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
+    r->sim = val * sc;
+  }
+  return 0;
+}
+
+/* One case: its run (unless --no-run), its radiograph and its rows. Returns 0, -1 with
+ * err set, or HV_EXIT_INPUT once the case's bad input has been said. */
+static int validate_case(struct val_run *v, const char *name, struct hv_error *err)
+{
+  struct val_args *a = v->a;
+  struct val_case *vc = &v->cs[v->ncase++];
+  snprintf(vc->name, sizeof vc->name, "%s", name);
+  vc->runtime = NAN;
+  vc->status = -1;
+  char dir[4200], mpath[4300], png[4300];
+  snprintf(dir, sizeof dir, "%s/%s", a->outdir, name);
+  /* a case stopped by the user with its state written has not failed */
+  if (!a->norun && run_case(v->casedir, name, dir, a->scale, a->threads, a->resume, &a->ov, vc) &&
+      vc->status != HV_EXIT_INTERRUPTED)
+    v->failed++;
+  /* bad input (a --set the case does not take, a missing case file, a checkpoint of
+     another case): its run has said what; the same would stop the later cases, and the
+     tables of an earlier validation in DIR are kept */
+  if (!a->norun && vc->status == HV_EXIT_INPUT) {
+    fprintf(stderr, "hvsph validate: %s: bad input (above): the later cases are not run, "
+                    "%s/validation.md and validation.csv are left as they were\n", name,
+            a->outdir);
+    return HV_EXIT_INPUT;
+  }
+  /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
+     too, also when writing that state failed: the tables are written for the cases
+     so far */
+  v->interrupted = !a->norun && (vc->status == HV_EXIT_INTERRUPTED || run_interrupted());
+  vc->particles = particles_of(dir);
+  if (a->norun) vc->status = vc->particles >= 0 ? 0 : -1;   /* no summary.csv: no run */
+  case_runtime(dir, vc);
+  snprintf(png, sizeof png, "%s/final.png", dir);
+  struct hv_error rerr;   /* a warning only: not the validation's error */
+  hv_error_clear(&rerr);
+  if (render_final(dir, png, &rerr)) hv_warn("%s: no radiograph: %s", name, rerr.msg);
+  snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
+  meas_table_free(&v->mt);
+  struct hv_error merr;
+  if (meas_table_read(&v->mt, mpath, &merr)) hv_warn("%s: %s", name, merr.msg);
+  return read_rows(v, name, err);
+}
+
+static int validate(struct val_args *a, struct runfolder_lock *lock)
+{
+  if (a->threads > 0) omp_set_num_threads(a->threads);
   struct hv_error err;
   hv_error_clear(&err);
-  char lib[4096], refpath[4200], casedir[4200];
+  static struct val_row rows[VAL_MAX_ROWS];
+  static struct val_case cs[VAL_MAX_CASES];
+  struct val_run v = {.a = a, .rows = rows, .cs = cs};
+  char lib[4096], refpath[4200];
   if (material_library_path(lib, sizeof lib, &err)) goto fail;
   char *slash = strrchr(lib, '/');
   if (slash) *slash = 0;
   snprintf(refpath, sizeof refpath, "%s/paper_results.yaml", lib);
-  snprintf(casedir, sizeof casedir, "%s", cases ? cases : "examples/paper");
-  if (!cases && slash) snprintf(casedir, sizeof casedir, "%s/../examples/paper", lib);
-  struct cfg *ref = cfg_load(refpath, &err);
-  if (!ref) goto fail;
+  snprintf(v.casedir, sizeof v.casedir, "%s", a->cases ? a->cases : "examples/paper");
+  if (!a->cases && slash) snprintf(v.casedir, sizeof v.casedir, "%s/../examples/paper", lib);
+  v.ref = cfg_load(refpath, &err);
+  if (!v.ref) goto fail;
   const char *const *names;
-  int nnames = cfg_keys(ref, NULL, &names);
-  for (int k = 0; k < nonly; k++) {
-    int found = 0;
-    for (int j = 0; j < nnames; j++) found |= !strcmp(names[j], only[k]);
-    if (!found) {
-      hv_error_set(&err, HV_EXIT_INPUT, "validate: no case '%s' in %s", only[k], refpath);
-      cfg_free(ref);
-      goto fail;
-    }
-  }
-  /* each --material swap must be taken by a body of some selected case: checked on the
-     case files before anything runs (a misspelt name would run every case unchanged) */
-  if (ov.nswaps && !norun) {
-    int hits[VAL_MAX_OVERRIDES] = {0};
-    for (int j = 0; j < nnames; j++) {
-      int want = nonly == 0;
-      for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
-      if (!want) continue;
-      char cf[8400];
-      snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
-      struct cfg *cc = cfg_load(cf, &err);
-      if (!cc) {   /* a case that cannot be read: said here, not as a swap that took nothing */
-        cfg_free(ref);
-        goto fail;
-      }
-      struct hv_error serr;
-      const int level = hv_log_level;
-      hv_log_level = 1;   /* the runs log their overrides */
-      for (int k = 0; k < ov.nsets; k++) {
-        hv_error_clear(&serr);
-        cfg_apply_set(cc, ov.sets[k], &serr);
-      }
-      const int rc = run_apply_swaps(cc, ov.swaps, ov.nswaps, 0, hits, &err);
-      hv_log_level = level;
-      cfg_free(cc);
-      if (rc) {
-        cfg_free(ref);
-        goto fail;
-      }
-    }
-    for (int k = 0; k < ov.nswaps; k++)
-      if (!hits[k]) {
-        hv_error_set(&err, HV_EXIT_INPUT, "validate: --material %s: no body of the selected "
-                     "case(s) in %s has that material", ov.swaps[k], casedir);
-        cfg_free(ref);
-        goto fail;
-      }
-  }
+  const int nnames = cfg_keys(v.ref, NULL, &names);
   /* the folder only once the options are known to be good */
-  if (io_mkdir_p(outdir, &err) || runfolder_lock(lock, outdir, "validate", 0, &err)) {
-    cfg_free(ref);
+  if (check_only(a, names, nnames, refpath, &err) ||
+      (a->ov.nswaps && !a->norun && check_swaps(a, names, nnames, v.casedir, &err)) ||
+      io_mkdir_p(a->outdir, &err) || runfolder_lock(lock, a->outdir, "validate", 0, &err)) {
+    cfg_free(v.ref);
     goto fail;
   }
-  static struct val_row rows[VAL_MAX_ROWS];
-  static struct val_case cs[VAL_MAX_CASES];
-  int nrows = 0, ncase = 0, failed = 0, interrupted = 0;
-  struct meas_table mt;
-  meas_table_init(&mt);
-  for (int j = 0; j < nnames && ncase < VAL_MAX_CASES && !interrupted; j++) {
-    int want = nonly == 0;
-    for (int k = 0; k < nonly; k++) want |= !strcmp(names[j], only[k]);
-    if (!want) continue;
-    struct val_case *vc = &cs[ncase++];
-    snprintf(vc->name, sizeof vc->name, "%s", names[j]);
-    vc->runtime = NAN;
-    vc->status = -1;
-    char dir[4200], mpath[4300], png[4300];
-    snprintf(dir, sizeof dir, "%s/%s", outdir, names[j]);
-    /* a case stopped by the user with its state written has not failed */
-    if (!norun && run_case(casedir, names[j], dir, scale, threads, resume, &ov, vc) &&
-        vc->status != HV_EXIT_INTERRUPTED)
-      failed++;
-    /* bad input (a --set the case does not take, a missing case file, a checkpoint of
-       another case): its run has said what; the same would stop the later cases, and the
-       tables of an earlier validation in DIR are kept */
-    if (!norun && vc->status == HV_EXIT_INPUT) {
-      fprintf(stderr, "hvsph validate: %s: bad input (above): the later cases are not run, "
-                      "%s/validation.md and validation.csv are left as they were\n", names[j],
-              outdir);
-      meas_table_free(&mt);
-      cfg_free(ref);
-      return HV_EXIT_INPUT;
-    }
-    /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
-       too, also when writing that state failed: the tables are written for the cases
-       so far */
-    interrupted = !norun && (vc->status == HV_EXIT_INTERRUPTED || run_interrupted());
-    vc->particles = particles_of(dir);
-    if (norun) vc->status = vc->particles >= 0 ? 0 : -1;   /* no summary.csv: no run */
-    {   /* the run's wall time over all its segments (runs and restarts), when recorded */
-      char spath[4300];
-      snprintf(spath, sizeof spath, "%s/run_segments.csv", dir);
-      double *wall = NULL;
-      struct hv_error serr;
-      const int nseg = access(spath, R_OK) ? 0 : io_read_table_column(spath, "wall_s", &wall, &serr);
-      if (nseg > 0) {
-        vc->runtime = 0.0;
-        for (int k = 0; k < nseg; k++) vc->runtime += wall[k];
-        vc->segments = nseg;
-      }
-      free(wall);
-    }
-    snprintf(png, sizeof png, "%s/final.png", dir);
-    struct hv_error rerr;   /* a warning only: not the validation's error */
-    hv_error_clear(&rerr);
-    if (render_final(dir, png, &rerr)) hv_warn("%s: no radiograph: %s", names[j], rerr.msg);
-    snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
-    meas_table_free(&mt);
-    struct hv_error merr;
-    if (meas_table_read(&mt, mpath, &merr)) hv_warn("%s: %s", names[j], merr.msg);
-    char key[256];
-    int nq = cfg_len(ref, names[j]);
-    for (int q = 0; q < nq && nrows < VAL_MAX_ROWS; q++) {
-      struct val_row *r = &rows[nrows++];
-      const char *s;
-      memset(r, 0, sizeof *r);
-      snprintf(r->cas, sizeof r->cas, "%s", names[j]);
-      snprintf(key, sizeof key, "%s[%d].quantity", names[j], q);
-      if (cfg_get_string(ref, key, NULL, &s, &err)) goto fail_ref;
-      snprintf(r->quantity, sizeof r->quantity, "%s", s);
-      snprintf(key, sizeof key, "%s[%d].object", names[j], q);
-      if (cfg_get_string(ref, key, "", &s, &err)) goto fail_ref;
-      snprintf(r->object, sizeof r->object, "%s", s);
-      snprintf(key, sizeof key, "%s[%d].note", names[j], q);
-      if (cfg_get_string(ref, key, "", &s, &err)) goto fail_ref;
-      snprintf(r->note, sizeof r->note, "%s", s);
-      snprintf(key, sizeof key, "%s[%d].approx", names[j], q);
-      int no = 0;
-      if (cfg_get_bool(ref, key, &no, &r->approx, &err)) goto fail_ref;
-      snprintf(key, sizeof key, "%s[%d].in_mean", names[j], q);
-      int yes = 1;
-      if (cfg_get_bool(ref, key, &yes, &r->in_mean, &err)) goto fail_ref;
-      enum unit_dim d = dim_of(r->quantity);
-      double one = 1.0, sc;
-      snprintf(key, sizeof key, "%s[%d].scale", names[j], q);
-      if (cfg_get_quantity(ref, key, UNIT_NONE, &one, -HUGE_VAL, HUGE_VAL, &sc, &err)) goto fail_ref;
-      snprintf(key, sizeof key, "%s[%d].experiment", names[j], q);
-      r->exp = get_opt(ref, key, d, &err);
-      snprintf(key, sizeof key, "%s[%d].paper", names[j], q);
-      r->paper = get_opt(ref, key, d, &err);
-      snprintf(key, sizeof key, "%s[%d].paper_low", names[j], q);
-      r->paper_lo = get_opt(ref, key, d, &err);
-      snprintf(key, sizeof key, "%s[%d].paper_high", names[j], q);
-      r->paper_hi = get_opt(ref, key, d, &err);
-      if (err.code) goto fail_ref;
-      char unit[16];
-      double v = pick_measurement(&mt, r->quantity, r->object, unit, sizeof unit);
-      if (d == UNIT_ANGLE) v *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
-      r->sim = v * sc;
-    }
-  }
-  meas_table_free(&mt);
-  cfg_free(ref);
-  if (write_reports(outdir, rows, nrows, cs, ncase, scale, norun, &ov, &err)) goto fail;
+  meas_table_init(&v.mt);
+  int st = 0;
+  for (int j = 0; j < nnames && v.ncase < VAL_MAX_CASES && !v.interrupted && !st; j++)
+    if (wanted(a, names[j])) st = validate_case(&v, names[j], &err);
+  meas_table_free(&v.mt);
+  cfg_free(v.ref);
+  if (st == HV_EXIT_INPUT) return HV_EXIT_INPUT;
+  if (st || write_reports(a->outdir, rows, v.nrows, cs, v.ncase, a->scale, a->norun, &a->ov,
+                          &err))
+    goto fail;
 
   fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
-                  "validation.csv\n", ncase, failed,
-          interrupted ? ", interrupted (the later cases were not run)" : "", outdir);
-  return interrupted ? HV_EXIT_INTERRUPTED : failed ? HV_EXIT_RUN : 0;
-fail_ref:
-  meas_table_free(&mt);
-  cfg_free(ref);
+                  "validation.csv\n", v.ncase, v.failed,
+          v.interrupted ? ", interrupted (the later cases were not run)" : "", a->outdir);
+  return v.interrupted ? HV_EXIT_INTERRUPTED : v.failed ? HV_EXIT_RUN : 0;
 fail:
   hv_log(0, "%s", err.msg);
   return err.code ? err.code : HV_EXIT_RUN;
+}
+
+int cli_validate(int argc, char **argv)
+{
+  struct val_args a = {.scale = 1.0, .outdir = "out/validation"};
+  const int st = parse_args(argc, argv, &a);
+  if (st != CLI_GO_ON) return st;
+  struct runfolder_lock lock;
+  runfolder_lock_init(&lock);
+  const int status = validate(&a, &lock);
+  runfolder_unlock(&lock);
+  return status;
 }
