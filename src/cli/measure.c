@@ -98,6 +98,91 @@ static int report_missing(const char *dir, const char *ext, const int *snaps, in
                       nmiss == 1 ? "" : "s");
 }
 
+/* The particles of snapshot spath (number k) belong to the case's bodies and
+ * materials, and snapshot 0 has each body's count of the set-up: its spacings feed the
+ * measurements. Returns 0 or -1 with err set (bad input). */
+static int check_particles(const struct sim *s, const char *spath, int k, const char *casefile,
+                           struct hv_error *err)
+{
+  for (size_t i = 0; i < s->p.n; i++)
+    if (s->p.body[i] < 0 || s->p.body[i] >= s->nbody || s->p.mat[i] < 0 || s->p.mat[i] >= s->nmat)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: particle id %lld: body %d or material %d is "
+                          "not one of the case's (%s)", spath, (long long)s->p.id[i],
+                          (int)s->p.body[i], (int)s->p.mat[i], casefile);
+  if (k != 0) return 0;
+  size_t cnt[sizeof s->body / sizeof s->body[0]] = {0};
+  for (size_t i = 0; i < s->p.n; i++) cnt[s->p.body[i]]++;
+  for (int b = 0; b < s->nbody; b++)
+    if (cnt[b] != s->body[b].count)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: %zu particles of body '%s', where %s set up "
+                          "by this hvsph gives %zu: the run was set up differently (by another "
+                          "version's particle counts, docs/case-files.md 'particles'); measure "
+                          "it with the hvsph that ran it", spath, cnt[b], s->body[b].name,
+                          casefile, s->body[b].count);
+  return 0;
+}
+
+/* The peak pressure of the earlier measurements.csv at time t, where higher, carried
+ * into mr: the snapshots hold the pressure at output times only, the run saw every step. */
+static void carry_peak(const struct meas_table *old, struct measure_run *mr, double t)
+{
+  for (size_t q = 0; q < old->n; q++) {
+    const struct meas_row *r = &old->rows[q];
+    if (!strcmp(r->quantity, "peak_pressure_center") && isfinite(r->value) &&
+        fabs(r->time - t) <= 1e-9 * fmax(fabs(t), 1e-12) && r->value > mr->peak_pressure)
+      mr->peak_pressure = r->value;
+  }
+}
+
+/* Snapshot k of the run in dir measured, its files written into stage. Returns 1
+ * measured, 0 skipped (not one of the run's outputs), -1 failed with err set. */
+static int measure_snapshot(struct sim *s, struct measure_run *mr, const struct meas_table *old,
+                            const char *dir, const char *ext, int k, const double *times,
+                            int nt, const char *stage, const char *const *matnames,
+                            const char *casefile, int quiet, struct hv_error *err)
+{
+  char spath[4400];
+  snprintf(spath, sizeof spath, "%s/particles_%05d.%s", dir, k, ext);
+  s->p.n = 0;
+  double t = NAN;
+  if ((nt < 0 || k < nt) && io_read_particles(spath, &s->p, &t, err)) return -1;
+  if (!io_snapshot_in_run(k, t, times, nt)) {
+    hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
+            "folder): skipped", spath);
+    return 0;
+  }
+  if (check_particles(s, spath, k, casefile, err)) return -1;
+  s->t = isfinite(t) ? t : 0.0;
+  if (k > 0) measure_run_step(mr, s);   /* as a run: no step before snapshot 0 */
+  carry_peak(old, mr, s->t);
+  const int mrc = measure_run_output(mr, s, k, stage, matnames, err);
+  if (mrc == MEASURE_FAILED_DATA) {   /* the snapshot's particles, not the run: bad input */
+    err->code = HV_EXIT_INPUT;
+    hv_error_prefix(err, "%s: ", spath);
+  }
+  if (mrc) return -1;
+  if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s->t, s->p.n);
+  return 1;
+}
+
+/* The run's case c (read from casefile) set up as the run was, with its measurements.
+ * Returns 0 or -1 with err set. */
+static int set_up(const char *casefile, struct cfg *c, struct sim *s, struct measure_run *mr,
+                  struct hv_error *err)
+{
+  /* the set-up's notes and warnings (spacings fitted to a plate, a lattice that overfills
+     its shape) are the run's, which said them: not again (errors come back in err) */
+  const int level = hv_log_level;
+  hv_log_level = 0;
+  const int bad = run_setup(s, c, err);
+  hv_log_level = level;
+  if (bad || measure_run_read(mr, s, c, err) || cfg_check_unused(c, err)) return -1;
+  if (!mr->any)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: the case has no 'measure' section: nothing "
+                        "to measure (docs/case-files.md)", casefile);
+  return 0;
+}
+
 /* Every mistake on measure's command line is "bad argument", with the usage. */
 static int measure_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
 {
@@ -148,18 +233,7 @@ int cli_measure(int argc, char **argv)
     casefile = path;
   }
   c = cfg_load(casefile, &err);
-  /* the set-up's notes and warnings (spacings fitted to a plate, a lattice that overfills
-     its shape) are the run's, which said them: not again (errors come back in err) */
-  const int level = hv_log_level;
-  hv_log_level = 0;
-  const int bad = !c || run_setup(&s, c, &err);
-  hv_log_level = level;
-  if (bad || measure_run_read(&mr, &s, c, &err) || cfg_check_unused(c, &err)) goto fail;
-  if (!mr.any) {
-    hv_error_set(&err, HV_EXIT_INPUT, "%s: the case has no 'measure' section: nothing to "
-                 "measure (docs/case-files.md)", casefile);
-    goto fail;
-  }
+  if (!c || set_up(casefile, c, &s, &mr, &err)) goto fail;
   /* one writer at a time: a run still going rewrites measurements.csv itself */
   if (runfolder_lock(&lock, dir, "measure", quiet, &err)) goto fail;
   int ns;
@@ -196,52 +270,10 @@ int cli_measure(int argc, char **argv)
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
   int measured = 0;
   for (int j = 0; j < ns; j++) {
-    const int k = snaps[j];
-    snprintf(spath, sizeof spath, "%s/particles_%05d.%s", dir, k, ext);
-    s.p.n = 0;
-    double t = NAN;
-    if ((nt < 0 || k < nt) && io_read_particles(spath, &s.p, &t, &err)) goto fail;
-    if (!io_snapshot_in_run(k, t, times, nt)) {
-      hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
-              "folder): skipped", spath);
-      continue;
-    }
-    measured++;
-    for (size_t i = 0; i < s.p.n; i++)
-      if (s.p.body[i] < 0 || s.p.body[i] >= s.nbody || s.p.mat[i] < 0 || s.p.mat[i] >= s.nmat) {
-        hv_error_set(&err, HV_EXIT_INPUT, "%s: particle id %lld: body %d or material %d is not "
-                     "one of the case's (%s)", spath, (long long)s.p.id[i], (int)s.p.body[i],
-                     (int)s.p.mat[i], casefile);
-        goto fail;
-      }
-    if (k == 0) {   /* the set-up must be the run's: its spacings feed the measurements */
-      size_t cnt[sizeof s.body / sizeof s.body[0]] = {0};
-      for (size_t i = 0; i < s.p.n; i++) cnt[s.p.body[i]]++;
-      for (int b = 0; b < s.nbody; b++)
-        if (cnt[b] != s.body[b].count) {
-          hv_error_set(&err, HV_EXIT_INPUT, "%s: %zu particles of body '%s', where %s set up "
-                       "by this hvsph gives %zu: the run was set up differently (by another "
-                       "version's particle counts, docs/case-files.md 'particles'); measure it "
-                       "with the hvsph that ran it", spath, cnt[b], s.body[b].name, casefile,
-                       s.body[b].count);
-          goto fail;
-        }
-    }
-    s.t = isfinite(t) ? t : 0.0;
-    if (k > 0) measure_run_step(&mr, &s);   /* as a run: no step before snapshot 0 */
-    for (size_t q = 0; q < old.n; q++) {
-      const struct meas_row *r = &old.rows[q];
-      if (!strcmp(r->quantity, "peak_pressure_center") && isfinite(r->value) &&
-          fabs(r->time - s.t) <= 1e-9 * fmax(fabs(s.t), 1e-12) && r->value > mr.peak_pressure)
-        mr.peak_pressure = r->value;
-    }
-    const int mrc = measure_run_output(&mr, &s, k, stage, matnames, &err);
-    if (mrc == MEASURE_FAILED_DATA) {   /* the snapshot's particles, not the run: bad input */
-      err.code = HV_EXIT_INPUT;
-      hv_error_prefix(&err, "%s: ", spath);
-    }
-    if (mrc) goto fail;
-    if (!quiet) hv_info("measured %s (t = %g s, %zu particles)", spath, s.t, s.p.n);
+    const int rc = measure_snapshot(&s, &mr, &old, dir, ext, snaps[j], times, nt, stage,
+                                    matnames, casefile, quiet, &err);
+    if (rc < 0) goto fail;
+    measured += rc;
   }
   if (!measured) {
     hv_error_set(&err, HV_EXIT_INPUT, "%s: none of the snapshots matches the run's summary.csv",
