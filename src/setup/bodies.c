@@ -706,11 +706,12 @@ static long meet_cell(double u, double u0, double cell) { return (long)floor((u 
  * at a body; columns of reach/2, so b's particles up to 1.5 reach from the footprint
  * across the flight may count too). A region too wide for either grid answers 1 (the
  * warning is kept rather than missed). */
-static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
+/* Whether bodies a and b touch at the start: a pair of their particles closer than
+ * reach, found on the solver's cell grid (1 also when the region is too wide for it). */
+static int bodies_touch(const struct sim *s, const size_t *first_of, int a, int b, double reach)
 {
   const struct particles *p = &s->p;
   const struct body_info *A = &s->body[a], *B = &s->body[b];
-  const double reach = 2.0 * fmax(A->spacing, B->spacing);
   const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
   /* 1: touching at the start: the particles of both within the overlap of their boxes
      grown by reach, on the solver's cell grid with h = reach/2 (a pair links when
@@ -722,49 +723,58 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
     hi[d] = fmin(A->hi[d], B->hi[d]) + reach;
     overlap &= hi[d] >= lo[d];
   }
-  if (overlap) {
-    size_t n = 0;
-    uint32_t *id = hv_malloc((na + nb + 1) * sizeof *id, "body contact selection");
-    for (size_t q = 0; q < na + nb; q++) {
-      const size_t r = q < na ? fa + q : fb + (q - na);
-      int in = 1;
-      for (int d = 0; d < 3; d++) in &= p->x[d][r] >= lo[d] && p->x[d][r] <= hi[d];
-      if (in) id[n++] = (uint32_t)r;
-    }
-    double *xs[3], *hs = hv_malloc((n + 1) * sizeof *hs, "body contact h");
-    for (int d = 0; d < 3; d++) xs[d] = hv_malloc((n + 1) * sizeof *xs[d], "body contact x");
-    for (size_t k = 0; k < n; k++) {
-      for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][id[k]];
-      hs[k] = 0.5 * reach;
-    }
-    struct nbr_grid g;
-    nbr_grid_init(&g);
-    char msg[256];
-    int meet = 0;
-    if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
-                                nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
-      meet = 1;   /* too wide a region for the grid: keep the warning */
-    for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
-      for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
-        const uint32_t i = g.order[ii];
-        const int ia = p->body[id[i]] == a;
-        for (uint32_t kk = g.nbr_start[cc]; kk < g.nbr_start[cc + 1] && !meet; kk++) {
-          const int32_t nc = g.nbr_list[kk];
-          for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
-            const uint32_t j = g.order[jj];
-            if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
-            const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
-                         dz = xs[2][i] - xs[2][j];
-            meet = dx * dx + dy * dy + dz * dz < reach * reach;
-          }
+  if (!overlap) return 0;
+  size_t n = 0;
+  uint32_t *id = hv_malloc((na + nb + 1) * sizeof *id, "body contact selection");
+  for (size_t q = 0; q < na + nb; q++) {
+    const size_t r = q < na ? fa + q : fb + (q - na);
+    int in = 1;
+    for (int d = 0; d < 3; d++) in &= p->x[d][r] >= lo[d] && p->x[d][r] <= hi[d];
+    if (in) id[n++] = (uint32_t)r;
+  }
+  double *xs[3], *hs = hv_malloc((n + 1) * sizeof *hs, "body contact h");
+  for (int d = 0; d < 3; d++) xs[d] = hv_malloc((n + 1) * sizeof *xs[d], "body contact x");
+  for (size_t k = 0; k < n; k++) {
+    for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][id[k]];
+    hs[k] = 0.5 * reach;
+  }
+  struct nbr_grid g;
+  nbr_grid_init(&g);
+  char msg[256];
+  int meet = 0;
+  if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
+                              nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
+    meet = 1;   /* too wide a region for the grid: keep the warning */
+  for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
+    for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
+      const uint32_t i = g.order[ii];
+      const int ia = p->body[id[i]] == a;
+      for (uint32_t kk = g.nbr_start[cc]; kk < g.nbr_start[cc + 1] && !meet; kk++) {
+        const int32_t nc = g.nbr_list[kk];
+        for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
+          const uint32_t j = g.order[jj];
+          if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
+          const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
+                       dz = xs[2][i] - xs[2][j];
+          meet = dx * dx + dy * dy + dz * dz < reach * reach;
         }
       }
-    nbr_grid_free(&g);
-    for (int d = 0; d < 3; d++) free(xs[d]);
-    free(hs);
-    free(id);
-    if (meet) return 1;
-  }
+    }
+  nbr_grid_free(&g);
+  for (int d = 0; d < 3; d++) free(xs[d]);
+  free(hs);
+  free(id);
+  return meet;
+}
+
+/* Whether a's footprint, swept along the bodies' relative mean velocity, passes within
+ * reach of a particle of b (1 also when the footprint is too wide for the columns). */
+static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, int b,
+                          double reach)
+{
+  const struct particles *p = &s->p;
+  const struct body_info *A = &s->body[a], *B = &s->body[b];
+  const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
   /* 2: a's footprint swept along u = v̄_a − v̄_b */
   double u[3] = {0, 0, 0};
   for (size_t q = fa; q < fa + na; q++)
@@ -822,6 +832,12 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
   }
   free(rear);
   return meet;
+}
+
+static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
+{
+  const double reach = 2.0 * fmax(s->body[a].spacing, s->body[b].spacing);
+  return bodies_touch(s, first_of, a, b, reach) || bodies_in_path(s, first_of, a, b, reach);
 }
 
 /* Where bodies of very different particle masses meet, the light particles' continuity
