@@ -183,6 +183,32 @@ static int set_up(const char *casefile, struct cfg *c, struct sim *s, struct mea
   return 0;
 }
 
+/* The run's snapshots in dir (*snaps, *ns; their extension returned) and its output
+ * times from summary.csv (*times, *nt; nt < 0 when it cannot be read). Returns NULL with
+ * err set when the folder has none, or misses some (report_missing). */
+static const char *list_snapshots(const char *dir, int skip_missing, int **snaps, int *ns,
+                                  double **times, int *nt, struct hv_error *err)
+{
+  const char *ext = io_list_readable_snapshots(dir, snaps, ns);
+  if (*ns < 0) {
+    hv_error_set(err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
+    return NULL;
+  }
+  if (*ns == 0) {
+    hv_error_set(err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv or .vtu snapshots", dir);
+    return NULL;
+  }
+  /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
+     those that match this run's summary.csv (number and time) are its own */
+  char spath[4400];
+  snprintf(spath, sizeof spath, "%s/summary.csv", dir);
+  struct hv_error ignored;
+  *nt = io_read_table_column(spath, "time", times, &ignored);
+  if (*nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
+  if (report_missing(dir, ext, *snaps, *ns, *nt, skip_missing, err)) return NULL;
+  return ext;
+}
+
 /* Every mistake on measure's command line is "bad argument", with the usage. */
 static int measure_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
 {
@@ -236,24 +262,10 @@ int cli_measure(int argc, char **argv)
   if (!c || set_up(casefile, c, &s, &mr, &err)) goto fail;
   /* one writer at a time: a run still going rewrites measurements.csv itself */
   if (runfolder_lock(&lock, dir, "measure", quiet, &err)) goto fail;
-  int ns;
-  const char *ext = io_list_readable_snapshots(dir, &snaps, &ns);
-  if (ns < 0) {
-    hv_error_set(&err, HV_EXIT_INPUT, "%s: cannot open the run folder", dir);
-    goto fail;
-  }
-  if (ns == 0) {
-    hv_error_set(&err, HV_EXIT_INPUT, "%s: no particles_NNNNN.csv or .vtu snapshots", dir);
-    goto fail;
-  }
-  /* a folder reused by a shorter run keeps the earlier run's later snapshots: only
-     those that match this run's summary.csv (number and time) are its own */
-  char spath[4400];
-  snprintf(spath, sizeof spath, "%s/summary.csv", dir);
+  int ns, nt;
+  const char *ext = list_snapshots(dir, skip_missing, &snaps, &ns, &times, &nt, &err);
+  if (!ext) goto fail;
   struct hv_error ignored;
-  const int nt = io_read_table_column(spath, "time", &times, &ignored);
-  if (nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
-  if (report_missing(dir, ext, snaps, ns, nt, skip_missing, &err)) goto fail;
   char mpath[4400];
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
   meas_table_read(&old, mpath, &ignored);   /* none: no earlier peak pressures */

@@ -215,9 +215,10 @@ static const char *display_unit(enum unit_dim d, double *f)
   }
 }
 
-static int write_reports(const char *dir, const struct val_row *rows, int nrows,
-                         const struct val_case *cs, int ncase, double scale, int norun,
-                         const struct val_overrides *ov, struct hv_error *err)
+/* DIR/validation.csv: one line per row, the simulated, experimental and the paper's
+ * values in display units and the relative error against the experiment. */
+static int write_csv(const char *dir, const struct val_row *rows, int nrows, int norun,
+                     struct hv_error *err)
 {
   char path[4200];
   struct atomic_file af;
@@ -240,8 +241,16 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
                  strchr(r->object, ':') || strcmp(r->object, "") ? ":" : "", r->object,
                  r->sim * f, r->exp * f, paper * f, u, rel);
   }
-  if (atomic_file_commit(&af, err)) return -1;
+  return atomic_file_commit(&af, err);
+}
 
+static int write_reports(const char *dir, const struct val_row *rows, int nrows,
+                         const struct val_case *cs, int ncase, double scale, int norun,
+                         const struct val_overrides *ov, struct hv_error *err)
+{
+  char path[4200];
+  struct atomic_file af;
+  if (write_csv(dir, rows, nrows, norun, err)) return -1;
   snprintf(path, sizeof path, "%s/validation.md", dir);
   if (atomic_file_open(&af, path, err)) return -1;
   if (norun)
