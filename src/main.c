@@ -1,5 +1,6 @@
 /* main.c — the hvsph command line: subcommands run, check, restart, bench, materials, render,
- * measure, validate, help, version. */
+ * measure, validate, help, version. It only dispatches: each subcommand parses its own
+ * options (src/cli/, through the one parser of cli/options.h) and returns the exit status. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

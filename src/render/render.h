@@ -1,6 +1,6 @@
 /* render.h — pictures of particle snapshots (PNG): simulated flash radiographs and
- * particle side views. `hvsph render` (render_main, cli/render.c) is the command line; the rest is
- * the library the command and the tests use.
+ * particle side views. `hvsph render` (cli_render, cli/render.c) is the command line;
+ * the rest is the library the command and the tests use.
  *
  * Geometry. The line of sight is one coordinate axis (`axis`); the picture shows the
  * other two, first to the right, second up:
