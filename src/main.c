@@ -1,18 +1,14 @@
 /* main.c — the hvsph command line: subcommands run, check, restart, bench, materials, render,
- * measure, validate, help, version. */
+ * measure, validate, help, version. It only dispatches: each subcommand parses its own
+ * options (src/cli/, through the one parser of cli/options.h) and returns the exit status. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "core/error.h"
 #include "material/material_read.h"
-#include "render/render.h"
-#include "run/bench.h"
-#include "run/check.h"
-#include "run/remeasure.h"
-#include "run/run.h"
-#include "run/validate.h"
 #include "version.h"
 
 /* Each command's lines of the usage: `hvsph --help` prints them all, `hvsph CMD --help`
@@ -76,103 +72,18 @@ static int asks_help(int argc, char **argv)
   return 0;
 }
 
-static int parse_long(const char *s, long lo, long hi, long *out)
-{
-  char *end;
-  double v = strtod(s, &end);  /* accepts 1e6 */
-  if (end == s || *end || v < (double)lo || v > (double)hi || v != (double)(long)v) return -1;
-  *out = (long)v;
-  return 0;
-}
-
-static int cmd_run(int argc, char **argv, int restart)
-{
-  const char *cmd = restart ? "restart" : "run";
-  struct run_options o = {0};
-  const char **sets = calloc((size_t)argc + 1, sizeof *sets);
-  const char **swaps = calloc((size_t)argc + 1, sizeof *swaps);
-  for (int i = 0; i < argc; i++) {
-    const char *a = argv[i];
-    long v;
-    if (!restart && (!strcmp(a, "-o") || !strcmp(a, "--output")) && i + 1 < argc)
-      o.outdir = argv[++i];
-    else if (!strcmp(a, "--set") && i + 1 < argc) sets[o.nsets++] = argv[++i];
-    else if (!strncmp(a, "--set=", 6)) sets[o.nsets++] = a + 6;
-    else if (!restart && !strcmp(a, "--material") && i + 1 < argc) swaps[o.nswaps++] = argv[++i];
-    else if (restart && !strcmp(a, "--material")) {
-      fprintf(stderr, "hvsph restart: --material is for hvsph run: a restart goes on with the "
-                      "materials of the run's used_parameters.yaml\n");
-      free(sets);
-      free(swaps);
-      return HV_EXIT_USAGE;
-    }
-    else if (!strcmp(a, "--threads") && i + 1 < argc) {
-      if (parse_long(argv[++i], 1, 4096, &v)) {
-        fprintf(stderr, "hvsph %s: --threads needs a positive integer, not '%s'\n", cmd,
-                argv[i]);
-        free(sets);
-        free(swaps);
-        return HV_EXIT_USAGE;
-      }
-      o.threads = (int)v;
-    } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) o.quiet = 1;
-    else if (!restart && !strcmp(a, "--overwrite")) o.overwrite = 1;
-    else if (!strcmp(a, "--force")) o.force = 1;
-    else if (a[0] == '-' || o.case_path) {
-      fprintf(stderr, "hvsph %s: unexpected argument '%s' (see hvsph --help)\n", cmd, a);
-      free(sets);
-      free(swaps);
-      return HV_EXIT_USAGE;
-    } else o.case_path = a;
-  }
-  if (!o.case_path) {
-    fprintf(stderr, "hvsph %s: missing %s (see hvsph --help)\n", cmd,
-            restart ? "run folder" : "case file");
-    free(sets);
-    free(swaps);
-    return HV_EXIT_USAGE;
-  }
-  o.sets = sets;
-  o.swaps = swaps;
-  if (restart) o.restart_dir = o.case_path;
-  int st = run_main(&o);
-  free(sets);
-  free(swaps);
-  return st;
-}
-
-static int cmd_bench(int argc, char **argv)
-{
-  struct bench_options o = {.particles = 100000, .steps = 10, .threads = 0};
-  const char **sets = calloc((size_t)argc + 1, sizeof *sets);
-  o.sets = sets;
-  for (int i = 0; i < argc; i++) {
-    long v;
-    if (!strcmp(argv[i], "--particles") && i + 1 < argc && !parse_long(argv[i + 1], 512, 2000000000L, &v)) {
-      o.particles = v;
-      i++;
-    } else if (!strcmp(argv[i], "--steps") && i + 1 < argc && !parse_long(argv[i + 1], 1, 1000000, &v)) {
-      o.steps = v;
-      i++;
-    } else if (!strcmp(argv[i], "--threads") && i + 1 < argc && !parse_long(argv[i + 1], 1, 4096, &v)) {
-      o.threads = (int)v;
-      i++;
-    } else if (!strcmp(argv[i], "--solid")) {
-      o.solid = 1;
-    } else if (!strcmp(argv[i], "--set") && i + 1 < argc) {
-      sets[o.nsets++] = argv[++i];
-    } else if (!strncmp(argv[i], "--set=", 6)) {
-      sets[o.nsets++] = argv[i] + 6;
-    } else {
-      fprintf(stderr, "hvsph bench: bad argument '%s' (see hvsph --help)\n", argv[i]);
-      free(sets);
-      return HV_EXIT_USAGE;
-    }
-  }
-  int st = bench_main(&o);
-  free(sets);
-  return st;
-}
+/* The subcommands (cli/cli.h; materials is the library's own, material/). own_help: the
+ * command prints its own longer help for --help; the others print their usage lines. */
+static const struct {
+  const char *name;
+  int (*main)(int argc, char **argv);
+  int own_help;
+} commands[] = {
+    {"run", cli_run, 0},         {"check", cli_check, 0},
+    {"restart", cli_restart, 0}, {"bench", cli_bench, 0},
+    {"validate", cli_validate, 0}, {"materials", material_library_main, 1},
+    {"render", cli_render, 1},   {"measure", cli_measure, 1},
+};
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose
  * otherwise: on this project's 2-core machine a spinning run beside any other busy
@@ -203,19 +114,14 @@ int main(int argc, char **argv)
     printf("hvsph %s\n", HVSPH_VERSION);
     return 0;
   }
-  if ((!strcmp(cmd, "run") || !strcmp(cmd, "check") || !strcmp(cmd, "restart") ||
-       !strcmp(cmd, "bench") || !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
-    usage(stdout, cmd);
-    return 0;
+  for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++) {
+    if (strcmp(cmd, commands[k].name)) continue;
+    if (!commands[k].own_help && asks_help(argc - 2, argv + 2)) {
+      usage(stdout, cmd);
+      return 0;
+    }
+    return commands[k].main(argc - 2, argv + 2);
   }
-  if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2, 0);
-  if (!strcmp(cmd, "check")) return check_main(argc - 2, argv + 2);
-  if (!strcmp(cmd, "restart")) return cmd_run(argc - 2, argv + 2, 1);
-  if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
-  if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);
-  if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);
-  if (!strcmp(cmd, "render")) return render_main(argc - 2, argv + 2);
-  if (!strcmp(cmd, "measure")) return remeasure_main(argc - 2, argv + 2);
   fprintf(stderr, "hvsph: unknown command '%s' (see hvsph --help)\n", cmd);
   return HV_EXIT_USAGE;
 }

@@ -302,7 +302,7 @@ static int write_used_to(struct cfg *c, FILE *f, const char *version)
 
 int cfg_write_used(struct cfg *c, const char *path, const char *version, struct hv_error *err)
 {
-  /* ".<name>.tmp.<pid>" beside it, as every output file's temporary (src/io/afile.c):
+  /* ".<name>.tmp.<pid>" beside it, as every output file's temporary (src/io/atomic_file.c):
      hvsph restart removes such a file that a killed writer left */
   char tmp[4096];
   const char *slash = strrchr(path, '/');

@@ -84,24 +84,38 @@ static void link_pairs(const struct nbr_grid *g, const double *const xs[3], cons
     }
 }
 
-int fof_find(const struct particles *p, const struct fof_params *par, struct fof_result *out,
-             struct hv_error *err)
-{
-  fof_result_init(out);
-  const size_t n = p->n;
-  if (!par->b_particle && !(par->b > 0.0 && isfinite(par->b)))
-    return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: linking length %g m must be "
-                        "positive", par->b);
-  if (par->nmat < 0)
-    return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: negative material count");
-  out->n = n;
-  out->nmat = par->nmat;
-  out->group = hv_malloc((n + 1) * sizeof *out->group, "fof groups");
-  for (size_t i = 0; i < n; i++) out->group[i] = -1;
+/* The working arrays of one fof_find: the selection's compact copy (positions, half
+ * linking lengths), its union-find parents and its fragments before sorting. */
+struct fof_work {
+  size_t ns;                /* particles selected */
+  uint32_t *sel;            /* their indices in the particles */
+  double *xs[3], *hs;       /* their positions, half linking lengths */
+  double hmin, hmax;
+  uint32_t *parent, *fid;   /* union-find parent; fragment of each, in slot order */
+  size_t nf;                /* fragments */
+  struct fof_fragment *fr;  /* per fragment, in slot order */
+  double *mm;               /* [nf][nmat] mass per material */
+};
 
-  /* 1. compact copy of the selection */
+static void fof_work_free(struct fof_work *w)
+{
+  free(w->mm);
+  free(w->fr);
+  free(w->fid);
+  free(w->parent);
+  free(w->hs);
+  for (int d = 0; d < 3; d++) free(w->xs[d]);
+  free(w->sel);
+}
+
+/* 1. The selected particles with finite positions, copied compactly; out->b set.
+ * Returns 0, or -1 with err set (a linking length not positive) and out freed. */
+static int fof_select(const struct particles *p, const struct fof_params *par,
+                      struct fof_result *out, struct fof_work *w, struct hv_error *err)
+{
+  const size_t n = p->n;
   size_t ns = 0;
-  uint32_t *sel = hv_malloc((n + 1) * sizeof *sel, "fof selection");
+  uint32_t *sel = w->sel = hv_malloc((n + 1) * sizeof *sel, "fof selection");
   double bmax = 0.0;
   for (size_t i = 0; i < n; i++) {
     if (par->mask && !par->mask[i]) continue;
@@ -112,6 +126,7 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
     const double bi = par->b_particle ? par->b_particle[i] : par->b;
     if (!(bi > 0.0 && isfinite(bi))) {
       free(sel);
+      w->sel = NULL;
       fof_result_free(out);
       return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: linking length %g m of "
                           "particle %zu must be positive", bi, i);
@@ -119,67 +134,77 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
     if (bi > bmax) bmax = bi;
     sel[ns++] = (uint32_t)i;
   }
+  w->ns = ns;
   out->b = par->b_particle ? bmax : par->b;
-  double *xs[3], *hs = hv_malloc((ns + 1) * sizeof *hs, "fof h");
-  for (int d = 0; d < 3; d++) xs[d] = hv_malloc((ns + 1) * sizeof *xs[d], "fof positions");
-  double hmin = INFINITY, hmax = 0.0;
+  w->hs = hv_malloc((ns + 1) * sizeof *w->hs, "fof h");
+  for (int d = 0; d < 3; d++) w->xs[d] = hv_malloc((ns + 1) * sizeof *w->xs[d], "fof positions");
+  w->hmin = INFINITY;
+  w->hmax = 0.0;
   for (size_t k = 0; k < ns; k++) {
     const size_t i = sel[k];
-    for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][i];
-    hs[k] = 0.5 * (par->b_particle ? par->b_particle[i] : par->b);
-    if (hs[k] < hmin) hmin = hs[k];
-    if (hs[k] > hmax) hmax = hs[k];
+    for (int d = 0; d < 3; d++) w->xs[d][k] = p->x[d][i];
+    w->hs[k] = 0.5 * (par->b_particle ? par->b_particle[i] : par->b);
+    if (w->hs[k] < w->hmin) w->hmin = w->hs[k];
+    if (w->hs[k] > w->hmax) w->hmax = w->hs[k];
   }
+  return 0;
+}
 
-  /* 2. link */
-  uint32_t *parent = hv_malloc((ns + 1) * sizeof *parent, "fof parents");
-  for (size_t k = 0; k < ns; k++) parent[k] = (uint32_t)k;
+/* 2. Friends linked in w->parent through a neighbour grid of cell b. Returns 0 or the
+ * error's code with err set (a span the grid cannot index). */
+static int fof_link(struct fof_work *w, double b, struct hv_error *err)
+{
+  const size_t ns = w->ns;
+  w->parent = hv_malloc((ns + 1) * sizeof *w->parent, "fof parents");
+  for (size_t k = 0; k < ns; k++) w->parent[k] = (uint32_t)k;
   int rc = 0;
   if (ns > 1) {  /* the grid indexes at most 2^21 cells a side: check before building it */
     for (int d = 0; d < 3 && !rc; d++) {
       double lo = INFINITY, hi = -INFINITY;
       for (size_t k = 0; k < ns; k++) {
-        lo = fmin(lo, xs[d][k]);
-        hi = fmax(hi, xs[d][k]);
+        lo = fmin(lo, w->xs[d][k]);
+        hi = fmax(hi, w->xs[d][k]);
       }
-      const double cells = (hi - lo) / nbr_cell_size(hmin, hmax);
+      const double cells = (hi - lo) / nbr_cell_size(w->hmin, w->hmax);
       if (!(cells < 2.0e6))
         rc = hv_error_set(err, HV_EXIT_RUN, "friends-of-friends: the particles span %g m in %c, "
                           "%g linking lengths of %g m (at most 2e6)", hi - lo, "xyz"[d], cells,
-                          out->b);
+                          b);
     }
   }
   if (ns > 1 && !rc) {
     struct nbr_grid g;
     nbr_grid_init(&g);
     char msg[256];
-    if (nbr_grid_build(&g, (const double *const *)xs, hs, ns, nbr_cell_size(hmin, hmax), msg,
-                       sizeof msg)) {
+    if (nbr_grid_build(&g, (const double *const *)w->xs, w->hs, ns,
+                       nbr_cell_size(w->hmin, w->hmax), msg, sizeof msg)) {
       rc = hv_error_set(err, HV_EXIT_RUN, "friends-of-friends with linking length %g m: %s",
-                        out->b, msg);
+                        b, msg);
     } else {
-      link_pairs(&g, (const double *const *)xs, hs, parent);
+      link_pairs(&g, (const double *const *)w->xs, w->hs, w->parent);
     }
     nbr_grid_free(&g);
   }
-  if (rc) {
-    free(sel);
-    free(hs);
-    free(parent);
-    for (int d = 0; d < 3; d++) free(xs[d]);
-    fof_result_free(out);
-    return rc;
-  }
+  return rc;
+}
 
-  /* 3. label in slot order and sum */
-  uint32_t *fid = hv_malloc((ns + 1) * sizeof *fid, "fof ids");
+/* 3. The fragments labelled in slot order and summed: mass, centre of mass, velocity,
+ * mass per material; in a half model one that touches the plane is doubled with its
+ * mirror image, the others count twice. */
+static void fof_sum(const struct particles *p, const struct fof_params *par,
+                    struct fof_work *w)
+{
+  const size_t ns = w->ns;
+  const uint32_t *sel = w->sel;
+  uint32_t *fid = w->fid = hv_malloc((ns + 1) * sizeof *fid, "fof ids");
   size_t nf = 0;
   for (size_t k = 0; k < ns; k++) {
-    const uint32_t r = uf_find(parent, (uint32_t)k);
+    const uint32_t r = uf_find(w->parent, (uint32_t)k);
     fid[k] = r == k ? (uint32_t)nf++ : fid[r];  /* the root (smallest) comes first */
   }
-  struct fof_fragment *fr = hv_calloc(nf + 1, sizeof *fr, "fragments");
-  double *mm = hv_calloc(nf * (size_t)par->nmat + 1, sizeof *mm, "fragment materials");
+  w->nf = nf;
+  struct fof_fragment *fr = w->fr = hv_calloc(nf + 1, sizeof *fr, "fragments");
+  double *mm = w->mm = hv_calloc(nf * (size_t)par->nmat + 1, sizeof *mm, "fragment materials");
   unsigned char *on_plane = hv_calloc(nf + 1, 1, "fof plane flags");
   for (size_t k = 0; k < ns; k++) {
     const size_t i = sel[k];
@@ -197,7 +222,7 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
     }
     const int mat = p->mat[i];
     if (mat >= 0 && mat < par->nmat) mm[fid[k] * (size_t)par->nmat + (size_t)mat] += m;
-    if (par->half_model && p->x[2][i] < hs[k]) on_plane[fid[k]] = 1;  /* z < b_i/2 */
+    if (par->half_model && p->x[2][i] < w->hs[k]) on_plane[fid[k]] = 1;  /* z < b_i/2 */
   }
   for (size_t f = 0; f < nf; f++) {
     struct fof_fragment *q = &fr[f];
@@ -213,8 +238,15 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
       for (int k = 0; k < par->nmat; k++) mm[f * (size_t)par->nmat + (size_t)k] *= 2.0;
     }
   }
+  free(on_plane);
+}
 
-  /* 4. sort, renumber */
+/* 4. The fragments sorted (frag_cmp) and renumbered into out. */
+static void fof_sort(const struct fof_params *par, const struct fof_work *w,
+                     struct fof_result *out)
+{
+  const size_t nf = w->nf;
+  const struct fof_fragment *fr = w->fr;
   struct frag_key *key = hv_malloc((nf + 1) * sizeof *key, "fof sort");
   for (size_t f = 0; f < nf; f++) key[f] = (struct frag_key){fr[f].m, fr[f].root, f};
   qsort(key, nf, sizeof *key, frag_cmp);
@@ -225,24 +257,42 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
     const size_t f = key[r].f;
     rank[f] = (uint32_t)r;
     out->frag[r] = fr[f];
-    memcpy(out->mat_mass + r * (size_t)par->nmat, mm + f * (size_t)par->nmat,
-           (size_t)par->nmat * sizeof *mm);
+    memcpy(out->mat_mass + r * (size_t)par->nmat, w->mm + f * (size_t)par->nmat,
+           (size_t)par->nmat * sizeof *w->mm);
     out->n_full += (size_t)fr[f].multiplicity;
     out->m_total += fr[f].m * fr[f].multiplicity;
   }
-  for (size_t k = 0; k < ns; k++) out->group[sel[k]] = (int32_t)rank[fid[k]];
+  for (size_t k = 0; k < w->ns; k++) out->group[w->sel[k]] = (int32_t)rank[w->fid[k]];
   out->nfrag = nf;
-
   free(rank);
   free(key);
-  free(on_plane);
-  free(mm);
-  free(fr);
-  free(fid);
-  free(parent);
-  free(hs);
-  for (int d = 0; d < 3; d++) free(xs[d]);
-  free(sel);
+}
+
+int fof_find(const struct particles *p, const struct fof_params *par, struct fof_result *out,
+             struct hv_error *err)
+{
+  fof_result_init(out);
+  const size_t n = p->n;
+  if (!par->b_particle && !(par->b > 0.0 && isfinite(par->b)))
+    return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: linking length %g m must be "
+                        "positive", par->b);
+  if (par->nmat < 0)
+    return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: negative material count");
+  out->n = n;
+  out->nmat = par->nmat;
+  out->group = hv_malloc((n + 1) * sizeof *out->group, "fof groups");
+  for (size_t i = 0; i < n; i++) out->group[i] = -1;
+  struct fof_work w = {0};
+  if (fof_select(p, par, out, &w, err)) return -1;
+  const int rc = fof_link(&w, out->b, err);
+  if (rc) {
+    fof_work_free(&w);
+    fof_result_free(out);
+    return rc;
+  }
+  fof_sum(p, par, &w);
+  fof_sort(par, &w, out);
+  fof_work_free(&w);
   return 0;
 }
 

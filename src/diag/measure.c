@@ -470,25 +470,25 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
   out->crater_depth_local = fmax(best, 0.0);
 }
 
-int measure_backwall(const struct particles *p, const struct meas_geom *g,
-                     const struct meas_backwall_params *par, struct meas_backwall *out,
-                     struct hv_error *err)
+/* The backwall parameters are in range (measure_backwall's message says which). */
+static int backwall_params_ok(const struct meas_backwall_params *par)
 {
-  memset(out, 0, sizeof *out);
-  if (geom_ok(g, "backwall measurement", err)) return -1;
-  if (!(par->tol > 0 && isfinite(par->tol) && par->cell > 0 && isfinite(par->cell) &&
-        par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
-        isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
-        par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
-        par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1 &&
-        par->local_inner >= 0 && par->local_outer > par->local_inner &&
-        isfinite(par->local_outer)))
-    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
-                        "footprint, margin_front and crater_min (>= 0) must be finite, "
-                        "area_fraction and far_fraction in (0, 1] and 0 <= local_inner < "
-                        "local_outer finite");
-  const double xlo = g->x0 - par->margin_front, tol = par->tol;
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  return (par->tol > 0 && isfinite(par->tol) && par->cell > 0 && isfinite(par->cell) &&
+         par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
+         isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
+         par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
+         par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1 &&
+         par->local_inner >= 0 && par->local_outer > par->local_inner &&
+         isfinite(par->local_outer));
+}
+
+/* The wall's particles at or behind xlo: counted, their (u, w) extent (each widened by
+ * its tolerance) and the damaged ones' count, mass and farthest radius. */
+static void scan_wall(const struct particles *p, const struct meas_geom *g,
+                      const struct meas_backwall_params *par, double xlo, double lo[2],
+                      double hi[2], struct meas_backwall *out)
+{
+  const double tol = par->tol;
   for (size_t i = 0; i < p->n; i++) {
     if (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo) continue;
     out->n_wall++;
@@ -505,69 +505,48 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       out->r_damage_particles = fmax(out->r_damage_particles, radial(p, i, g->yc));
     }
   }
-  if (g->half_model) out->m_damaged *= 2.0;
-  if (!out->n_wall) return 0;
-  /* the columns see the wall's particles, or with attached_only its largest piece */
-  unsigned char *col = NULL;
-  if (par->attached_only) {
-    col = hv_calloc(p->n + 1, 1, "backwall selection");
-    for (size_t i = 0; i < p->n; i++)
-      col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
-    if (meas_keep_largest_piece(p, g, par->scale, col, err)) {
-      free(col);
-      return -1;
-    }
-  }
-  if (g->half_model) lo[1] = 0.0;  /* columns on the simulated side suffice: see below */
-  double c = par->cell;
-  const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
-  if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;
-  const int nu = (int)ceil((hi[0] - lo[0]) / c) > 0 ? (int)ceil((hi[0] - lo[0]) / c) : 1;
-  const int nw = (int)ceil((hi[1] - lo[1]) / c) > 0 ? (int)ceil((hi[1] - lo[1]) / c) : 1;
-  double *xf = hv_malloc((size_t)nu * (size_t)nw * sizeof *xf, "backwall columns");
-  unsigned char *hit = hv_malloc((size_t)nu * (size_t)nw, "backwall columns");
-  for (size_t k = 0; k < (size_t)nu * (size_t)nw; k++) {
-    xf[k] = INFINITY;
-    hit[k] = 0;
-  }
-  fill_columns(p, g, par, col, xlo, -INFINITY, lo, c, nu, nw, xf, hit);
-  /* the far wall: the median front of the columns at ρ >= far_fraction R_in */
+}
+
+/* The far wall's front: the median of the column fronts xf at ρ >= far_fraction R_in
+ * (0 when no column is that far). */
+static double far_wall_front(const struct meas_geom *g, const struct meas_backwall_params *par,
+                             const double lo[2], const double hi[2], double c, int nu, int nw,
+                             const double *xf)
+{
   double shift = 0.0;
-  if (par->far_reference) {
-    double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
-    if (!g->half_model) r_in = fmin(r_in, -lo[1]);
-    struct wval *far = NULL;
-    size_t nfar = 0;
-    for (int pass = 0; pass < 2 && r_in > 0; pass++) {  /* count, then collect */
-      if (pass == 1) {
-        if (!nfar) break;
-        far = hv_malloc(nfar * sizeof *far, "backwall far wall");
-        nfar = 0;
-      }
-      for (int b = 0; b < nw; b++)
-        for (int a = 0; a < nu; a++) {
-          const size_t k = (size_t)b * (size_t)nu + (size_t)a;
-          const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
-          if (!isfinite(xf[k]) || hypot(u, w) < par->far_fraction * r_in) continue;
-          if (far) far[nfar] = (struct wval){xf[k] - g->x0, 1.0};
-          nfar++;
-        }
+  double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
+  if (!g->half_model) r_in = fmin(r_in, -lo[1]);
+  struct wval *far = NULL;
+  size_t nfar = 0;
+  for (int pass = 0; pass < 2 && r_in > 0; pass++) {  /* count, then collect */
+    if (pass == 1) {
+      if (!nfar) break;
+      far = hv_malloc(nfar * sizeof *far, "backwall far wall");
+      nfar = 0;
     }
-    if (far) shift = wquantile(far, nfar, 0.5);  /* the median (the lower one of two) */
-    free(far);
+    for (int b = 0; b < nw; b++)
+      for (int a = 0; a < nu; a++) {
+        const size_t k = (size_t)b * (size_t)nu + (size_t)a;
+        const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
+        if (!isfinite(xf[k]) || hypot(u, w) < par->far_fraction * r_in) continue;
+        if (far) far[nfar] = (struct wval){xf[k] - g->x0, 1.0};
+        nfar++;
+      }
   }
-  out->wall_shift = shift;
-  {
-    /* the surface a gauge rests on: wall particles at most tol ahead of the far wall's
-       face (splash still joined to the wall is not its surface) */
-    const size_t ncol = (size_t)nu * (size_t)nw;
-    double *xs = hv_malloc(ncol * sizeof *xs, "backwall surface");
-    for (size_t k = 0; k < ncol; k++) xs[k] = INFINITY;
-    fill_columns(p, g, par, col, xlo, g->x0 + shift - tol, lo, c, nu, nw, xs, NULL);
-    crater_local(par, g, lo, c, nu, nw, xs, shift, out);
-    free(xs);
-  }
-  /* rings around the axis: columns counted, and damaged columns among them */
+  if (far) shift = wquantile(far, nfar, 0.5);  /* the median (the lower one of two) */
+  free(far);
+  return shift;
+}
+
+/* Rings around the axis: columns counted, and damaged ones (a hole, damaged material or
+ * a crater deeper than crater_min) among them; r_damage the outer edge of the rings,
+ * from the axis out, of which at least area_fraction is damaged. Sets the crater's
+ * position and radius; returns the deepest column's depth below the far wall. */
+static double ring_damage(const struct meas_geom *g, const struct meas_backwall_params *par,
+                          const double lo[2], const double hi[2], double c, int nu, int nw,
+                          const double *xf, const unsigned char *hit, double shift,
+                          struct meas_backwall *out)
+{
   const double rmax = hypot(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
   const size_t nring = (size_t)(rmax / par->ring) + 2;
   size_t *ring_n = hv_calloc(2 * nring, sizeof *ring_n, "backwall rings");
@@ -597,10 +576,6 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
         ring_n[2 * q + 1] += (size_t)damaged;
       }
     }
-  free(xf);
-  free(hit);
-  free(col);
-  out->crater_depth = fmax(dmax, 0.0);
   out->r_damage = 0.0;
   for (size_t q = 0; q < nring; q++) {
     if (!ring_n[2 * q] ||
@@ -609,6 +584,68 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     out->r_damage = (double)(q + 1) * par->ring;
   }
   free(ring_n);
+  return dmax;
+}
+
+int measure_backwall(const struct particles *p, const struct meas_geom *g,
+                     const struct meas_backwall_params *par, struct meas_backwall *out,
+                     struct hv_error *err)
+{
+  memset(out, 0, sizeof *out);
+  if (geom_ok(g, "backwall measurement", err)) return -1;
+  if (!backwall_params_ok(par))
+    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
+                        "footprint, margin_front and crater_min (>= 0) must be finite, "
+                        "area_fraction and far_fraction in (0, 1] and 0 <= local_inner < "
+                        "local_outer finite");
+  const double xlo = g->x0 - par->margin_front, tol = par->tol;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  scan_wall(p, g, par, xlo, lo, hi, out);
+  if (g->half_model) out->m_damaged *= 2.0;
+  if (!out->n_wall) return 0;
+  /* the columns see the wall's particles, or with attached_only its largest piece */
+  unsigned char *col = NULL;
+  if (par->attached_only) {
+    col = hv_calloc(p->n + 1, 1, "backwall selection");
+    for (size_t i = 0; i < p->n; i++)
+      col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
+    if (meas_keep_largest_piece(p, g, par->scale, col, err)) {
+      free(col);
+      return -1;
+    }
+  }
+  if (g->half_model) lo[1] = 0.0;  /* columns on the simulated side suffice: see below */
+  double c = par->cell;
+  const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+  if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;
+  const int nu = (int)ceil((hi[0] - lo[0]) / c) > 0 ? (int)ceil((hi[0] - lo[0]) / c) : 1;
+  const int nw = (int)ceil((hi[1] - lo[1]) / c) > 0 ? (int)ceil((hi[1] - lo[1]) / c) : 1;
+  double *xf = hv_malloc((size_t)nu * (size_t)nw * sizeof *xf, "backwall columns");
+  unsigned char *hit = hv_malloc((size_t)nu * (size_t)nw, "backwall columns");
+  for (size_t k = 0; k < (size_t)nu * (size_t)nw; k++) {
+    xf[k] = INFINITY;
+    hit[k] = 0;
+  }
+  fill_columns(p, g, par, col, xlo, -INFINITY, lo, c, nu, nw, xf, hit);
+  /* the far wall: the median front of the columns at ρ >= far_fraction R_in */
+  double shift = 0.0;
+  if (par->far_reference) shift = far_wall_front(g, par, lo, hi, c, nu, nw, xf);
+  out->wall_shift = shift;
+  {
+    /* the surface a gauge rests on: wall particles at most tol ahead of the far wall's
+       face (splash still joined to the wall is not its surface) */
+    const size_t ncol = (size_t)nu * (size_t)nw;
+    double *xs = hv_malloc(ncol * sizeof *xs, "backwall surface");
+    for (size_t k = 0; k < ncol; k++) xs[k] = INFINITY;
+    fill_columns(p, g, par, col, xlo, g->x0 + shift - tol, lo, c, nu, nw, xs, NULL);
+    crater_local(par, g, lo, c, nu, nw, xs, shift, out);
+    free(xs);
+  }
+  const double dmax = ring_damage(g, par, lo, hi, c, nu, nw, xf, hit, shift, out);
+  free(xf);
+  free(hit);
+  free(col);
+  out->crater_depth = fmax(dmax, 0.0);
   return 0;
 }
 

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/infile.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 
 void meas_table_init(struct meas_table *t) { memset(t, 0, sizeof *t); }
 
@@ -55,41 +55,41 @@ void meas_table_add(struct meas_table *t, double time, const char *quantity, dou
 }
 
 /* One CSV text field, quoted when it needs to be. */
-static int put_text(struct afile *af, const char *s, struct hv_error *err)
+static int put_text(struct atomic_file *af, const char *s, struct hv_error *err)
 {
-  if (!strpbrk(s, ",\"\r\n")) return afile_printf(af, err, "%s", s);
-  if (afile_printf(af, err, "\"")) return -1;
+  if (!strpbrk(s, ",\"\r\n")) return atomic_file_printf(af, err, "%s", s);
+  if (atomic_file_printf(af, err, "\"")) return -1;
   for (const char *c = s; *c; c++) {
-    const int rc = *c == '"' ? afile_printf(af, err, "\"\"") : afile_printf(af, err, "%c", *c);
+    const int rc = *c == '"' ? atomic_file_printf(af, err, "\"\"") : atomic_file_printf(af, err, "%c", *c);
     if (rc) return -1;
   }
-  return afile_printf(af, err, "\"");
+  return atomic_file_printf(af, err, "\"");
 }
 
-static int put_number(struct afile *af, double v, struct hv_error *err)
+static int put_number(struct atomic_file *af, double v, struct hv_error *err)
 {
-  if (isnan(v)) return afile_printf(af, err, "nan");
-  if (isinf(v)) return afile_printf(af, err, v > 0 ? "inf" : "-inf");
-  return afile_printf(af, err, "%.17g", v);
+  if (isnan(v)) return atomic_file_printf(af, err, "nan");
+  if (isinf(v)) return atomic_file_printf(af, err, v > 0 ? "inf" : "-inf");
+  return atomic_file_printf(af, err, "%.17g", v);
 }
 
-static int write_body(struct afile *af, const struct meas_table *t, const char *comment,
+static int write_body(struct atomic_file *af, const struct meas_table *t, const char *comment,
                       struct hv_error *err)
 {
   for (const char *s = comment; s && *s;) {
     const size_t l = strcspn(s, "\n");
-    if (afile_printf(af, err, "# %.*s\n", (int)l, s)) return -1;
+    if (atomic_file_printf(af, err, "# %.*s\n", (int)l, s)) return -1;
     s += l;
     if (*s == '\n') s++;
   }
-  if (afile_printf(af, err, "time,quantity,value,unit,object\n")) return -1;
+  if (atomic_file_printf(af, err, "time,quantity,value,unit,object\n")) return -1;
   for (size_t k = 0; k < t->n; k++) {
     const struct meas_row *r = &t->rows[k];
-    if (put_number(af, r->time, err) || afile_printf(af, err, ",") ||
-        put_text(af, r->quantity, err) || afile_printf(af, err, ",") ||
-        put_number(af, r->value, err) || afile_printf(af, err, ",") ||
-        put_text(af, r->unit, err) || afile_printf(af, err, ",") ||
-        put_text(af, r->object, err) || afile_printf(af, err, "\n"))
+    if (put_number(af, r->time, err) || atomic_file_printf(af, err, ",") ||
+        put_text(af, r->quantity, err) || atomic_file_printf(af, err, ",") ||
+        put_number(af, r->value, err) || atomic_file_printf(af, err, ",") ||
+        put_text(af, r->unit, err) || atomic_file_printf(af, err, ",") ||
+        put_text(af, r->object, err) || atomic_file_printf(af, err, "\n"))
       return -1;
   }
   return 0;
@@ -98,13 +98,13 @@ static int write_body(struct afile *af, const struct meas_table *t, const char *
 int meas_table_write(const struct meas_table *t, const char *path, const char *comment,
                      struct hv_error *err)
 {
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
   if (write_body(&af, t, comment, err)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 #define RAD2DEG (180.0 / HV_MEAS_PI)

@@ -2,7 +2,7 @@
  *
  * The run loop keeps one struct meas_table for the whole run, adds the rows of each
  * measurement at every output time (and at the end), and rewrites the whole file
- * through afile after each addition, so that a reader sees either the previous or
+ * through atomic_file after each addition, so that a reader sees either the previous or
  * the new complete file. File layout:
  *   # <comment lines>                                  (optional)
  *   time,quantity,value,unit,object

@@ -14,7 +14,7 @@
 #ifndef HV_STEP_H
 #define HV_STEP_H
 
-#include "run/sim.h"
+#include "sim/sim.h"
 
 /* Evaluates p, cs from the EOS and the initial accelerations; sets s->dt. */
 int step_init(struct sim *s, struct hv_error *err);

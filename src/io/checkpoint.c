@@ -44,21 +44,21 @@ static int wr(struct ckpt_writer *w, const void *buf, size_t len, struct hv_erro
     w->crc = (uint32_t)crc32(w->crc, b + done, (uInt)k);
     done += k;
   }
-  return afile_write(&w->af, buf, len, err);
+  return atomic_file_write(&w->af, buf, len, err);
 }
 
 int ckpt_write_open(struct ckpt_writer *w, const char *path, struct hv_error *err)
 {
   memset(w, 0, sizeof *w);
   w->crc = (uint32_t)crc32(0L, Z_NULL, 0);
-  if (afile_open(&w->af, path, err)) return -1;
+  if (atomic_file_open(&w->af, path, err)) return -1;
   unsigned char h[HEADER_BYTES];
   const uint32_t v = FORMAT_VERSION, bom = BOM;
   memcpy(h, MAGIC, 8);
   memcpy(h + 8, &v, 4);
   memcpy(h + 12, &bom, 4);
   if (wr(w, h, sizeof h, err)) {
-    afile_abort(&w->af);
+    atomic_file_abort(&w->af);
     return -1;
   }
   return 0;
@@ -71,7 +71,7 @@ static int put_header(struct ckpt_writer *w, const char *name, enum ckpt_type ty
   memset(h, 0, sizeof h);
   const size_t len = strlen(name);
   if (len == 0 || len > CKPT_NAME_LEN) {
-    afile_abort(&w->af);
+    atomic_file_abort(&w->af);
     return hv_error_set(err, HV_EXIT_RUN, "%s: checkpoint record name '%s' is empty or longer "
                         "than %d characters", w->af.path, name, CKPT_NAME_LEN);
   }
@@ -80,7 +80,7 @@ static int put_header(struct ckpt_writer *w, const char *name, enum ckpt_type ty
   memcpy(h + CKPT_NAME_LEN, &t, 4);
   memcpy(h + CKPT_NAME_LEN + 8, &count, 8);
   if (wr(w, h, sizeof h, err)) {
-    afile_abort(&w->af);
+    atomic_file_abort(&w->af);
     return -1;
   }
   return 0;
@@ -92,7 +92,7 @@ int ckpt_put_parts(struct ckpt_writer *w, const char *name, enum ckpt_type type,
   if (put_header(w, name, type, (uint64_t)count * (uint64_t)nparts, err)) return -1;
   for (int k = 0; k < nparts; k++)
     if (count > 0 && wr(w, parts[k], count * type_size(type), err)) {
-      afile_abort(&w->af);
+      atomic_file_abort(&w->af);
       return -1;
     }
   return 0;
@@ -108,14 +108,14 @@ int ckpt_write_commit(struct ckpt_writer *w, struct hv_error *err)
 {
   if (put_header(w, "end", CKPT_BYTES, 0, err)) return -1;
   const uint32_t crc = w->crc;
-  if (afile_write(&w->af, &crc, 4, err)) {
-    afile_abort(&w->af);
+  if (atomic_file_write(&w->af, &crc, 4, err)) {
+    atomic_file_abort(&w->af);
     return -1;
   }
-  return afile_commit(&w->af, err);
+  return atomic_file_commit(&w->af, err);
 }
 
-void ckpt_write_abort(struct ckpt_writer *w) { afile_abort(&w->af); }
+void ckpt_write_abort(struct ckpt_writer *w) { atomic_file_abort(&w->af); }
 
 /* ---- reading ---- */
 

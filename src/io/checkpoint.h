@@ -7,7 +7,7 @@
  *            uint64 count, then count elements of the type
  *   end      a record named "end" with count 0
  *   crc      uint32 CRC-32 (zlib) of every byte before it
- * The writer goes through afile (temporary file, fsync, rename), so the previous
+ * The writer goes through atomic_file (temporary file, fsync, rename), so the previous
  * checkpoint of that name stays intact until the new one is complete. The reader
  * checks the CRC over the whole file when it opens it, keeps an index of the
  * records, and reads a record's data only when asked; a record asked for with the
@@ -21,18 +21,18 @@
 #include <stdint.h>
 
 #include "core/error.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 
 enum ckpt_type { CKPT_BYTES = 1, CKPT_I32 = 2, CKPT_I64 = 3, CKPT_F64 = 4 };
 
 #define CKPT_NAME_LEN 56
 
 struct ckpt_writer {
-  struct afile af;
+  struct atomic_file af;
   uint32_t crc;
 };
 
-/* Opens path (through afile) and writes the header. */
+/* Opens path (through atomic_file) and writes the header. */
 int ckpt_write_open(struct ckpt_writer *w, const char *path, struct hv_error *err);
 /* Appends one record of `count` elements of `type` from data (NULL when count is 0). */
 int ckpt_put(struct ckpt_writer *w, const char *name, enum ckpt_type type, size_t count,

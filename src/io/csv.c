@@ -18,7 +18,7 @@
 #include <string.h>
 #include <sys/types.h>
 
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "core/infile.h"
 #include "io/io_internal.h"
 #include "io/snapshot.h"
@@ -92,7 +92,7 @@ static void csv_value(char *line, size_t *len, size_t cap, const struct pfield *
   *len += (size_t)r;
 }
 
-static int csv_body(struct afile *af, struct particles *p, const struct snapshot_meta *meta,
+static int csv_body(struct atomic_file *af, struct particles *p, const struct snapshot_meta *meta,
                     struct hv_error *err)
 {
   struct pfield f[HV_MAX_FIELDS];
@@ -102,13 +102,13 @@ static int csv_body(struct afile *af, struct particles *p, const struct snapshot
   char ver[256], name[1024];
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 0);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 0);
-  if (afile_printf(af, err, "# hvsph %s case %s time %.17g s step %ld\n", ver, name,
+  if (atomic_file_printf(af, err, "# hvsph %s case %s time %.17g s step %ld\n", ver, name,
                    meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
       io_put_materials(af, meta, "# ", "\n", 0, err))
     return -1;
   for (int c = 0; c < nc; c++)
-    if (afile_printf(af, err, "%s%s", c ? "," : "", cols[c].name)) return -1;
-  if (afile_printf(af, err, "\n")) return -1;
+    if (atomic_file_printf(af, err, "%s%s", c ? "," : "", cols[c].name)) return -1;
+  if (atomic_file_printf(af, err, "\n")) return -1;
   char line[CSV_MAX_COLS * 32 + 2];
   for (size_t i = 0; i < p->n; i++) {
     size_t len = 0;
@@ -117,7 +117,7 @@ static int csv_body(struct afile *af, struct particles *p, const struct snapshot
       csv_value(line, &len, sizeof line - 1, &f[cols[c].field], cols[c].comp, i);
     }
     line[len++] = '\n';
-    if (afile_write(af, line, len, err)) return -1;
+    if (atomic_file_write(af, line, len, err)) return -1;
   }
   return 0;
 }
@@ -125,13 +125,13 @@ static int csv_body(struct afile *af, struct particles *p, const struct snapshot
 int io_write_particles_csv(const char *path, struct particles *p,
                            const struct snapshot_meta *meta, struct hv_error *err)
 {
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
   if (csv_body(&af, p, meta, err)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 /* ---- reading ---------------------------------------------------------- */

@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 #include "core/error.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 
 /* Copies src (or fallback when src is NULL or empty) into dst for use inside a
@@ -16,11 +16,11 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
 
 /* Writes "<prefix>materials 0=name0 1=name1 ...<suffix>" when meta lists
  * materials; writes nothing otherwise. Returns -1 on a write error (err set). */
-int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
+int io_put_materials(struct atomic_file *af, const struct snapshot_meta *meta, const char *prefix,
                      const char *suffix, int xml_comment, struct hv_error *err);
 
 /* Writes s as the value of an XML attribute (escaping & < > " '); -1 on a write error. */
-int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err);
+int io_put_xml_attr(struct atomic_file *af, const char *s, struct hv_error *err);
 
 /* The value of the attribute `name` in the XML tag [s, end) (the tag's text from its
  * '<'), the five character entities decoded, into buf (len bytes); -1 when the tag has no

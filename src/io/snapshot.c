@@ -18,7 +18,7 @@
 
 #include "core/infile.h"
 #include "core/utf8.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/io_internal.h"
 
 void io_clean_text(char *dst, size_t len, const char *src, const char *fallback, int xml_comment)
@@ -50,22 +50,22 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
   dst[k] = '\0';
 }
 
-int io_put_materials(struct afile *af, const struct snapshot_meta *meta, const char *prefix,
+int io_put_materials(struct atomic_file *af, const struct snapshot_meta *meta, const char *prefix,
                      const char *suffix, int xml_comment, struct hv_error *err)
 {
   if (!meta || !meta->material_names || meta->nmat <= 0) return 0;
-  if (afile_printf(af, err, "%smaterials", prefix)) return -1;
+  if (atomic_file_printf(af, err, "%smaterials", prefix)) return -1;
   for (int k = 0; k < meta->nmat; k++) {
     char name[256];
     io_clean_text(name, sizeof name, meta->material_names[k], "?", xml_comment);
     for (char *q = name; *q; q++)
       if (*q == ' ') *q = '_'; /* keep "index=name" pairs space-separated */
-    if (afile_printf(af, err, " %d=%s", k, name)) return -1;
+    if (atomic_file_printf(af, err, " %d=%s", k, name)) return -1;
   }
-  return afile_printf(af, err, "%s", suffix);
+  return atomic_file_printf(af, err, "%s", suffix);
 }
 
-int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
+int io_put_xml_attr(struct atomic_file *af, const char *s, struct hv_error *err)
 {
   for (; *s; s++) {
     const char *rep = NULL;
@@ -77,12 +77,12 @@ int io_put_xml_attr(struct afile *af, const char *s, struct hv_error *err)
     case '\'': rep = "&apos;"; break;
     default: break;
     }
-    if (rep ? afile_printf(af, err, "%s", rep) : afile_write(af, s, 1, err)) return -1;
+    if (rep ? atomic_file_printf(af, err, "%s", rep) : atomic_file_write(af, s, 1, err)) return -1;
   }
   return 0;
 }
 
-static int pvd_body(struct afile *af, const double *times, const char *const *files, int n,
+static int pvd_body(struct atomic_file *af, const double *times, const char *const *files, int n,
                     const struct snapshot_meta *meta, struct hv_error *err)
 {
   const unsigned short one = 1;
@@ -91,31 +91,31 @@ static int pvd_body(struct afile *af, const double *times, const char *const *fi
   char ver[256], name[1024];
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
-  if (afile_printf(af, err,
+  if (atomic_file_printf(af, err,
                    "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n"
                    "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
                    "  <Collection>\n",
                    ver, name, first ? "LittleEndian" : "BigEndian"))
     return -1;
   for (int k = 0; k < n; k++) {
-    if (afile_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
+    if (atomic_file_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
                      times[k]) ||
-        io_put_xml_attr(af, files[k] ? files[k] : "", err) || afile_printf(af, err, "\"/>\n"))
+        io_put_xml_attr(af, files[k] ? files[k] : "", err) || atomic_file_printf(af, err, "\"/>\n"))
       return -1;
   }
-  return afile_printf(af, err, "  </Collection>\n</VTKFile>\n");
+  return atomic_file_printf(af, err, "  </Collection>\n</VTKFile>\n");
 }
 
 int io_write_pvd(const char *path, const double *times, const char *const *files, int n,
                  const struct snapshot_meta *meta, struct hv_error *err)
 {
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
   if (pvd_body(&af, times, files, n, meta, err)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 /* Formats one table value: integral values with |v| < 2^53 as integers
@@ -128,32 +128,32 @@ static void table_value(char *buf, size_t len, double v)
     snprintf(buf, len, "%.17g", v);
 }
 
-static int table_comment(struct afile *af, const char *comment, struct hv_error *err)
+static int table_comment(struct atomic_file *af, const char *comment, struct hv_error *err)
 {
   const char *s = comment;
   while (*s) {
     size_t l = strcspn(s, "\n");
-    if (afile_printf(af, err, "# %.*s\n", (int)l, s)) return -1;
+    if (atomic_file_printf(af, err, "# %.*s\n", (int)l, s)) return -1;
     s += l;
     if (*s == '\n') s++;
   }
   return 0;
 }
 
-static int table_body(struct afile *af, const char *const *cols, int ncols, const double *rows,
+static int table_body(struct atomic_file *af, const char *const *cols, int ncols, const double *rows,
                       int nrows, const char *comment, struct hv_error *err)
 {
   if (comment && table_comment(af, comment, err)) return -1;
   for (int c = 0; c < ncols; c++)
-    if (afile_printf(af, err, "%s%s", c ? "," : "", cols[c])) return -1;
-  if (afile_printf(af, err, "\n")) return -1;
+    if (atomic_file_printf(af, err, "%s%s", c ? "," : "", cols[c])) return -1;
+  if (atomic_file_printf(af, err, "\n")) return -1;
   for (int r = 0; r < nrows; r++) {
     for (int c = 0; c < ncols; c++) {
       char v[40];
       table_value(v, sizeof v, rows[(size_t)r * (size_t)ncols + (size_t)c]);
-      if (afile_printf(af, err, "%s%s", c ? "," : "", v)) return -1;
+      if (atomic_file_printf(af, err, "%s%s", c ? "," : "", v)) return -1;
     }
-    if (afile_printf(af, err, "\n")) return -1;
+    if (atomic_file_printf(af, err, "\n")) return -1;
   }
   return 0;
 }
@@ -165,13 +165,13 @@ int io_write_table_csv(const char *path, const char *const *cols, int ncols, con
     if (!cols[c] || !*cols[c] || strpbrk(cols[c], ",\"\r\n"))
       return hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': bad column name '%s'", path,
                           cols[c] ? cols[c] : "(null)");
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
   if (table_body(&af, cols, ncols, rows, nrows, comment, err)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err)

@@ -1,7 +1,7 @@
 /* snapshot.h — particle snapshots (VTU, CSV), the ParaView collection (.pvd)
  * and generic CSV tables (summary.csv, measurements).
  *
- * Every file is written whole or not at all through afile (see afile.h); on
+ * Every file is written whole or not at all through atomic_file (see atomic_file.h); on
  * failure the previous file of that name is left as it was and err names the
  * file and the cause (code HV_EXIT_RUN). Snapshots hold the real particles
  * [0, p->n) only, never ghosts. Values are SI (m, kg, s, Pa, J/kg); the file

@@ -32,7 +32,7 @@
  * array looked for comes, in the document, before every array already done, so it is the
  * one found. ParaView, vtk and hvsph read each array at its offset, in any order.
  *
- * Real particles only; written whole through afile. A compressed file is built in memory
+ * Real particles only; written whole through atomic_file. A compressed file is built in memory
  * (the offsets in the XML depend on the compressed sizes): at most about the size of the
  * uncompressed snapshot, besides the particles.
  */
@@ -42,7 +42,7 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/io_internal.h"
 #include "io/snapshot.h"
 
@@ -151,45 +151,45 @@ static int compress_array(struct vtu_array *a, unsigned char *buf, const char *p
   return 0;
 }
 
-static int put_block(struct afile *af, const struct vtu_array *a, unsigned char *buf,
+static int put_block(struct atomic_file *af, const struct vtu_array *a, unsigned char *buf,
                      struct hv_error *err)
 {
   if (a->zhdr)
-    return afile_write(af, a->zhdr, (size_t)(3 + a->zhdr[0]) * sizeof *a->zhdr, err) ||
-           afile_write(af, a->z, a->zlen, err);
-  if (afile_write(af, &a->bytes, sizeof a->bytes, err)) return -1;
+    return atomic_file_write(af, a->zhdr, (size_t)(3 + a->zhdr[0]) * sizeof *a->zhdr, err) ||
+           atomic_file_write(af, a->z, a->zlen, err);
+  if (atomic_file_write(af, &a->bytes, sizeof a->bytes, err)) return -1;
   for (uint64_t pos = 0; pos < a->bytes; pos += VTU_CHUNK) {
     const size_t len = a->bytes - pos < VTU_CHUNK ? (size_t)(a->bytes - pos) : VTU_CHUNK;
     fill(a, pos, len, buf);
-    if (afile_write(af, buf, len, err)) return -1;
+    if (atomic_file_write(af, buf, len, err)) return -1;
   }
   return 0;
 }
 
 /* FieldData arrays "<prefix> <name>" holding each name's index. */
-static int put_names(struct afile *af, const char *prefix, const char *const *names, int n,
+static int put_names(struct atomic_file *af, const char *prefix, const char *const *names, int n,
                      struct hv_error *err)
 {
   for (int k = 0; names && k < n; k++) {
     char name[256];
     io_clean_text(name, sizeof name, names[k], "?", 0);
-    if (afile_printf(af, err, "      <DataArray type=\"Int32\" Name=\"%s ", prefix) ||
+    if (atomic_file_printf(af, err, "      <DataArray type=\"Int32\" Name=\"%s ", prefix) ||
         io_put_xml_attr(af, name, err) ||
-        afile_printf(af, err, "\" NumberOfTuples=\"1\" format=\"ascii\">%d</DataArray>\n", k))
+        atomic_file_printf(af, err, "\" NumberOfTuples=\"1\" format=\"ascii\">%d</DataArray>\n", k))
       return -1;
   }
   return 0;
 }
 
-static int put_array_tag(struct afile *af, const struct vtu_array *a, struct hv_error *err)
+static int put_array_tag(struct atomic_file *af, const struct vtu_array *a, struct hv_error *err)
 {
   char nc[48] = "";
   if (a->ncomp) snprintf(nc, sizeof nc, " NumberOfComponents=\"%d\"", a->ncomp);
-  return afile_printf(af, err, "        <DataArray type=\"%s\" Name=\"%s\"%s format=\"appended\""
+  return atomic_file_printf(af, err, "        <DataArray type=\"%s\" Name=\"%s\"%s format=\"appended\""
                       " offset=\"%" PRIu64 "\"/>\n", a->type, a->name, nc, a->offset);
 }
 
-static int vtu_header(struct afile *af, const struct vtu_array *arr, int na, int npd, size_t n,
+static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int na, int npd, size_t n,
                       const struct snapshot_meta *meta, struct hv_error *err)
 {
   const unsigned short one = 1;
@@ -198,10 +198,10 @@ static int vtu_header(struct afile *af, const struct vtu_array *arr, int na, int
   char ver[256], name[1024];
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
-  if (afile_printf(af, err,
+  if (atomic_file_printf(af, err,
                    "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n", ver, name) ||
       io_put_materials(af, meta, "<!-- ", " -->\n", 1, err) ||
-      afile_printf(af, err,
+      atomic_file_printf(af, err,
                    "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
                    " header_type=\"UInt64\"%s>\n  <UnstructuredGrid>\n    <FieldData>\n"
                    "      <DataArray type=\"Float64\" Name=\"TIME\" NumberOfTuples=\"1\""
@@ -213,15 +213,15 @@ static int vtu_header(struct afile *af, const struct vtu_array *arr, int na, int
                    meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
       (meta && put_names(af, "mat", meta->material_names, meta->nmat, err)) ||
       (meta && put_names(af, "body", meta->body_names, meta->nbody, err)) ||
-      afile_printf(af, err, "    </FieldData>\n    <Piece NumberOfPoints=\"%zu\""
+      atomic_file_printf(af, err, "    </FieldData>\n    <Piece NumberOfPoints=\"%zu\""
                    " NumberOfCells=\"%zu\">\n      <PointData>\n", n, n))
     return -1;
   for (int k = 0; k < na; k++) {
-    if (k == npd && afile_printf(af, err, "      </PointData>\n      <Points>\n")) return -1;
-    if (k == npd + 1 && afile_printf(af, err, "      </Points>\n      <Cells>\n")) return -1;
+    if (k == npd && atomic_file_printf(af, err, "      </PointData>\n      <Points>\n")) return -1;
+    if (k == npd + 1 && atomic_file_printf(af, err, "      </Points>\n      <Cells>\n")) return -1;
     if (put_array_tag(af, &arr[k], err)) return -1;
   }
-  return afile_printf(af, err, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+  return atomic_file_printf(af, err, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
                       "  <AppendedData encoding=\"raw\">\n   _");
 }
 
@@ -253,7 +253,7 @@ static int vtu_arrays(const struct pfield *f, int nf, size_t n, struct vtu_array
   return na;
 }
 
-static int vtu_body(struct afile *af, struct particles *p, const struct snapshot_meta *meta,
+static int vtu_body(struct atomic_file *af, struct particles *p, const struct snapshot_meta *meta,
                     struct vtu_array *arr, unsigned char *buf, struct hv_error *err)
 {
   struct pfield f[HV_MAX_FIELDS];
@@ -271,14 +271,14 @@ static int vtu_body(struct afile *af, struct particles *p, const struct snapshot
   if (vtu_header(af, arr, na, npd, p->n, meta, err)) return -1;
   for (int k = na - 1; k >= 0; k--)
     if (put_block(af, &arr[k], buf, err)) return -1;
-  return afile_printf(af, err, "\n  </AppendedData>\n</VTKFile>\n");
+  return atomic_file_printf(af, err, "\n  </AppendedData>\n</VTKFile>\n");
 }
 
 int io_write_vtu(const char *path, struct particles *p, const struct snapshot_meta *meta,
                  struct hv_error *err)
 {
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
   struct vtu_array arr[VTU_MAX_ARRAYS] = {{0}};
   unsigned char *buf = hv_malloc(VTU_CHUNK > VTU_ZBLOCK ? VTU_CHUNK : VTU_ZBLOCK, "snapshot");
   int rc = vtu_body(&af, p, meta, arr, buf, err);
@@ -288,8 +288,8 @@ int io_write_vtu(const char *path, struct particles *p, const struct snapshot_me
     free(arr[k].z);
   }
   if (rc) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }

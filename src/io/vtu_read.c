@@ -299,18 +299,15 @@ static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
   return 0;
 }
 
-int io_read_particles_vtu(const char *path, struct particles *p, double *time,
-                          struct hv_error *err)
+/* The XML header of an open VTU file parsed into vh: read until the appended block's
+ * '_' is in the buffer (nothing of the binary data after it is parsed). Returns 0 or -1
+ * with err set. */
+static int read_header(FILE *fp, const char *path, struct vtu_header *vh, struct hv_error *err)
 {
-  if (time) *time = NAN;
-  long long fsize;   /* a regular file only: a FIFO would block the open */
-  FILE *fp = hv_open_input(path, NULL, 0, &fsize, err);
-  if (!fp) return -1;
   /* the header: read until the appended block's '_' is in the buffer */
   size_t cap = 65536, len = 0;
   char *h = NULL;
-  struct vtu_header *vh = calloc(1, sizeof *vh);
-  int rc = vh ? 0 : hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
+  int rc = 0;
   while (!rc) {
     char *nh = realloc(h, cap + 1);
     if (!nh) {
@@ -344,6 +341,19 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
   }
   if (!rc) rc = parse_header(path, h, len, vh, err);
   free(h);
+  return rc;
+}
+
+int io_read_particles_vtu(const char *path, struct particles *p, double *time,
+                          struct hv_error *err)
+{
+  if (time) *time = NAN;
+  long long fsize;   /* a regular file only: a FIFO would block the open */
+  FILE *fp = hv_open_input(path, NULL, 0, &fsize, err);
+  if (!fp) return -1;
+  struct vtu_header *vh = calloc(1, sizeof *vh);
+  int rc = vh ? read_header(fp, path, vh, err)
+              : hv_error_set(err, HV_EXIT_RUN, "out of memory reading '%s'", path);
   /* a whole file ends with the closing tag (the writer's last bytes) */
   char tail[32] = "";
   if (!rc && (fsize < 24 || fseeko(fp, (off_t)(fsize - 24), SEEK_SET) ||

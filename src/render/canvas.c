@@ -1,12 +1,12 @@
 /* canvas.c — an 8-bit RGB picture in memory, a few drawing primitives (blend, rectangle,
- * bitmap text) and its PNG writer (libpng, written whole or not at all through afile).
+ * bitmap text) and its PNG writer (libpng, written whole or not at all through atomic_file).
  */
 #include <errno.h>
 #include <png.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "render/render_internal.h"
 #include "version.h"
 
@@ -154,8 +154,8 @@ static int png_encode(FILE *f, const struct canvas *c, const char *description,
 int canvas_write_png(const struct canvas *c, const char *path, const char *description,
                      struct hv_error *err)
 {
-  struct afile af;
-  if (afile_open(&af, path, err)) {
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) {
     err->code = HV_EXIT_INPUT; /* a folder that is missing or not writable: fix the command */
     return -1;
   }
@@ -166,8 +166,8 @@ int canvas_write_png(const struct canvas *c, const char *path, const char *descr
   int rc = png_encode(af.f, c, description, rows, &pe);
   free(rows);
   if (rc) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': %s", path, pe.msg);
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }

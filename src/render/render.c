@@ -87,8 +87,10 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
   return mu;
 }
 
-int render_png(const char *path, const struct particles *p, const struct render_options *o,
-               const struct render_info *info, struct hv_error *err)
+/* The snapshot has the column the picture is coloured by, and the options are in
+ * range. Returns 0 or -1 with err set. */
+static int check_input(const struct particles *p, const struct render_options *o,
+                       struct hv_error *err)
 {
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DAMAGE && !p->damage)
     return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no damage column (no material "
@@ -108,6 +110,13 @@ int render_png(const char *path, const struct particles *p, const struct render_
     return hv_error_set(err, HV_EXIT_USAGE, "--mu must be a positive number [m2/kg] or auto");
   if (o->have_range && !(o->range[0] < o->range[1]))
     return hv_error_set(err, HV_EXIT_USAGE, "--range: the low end must be below the high end");
+  return 0;
+}
+
+int render_png(const char *path, const struct particles *p, const struct render_options *o,
+               const struct render_info *info, struct hv_error *err)
+{
+  if (check_input(p, o, err)) return -1;
   struct render_view v;
   if (render_view_setup(p, o, &v, err)) return -1;
 

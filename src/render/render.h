@@ -1,6 +1,6 @@
 /* render.h — pictures of particle snapshots (PNG): simulated flash radiographs and
- * particle side views. `hvsph render` (render_main) is the command line; the rest is
- * the library the command and the tests use.
+ * particle side views. `hvsph render` (cli_render, cli/render.c) is the command line;
+ * the rest is the library the command and the tests use.
  *
  * Geometry. The line of sight is one coordinate axis (`axis`); the picture shows the
  * other two, first to the right, second up:
@@ -190,10 +190,5 @@ int render_png(const char *path, const struct particles *p, const struct render_
  * read, naming it (HV_EXIT_INPUT), or as render_png; frames written before stay, whole. */
 int render_series(const char *rundir, const char *framedir, const struct render_options *o,
                   struct hv_error *err);
-
-/* `hvsph render SNAPSHOT.csv -o FILE.png [options]`, or `hvsph render RUNDIR -o FRAMEDIR
- * [options]` (render_series): argv holds the arguments after "render". Returns the exit
- * status (0, 1 usage, 2 input, 3 write failure). */
-int render_main(int argc, char **argv);
 
 #endif

@@ -29,7 +29,7 @@ int canvas_text(struct canvas *c, int x, int y, int scale, const unsigned char r
                 const char *text);
 /* Width [px] that canvas_text would advance. */
 int canvas_text_width(int scale, const char *text);
-/* Writes the canvas as an 8-bit RGB PNG through afile, with tEXt chunks Software
+/* Writes the canvas as an 8-bit RGB PNG through atomic_file, with tEXt chunks Software
  * ("hvsph <version>") and Description. */
 int canvas_write_png(const struct canvas *c, const char *path, const char *description,
                      struct hv_error *err);

@@ -33,7 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "render/render_internal.h"
 
@@ -75,6 +75,158 @@ static int load(const char *path, struct particles *p, double *t, struct hv_erro
                                 path, err);
 }
 
+/* A series under way: what every frame shares, gathered over the run's snapshots. */
+struct series {
+  const char *rundir;
+  double *times;            /* summary.csv's output times, nt of them (nt < 0: none read) */
+  int nt;
+  struct render_options o;  /* the options of every frame */
+  int want_range;           /* a colour range from all the frames */
+  /* per mirroring (0 off, 1 on) while the automatic choice is not yet known */
+  double ext[2][4], lo[2], hi[2];
+  int half, nmat, iu, iv;
+  int *first, *slot;        /* per material: its first body; its colour slot */
+  struct frame *frames;     /* the snapshots that are outputs of the run, nf of them */
+  int nf;
+};
+
+/* Pass 1 for one snapshot: whether it is one of the run's outputs, and its extent,
+ * colour range, materials and half-model flag added to what the frames share. */
+static int scan_snapshot(struct series *s, const struct frame *f, struct hv_error *err)
+{
+  char path[4400];
+  struct particles p;
+  snapshot_path(path, sizeof path, s->rundir, f);
+  particles_init(&p);
+  double t = NAN;
+  int rc = 0;
+  int ours = s->nt < 0 || f->num < s->nt; /* a number beyond summary.csv's rows is not read */
+  if (ours) rc = load(path, &p, &t, err);
+  if (!rc && !(ours = io_snapshot_in_run(f->num, t, s->times, s->nt)))
+    hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
+            "folder): skipped", path);
+  if (!rc && ours) {
+    s->half = s->half && render_half_model(&p);
+    for (int m = 0; m < 2 && !rc; m++) {
+      if (s->o.mirror >= 0 && m != s->o.mirror) continue;
+      struct render_options om = s->o;
+      om.mirror = m;
+      struct render_view v;
+      if (render_view_setup(&p, &om, &v, err)) {
+        rc = hv_error_prefix(err, "%s: ", path);
+        break;
+      }
+      s->iu = v.iu;
+      s->iv = v.iv;
+      s->ext[m][0] = fmin(s->ext[m][0], v.ext[0]);
+      s->ext[m][1] = fmax(s->ext[m][1], v.ext[1]);
+      s->ext[m][2] = fmin(s->ext[m][2], v.ext[2]);
+      s->ext[m][3] = fmax(s->ext[m][3], v.ext[3]);
+      if (s->want_range) render_color_extend(&p, &v, &om, &s->lo[m], &s->hi[m]);
+    }
+    if (!rc) {
+      for (size_t i = 0; i < p.n; i++)
+        if (p.mat[i] >= s->nmat && p.mat[i] < RENDER_MATERIAL_CAP) s->nmat = p.mat[i] + 1;
+      render_material_first_body(&p, RENDER_MATERIAL_CAP, s->first);
+      s->frames[s->nf++] = *f;
+    }
+  }
+  particles_free(&p);
+  return rc;
+}
+
+/* After pass 1: the mirroring, the box (the union of the frames' extents), the colour
+ * range, the material slots and the picture's size that every frame shares. */
+static int share_frame(struct series *s, struct hv_error *err)
+{
+  struct render_options *o = &s->o;
+  const int m = o->mirror >= 0 ? o->mirror : s->half;
+  o->mirror = m;
+  if (!o->have_box) { /* the union; the slab along the line of sight: everything */
+    o->box[2 * o->axis] = -HUGE_VAL;
+    o->box[2 * o->axis + 1] = HUGE_VAL;
+    o->box[2 * s->iu] = s->ext[m][0];
+    o->box[2 * s->iu + 1] = s->ext[m][1];
+    o->box[2 * s->iv] = s->ext[m][2];
+    o->box[2 * s->iv + 1] = s->ext[m][3];
+    o->have_box = 1;
+  }
+  if (s->want_range) {
+    render_color_limits(o, &s->lo[m], &s->hi[m]);
+    o->range[0] = s->lo[m];
+    o->range[1] = s->hi[m];
+    o->have_range = 1;
+  }
+  render_material_rank(s->first, s->nmat, s->slot);
+  int rc = 0;
+  if (o->height <= 0) { /* the automatic height from the common extent, made even */
+    struct render_view v;
+    struct particles p;
+    particles_init(&p); /* with the box and the mirroring given, the view needs no particle */
+    rc = render_view_setup(&p, o, &v, err);
+    particles_free(&p);
+    if (!rc) {
+      o->width = v.width;
+      o->height = v.height + v.height % 2;
+    }
+  }
+  return rc;
+}
+
+/* A radiograph's film μ for every frame, from the last frame (render_auto_mu). */
+static int share_mu(struct series *s, struct hv_error *err)
+{
+  char path[4400];
+  double t;
+  struct particles p;
+  snapshot_path(path, sizeof path, s->rundir, &s->frames[s->nf - 1]);
+  particles_init(&p);
+  struct render_view v;
+  const int rc = load(path, &p, &t, err) || render_view_setup(&p, &s->o, &v, err);
+  if (!rc) {
+    const size_t npix = (size_t)v.nu * (size_t)v.nv;
+    double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), quartile;
+    render_areal_density(&p, &v, sigma);
+    unsigned char *occ = hv_malloc(npix, "occupied pixels");
+    render_occupied(&p, &v, occ);
+    s->o.mu = render_auto_mu(sigma, occ, npix, &quartile);
+    free(occ);
+    free(sigma);
+    hv_info("film mu = %.3g m2/kg for every frame (the lower quartile of the areal "
+            "densities of the material in %s, %.3g kg/m2, at T = 1/2)", s->o.mu, path, quartile);
+  }
+  particles_free(&p);
+  return rc;
+}
+
+/* Pass 2: frame j of the series written as framedir/frame_NNNNN.png. */
+static int write_frame(const struct series *s, int j, const char *framedir,
+                       const char *const *bptr, int nb, struct hv_error *err)
+{
+  char path[4400], fpath[4400];
+  double t;
+  struct particles p;
+  snapshot_path(path, sizeof path, s->rundir, &s->frames[j]);
+  snprintf(fpath, sizeof fpath, "%s/frame_%05d.png", framedir, j);
+  particles_init(&p);
+  int rc = load(path, &p, &t, err);
+  if (!rc) {
+    char names[RENDER_MAX_MATERIALS][64] = {{0}};
+    const char *ptr[RENDER_MAX_MATERIALS];
+    const int nm = io_read_material_names(path, names, RENDER_MAX_MATERIALS);
+    for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
+    const struct render_info info = {.time = t, .material_names = ptr, .nmat = nm,
+                                     .source = path, .material_slot = s->slot,
+                                     .nslot = s->nmat, .body_names = bptr, .nbody = nb};
+    rc = render_png(fpath, &p, &s->o, &info, err);
+    /* a failure to write names the frame; one that does not is about the snapshot */
+    if (rc && !strstr(err->msg, fpath)) hv_error_prefix(err, "%s: ", path);
+    if (!rc) hv_info("wrote %s (%s, t = %g s, %zu particles)", fpath, path, t, p.n);
+  }
+  particles_free(&p);
+  return rc;
+}
+
 int render_series(const char *rundir, const char *framedir, const struct render_options *opt,
                   struct hv_error *err)
 {
@@ -86,153 +238,45 @@ int render_series(const char *rundir, const char *framedir, const struct render_
     return hv_error_set(err, HV_EXIT_INPUT, "%s: no particle snapshots (particles_NNNNN.vtu or "
                         ".csv) in the run folder", rundir);
   }
-  char path[4400], fpath[4400];
-  double *times = NULL;
+  char path[4400];
   struct hv_error ignored;
+  struct series s = {.rundir = rundir, .o = *opt, .lo = {HUGE_VAL, HUGE_VAL},
+                     .hi = {-HUGE_VAL, -HUGE_VAL}, .half = 1, .nmat = 1, .iu = 0, .iv = 1};
   snprintf(path, sizeof path, "%s/summary.csv", rundir);
-  const int nt = io_read_table_column(path, "time", &times, &ignored);
-  if (nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
-
-  struct render_options o = *opt;
-  const int want_range = o.mode == RENDER_PARTICLES && o.color != RENDER_COLOR_MATERIAL &&
-                         o.color != RENDER_COLOR_DAMAGE && !o.have_range;
-  /* per mirroring (0 off, 1 on) while the automatic choice is not yet known */
-  double ext[2][4], lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  s.nt = io_read_table_column(path, "time", &s.times, &ignored);
+  if (s.nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
+  s.want_range = s.o.mode == RENDER_PARTICLES && s.o.color != RENDER_COLOR_MATERIAL &&
+                 s.o.color != RENDER_COLOR_DAMAGE && !s.o.have_range;
   for (int m = 0; m < 2; m++) {
-    ext[m][0] = ext[m][2] = HUGE_VAL;
-    ext[m][1] = ext[m][3] = -HUGE_VAL;
+    s.ext[m][0] = s.ext[m][2] = HUGE_VAL;
+    s.ext[m][1] = s.ext[m][3] = -HUGE_VAL;
   }
-  int half = 1, nmat = 1, nf = 0, rc = 0, iu = 0, iv = 1;
-  int *first = hv_malloc(RENDER_MATERIAL_CAP * sizeof *first, "material slots");
-  int *slot = hv_malloc(RENDER_MATERIAL_CAP * sizeof *slot, "material slots");
-  for (int m = 0; m < RENDER_MATERIAL_CAP; m++) first[m] = INT_MAX;
-  struct frame *frames = hv_malloc((size_t)ns * sizeof *frames, "frames");
-  struct particles p;
+  s.first = hv_malloc(RENDER_MATERIAL_CAP * sizeof *s.first, "material slots");
+  s.slot = hv_malloc(RENDER_MATERIAL_CAP * sizeof *s.slot, "material slots");
+  for (int m = 0; m < RENDER_MATERIAL_CAP; m++) s.first[m] = INT_MAX;
+  s.frames = hv_malloc((size_t)ns * sizeof *s.frames, "frames");
 
   /* pass 1: which snapshots, and what every frame shares */
+  int rc = 0;
   for (int j = 0; j < ns && !rc; j++) {
     const struct frame f = {snaps[j].num, snaps[j].ext};
-    snapshot_path(path, sizeof path, rundir, &f);
-    particles_init(&p);
-    double t = NAN;
-    int ours = nt < 0 || f.num < nt; /* a number beyond summary.csv's rows is not read */
-    if (ours) rc = load(path, &p, &t, err);
-    if (!rc && !(ours = io_snapshot_in_run(f.num, t, times, nt)))
-      hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
-              "folder): skipped", path);
-    if (!rc && ours) {
-      half = half && render_half_model(&p);
-      for (int m = 0; m < 2 && !rc; m++) {
-        if (o.mirror >= 0 && m != o.mirror) continue;
-        struct render_options om = o;
-        om.mirror = m;
-        struct render_view v;
-        if (render_view_setup(&p, &om, &v, err)) {
-          rc = hv_error_prefix(err, "%s: ", path);
-          break;
-        }
-        iu = v.iu;
-        iv = v.iv;
-        ext[m][0] = fmin(ext[m][0], v.ext[0]);
-        ext[m][1] = fmax(ext[m][1], v.ext[1]);
-        ext[m][2] = fmin(ext[m][2], v.ext[2]);
-        ext[m][3] = fmax(ext[m][3], v.ext[3]);
-        if (want_range) render_color_extend(&p, &v, &om, &lo[m], &hi[m]);
-      }
-      if (!rc) {
-        for (size_t i = 0; i < p.n; i++)
-          if (p.mat[i] >= nmat && p.mat[i] < RENDER_MATERIAL_CAP) nmat = p.mat[i] + 1;
-        render_material_first_body(&p, RENDER_MATERIAL_CAP, first);
-        frames[nf++] = f;
-      }
-    }
-    particles_free(&p);
+    rc = scan_snapshot(&s, &f, err);
   }
-  if (!rc && nf == 0)
+  if (!rc && s.nf == 0)
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: none of the snapshots is one of the outputs in "
                       "the run's summary.csv", rundir);
-  if (!rc) {
-    const int m = o.mirror >= 0 ? o.mirror : half;
-    o.mirror = m;
-    if (!o.have_box) { /* the union; the slab along the line of sight: everything */
-      o.box[2 * o.axis] = -HUGE_VAL;
-      o.box[2 * o.axis + 1] = HUGE_VAL;
-      o.box[2 * iu] = ext[m][0];
-      o.box[2 * iu + 1] = ext[m][1];
-      o.box[2 * iv] = ext[m][2];
-      o.box[2 * iv + 1] = ext[m][3];
-      o.have_box = 1;
-    }
-    if (want_range) {
-      render_color_limits(&o, &lo[m], &hi[m]);
-      o.range[0] = lo[m];
-      o.range[1] = hi[m];
-      o.have_range = 1;
-    }
-    render_material_rank(first, nmat, slot);
-    if (o.height <= 0) { /* the automatic height from the common extent, made even */
-      struct render_view v;
-      particles_init(&p); /* with the box and the mirroring given, the view needs no particle */
-      rc = render_view_setup(&p, &o, &v, err);
-      particles_free(&p);
-      if (!rc) {
-        o.width = v.width;
-        o.height = v.height + v.height % 2;
-      }
-    }
-  }
-  if (!rc && o.mode == RENDER_RADIOGRAPH && !(o.mu > 0.0)) {  /* μ for every frame */
-    double t;
-    snapshot_path(path, sizeof path, rundir, &frames[nf - 1]);
-    particles_init(&p);
-    struct render_view v;
-    rc = load(path, &p, &t, err) || render_view_setup(&p, &o, &v, err);
-    if (!rc) {
-      const size_t npix = (size_t)v.nu * (size_t)v.nv;
-      double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), quartile;
-      render_areal_density(&p, &v, sigma);
-      unsigned char *occ = hv_malloc(npix, "occupied pixels");
-      render_occupied(&p, &v, occ);
-      o.mu = render_auto_mu(sigma, occ, npix, &quartile);
-      free(occ);
-      free(sigma);
-      hv_info("film mu = %.3g m2/kg for every frame (the lower quartile of the areal "
-              "densities of the material in %s, %.3g kg/m2, at T = 1/2)", o.mu, path, quartile);
-    }
-    particles_free(&p);
-  }
+  if (!rc) rc = share_frame(&s, err);
+  if (!rc && s.o.mode == RENDER_RADIOGRAPH && !(s.o.mu > 0.0)) rc = share_mu(&s, err);
   static char bnames[RENDER_MAX_BODIES][64];
   const char *bptr[RENDER_MAX_BODIES];
-  const int nb = o.labels ? render_read_body_names(rundir, bnames, RENDER_MAX_BODIES) : 0;
+  const int nb = s.o.labels ? render_read_body_names(rundir, bnames, RENDER_MAX_BODIES) : 0;
   for (int k = 0; k < nb; k++) bptr[k] = bnames[k];
   if (!rc) rc = io_mkdir_p(framedir, err);
 
   /* pass 2: the frames */
   int written = 0;
-  for (int j = 0; j < nf && !rc; j++) {
-    double t;
-    snapshot_path(path, sizeof path, rundir, &frames[j]);
-    snprintf(fpath, sizeof fpath, "%s/frame_%05d.png", framedir, j);
-    particles_init(&p);
-    rc = load(path, &p, &t, err);
-    if (!rc) {
-      char names[RENDER_MAX_MATERIALS][64] = {{0}};
-      const char *ptr[RENDER_MAX_MATERIALS];
-      const int nm = io_read_material_names(path, names, RENDER_MAX_MATERIALS);
-      for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
-      const struct render_info info = {.time = t, .material_names = ptr, .nmat = nm,
-                                       .source = path, .material_slot = slot, .nslot = nmat,
-                                       .body_names = bptr, .nbody = nb};
-      rc = render_png(fpath, &p, &o, &info, err);
-      /* a failure to write names the frame; one that does not is about the snapshot */
-      if (rc && !strstr(err->msg, fpath)) hv_error_prefix(err, "%s: ", path);
-      if (!rc) {
-        written++;
-        hv_info("wrote %s (%s, t = %g s, %zu particles)", fpath, path, t, p.n);
-      }
-    }
-    particles_free(&p);
-  }
+  for (int j = 0; j < s.nf && !rc; j++)
+    if (!(rc = write_frame(&s, j, framedir, bptr, nb, err))) written++;
   if (!rc) {
     const int stale = frames_beyond(framedir, written);
     if (stale > 0)
@@ -241,13 +285,13 @@ int render_series(const char *rundir, const char *framedir, const struct render_
               stale, written);
     hv_info("%d frame%s of %s in %s (%dx%d pixels); a movie: ffmpeg -framerate 10 -i "
             "%s/frame_%%05d.png%s -pix_fmt yuv420p movie.mp4", written, written == 1 ? "" : "s",
-            rundir, framedir, o.width, o.height, framedir,
-            o.width % 2 || o.height % 2 ? " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'" : "");
+            rundir, framedir, s.o.width, s.o.height, framedir,
+            s.o.width % 2 || s.o.height % 2 ? " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'" : "");
   }
-  free(frames);
-  free(first);
-  free(slot);
+  free(s.frames);
+  free(s.first);
+  free(s.slot);
   free(snaps);
-  free(times);
+  free(s.times);
   return rc;
 }

@@ -269,10 +269,10 @@ static int measure_target(struct measure_run *mr, const struct sim *s, double t,
   return 0;
 }
 
-static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_error *err)
+/* Each measured plate's hole (with fracture also the hole in its unsplit material). */
+static int measure_plates(struct measure_run *mr, const struct sim *s, double t,
+                          struct hv_error *err)
 {
-  const double t = s->t;
-  if (mr->ntarget > 0 && measure_target(mr, s, t, err)) return -1;
   /* the holes in unsplit material: split particles still joined to a plate carry no
      tension, rubble that a recovered plate would not keep (one mask for every plate) */
   unsigned char *intact = NULL;
@@ -321,7 +321,13 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
   free(group);
   free(both);
   free(scale);
-  if (rc) return -1;
+  return rc ? -1 : 0;
+}
+
+/* Each debris cloud behind a plate: solid material from it and what lay in front. */
+static int measure_clouds(struct measure_run *mr, const struct sim *s, double t,
+                          struct hv_error *err)
+{
   for (int k = 0; k < mr->ndebris; k++) {
     struct meas_geom g = geom(mr, s, mr->debris[k]);
     struct meas_debris_params dp;
@@ -344,46 +350,61 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     snprintf(obj, sizeof obj, "cloud:%s", s->body[mr->debris[k]].name);
     meas_table_add_debris(&mr->table, t, obj, &cloud);
   }
-  if (mr->nbackwall > 0) {
-    unsigned char *mask;
-    struct meas_geom g = backwall_geom(mr, s, &mask);
-    const char *name = s->body[mr->backwall[0]].name;
-    /* several bodies: each particle at its own body's spacing relative to the finest */
-    double *bscale = NULL;
-    if (mask) {
-      bscale = hv_malloc((s->p.n + 1) * sizeof *bscale, "backwall spacings");
-      for (size_t i = 0; i < s->p.n; i++) bscale[i] = s->body[s->p.body[i]].spacing / g.spacing;
-    }
-    struct meas_backwall_params bp;
-    struct meas_backwall bw;
-    meas_backwall_defaults(&bp, &g);
-    bp.mask = mask;
-    bp.scale = bscale;
-    bp.far_reference = !mr->crater_original;
-    struct meas_plate_params pp;
-    struct meas_plate hole;
-    meas_plate_defaults(&pp, &g);
-    pp.mask = mask;
-    pp.scale = bscale;
-    /* perforation of the backwall: any of its material in the flight path blocks it,
-       joined or not (a cracked bulge whose particles have drifted apart still stops
-       the debris; a bumper's hole is measured on its joined piece), however far behind
-       its rear face it has bulged (a slab ending 2t behind would read a bulge beyond
-       it as a hole): the slab reaches the rearmost backwall particle */
-    pp.attached_only = 0;
-    for (size_t i = 0; i < s->p.n; i++)
-      if ((mask ? mask[i] : s->p.body[i] == g.body) && isfinite(s->p.x[0][i]))
-        pp.slab_rear = fmax(pp.slab_rear, s->p.x[0][i] - (g.x0 + g.thickness) + g.spacing);
-    const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
-                    measure_plate(&s->p, &g, &pp, &hole, err);
-    free(mask);
-    free(bscale);
-    if (brc) return -1;
-    meas_table_add_backwall(&mr->table, t, name, &bw);
-    meas_table_add_plate(&mr->table, t, name, &hole);   /* perforated, and the hole if any */
-    meas_table_add(&mr->table, t, "peak_pressure_center",
-                   mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
+  return 0;
+}
+
+/* The backwall: its crater, damage and perforation, and the peak pressure at its centre. */
+static int measure_rear_wall(struct measure_run *mr, const struct sim *s, double t,
+                             struct hv_error *err)
+{
+  unsigned char *mask;
+  struct meas_geom g = backwall_geom(mr, s, &mask);
+  const char *name = s->body[mr->backwall[0]].name;
+  /* several bodies: each particle at its own body's spacing relative to the finest */
+  double *bscale = NULL;
+  if (mask) {
+    bscale = hv_malloc((s->p.n + 1) * sizeof *bscale, "backwall spacings");
+    for (size_t i = 0; i < s->p.n; i++) bscale[i] = s->body[s->p.body[i]].spacing / g.spacing;
   }
+  struct meas_backwall_params bp;
+  struct meas_backwall bw;
+  meas_backwall_defaults(&bp, &g);
+  bp.mask = mask;
+  bp.scale = bscale;
+  bp.far_reference = !mr->crater_original;
+  struct meas_plate_params pp;
+  struct meas_plate hole;
+  meas_plate_defaults(&pp, &g);
+  pp.mask = mask;
+  pp.scale = bscale;
+  /* perforation of the backwall: any of its material in the flight path blocks it,
+     joined or not (a cracked bulge whose particles have drifted apart still stops
+     the debris; a bumper's hole is measured on its joined piece), however far behind
+     its rear face it has bulged (a slab ending 2t behind would read a bulge beyond
+     it as a hole): the slab reaches the rearmost backwall particle */
+  pp.attached_only = 0;
+  for (size_t i = 0; i < s->p.n; i++)
+    if ((mask ? mask[i] : s->p.body[i] == g.body) && isfinite(s->p.x[0][i]))
+      pp.slab_rear = fmax(pp.slab_rear, s->p.x[0][i] - (g.x0 + g.thickness) + g.spacing);
+  const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
+                  measure_plate(&s->p, &g, &pp, &hole, err);
+  free(mask);
+  free(bscale);
+  if (brc) return -1;
+  meas_table_add_backwall(&mr->table, t, name, &bw);
+  meas_table_add_plate(&mr->table, t, name, &hole);   /* perforated, and the hole if any */
+  meas_table_add(&mr->table, t, "peak_pressure_center",
+                 mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
+  return 0;
+}
+
+static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_error *err)
+{
+  const double t = s->t;
+  if (mr->ntarget > 0 && measure_target(mr, s, t, err)) return -1;
+  if (measure_plates(mr, s, t, err) || measure_clouds(mr, s, t, err) ||
+      (mr->nbackwall > 0 && measure_rear_wall(mr, s, t, err)))
+    return -1;
   if (mr->gas >= 0) {
     const struct body_info *bi = &s->body[mr->gas];
     const double origin[3] = {bi->lo[0], mr->axis_y, 0.0};

@@ -23,7 +23,7 @@
 #define HV_MEASURE_RUN_H
 
 #include "diag/measure_table.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 #define MR_MAX 8
 

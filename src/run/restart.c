@@ -370,18 +370,16 @@ static int check_particles(const struct ckpt_file *c, const struct particles *p,
   return 0;
 }
 
-int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct hv_error *err)
+/* The checkpoint is of this case: its version said when another's, the same case name,
+ * bodies (with their initial counts) and materials. Returns 0 or -1 with err set. */
+static int restart_same_case(struct ckpt_file *c, const struct sim *s, const char *path,
+                             struct hv_error *err)
 {
-  struct ckpt_file c;
-  if (ckpt_open(&c, path, err)) return -1;
-  int rc = -1;
-  char *cname = NULL;
   size_t len;
   const char *names[64];
-
   /* another hvsph may continue it, but the numbers then differ from either's own run */
   char *ver = NULL;
-  if (ckpt_get_alloc(&c, "version", CKPT_BYTES, (void **)&ver, &len, err)) goto out;
+  if (ckpt_get_alloc(c, "version", CKPT_BYTES, (void **)&ver, &len, err)) return -1;
   if (strcmp(ver, HVSPH_VERSION))
     hv_warn("%s was written by hvsph %s; this is hvsph %s: where the two compute differently "
             "the continued run matches neither's own run bit for bit (run_segments.csv "
@@ -389,61 +387,69 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   free(ver);
 
   /* the same case: name, bodies (and their initial counts), materials */
-  if (ckpt_get_alloc(&c, "case", CKPT_BYTES, (void **)&cname, &len, err)) goto out;
-  if (strcmp(cname, s->case_name)) {
-    mismatch(&c, err, "case name", cname, s->case_name);
-    goto out;
-  }
+  char *cname = NULL;
+  if (ckpt_get_alloc(c, "case", CKPT_BYTES, (void **)&cname, &len, err)) return -1;
+  const int other = strcmp(cname, s->case_name);
+  if (other) mismatch(c, err, "case name", cname, s->case_name);
+  free(cname);
+  if (other) return -1;
   for (int b = 0; b < s->nbody; b++) names[b] = s->body[b].name;
-  if (check_names(&c, "bodies", "bodies", names, s->nbody, err)) goto out;
+  if (check_names(c, "bodies", "bodies", names, s->nbody, err)) return -1;
   int64_t counts[64];
-  if (ckpt_get(&c, "bodies.count", CKPT_I64, (size_t)s->nbody, counts, err)) goto out;
+  if (ckpt_get(c, "bodies.count", CKPT_I64, (size_t)s->nbody, counts, err)) return -1;
   for (int b = 0; b < s->nbody; b++)
     if (counts[b] != (int64_t)s->body[b].count) {
       char a[64], bb[64], what[128];
       snprintf(a, sizeof a, "%lld", (long long)counts[b]);
       snprintf(bb, sizeof bb, "%zu", s->body[b].count);
       snprintf(what, sizeof what, "initial particle count of body '%s':", s->body[b].name);
-      mismatch(&c, err, what, a, bb);
-      goto out;
+      mismatch(c, err, what, a, bb);
+      return -1;
     }
   for (int m = 0; m < s->nmat; m++) names[m] = s->mat[m].name;
-  if (check_names(&c, "materials", "materials", names, s->nmat, err)) goto out;
+  if (check_names(c, "materials", "materials", names, s->nmat, err)) return -1;
 
+  return 0;
+}
+
+/* The clock, the step and the absorbing faces' tallies read and checked into s; *n the
+ * particles the checkpoint holds. Returns 0 or -1 with err set. */
+static int restart_clock(struct ckpt_file *c, struct sim *s, size_t *n, struct hv_error *err)
+{
   /* clock, boundaries */
   double clock[3], ab[6];
   int64_t ints[3], abn;
-  if (ckpt_get(&c, "clock", CKPT_F64, 3, clock, err) ||
-      ckpt_get(&c, "step.n.solid", CKPT_I64, 3, ints, err) ||
-      ckpt_get(&c, "absorbed", CKPT_F64, 6, ab, err) ||
-      ckpt_get(&c, "absorbed.n", CKPT_I64, 1, &abn, err))
-    goto out;
+  if (ckpt_get(c, "clock", CKPT_F64, 3, clock, err) ||
+      ckpt_get(c, "step.n.solid", CKPT_I64, 3, ints, err) ||
+      ckpt_get(c, "absorbed", CKPT_F64, 6, ab, err) ||
+      ckpt_get(c, "absorbed.n", CKPT_I64, 1, &abn, err))
+    return -1;
   if (ints[2] != s->p.solid) {
-    mismatch(&c, err, "solid fields", ints[2] ? "present" : "absent",
+    mismatch(c, err, "solid fields", ints[2] ? "present" : "absent",
              s->p.solid ? "present" : "absent");
-    goto out;
+    return -1;
   }
   /* the clock: a time, a next step and a proposed one that a run reaches */
   if (!isfinite(clock[0]) || clock[0] < 0 || !isfinite(clock[1]) || !(clock[1] > 0) ||
       !isfinite(clock[2]) || clock[2] < 0) {
-    bad_record(&c, "clock", err, "t = %g s, dt = %g s, proposed dt = %g s (t finite and "
+    bad_record(c, "clock", err, "t = %g s, dt = %g s, proposed dt = %g s (t finite and "
                ">= 0, dt finite and > 0)", clock[0], clock[1], clock[2]);
-    goto out;
+    return -1;
   }
   if (ints[0] < 0 || ints[1] < 0) {
-    bad_record(&c, "step.n.solid", err, "step %lld, %lld particles", (long long)ints[0],
+    bad_record(c, "step.n.solid", err, "step %lld, %lld particles", (long long)ints[0],
                (long long)ints[1]);
-    goto out;
+    return -1;
   }
   /* what absorbing faces removed: at most the particles there were, finite tallies */
   if (abn < 0 || abn > ints[1] + (int64_t)s->p.n) {
-    bad_record(&c, "absorbed.n", err, "%lld particles absorbed", (long long)abn);
-    goto out;
+    bad_record(c, "absorbed.n", err, "%lld particles absorbed", (long long)abn);
+    return -1;
   }
   for (int k = 0; k < 6; k++)
     if (!isfinite(ab[k]) || (k == 0 && ab[k] < 0)) {
-      bad_record(&c, "absorbed", err, "value %d is %g", k + 1, ab[k]);
-      goto out;
+      bad_record(c, "absorbed", err, "value %d is %g", k + 1, ab[k]);
+      return -1;
     }
   s->t = clock[0];
   s->dt = clock[1];
@@ -456,21 +462,29 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   a->e_kin = ab[4];
   a->e_int = ab[5];
 
+  *n = (size_t)ints[1];
+  return 0;
+}
+
+/* The n particles' state read and checked into s->p (absorbing faces remove some, so n
+ * is the checkpoint's count). Returns 0 or -1 with err set. */
+static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const char *path,
+                             struct hv_error *err)
+{
   /* the particles: as many as the checkpoint holds (absorbing faces remove some) */
   struct particles *p = &s->p;
-  const size_t n = (size_t)ints[1];
-  if (p->av && !ckpt_find(&c, "p.alpha")) {
+  if (p->av && !ckpt_find(c, "p.alpha")) {
     hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without sph.viscosity.switch, "
                  "whose per-particle alpha it does not hold: a run cannot take the switch up "
                  "when continued (start it again, or continue it without the switch)", path);
-    goto out;
+    return -1;
   }
-  if (p->cracks && !ckpt_find(&c, "p.crack")) {
+  if (p->cracks && !ckpt_find(c, "p.crack")) {
     hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without fracture.split: crack "
                  "or fracture.energy, whose per-particle crack normals it does not hold: a "
                  "run cannot take it up "
                  "when continued (start it again, or continue it without it)", path);
-    goto out;
+    return -1;
   }
   /* the count against the data the file holds, before the particles are allocated (a
      count of 2^40 asked for 11.7 TB): every state field's record, n elements a part */
@@ -480,9 +494,9 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
     if (!(f[i].flags & PF_STATE)) continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
-    if (want_count(&c, rn, ckpt_type_of(f[i].type), (uint64_t)n * (uint64_t)f[i].ncomp,
+    if (want_count(c, rn, ckpt_type_of(f[i].type), (uint64_t)n * (uint64_t)f[i].ncomp,
                    "step.n.solid", err))
-      goto out;
+      return -1;
   }
   p->n_ghost = 0;
   if (n > p->n) particles_add(p, n - p->n);
@@ -492,22 +506,28 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
     if (!(f[i].flags & PF_STATE)) continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
-    if (ckpt_get_parts(&c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err))
-      goto out;
+    if (ckpt_get_parts(c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err))
+      return -1;
   }
   for (size_t i = 0; i < n; i++)
     if (p->mat[i] < 0 || p->mat[i] >= s->nmat || p->body[i] < 0 || p->body[i] >= s->nbody) {
       hv_error_set(err, HV_EXIT_INPUT, "%s: particle %lld has material %d and body %d, "
                    "outside this case's %d materials and %d bodies", path, (long long)p->id[i],
                    p->mat[i], p->body[i], s->nmat, s->nbody);
-      goto out;
+      return -1;
     }
-  if (check_particles(&c, p, f, nf, err)) goto out;
+  if (check_particles(c, p, f, nf, err)) return -1;
+  return 0;
+}
 
-  if (read_outputs(&c, s, o, err) || read_measure(&c, s, o, err)) goto out;
-  rc = 0;
-out:
-  free(cname);
+int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct hv_error *err)
+{
+  struct ckpt_file c;
+  if (ckpt_open(&c, path, err)) return -1;
+  size_t n = 0;
+  const int rc = restart_same_case(&c, s, path, err) || restart_clock(&c, s, &n, err) ||
+                 restart_particles(&c, s, n, path, err) || read_outputs(&c, s, o, err) ||
+                 read_measure(&c, s, o, err) ? -1 : 0;
   ckpt_close(&c);
   return rc;
 }

@@ -19,7 +19,7 @@
 
 #include "core/error.h"
 #include "run/measure_run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 #define RUN_SUMMARY_COLS 18
 

@@ -28,14 +28,14 @@
 #include "core/infile.h"
 #include "diag/conservation.h"
 #include "integrate/step.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "material/material_read.h"
-#include "run/check.h"
+#include "run/plausible.h"
 #include "run/measure_run.h"
 #include "run/restart.h"
 #include "run/runfolder.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "setup/setup.h"
 #include "version.h"
 
@@ -261,7 +261,7 @@ static const char *default_name(const char *path, char *buf, size_t len)
 
 /* run_segments.csv: one row per run or restart of this folder — which hvsph, how many
  * threads, when, from which step and time to which, how long, how it ended — rewritten
- * (through afile) at every checkpoint and at the end. A restart keeps the rows before
+ * (through atomic_file) at every checkpoint and at the end. A restart keeps the rows before
  * it. Provenance only: nothing reads it back but `validate` (the total wall time). */
 struct segment {
   char *prev;         /* the rows of the earlier segments (with the header), or NULL */
@@ -313,16 +313,16 @@ static int segment_write(const struct segment *g, const char *dir, const struct 
 {
   char path[4200];
   snprintf(path, sizeof path, "%s/run_segments.csv", dir);
-  struct afile af;
-  if (afile_open(&af, path, err)) return -1;
-  if (afile_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
-      afile_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
+  struct atomic_file af;
+  if (atomic_file_open(&af, path, err)) return -1;
+  if (atomic_file_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
+      atomic_file_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
                    omp_get_max_threads(), g->started, g->step0, g->t0, s->step, s->t,
                    wall_time() - g->wall0, end)) {
-    afile_abort(&af);
+    atomic_file_abort(&af);
     return -1;
   }
-  return afile_commit(&af, err);
+  return atomic_file_commit(&af, err);
 }
 
 /* Checkpoints: at every output time, every output.checkpoint_wall seconds of wall-clock
@@ -509,6 +509,101 @@ int run_check_output_count(const struct sim *s, struct cfg *c, double t_from, in
                       s->tp.end, n, RUN_MAX_OUTPUTS);
 }
 
+/* A restart's folder locked and its checkpoint there, before anything is read: a run
+ * still going rewrites these files (and may not have written its first checkpoint yet).
+ * Returns 0 or -1 with err set. */
+static int restart_lock(const char *dir, const char *ckpt, int quiet, struct runfolder_lock *lock,
+                        struct hv_error *err)
+{
+  struct stat st;
+  if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode) &&
+      runfolder_lock(lock, dir, "restart", quiet, err))
+    return -1;
+  if (access(ckpt, R_OK))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: no checkpoint to restart from (%s); runs "
+                        "write one at every output time unless output.checkpoint is false",
+                        ckpt, strerror(errno));
+  return 0;
+}
+
+/* A restart's outputs so far read back with its state from the checkpoint, and the
+ * temporary files of the stopped run removed. Returns 0 or -1 with err set. */
+static int reopen_folder(const struct run_options *ro, struct sim *s, struct cfg *c,
+                         struct run_outputs *o, const char *ckpt, struct hv_error *err)
+{
+  if (restart_read(s, o, ckpt, err) || run_check_output_count(s, c, s->t, o->count, ro->force, err))
+    return -1;
+  const int stale = atomic_file_remove_stale(o->dir);
+  if (stale > 0 && !ro->quiet)
+    hv_info("removed %d unfinished temporary file%s of the stopped run", stale,
+            stale == 1 ? "" : "s");
+  return 0;
+}
+
+/* A new run's folder made and locked, an earlier run there refused or (--overwrite)
+ * removed. Returns 0 or -1 with err set. */
+static int open_folder(const struct run_options *ro, struct sim *s, struct cfg *c,
+                       struct run_outputs *o, struct runfolder_lock *lock, struct hv_error *err)
+{
+  if (run_check_output_count(s, c, s->t, 0, ro->force, err) || io_mkdir_p(o->dir, err) ||
+      runfolder_lock(lock, o->dir, "run", ro->quiet, err))
+    return -1;
+  /* an earlier run in the folder: its checkpoint, snapshots and tables would be
+     replaced or, worse, mixed with this run's (a restart continuing the old state
+     under the new used_parameters.yaml) */
+  char what[1024];
+  if (runfolder_earlier_run(o->dir, what, sizeof what) > 0) {
+    if (!ro->overwrite)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s holds an earlier run (%s): a new run does "
+                          "not write over it. Continue it with 'hvsph restart %s', write "
+                          "elsewhere with -o OUTDIR, or give --overwrite to replace it", o->dir,
+                          what, o->dir);
+    const int gone = runfolder_remove_run(o->dir, err);
+    if (gone < 0) return -1;
+    atomic_file_remove_stale(o->dir);
+    if (!ro->quiet)
+      hv_info("--overwrite: removed the earlier run's %d file%s from %s (%s)", gone,
+              gone == 1 ? "" : "s", o->dir, what);
+  }
+  o->t_start = s->t;
+  o->next_k = 1;
+  o->next_mk = 1;
+  return 0;
+}
+
+/* The run's last line: interrupted (the exit status says so) or done. */
+static int say_end(const struct run_options *ro, const struct sim *s, const struct run_outputs *o)
+{
+  if (interrupted) {
+    if (s->step == 0)   /* before the first step: the initial outputs only, no checkpoint */
+      hv_info("interrupted before the first step; %s holds the initial state's outputs, "
+              "no checkpoint (run the case again, with --overwrite)", o->dir);
+    else
+      hv_info("interrupted at t = %g s (step %ld) by %s; the state at that time is written "
+              "to %s%s", s->t, s->step, signal_name(interrupted), o->dir,
+              s->out.checkpoint ? " (continue with hvsph restart)" : "");
+    return HV_EXIT_INTERRUPTED;
+  }
+  if (!ro->quiet)
+    hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s->step, s->t,
+            o->dir);
+  return HV_EXIT_OK;
+}
+
+/* The run's first line: the case or the restart, its particles and threads. */
+static void say_start(const struct run_options *ro, const struct sim *s,
+                      const struct run_outputs *o)
+{
+  if (ro->restart_dir)
+    hv_info("restart of %s from its checkpoint at t = %g s (step %ld, %d outputs written): "
+            "%zu particles, %d thread%s, t_end = %g s", o->dir, s->t, s->step, o->count, s->p.n,
+            omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s", s->tp.end);
+  else
+    hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
+            ro->case_path, s->p.n, s->nbody, s->nbody == 1 ? "y" : "ies", omp_get_max_threads(),
+            omp_get_max_threads() == 1 ? "" : "s", s->tp.end, o->dir);
+}
+
 int run_main(const struct run_options *ro)
 {
   struct hv_error err;
@@ -532,18 +627,7 @@ int run_main(const struct run_options *ro)
   if (restart) {   /* the case is the run's used_parameters.yaml */
     snprintf(path, sizeof path, "%s/used_parameters.yaml", restart);
     restart_path(restart, ckpt, sizeof ckpt);
-    /* before anything is read: a run still going rewrites these files (and may not
-       have written its first checkpoint yet) */
-    struct stat st;
-    if (stat(restart, &st) == 0 && S_ISDIR(st.st_mode) &&
-        runfolder_lock(&lock, restart, "restart", ro->quiet, &err))
-      goto fail;
-    if (access(ckpt, R_OK)) {
-      hv_error_set(&err, HV_EXIT_INPUT, "%s: no checkpoint to restart from (%s); runs write "
-                   "one at every output time unless output.checkpoint is false", ckpt,
-                   strerror(errno));
-      goto fail;
-    }
+    if (restart_lock(restart, ckpt, ro->quiet, &lock, &err)) goto fail;
   }
   const char *case_path = restart ? path : ro->case_path;
 
@@ -567,56 +651,16 @@ int run_main(const struct run_options *ro)
                 : default_name(ro->case_path, nbuf, sizeof nbuf));
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
   for (int i = 0; i < s.nbody; i++) o.bodynames[i] = s.body[i].name;
-  if (restart) {
-    if (restart_read(&s, &o, ckpt, &err) ||
-        run_check_output_count(&s, c, s.t, o.count, ro->force, &err))
-      goto fail;
-    const int stale = afile_remove_stale(o.dir);
-    if (stale > 0 && !ro->quiet)
-      hv_info("removed %d unfinished temporary file%s of the stopped run", stale,
-              stale == 1 ? "" : "s");
-  } else {
-    if (run_check_output_count(&s, c, s.t, 0, ro->force, &err) || io_mkdir_p(o.dir, &err) ||
-        runfolder_lock(&lock, o.dir, "run", ro->quiet, &err))
-      goto fail;
-    /* an earlier run in the folder: its checkpoint, snapshots and tables would be
-       replaced or, worse, mixed with this run's (a restart continuing the old state
-       under the new used_parameters.yaml) */
-    char what[1024];
-    if (runfolder_earlier_run(o.dir, what, sizeof what) > 0) {
-      if (!ro->overwrite) {
-        hv_error_set(&err, HV_EXIT_INPUT, "%s holds an earlier run (%s): a new run does not "
-                     "write over it. Continue it with 'hvsph restart %s', write elsewhere with "
-                     "-o OUTDIR, or give --overwrite to replace it", o.dir, what, o.dir);
-        goto fail;
-      }
-      const int gone = runfolder_remove_run(o.dir, &err);
-      if (gone < 0) goto fail;
-      afile_remove_stale(o.dir);
-      if (!ro->quiet)
-        hv_info("--overwrite: removed the earlier run's %d file%s from %s (%s)", gone,
-                gone == 1 ? "" : "s", o.dir, what);
-    }
-    o.t_start = s.t;
-    o.next_k = 1;
-    o.next_mk = 1;
-  }
+  if (restart ? reopen_folder(ro, &s, c, &o, ckpt, &err)
+              : open_folder(ro, &s, c, &o, &lock, &err))
+    goto fail;
   /* a restart records its overrides (the file is what the continued run used) */
   if (!restart || ro->nsets > 0) {
     snprintf(path, sizeof path, "%s/used_parameters.yaml", o.dir);
     if (cfg_write_used(c, path, HVSPH_VERSION, &err)) goto fail;
   }
 
-  if (!ro->quiet) {
-    if (restart)
-      hv_info("restart of %s from its checkpoint at t = %g s (step %ld, %d outputs written): "
-              "%zu particles, %d thread%s, t_end = %g s", o.dir, s.t, s.step, o.count, s.p.n,
-              omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s", s.tp.end);
-    else
-      hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
-              ro->case_path, s.p.n, s.nbody, s.nbody == 1 ? "y" : "ies", omp_get_max_threads(),
-              omp_get_max_threads() == 1 ? "" : "s", s.tp.end, o.dir);
-  }
+  if (!ro->quiet) say_start(ro, &s, &o);
   if (restart && s.t >= s.tp.end) {
     if (!ro->quiet)
       hv_info("nothing to do: the run reached t_end = %g s (continue it with --set "
@@ -635,20 +679,7 @@ int run_main(const struct run_options *ro)
   if (segment_write(&seg, o.dir, &s, interrupted ? "interrupted" : s.t < s.tp.end ?
                     "stopped (max_steps)" : "done", &err))
     goto fail;
-  if (interrupted) {
-    if (s.step == 0)   /* before the first step: the initial outputs only, no checkpoint */
-      hv_info("interrupted before the first step; %s holds the initial state's outputs, "
-              "no checkpoint (run the case again, with --overwrite)", o.dir);
-    else
-      hv_info("interrupted at t = %g s (step %ld) by %s; the state at that time is written "
-              "to %s%s", s.t, s.step, signal_name(interrupted), o.dir,
-              s.out.checkpoint ? " (continue with hvsph restart)" : "");
-    status = HV_EXIT_INTERRUPTED;
-  } else if (!ro->quiet) {
-    hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s.step, s.t,
-            o.dir);
-
-  }
+  status = say_end(ro, &s, &o);
   goto done;
 fail:
   if (caught) stop_signals_restore(old_actions);

@@ -707,11 +707,12 @@ static long meet_cell(double u, double u0, double cell) { return (long)floor((u 
  * at a body; columns of reach/2, so b's particles up to 1.5 reach from the footprint
  * across the flight may count too). A region too wide for either grid answers 1 (the
  * warning is kept rather than missed). */
-static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
+/* Whether bodies a and b touch at the start: a pair of their particles closer than
+ * reach, found on the solver's cell grid (1 also when the region is too wide for it). */
+static int bodies_touch(const struct sim *s, const size_t *first_of, int a, int b, double reach)
 {
   const struct particles *p = &s->p;
   const struct body_info *A = &s->body[a], *B = &s->body[b];
-  const double reach = 2.0 * fmax(A->spacing, B->spacing);
   const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
   /* 1: touching at the start: the particles of both within the overlap of their boxes
      grown by reach, on the solver's cell grid with h = reach/2 (a pair links when
@@ -723,49 +724,58 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
     hi[d] = fmin(A->hi[d], B->hi[d]) + reach;
     overlap &= hi[d] >= lo[d];
   }
-  if (overlap) {
-    size_t n = 0;
-    uint32_t *id = hv_malloc((na + nb + 1) * sizeof *id, "body contact selection");
-    for (size_t q = 0; q < na + nb; q++) {
-      const size_t r = q < na ? fa + q : fb + (q - na);
-      int in = 1;
-      for (int d = 0; d < 3; d++) in &= p->x[d][r] >= lo[d] && p->x[d][r] <= hi[d];
-      if (in) id[n++] = (uint32_t)r;
-    }
-    double *xs[3], *hs = hv_malloc((n + 1) * sizeof *hs, "body contact h");
-    for (int d = 0; d < 3; d++) xs[d] = hv_malloc((n + 1) * sizeof *xs[d], "body contact x");
-    for (size_t k = 0; k < n; k++) {
-      for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][id[k]];
-      hs[k] = 0.5 * reach;
-    }
-    struct nbr_grid g;
-    nbr_grid_init(&g);
-    char msg[256];
-    int meet = 0;
-    if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
-                                nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
-      meet = 1;   /* too wide a region for the grid: keep the warning */
-    for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
-      for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
-        const uint32_t i = g.order[ii];
-        const int ia = p->body[id[i]] == a;
-        for (uint32_t kk = g.nbr_start[cc]; kk < g.nbr_start[cc + 1] && !meet; kk++) {
-          const int32_t nc = g.nbr_list[kk];
-          for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
-            const uint32_t j = g.order[jj];
-            if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
-            const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
-                         dz = xs[2][i] - xs[2][j];
-            meet = dx * dx + dy * dy + dz * dz < reach * reach;
-          }
+  if (!overlap) return 0;
+  size_t n = 0;
+  uint32_t *id = hv_malloc((na + nb + 1) * sizeof *id, "body contact selection");
+  for (size_t q = 0; q < na + nb; q++) {
+    const size_t r = q < na ? fa + q : fb + (q - na);
+    int in = 1;
+    for (int d = 0; d < 3; d++) in &= p->x[d][r] >= lo[d] && p->x[d][r] <= hi[d];
+    if (in) id[n++] = (uint32_t)r;
+  }
+  double *xs[3], *hs = hv_malloc((n + 1) * sizeof *hs, "body contact h");
+  for (int d = 0; d < 3; d++) xs[d] = hv_malloc((n + 1) * sizeof *xs[d], "body contact x");
+  for (size_t k = 0; k < n; k++) {
+    for (int d = 0; d < 3; d++) xs[d][k] = p->x[d][id[k]];
+    hs[k] = 0.5 * reach;
+  }
+  struct nbr_grid g;
+  nbr_grid_init(&g);
+  char msg[256];
+  int meet = 0;
+  if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
+                              nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
+    meet = 1;   /* too wide a region for the grid: keep the warning */
+  for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
+    for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
+      const uint32_t i = g.order[ii];
+      const int ia = p->body[id[i]] == a;
+      for (uint32_t kk = g.nbr_start[cc]; kk < g.nbr_start[cc + 1] && !meet; kk++) {
+        const int32_t nc = g.nbr_list[kk];
+        for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
+          const uint32_t j = g.order[jj];
+          if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
+          const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
+                       dz = xs[2][i] - xs[2][j];
+          meet = dx * dx + dy * dy + dz * dz < reach * reach;
         }
       }
-    nbr_grid_free(&g);
-    for (int d = 0; d < 3; d++) free(xs[d]);
-    free(hs);
-    free(id);
-    if (meet) return 1;
-  }
+    }
+  nbr_grid_free(&g);
+  for (int d = 0; d < 3; d++) free(xs[d]);
+  free(hs);
+  free(id);
+  return meet;
+}
+
+/* Whether a's footprint, swept along the bodies' relative mean velocity, passes within
+ * reach of a particle of b (1 also when the footprint is too wide for the columns). */
+static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, int b,
+                          double reach)
+{
+  const struct particles *p = &s->p;
+  const struct body_info *A = &s->body[a], *B = &s->body[b];
+  const size_t fa = first_of[a], na = A->count, fb = first_of[b], nb = B->count;
   /* 2: a's footprint swept along u = v̄_a − v̄_b */
   double u[3] = {0, 0, 0};
   for (size_t q = fa; q < fa + na; q++)
@@ -823,6 +833,12 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
   }
   free(rear);
   return meet;
+}
+
+static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, int b)
+{
+  const double reach = 2.0 * fmax(s->body[a].spacing, s->body[b].spacing);
+  return bodies_touch(s, first_of, a, b, reach) || bodies_in_path(s, first_of, a, b, reach);
 }
 
 /* Where bodies of very different particle masses meet, the light particles' continuity
@@ -969,9 +985,115 @@ static int read_pieces(struct sim *s, struct cfg *c, int nb, struct hv_error *er
   return 0;
 }
 
-int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
+/* The particle fields the materials and options need (solid, viscosity switch, crack
+ * normals), and the sph options refused that the materials contradict. Returns 0 or -1
+ * with err set. */
+static int enable_fields(struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  char where[256];
+  /* solid fields are needed once any material has strength or fracture */
+  for (int m = 0; m < s->nmat; m++)
+    if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)
+      particles_enable_solid(&s->p);
+  /* each particle's viscosity coefficient and last velocity divergence (the switch) */
+  if (s->sph.av_switch) particles_enable_av(&s->p);
+  /* each particle's crack normal (fracture.split: crack) */
+  for (int m = 0; m < s->nmat; m++)
+    if (s->mat[m].frac.kind != FRACTURE_NONE &&
+        (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
+      particles_enable_crack(&s->p);
+  if (s->sph.summation && s->p.solid)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
+                        "strength or fracture (a free surface of a solid would lose density); "
+                        "use continuity", cfg_where(c, "sph.density", where, sizeof where));
+  if (s->sph.reconstruct && !s->p.solid)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct: it acts on pairs of "
+                        "particles with strength, and no material here has strength or fracture; "
+                        "set it to false", cfg_where(c, "sph.viscosity.reconstruct", where,
+                                                  sizeof where));
+  if (s->sph.continuity_mass && s->p.solid)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.continuity: mass is for cases without "
+                        "strength or fracture (the solid loops use the volume form, which holds "
+                        "at interfaces where density jumps a hundredfold); use volume",
+                        cfg_where(c, "sph.continuity", where, sizeof where));
+  return 0;
+}
+
+/* Body b's particle count (*cnt), refused before any is made when its bounding box is
+ * too large to scan or to hold, or when its spacing leaves the shape empty. Returns 0 or
+ * -1 with err set. */
+static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, int b,
+                      size_t *cnt_out, struct hv_error *err)
 {
   char where[256], key[64];
+  snprintf(key, sizeof key, "bodies[%d]", b);
+  /* an upper bound first (the bounding box), so that an absurd spacing is refused
+     before the lattice is even counted */
+  const struct shape *sh = &bs[b].shape;
+  double bound = 1.0;
+  for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
+  const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
+  if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err))
+    return -1;
+  double scan;
+  const size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
+  if (cnt == SIZE_MAX) {
+    char then[160];
+    snprintf(then, sizeof then, "spans %.3g lattice points in its bounding box, more than "
+             "%.3g to scan", scan, lattice_scan_max());
+    if (bare_length_error(c, b, &bs[b], s->body[b].name, then, err)) return -1;
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
+                        "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
+                        "particles this machine's memory holds); check the shape's size and units",
+                        cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        sh->max[0] - sh->min[0], sh->max[1] - sh->min[1], sh->max[2] - sh->min[2],
+                        scan, 1e3 * bs[b].spacing, lattice_scan_max());
+  }
+  if (cnt == 0) {
+    /* a bare spacing (metres) wider than the body: `spacing: 0.25` for 0.25 mm */
+    char skey[96], hint[256] = "";
+    double ext = 0.0;
+    for (int d = 0; d < 3; d++) ext = fmax(ext, sh->max[d] - sh->min[d]);
+    snprintf(skey, sizeof skey, "%s.spacing", key);
+    if (cfg_is_bare(c, skey) && bs[b].spacing > ext)
+      snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m (a number "
+               "without a unit is SI): was it %g mm?", skey, bs[b].spacing, bs[b].spacing,
+               bs[b].spacing);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
+                        "the shape%s", cfg_where(c, key, where, sizeof where), s->body[b].name,
+                        bs[b].spacing, hint);
+  }
+  *cnt_out = cnt;
+  return 0;
+}
+
+/* Body b's cnt particles made on its lattice, initialised, and its body_info (count,
+ * spacing, density, extent) filled; returns the first particle's index. */
+static size_t place_body(struct sim *s, const struct body_spec *bs, int b, size_t cnt)
+{
+  const size_t first = particles_add(&s->p, cnt);
+  lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
+  init_body(s, &bs[b], b, first, cnt);
+  struct body_info *bi = &s->body[b];
+  bi->count = cnt;
+  bi->spacing = bs[b].spacing;
+  bi->rho = bs[b].rho;
+  for (int d = 0; d < 3; d++) {
+    bi->lo[d] = HUGE_VAL;
+    bi->hi[d] = -HUGE_VAL;
+    for (size_t q = first; q < first + cnt; q++) {
+      bi->lo[d] = fmin(bi->lo[d], s->p.x[d][q]);
+      bi->hi[d] = fmax(bi->hi[d], s->p.x[d][q]);
+    }
+    bi->lo[d] -= 0.5 * bs[b].spacing;
+    bi->hi[d] += 0.5 * bs[b].spacing;
+  }
+  return first;
+}
+
+int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  char where[256];
   double one = 1.0, resolution;
   if (cfg_get_quantity(c, "resolution", UNIT_NONE, &one, 1e-6, 1e6, &resolution, err)) return -1;
   int nb = cfg_len(c, "bodies");
@@ -985,99 +1107,17 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
   int rc = 0;
   for (int b = 0; b < nb && !rc; b++) rc = read_body(s, c, b, &bs[b], resolution, err);
   if (!rc) rc = read_pieces(s, c, nb, err);
-  /* solid fields are needed once any material has strength or fracture */
-  for (int m = 0; m < s->nmat && !rc; m++)
-    if (s->mat[m].str.enabled || s->mat[m].frac.kind != FRACTURE_NONE)
-      particles_enable_solid(&s->p);
-  /* each particle's viscosity coefficient and last velocity divergence (the switch) */
-  if (!rc && s->sph.av_switch) particles_enable_av(&s->p);
-  /* each particle's crack normal (fracture.split: crack) */
-  for (int m = 0; m < s->nmat && !rc; m++)
-    if (s->mat[m].frac.kind != FRACTURE_NONE &&
-        (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
-      particles_enable_crack(&s->p);
-  if (!rc && s->sph.summation && s->p.solid) {
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
-                      "strength or fracture (a free surface of a solid would lose density); "
-                      "use continuity", cfg_where(c, "sph.density", where, sizeof where));
-  }
-  if (!rc && s->sph.reconstruct && !s->p.solid) {
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct: it acts on pairs of "
-                      "particles with strength, and no material here has strength or fracture; "
-                      "set it to false", cfg_where(c, "sph.viscosity.reconstruct", where,
-                                                  sizeof where));
-  }
-  if (!rc && s->sph.continuity_mass && s->p.solid) {
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: sph.continuity: mass is for cases without "
-                      "strength or fracture (the solid loops use the volume form, which holds "
-                      "at interfaces where density jumps a hundredfold); use volume",
-                      cfg_where(c, "sph.continuity", where, sizeof where));
-  }
+  if (!rc) rc = enable_fields(s, c, err);
   size_t first_of[64];
   for (int b = 0; b < nb && !rc; b++) {
-    snprintf(key, sizeof key, "bodies[%d]", b);
-    /* an upper bound first (the bounding box), so that an absurd spacing is refused
-       before the lattice is even counted */
-    const struct shape *sh = &bs[b].shape;
-    double bound = 1.0;
-    for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
-    const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-    if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) {
+    size_t cnt;
+    if (count_body(s, c, bs, b, &cnt, err) < 0) {
       rc = -1;
       break;
     }
-    double scan;
-    size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
-    if (cnt == SIZE_MAX) {
-      char then[160];
-      snprintf(then, sizeof then, "spans %.3g lattice points in its bounding box, more than "
-               "%.3g to scan", scan, lattice_scan_max());
-      if (bare_length_error(c, b, &bs[b], s->body[b].name, then, err)) {
-        rc = -1;
-        break;
-      }
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
-                        "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
-                        "particles this machine's memory holds); check the shape's size and units",
-                        cfg_where(c, key, where, sizeof where), s->body[b].name,
-                        sh->max[0] - sh->min[0], sh->max[1] - sh->min[1], sh->max[2] - sh->min[2],
-                        scan, 1e3 * bs[b].spacing, lattice_scan_max());
-      break;
-    }
-    if (cnt == 0) {
-      /* a bare spacing (metres) wider than the body: `spacing: 0.25` for 0.25 mm */
-      char skey[96], hint[256] = "";
-      double ext = 0.0;
-      for (int d = 0; d < 3; d++) ext = fmax(ext, sh->max[d] - sh->min[d]);
-      snprintf(skey, sizeof skey, "%s.spacing", key);
-      if (cfg_is_bare(c, skey) && bs[b].spacing > ext)
-        snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m (a number "
-                 "without a unit is SI): was it %g mm?", skey, bs[b].spacing, bs[b].spacing,
-                 bs[b].spacing);
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
-                        "the shape%s", cfg_where(c, key, where, sizeof where), s->body[b].name,
-                        bs[b].spacing, hint);
-      break;
-    }
     if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) { rc = -1; break; }
-    size_t first = particles_add(&s->p, cnt);
+    const size_t first = place_body(s, bs, b, cnt);
     first_of[b] = first;
-    lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
-    init_body(s, &bs[b], b, first, cnt);
-    struct body_info *bi = &s->body[b];
-    bi->count = cnt;
-    bi->spacing = bs[b].spacing;
-    bi->rho = bs[b].rho;
-    for (int d = 0; d < 3; d++) {
-      bi->lo[d] = HUGE_VAL;
-      bi->hi[d] = -HUGE_VAL;
-      for (size_t q = first; q < first + cnt; q++) {
-        bi->lo[d] = fmin(bi->lo[d], s->p.x[d][q]);
-        bi->hi[d] = fmax(bi->hi[d], s->p.x[d][q]);
-      }
-      bi->lo[d] -= 0.5 * bs[b].spacing;
-      bi->hi[d] += 0.5 * bs[b].spacing;
-    }
     rc = check_placement(s, c, bs, b, first, cnt, err);
   }
   s->nbody = nb;

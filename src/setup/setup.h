@@ -2,7 +2,7 @@
 #ifndef HV_SETUP_H
 #define HV_SETUP_H
 
-#include "run/sim.h"
+#include "sim/sim.h"
 
 /* Reads `bodies` (and `energy_deposit`) and creates the particles. */
 int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err);

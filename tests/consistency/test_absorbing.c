@@ -21,7 +21,7 @@
 #include "diag/conservation.h"
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "testlib.h"
 
 #define BALANCE_TOL 1e-13

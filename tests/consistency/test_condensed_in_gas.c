@@ -30,7 +30,7 @@
 #include "config/config.h"
 #include "diag/conservation.h"
 #include "integrate/step.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "particles/particles.h"
 #include "simtext.h"
 #include "testlib.h"

@@ -57,7 +57,7 @@
 #include "diag/conservation.h"
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "solidcase.h"
 #include "simtext.h"
 #include "testlib.h"

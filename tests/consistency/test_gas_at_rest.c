@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "integrate/step.h"
 #include "simtext.h"
 #include "testlib.h"

@@ -29,7 +29,7 @@
 #include "config/config.h"
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "testlib.h"
 
 #define NSTEPS 60

@@ -29,7 +29,7 @@
 
 #include "config/config.h"
 #include "integrate/step.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "simtext.h"
 #include "solidcase.h"
 #include "testlib.h"

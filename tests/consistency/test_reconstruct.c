@@ -40,7 +40,7 @@
 #include "config/config.h"
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "simtext.h"
 #include "testlib.h"
 

@@ -24,7 +24,7 @@
 
 #include "config/config.h"
 #include "integrate/step.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "particles/particles.h"
 #include "simtext.h"
 #include "testlib.h"

@@ -35,7 +35,7 @@
 #include "config/config.h"
 #include "diag/conservation.h"
 #include "integrate/step.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "simtext.h"
 #include "testlib.h"
 

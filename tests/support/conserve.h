@@ -12,7 +12,7 @@
 #include <stdint.h>
 
 #include "diag/conservation.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 /* xorshift64*: the same numbers on every platform (unlike rand()); [-0.5, 0.5). */
 double conserve_uniform(uint64_t *state);

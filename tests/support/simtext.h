@@ -5,7 +5,7 @@
 #define HV_SIMTEXT_H
 
 #include "config/config.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 /* Loads `text` as the case file `name`, sets *s up (run_setup) and checks that every key
  * was used; a failed CHECK names the error. Returns 0, or -1 with *c freed (NULL). */

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
-#include "io/afile.h"
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "particles/particles.h"
 #include "testlib.h"
@@ -491,12 +491,12 @@ static void test_atomic(struct particles *p)
   const double rows[2] = {1.0, 2.0};
   CHECK(io_write_table_csv(path, cols, 1, rows, 2, NULL, &err) == 0, "first file written");
   char *before = test_slurp(path, NULL);
-  struct afile af;
-  CHECK(afile_open(&af, path, &err) == 0 && count_tmp() == 1, "afile_open makes one tmp file");
+  struct atomic_file af;
+  CHECK(atomic_file_open(&af, path, &err) == 0 && count_tmp() == 1, "atomic_file_open makes one tmp file");
   CHECK(strstr(af.tmp, "/.keep.csv.tmp.") != NULL, "tmp name '%s'", af.tmp);
-  CHECK(afile_printf(&af, &err, "garbage\n") == 0, "write to tmp");
-  afile_abort(&af);
-  afile_abort(&af); /* twice is harmless */
+  CHECK(atomic_file_printf(&af, &err, "garbage\n") == 0, "write to tmp");
+  atomic_file_abort(&af);
+  atomic_file_abort(&af); /* twice is harmless */
   char *after = test_slurp(path, NULL);
   CHECK(before && after && strcmp(before, after) == 0, "abort leaves the first file intact");
   CHECK(count_tmp() == 0, "no tmp file after abort");
@@ -542,12 +542,12 @@ static void test_full_disk(int small_writes)
   }
   CHECK(io_write_table_csv(path, cols, 1, rows, 1, NULL, &err) == 0, "target written");
   char *before = test_slurp(path, NULL);
-  struct afile af;
-  CHECK(afile_open(&af, path, &err) == 0, "afile_open");
+  struct atomic_file af;
+  CHECK(atomic_file_open(&af, path, &err) == 0, "atomic_file_open");
   if (fclose(af.f) != 0) CHECK(0, "fclose tmp");
   af.f = fopen("/dev/full", "w");
   CHECK(af.f != NULL, "open /dev/full");
-  if (!af.f) { afile_abort(&af); free(before); return; }
+  if (!af.f) { atomic_file_abort(&af); free(before); return; }
   static char block[1 << 16];
   memset(block, 'x', sizeof block);
   for (int k = 0; k < 64; k++) { /* 4 MB; return values ignored on purpose */
@@ -558,7 +558,7 @@ static void test_full_disk(int small_writes)
     }
   }
   hv_error_clear(&err);
-  CHECK(afile_commit(&af, &err) != 0 && strstr(err.msg, "No space left") &&
+  CHECK(atomic_file_commit(&af, &err) != 0 && strstr(err.msg, "No space left") &&
             strstr(err.msg, "full.csv") && err.code == HV_EXIT_RUN,
         "commit on a full disk fails (%s writes): %s", small_writes ? "small" : "large", err.msg);
   char *after = test_slurp(path, NULL);

@@ -32,7 +32,7 @@
 #include "particles/particles.h"
 #include "run/measure_run.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "testlib.h"
 #include "testparticles.h"
 

@@ -8,7 +8,7 @@
 
 #include "config/config.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "setup/setup.h"
 #include "testlib.h"
 

@@ -39,7 +39,7 @@
 #include "config/config.h"
 #include "integrate/step.h"
 #include "particles/particles.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 #include "simtext.h"
 #include "testlib.h"
 

@@ -1,14 +1,14 @@
-/* check.h — `hvsph check`: a case set up and described, nothing written; and the
- * plausibility checks of a set-up case that `hvsph run` makes too. */
-#ifndef HV_CHECK_H
-#define HV_CHECK_H
+/* plausible.h — the plausibility checks of a set-up case that `hvsph run` and
+ * `hvsph check` make (plausible.c). */
+#ifndef HV_PLAUSIBLE_H
+#define HV_PLAUSIBLE_H
 
 #include "config/config.h"
 #include "core/error.h"
 
 struct sim;
 
-/* Steps beyond which a run is not plausible for this code (check.c argues the number). */
+/* Steps beyond which a run is not plausible for this code (plausible.c argues the number). */
 #define HV_CHECK_STEPS_MAX 1e8
 
 /* After step_init of a new run: the steps to time.end at the first stable step. A bare
@@ -24,9 +24,5 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
  * acceleration limit after step_init, within time.dt_max): what the steps to the end
  * are estimated from, time.dt_init aside (the growth limit hands over to it at once). */
 double check_first_stable_step(const struct sim *s);
-
-/* `hvsph check CASE [--set K=V]... [--material OLD=NEW]... [--threads N]`; returns an
- * exit status (enum hv_exit). */
-int check_main(int argc, char **argv);
 
 #endif

@@ -1,4 +1,4 @@
-/* render_cli.c — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`, and
+/* render.c (cli) — `hvsph render SNAPSHOT.csv|SNAPSHOT.vtu -o FILE.png [options]`, and
  * `hvsph render RUNDIR -o FRAMEDIR [options]`.
  *
  * Reads a particle snapshot, CSV or VTU (io_read_particles; the time from its comment
@@ -18,6 +18,8 @@
 
 #include "core/units.h"
 #include "io/snapshot.h"
+#include "cli/cli.h"
+#include "cli/options.h"
 #include "render/render_internal.h"
 
 static void render_usage(FILE *f)
@@ -102,73 +104,108 @@ static int fail_usage(const char *fmt, ...)
   return HV_EXIT_USAGE;
 }
 
-int render_main(int argc, char **argv)
+static const char *const modes[] = {"radiograph", "particles"};
+static const char *const axes[] = {"x", "y", "z"};
+static const char *const colors[] = {"material", "damage", "velocity", "pressure", "density",
+                                     "alpha", "dt"};
+
+/* The mistakes on render's command line, in its words. */
+static int render_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
 {
-  static const char *modes[] = {"radiograph", "particles"};
-  static const char *axes[] = {"x", "y", "z"};
-  static const char *colors[] = {"material", "damage", "velocity", "pressure", "density", "alpha",
-                                 "dt"};
-  struct render_options o;
-  render_options_default(&o);
-  const char *in = NULL, *out = NULL, *range = NULL;
-  char msg[512];
-  for (int i = 0; i < argc; i++) {
-    const char *a = argv[i], *val = ""; /* set below for the options that take one */
-    char opt[64];
-    const char *eq = strncmp(a, "--", 2) == 0 ? strchr(a, '=') : NULL;
-    snprintf(opt, sizeof opt, "%.*s", eq ? (int)(eq - a) : (int)strlen(a), a);
-    int takes = !strcmp(opt, "-o") || !strcmp(opt, "--output") || !strcmp(opt, "--mode") ||
-                !strcmp(opt, "--axis") || !strcmp(opt, "--color") || !strcmp(opt, "--colour") ||
-                !strcmp(opt, "--size") || !strcmp(opt, "--box") || !strcmp(opt, "--mu") ||
-                !strcmp(opt, "--range");
-    if (takes) {
-      if (eq) val = eq + 1;
-      else if (i + 1 < argc) val = argv[++i];
-      else return fail_usage("option %s needs a value", opt);
-    } else if (eq) {
-      return fail_usage("option %s takes no value", opt);
-    }
-    int k;
-    if (!strcmp(opt, "--help") || !strcmp(opt, "-h")) {
-      render_usage(stdout);
-      return HV_EXIT_OK;
-    } else if (!strcmp(opt, "-o") || !strcmp(opt, "--output")) out = val;
-    else if (!strcmp(opt, "--mode")) {
-      if ((k = pick(val, modes, 2)) < 0) return fail_usage("--mode must be radiograph or particles, not '%s'", val);
-      o.mode = (enum render_mode)k;
-    } else if (!strcmp(opt, "--axis")) {
-      if ((k = pick(val, axes, 3)) < 0) return fail_usage("--axis must be x, y or z, not '%s'", val);
-      o.axis = k;
-    } else if (!strcmp(opt, "--color") || !strcmp(opt, "--colour")) {
-      if ((k = pick(val, colors, 7)) < 0)
-        return fail_usage("--color must be material, damage, velocity, pressure, density, alpha "
-                          "or dt, not '%s'", val);
-      o.color = (enum render_color)k;
-    } else if (!strcmp(opt, "--size")) {
-      if (parse_size(val, &o.width, &o.height)) return fail_usage("--size needs WxH or W in pixels, not '%s'", val);
-    } else if (!strcmp(opt, "--box")) {
-      if (parse_list(val, 6, UNIT_LENGTH, o.box, msg, sizeof msg)) {
-        fprintf(stderr, "hvsph render: --box '%s': %s\n", val, msg);
-        return HV_EXIT_USAGE;
-      }
-      o.have_box = 1;
-    } else if (!strcmp(opt, "--quiet") || !strcmp(opt, "-q")) hv_log_level = 1;
-    else if (!strcmp(opt, "--mirror")) o.mirror = 1;
-    else if (!strcmp(opt, "--no-mirror")) o.mirror = 0;
-    else if (!strcmp(opt, "--no-labels")) o.labels = 0;
-    else if (!strcmp(opt, "--mu")) {
-      char *end = NULL;
-      o.mu = strcmp(val, "auto") ? strtod(val, &end) : RENDER_MU_AUTO;
-      if (end && (end == val || *end || !(o.mu > 0.0) || !isfinite(o.mu)))
-        return fail_usage("--mu needs a positive number in m2/kg or auto, not '%s'", val);
-    } else if (!strcmp(opt, "--range")) range = val;
-    else if (a[0] == '-' && a[1]) return fail_usage("unknown option '%s'", a);
-    else if (in) return fail_usage("unexpected argument '%s': one snapshot at a time", a);
-    else in = a;
+  (void)c;
+  switch (e) {
+  case CLI_NO_VALUE: return fail_usage("option %s needs a value", arg);
+  case CLI_TAKES_NO_VALUE: return fail_usage("option %s takes no value", arg);
+  case CLI_EXTRA: return fail_usage("unexpected argument '%s': one snapshot at a time", arg);
+  default: return fail_usage("unknown option '%s'", arg);
   }
+}
+
+static int set_mode(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                    const char *val)
+{
+  (void)c;
+  (void)opt;
+  const int k = pick(val, modes, 2);
+  if (k < 0) return fail_usage("--mode must be radiograph or particles, not '%s'", val);
+  *(enum render_mode *)o->dest = (enum render_mode)k;
+  return CLI_GO_ON;
+}
+
+static int set_axis(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                    const char *val)
+{
+  (void)c;
+  (void)opt;
+  const int k = pick(val, axes, 3);
+  if (k < 0) return fail_usage("--axis must be x, y or z, not '%s'", val);
+  *(int *)o->dest = k;
+  return CLI_GO_ON;
+}
+
+static int set_color(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                     const char *val)
+{
+  (void)c;
+  (void)opt;
+  const int k = pick(val, colors, 7);
+  if (k < 0)
+    return fail_usage("--color must be material, damage, velocity, pressure, density, alpha "
+                      "or dt, not '%s'", val);
+  *(enum render_color *)o->dest = (enum render_color)k;
+  return CLI_GO_ON;
+}
+
+/* --size (dest: the render options) */
+static int set_size(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                    const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct render_options *ro = o->dest;
+  if (parse_size(val, &ro->width, &ro->height))
+    return fail_usage("--size needs WxH or W in pixels, not '%s'", val);
+  return CLI_GO_ON;
+}
+
+/* --box (dest: the render options) */
+static int set_box(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                   const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct render_options *ro = o->dest;
+  char msg[512];
+  if (parse_list(val, 6, UNIT_LENGTH, ro->box, msg, sizeof msg)) {
+    fprintf(stderr, "hvsph render: --box '%s': %s\n", val, msg);
+    return HV_EXIT_USAGE;
+  }
+  ro->have_box = 1;
+  return CLI_GO_ON;
+}
+
+static int set_mu(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                  const char *val)
+{
+  (void)c;
+  (void)opt;
+  double *mu = o->dest;
+  char *end = NULL;
+  *mu = strcmp(val, "auto") ? strtod(val, &end) : RENDER_MU_AUTO;
+  if (end && (end == val || *end || !(*mu > 0.0) || !isfinite(*mu)))
+    return fail_usage("--mu needs a positive number in m2/kg or auto, not '%s'", val);
+  return CLI_GO_ON;
+}
+
+/* What the options say together: a snapshot or a run folder (*is_series), -o for it,
+ * and --range for the colour quantity. Returns CLI_GO_ON or the exit status. */
+static int check_args(const char *in, const char *out, const char *range,
+                      struct render_options *o, int *is_series)
+{
+  char msg[512] = "";
   if (!in) return fail_usage("%s", "missing snapshot file");
   struct stat st;
-  const int series = stat(in, &st) == 0 && S_ISDIR(st.st_mode);
+  const int series = *is_series = stat(in, &st) == 0 && S_ISDIR(st.st_mode);
   if (!out) return fail_usage("%s", series ? "missing -o FRAMEDIR" : "missing -o FILE.png");
   const size_t olen = strlen(out);
   if (series && olen >= 4 && !strcmp(out + olen - 4, ".png"))
@@ -180,38 +217,33 @@ int render_main(int argc, char **argv)
         [RENDER_COLOR_VELOCITY] = UNIT_VELOCITY, [RENDER_COLOR_PRESSURE] = UNIT_PRESSURE,
         [RENDER_COLOR_DENSITY] = UNIT_DENSITY,  [RENDER_COLOR_ALPHA] = UNIT_NONE,
         [RENDER_COLOR_DT] = UNIT_TIME};
-    if (o.mode != RENDER_PARTICLES || o.color == RENDER_COLOR_MATERIAL)
+    if (o->mode != RENDER_PARTICLES || o->color == RENDER_COLOR_MATERIAL)
       return fail_usage("%s", "--range needs --mode particles and a --color quantity");
-    if (parse_list(range, 2, dim[o.color], o.range, msg, sizeof msg) || !(o.range[0] < o.range[1])) {
+    if (parse_list(range, 2, dim[o->color], o->range, msg, sizeof msg) || !(o->range[0] < o->range[1])) {
       fprintf(stderr, "hvsph render: --range '%s': %s\n", range, msg[0] ? msg : "low end must be below high end");
       return HV_EXIT_USAGE;
     }
-    if (o.color == RENDER_COLOR_DT) {   /* given as times, coloured by their log10 */
-      if (!(o.range[0] > 0.0))
+    if (o->color == RENDER_COLOR_DT) {   /* given as times, coloured by their log10 */
+      if (!(o->range[0] > 0.0))
         return fail_usage("--range '%s': time steps are positive", range);
-      o.range[0] = log10(o.range[0]);
-      o.range[1] = log10(o.range[1]);
+      o->range[0] = log10(o->range[0]);
+      o->range[1] = log10(o->range[1]);
     }
-    o.have_range = 1;
+    o->have_range = 1;
   }
-  if (o.mode == RENDER_RADIOGRAPH && o.color != RENDER_COLOR_MATERIAL)
+  if (o->mode == RENDER_RADIOGRAPH && o->color != RENDER_COLOR_MATERIAL)
     hv_info("note: --color applies to --mode particles only");
-  if (o.mode == RENDER_PARTICLES && o.axis == 2 && o.mirror == 1)
+  if (o->mode == RENDER_PARTICLES && o->axis == 2 && o->mirror == 1)
     hv_info("note: particles seen along z are not mirrored (the view shows the cut at "
             "z = 0)");
+  return CLI_GO_ON;
+}
+
+/* One snapshot rendered into the PNG `out`. */
+static int render_one(const char *in, const char *out, const struct render_options *o)
+{
   struct hv_error err;
   hv_error_clear(&err);
-  if (series) {
-    if (stat(out, &st) == 0 && !S_ISDIR(st.st_mode)) {
-      hv_log(0, "-o '%s' is a file: the frames of run folder '%s' go into a folder", out, in);
-      return HV_EXIT_INPUT;
-    }
-    if (render_series(in, out, &o, &err)) {
-      hv_log(0, "%s", err.msg);
-      return err.code ? err.code : HV_EXIT_RUN;
-    }
-    return HV_EXIT_OK;
-  }
   struct particles p;
   particles_init(&p);
   double t = NAN;
@@ -225,11 +257,53 @@ int render_main(int argc, char **argv)
     /* the body names: render_png reads them from the snapshot's folder */
     struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
     rc = render_check_particles(&p, nm, in, &err);
-    if (!rc) rc = render_png(out, &p, &o, &info, &err);
+    if (!rc) rc = render_png(out, &p, o, &info, &err);
     if (!rc) hv_info("wrote %s (%zu particles)", out, p.n);
   }
   particles_free(&p);
   if (rc) {
+    hv_log(0, "%s", err.msg);
+    return err.code ? err.code : HV_EXIT_RUN;
+  }
+  return HV_EXIT_OK;
+}
+
+int cli_render(int argc, char **argv)
+{
+  struct render_options o;
+  render_options_default(&o);
+  const char *in = NULL, *out = NULL, *range = NULL;
+  const struct cli_opt opts[] = {
+      {"--help", "-h", CLI_HELP, .dest = NULL},
+      {"--output", "-o", CLI_VALUE, .eq = 1, .dest = &out},
+      {"--mode", NULL, CLI_VALUE, .eq = 1, .dest = &o.mode, .convert = set_mode},
+      {"--axis", NULL, CLI_VALUE, .eq = 1, .dest = &o.axis, .convert = set_axis},
+      {"--color", "--colour", CLI_VALUE, .eq = 1, .dest = &o.color, .convert = set_color},
+      {"--size", NULL, CLI_VALUE, .eq = 1, .dest = &o, .convert = set_size},
+      {"--box", NULL, CLI_VALUE, .eq = 1, .dest = &o, .convert = set_box},
+      {"--quiet", "-q", CLI_FLAG, .dest = &hv_log_level, .flag = 1},
+      {"--mirror", NULL, CLI_FLAG, .dest = &o.mirror, .flag = 1},
+      {"--no-mirror", NULL, CLI_FLAG, .dest = &o.mirror, .flag = 0},
+      {"--no-labels", NULL, CLI_FLAG, .dest = &o.labels, .flag = 0},
+      {"--mu", NULL, CLI_VALUE, .eq = 1, .dest = &o.mu, .convert = set_mu},
+      {"--range", NULL, CLI_VALUE, .eq = 1, .dest = &range},
+  };
+  const struct cli_cmd cmd = {.name = "render", .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]), .positional = &in,
+                              .eq_strict = 1, .lone_dash = 1, .fail = render_fail,
+                              .help = render_usage};
+  int series = 0, st = cli_parse(&cmd, argc, argv);
+  if (st == CLI_GO_ON) st = check_args(in, out, range, &o, &series);
+  if (st != CLI_GO_ON) return st;
+  if (!series) return render_one(in, out, &o);
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct stat st_out;
+  if (stat(out, &st_out) == 0 && !S_ISDIR(st_out.st_mode)) {
+    hv_log(0, "-o '%s' is a file: the frames of run folder '%s' go into a folder", out, in);
+    return HV_EXIT_INPUT;
+  }
+  if (render_series(in, out, &o, &err)) {
     hv_log(0, "%s", err.msg);
     return err.code ? err.code : HV_EXIT_RUN;
   }

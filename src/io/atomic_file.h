@@ -1,4 +1,4 @@
-/* afile.h — files written whole or not at all, and output folders.
+/* atomic_file.h — files written whole or not at all, and output folders.
  *
  * An output file is written into a temporary file in the same folder,
  * "<dir>/.<base>.tmp.<pid>", and renamed over the target only after every
@@ -12,45 +12,45 @@
  * (an unwritable output folder is a problem with the input, found at start).
  *
  * Typical use:
- *   struct afile af;
- *   if (afile_open(&af, path, err)) return -1;
- *   if (afile_printf(&af, err, "...") || afile_write(&af, buf, n, err)) {
- *     afile_abort(&af); return -1;
+ *   struct atomic_file af;
+ *   if (atomic_file_open(&af, path, err)) return -1;
+ *   if (atomic_file_printf(&af, err, "...") || atomic_file_write(&af, buf, n, err)) {
+ *     atomic_file_abort(&af); return -1;
  *   }
- *   return afile_commit(&af, err);
+ *   return atomic_file_commit(&af, err);
  */
-#ifndef HV_AFILE_H
-#define HV_AFILE_H
+#ifndef HV_ATOMIC_FILE_H
+#define HV_ATOMIC_FILE_H
 
 #include <stddef.h>
 #include <stdio.h>
 
 #include "core/error.h"
 
-struct afile {
+struct atomic_file {
   FILE *f;           /* the temporary file, open for writing; NULL once closed */
   char path[4096];   /* the target */
   char tmp[4096];    /* the temporary file; "" once removed or renamed */
 };
 
 /* Creates "<dir>/.<base>.tmp.<pid>" next to `path` and opens it for binary writing.
- * On failure af->f is NULL (afile_abort is then a harmless no-op). */
-int afile_open(struct afile *af, const char *path, struct hv_error *err);
+ * On failure af->f is NULL (atomic_file_abort is then a harmless no-op). */
+int atomic_file_open(struct atomic_file *af, const char *path, struct hv_error *err);
 /* fflush + ferror check + fsync + fclose + rename over the target. On failure
  * the temporary file is removed, the target untouched, and err says why. */
-int afile_commit(struct afile *af, struct hv_error *err);
+int atomic_file_commit(struct atomic_file *af, struct hv_error *err);
 /* Closes and removes the temporary file; the target is untouched. Safe to call twice. */
-void afile_abort(struct afile *af);
+void atomic_file_abort(struct atomic_file *af);
 
 /* Checked writes into af->f. On failure they set err (naming the target and
- * strerror) and return -1; the caller then calls afile_abort. */
-int afile_write(struct afile *af, const void *buf, size_t len, struct hv_error *err);
-int afile_printf(struct afile *af, struct hv_error *err, const char *fmt, ...)
+ * strerror) and return -1; the caller then calls atomic_file_abort. */
+int atomic_file_write(struct atomic_file *af, const void *buf, size_t len, struct hv_error *err);
+int atomic_file_printf(struct atomic_file *af, struct hv_error *err, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 /* Removes the temporary files ".<base>.tmp.<pid>" in dir left by writers that no
  * longer run (a killed run's unfinished file); returns how many. */
-int afile_remove_stale(const char *dir);
+int atomic_file_remove_stale(const char *dir);
 
 /* Like `mkdir -p`: creates `dir` and any missing parents (mode 0777 & ~umask).
  * An existing folder is fine; an existing non-folder is an error. */

@@ -4,7 +4,7 @@
  * The material is an ideal gas, or with --solid the paper's aluminium alloy (library
  * al-alloy: Mie-Gruneisen EOS, von Mises strength, Tresca fracture, artificial
  * stress on). */
-#include "run/bench.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <omp.h>
@@ -12,9 +12,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/options.h"
 #include "integrate/step.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
+
+struct bench_options {
+  long particles;   /* approximate number (a cube of side round(cbrt(N))) */
+  long steps;
+  long threads;     /* 0: OpenMP default */
+  int solid;        /* elastic-plastic al-alloy with fracture instead of a gas */
+  const char **sets;   /* --set KEY=VALUE overrides of the benchmark's case */
+  int nsets;
+};
 
 static long peak_rss_kib(void)
 {
@@ -28,9 +38,9 @@ static long peak_rss_kib(void)
   return kib;
 }
 
-int bench_main(const struct bench_options *o)
+static int bench_main(const struct bench_options *o)
 {
-  if (o->threads > 0) omp_set_num_threads(o->threads);
+  if (o->threads > 0) omp_set_num_threads((int)o->threads);
   long side = lround(cbrt((double)o->particles));
   if (side < 8) side = 8;
   double dx = 1.0 / (double)side;
@@ -114,4 +124,50 @@ fail:
   sim_free(&s);
   if (c) cfg_free(c);
   return status;
+}
+
+/* Every mistake on bench's command line is "bad argument", naming the option (not its
+ * value) or the argument. */
+static int bench_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
+{
+  (void)c;
+  (void)e;
+  fprintf(stderr, "hvsph bench: bad argument '%s' (see hvsph --help)\n", arg);
+  return HV_EXIT_USAGE;
+}
+
+/* --particles, --steps and --threads: a whole number in [o->lo, o->hi]. */
+static int bench_number(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                        const char *val)
+{
+  long v;
+  if (cli_long(val, o->lo, o->hi, &v)) return bench_fail(c, CLI_UNKNOWN, opt);
+  *(long *)o->dest = v;
+  return CLI_GO_ON;
+}
+
+int cli_bench(int argc, char **argv)
+{
+  struct bench_options bo = {.particles = 100000, .steps = 10, .threads = 0};
+  struct cli_list sets = {hv_calloc((size_t)argc + 1, sizeof *sets.v, "bench arguments"), 0, argc};
+  const struct cli_opt opts[] = {
+      {"--particles", NULL, CLI_VALUE, .dest = &bo.particles, .convert = bench_number,
+       .lo = 512, .hi = 2000000000L},
+      {"--steps", NULL, CLI_VALUE, .dest = &bo.steps, .convert = bench_number, .lo = 1,
+       .hi = 1000000},
+      {"--threads", NULL, CLI_VALUE, .dest = &bo.threads, .convert = bench_number,
+       .lo = 1, .hi = 4096},
+      {"--solid", NULL, CLI_FLAG, .dest = &bo.solid, .flag = 1},
+      {"--set", NULL, CLI_LIST, .eq = 1, .dest = &sets},
+  };
+  const struct cli_cmd cmd = {.name = "bench", .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]), .fail = bench_fail};
+  int st = cli_parse(&cmd, argc, argv);
+  if (st == CLI_GO_ON) {
+    bo.sets = sets.v;
+    bo.nsets = sets.n;
+    st = bench_main(&bo);
+  }
+  free(sets.v);
+  return st;
 }

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "material/material_read.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
 {

@@ -1,5 +1,5 @@
-/* afile.c — files written whole or not at all (see afile.h), and mkdir -p. */
-#include "io/afile.h"
+/* atomic_file.c — files written whole or not at all (see atomic_file.h), and mkdir -p. */
+#include "io/atomic_file.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -28,7 +28,7 @@ static int split_path(const char *path, char *dir, size_t dlen, char *base, size
   return 0;
 }
 
-int afile_open(struct afile *af, const char *path, struct hv_error *err)
+int atomic_file_open(struct atomic_file *af, const char *path, struct hv_error *err)
 {
   char dir[4096], base[1024];
   af->f = NULL;
@@ -69,14 +69,14 @@ static int stream_errno(FILE *f)
   return EIO;
 }
 
-static int commit_fail(struct afile *af, struct hv_error *err, const char *what, int e)
+static int commit_fail(struct atomic_file *af, struct hv_error *err, const char *what, int e)
 {
   hv_error_set(err, HV_EXIT_RUN, "cannot write '%s' (%s): %s", af->path, what, strerror(e));
-  afile_abort(af);
+  atomic_file_abort(af);
   return -1;
 }
 
-int afile_commit(struct afile *af, struct hv_error *err)
+int atomic_file_commit(struct atomic_file *af, struct hv_error *err)
 {
   if (!af->f)
     return hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': file is not open", af->path);
@@ -91,14 +91,14 @@ int afile_commit(struct afile *af, struct hv_error *err)
     e = errno;
     hv_error_set(err, HV_EXIT_RUN, "cannot write '%s' (rename from '%s'): %s", af->path,
                  af->tmp, strerror(e));
-    afile_abort(af);
+    atomic_file_abort(af);
     return -1;
   }
   af->tmp[0] = '\0';
   return 0;
 }
 
-void afile_abort(struct afile *af)
+void atomic_file_abort(struct atomic_file *af)
 {
   if (af->f) {
     (void)fclose(af->f); /* the contents are being thrown away; a close error changes nothing */
@@ -111,7 +111,7 @@ void afile_abort(struct afile *af)
   }
 }
 
-int afile_write(struct afile *af, const void *buf, size_t len, struct hv_error *err)
+int atomic_file_write(struct atomic_file *af, const void *buf, size_t len, struct hv_error *err)
 {
   if (len == 0) return 0;
   errno = 0;
@@ -122,7 +122,7 @@ int afile_write(struct afile *af, const void *buf, size_t len, struct hv_error *
   return 0;
 }
 
-int afile_printf(struct afile *af, struct hv_error *err, const char *fmt, ...)
+int atomic_file_printf(struct atomic_file *af, struct hv_error *err, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -166,7 +166,7 @@ int io_mkdir_p(const char *dir, struct hv_error *err)
   return mkdir_one(buf, dir, err);
 }
 
-int afile_remove_stale(const char *dir)
+int atomic_file_remove_stale(const char *dir)
 {
   DIR *d = opendir(dir);
   if (!d) return 0;

@@ -11,10 +11,9 @@
  * a plate whose perforation is measured with fewer than CHECK_LAYERS_MIN layers at the
  * impact point.
  *
- * check_plausible_end() is shared with `hvsph run`: a bare time.end that promises more
- * steps than any case of this code takes is bad input (docs/units.md).
+ * The plausibility checks it shares with `hvsph run` are the driver's (run/plausible.c).
  */
-#include "run/check.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <omp.h>
@@ -22,10 +21,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/options.h"
 #include "integrate/step.h"
 #include "run/measure_run.h"
+#include "run/plausible.h"
 #include "run/run.h"
-#include "run/sim.h"
+#include "sim/sim.h"
 
 /* Perforation with fewer layers than this through a plate is a lattice effect: with two
  * layers of 1.26 mm a 2 mm backwall was "perforated" by a 2 mm sphere, "not perforated"
@@ -38,91 +39,6 @@
  * 1e7 particles takes seconds a step on 2 cores. */
 #define CHECK_CALIB_STEPS 3
 #define CHECK_CALIB_WALL 10.0   /* [s] */
-
-/* The particles' own smallest limit at the start (CFL and acceleration), before
- * time.dt_max. */
-static double particle_step(const struct sim *s)
-{
-  double dt = HUGE_VAL;
-  for (size_t i = 0; i < s->p.n; i++)
-    if (s->p.dt[i] > 0 && s->p.dt[i] < dt) dt = s->p.dt[i];
-  return dt < HUGE_VAL ? dt : s->dt;
-}
-
-double check_first_stable_step(const struct sim *s)
-{
-  const double dt = particle_step(s);
-  return s->tp.dt_max > 0 && dt > s->tp.dt_max ? s->tp.dt_max : dt;
-}
-
-/* time.dt_min at or above the first stable step: the first step's successor falls
- * below it and the run stops as failed (exit 3, after its folder was prepared); and
- * time.dt_init far above it: a first step that the stability limits do not allow. */
-static int check_step_keys(const struct sim *s, struct cfg *c, double dt, struct hv_error *err)
-{
-  char where[256];
-  /* only a dt_min the case gives: the default (1e-30 s) is no real floor, and a step
-     below it is made so by something else (a gas at 1e306 Pa), which the run shows */
-  if (cfg_has(c, "time.dt_min") && s->tp.dt_min > 0 && s->tp.dt_min >= dt)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: time.dt_min: %g s is not below the first "
-                        "stable step, %.3g s: the run would stop as failed at its first "
-                        "step%s", cfg_where(c, "time.dt_min", where, sizeof where),
-                        s->tp.dt_min, dt, cfg_is_bare(c, "time.dt_min")
-                        ? " (a number without a unit is SI: seconds)" : "");
-  /* a warning: a deliberately unstable first step is how a failing run is made on
-     purpose (tests/unit/test_cli.c) */
-  if (s->tp.dt_init > 10.0 * particle_step(s))
-    hv_warn("%s: time.dt_init = %g s is %.2g times the first stable step, %.3g s: the first "
-            "step is unstable%s", cfg_where(c, "time.dt_init", where, sizeof where),
-            s->tp.dt_init, s->tp.dt_init / particle_step(s), particle_step(s),
-            cfg_is_bare(c, "time.dt_init") ? " (a number without a unit is SI: seconds)" : "");
-  return 0;
-}
-
-/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps at
- * its first stable step (wp2: 250 us, 34 201; the rods 1.1e4-1.8e4; `hvsph check` on
- * each, 2026-12-07), a run at four times the resolution some 1e5; 1e8 steps of even a
- * thousand particles are 1e11 particle-steps, more than a day at this code's 1e6
- * particle-steps per second on two cores (docs/performance.md).
- * Beyond it a bare time.end is a unit left out: `end: 20` (20 s) for 20 us. */
-int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err)
-{
-  const double dt = check_first_stable_step(s), left = s->tp.end - s->t;
-  if (!(dt > 0) || !(left > 0)) return 0;
-  if (check_step_keys(s, c, dt, err)) return -1;
-  const double steps = left / dt;
-  if (!(steps > HV_CHECK_STEPS_MAX)) return 0;
-  char where[256];
-  if (dt < particle_step(s)) {   /* time.dt_max holds it down, not the time span */
-    hv_warn("%s: time.dt_max = %g s, below the first stable step (%.3g s), makes time.end "
-            "about %.2g steps: this run may take very long (hvsph check estimates its wall "
-            "time)", cfg_where(c, "time.dt_max", where, sizeof where), s->tp.dt_max,
-            particle_step(s), steps);
-    return 0;
-  }
-  cfg_where(c, "time.end", where, sizeof where);
-  const int bare = cfg_is_bare(c, "time.end");
-  static const struct {
-    const char *unit;
-    double f;
-  } units[] = {{"us", 1e-6}, {"ns", 1e-9}, {"ms", 1e-3}};
-  /* blamed on the missing unit only when a likely one brings it within: a step made
-     tiny by something else (a pressure of 1e306 Pa in a gas) is that thing's fault, and
-     the run shows it */
-  for (size_t k = 0; bare && k < sizeof units / sizeof units[0]; k++)
-    if ((s->tp.end * units[k].f - s->t) / dt <= HV_CHECK_STEPS_MAX)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: time.end: the bare number %g is read as %g "
-                          "s (a number without a unit is SI), about %.2g steps of the first "
-                          "stable step, %.3g s: more than %.0e, far beyond any case of this "
-                          "code; was it %g %s? Write the value with its unit", where,
-                          s->tp.end, s->tp.end, steps, dt, HV_CHECK_STEPS_MAX, s->tp.end,
-                          units[k].unit);
-  /* written with its unit it is meant: said, not refused */
-  hv_warn("%s: time.end = %g s is about %.2g steps of the first stable step, %.3g s: this "
-          "run may take very long (hvsph check estimates its wall time)", where, s->tp.end,
-          steps, dt);
-  return 0;
-}
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -314,32 +230,97 @@ static int usage_error(const char *what, const char *arg)
   return HV_EXIT_USAGE;
 }
 
-int check_main(int argc, char **argv)
+/* The first step and what limits it, the steps to time.end, the memory and the wall
+ * time from a few steps of the case timed here. Returns 0, or -1 with err set when
+ * those steps fail. */
+static int report_cost(struct sim *s, struct hv_error *err)
+{
+  const int threads = omp_get_max_threads();
+  const double dt0 = s->dt, dt = check_first_stable_step(s);
+  const double steps = ceil((s->tp.end - s->t) / dt * (1.0 - 1e-12));
+  const enum dt_limit lim = s->dt_limit;
+  const int64_t lim_id = s->dt_limit_id;
+  const int lim_body = s->dt_limit_body;
+  printf("\nfirst time step  %.4g s (%s", dt0, step_limit_name(lim));
+  if ((lim == DT_CFL || lim == DT_ACCELERATION) && lim_body >= 0)
+    printf(", particle %lld in '%s'", (long long)lim_id, s->body[lim_body].name);
+  printf(")\n");
+  printf("steps            about %.*g to time.end = %g s (an estimate: time.end / the first "
+         "stable step, %.4g s;\n                 an impact shortens the step, so expect more)\n",
+         steps < 1e7 ? 7 : 3, steps, s->tp.end, dt);
+  if (s->tp.max_steps > 0 && (double)s->tp.max_steps < steps)
+    printf("                 time.max_steps = %ld stops it before\n", s->tp.max_steps);
+  fflush(stdout);
+  int timed = 0;
+  const double per_step = time_steps(s, &timed, err);
+  if (per_step < 0) {
+    hv_error_prefix(err, "the case sets up, but its first steps fail: ");
+    return -1;
+  }
+  const size_t arrays = s->p.touched * particles_bytes_per_particle(&s->p) +
+                        nbr_grid_bytes(&s->grid) +
+                        s->bnd.cap * (sizeof *s->bnd.src + sizeof *s->bnd.flip + sizeof *s->bnd.side) +
+                        sph_cache_bytes(&s->cache);
+  const long rss = peak_rss_kib();
+  printf("memory           %.1f MiB in the solver's arrays (%.0f bytes per particle, ghosts and "
+         "neighbour grid\n                 included, after %d step%s); peak resident %.1f MiB\n",
+         (double)arrays / 1048576.0, (double)arrays / (double)(s->p.n ? s->p.n : 1), timed + 1,
+         timed ? "s" : "", rss > 0 ? (double)rss / 1024.0 : -1.0);
+  char wall[64];
+  const double capped = s->tp.max_steps > 0 ? fmin(steps, (double)s->tp.max_steps) : steps;
+  run_format_duration(wall, sizeof wall, per_step * capped);
+  printf("wall time        about %s on this machine with %d thread%s (%d step%s of this case "
+         "timed here:\n                 %.3g s a step x %.*g steps; outputs and the impact's "
+         "shorter steps add to it)\n", wall, threads, threads == 1 ? "" : "s", timed,
+         timed == 1 ? "" : "s", per_step, capped < 1e7 ? 7 : 3, capped);
+  return 0;
+}
+
+/* Every mistake on check's command line is "unexpected argument". */
+static int check_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
+{
+  (void)c;
+  (void)e;
+  return usage_error("unexpected argument", arg);
+}
+
+/* --threads: set at once, for the set-up and the steps timed */
+static int check_threads(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                         const char *val)
+{
+  (void)c;
+  (void)opt;
+  long t;
+  if (cli_decimal(val, o->lo, o->hi, &t))
+    return usage_error("--threads needs a positive integer, not", val);
+  omp_set_num_threads((int)t);
+  return CLI_GO_ON;
+}
+
+int cli_check(int argc, char **argv)
 {
   const char *case_path = NULL;
-  const char **sets = hv_calloc((size_t)argc + 1, sizeof *sets, "check arguments");
-  const char **swaps = hv_calloc((size_t)argc + 1, sizeof *swaps, "check arguments");
-  int nsets = 0, nswaps = 0, status = HV_EXIT_OK;
-  for (int i = 0; i < argc && status == HV_EXIT_OK; i++) {
-    const char *a = argv[i];
-    if (!strcmp(a, "--set") && i + 1 < argc) sets[nsets++] = argv[++i];
-    else if (!strncmp(a, "--set=", 6)) sets[nsets++] = a + 6;
-    else if (!strcmp(a, "--material") && i + 1 < argc) swaps[nswaps++] = argv[++i];
-    else if (!strcmp(a, "--threads") && i + 1 < argc) {
-      char *end;
-      const long t = strtol(argv[++i], &end, 10);
-      if (*end || end == argv[i] || t < 1 || t > 4096)
-        status = usage_error("--threads needs a positive integer, not", argv[i]);
-      else omp_set_num_threads((int)t);
-    } else if (a[0] == '-' || case_path) status = usage_error("unexpected argument", a);
-    else case_path = a;
-  }
-  if (status == HV_EXIT_OK && !case_path) status = usage_error("missing case file", NULL);
-  if (status != HV_EXIT_OK) {
-    free(sets);
-    free(swaps);
+  struct cli_list sets = {hv_calloc((size_t)argc + 1, sizeof *sets.v, "check arguments"), 0, argc};
+  struct cli_list swaps = {hv_calloc((size_t)argc + 1, sizeof *swaps.v, "check arguments"), 0,
+                           argc};
+  const struct cli_opt opts[] = {
+      {"--set", NULL, CLI_LIST, .eq = 1, .dest = &sets},
+      {"--material", NULL, CLI_LIST, .dest = &swaps},
+      {"--threads", NULL, CLI_VALUE, .convert = check_threads, .lo = 1, .hi = 4096},
+  };
+  const struct cli_cmd cmd = {.name = "check", .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .positional = &case_path, .fail = check_fail};
+  int status = cli_parse(&cmd, argc, argv);
+  if (status == CLI_GO_ON && !case_path) status = usage_error("missing case file", NULL);
+  const char **const set = sets.v, **const swap = swaps.v;
+  const int nsets = sets.n, nswaps = swaps.n;
+  if (status != CLI_GO_ON) {
+    free(set);
+    free(swap);
     return status;
   }
+  status = HV_EXIT_OK;
   struct hv_error err;
   hv_error_clear(&err);
   struct sim s;
@@ -350,8 +331,8 @@ int check_main(int argc, char **argv)
   struct cfg *c = cfg_load(case_path, &err);
   if (!c) goto fail;
   for (int i = 0; i < nsets; i++)
-    if (cfg_apply_set(c, sets[i], &err)) goto fail;
-  if (run_apply_swaps(c, swaps, nswaps, 1, NULL, &err) || run_setup(&s, c, &err) ||
+    if (cfg_apply_set(c, set[i], &err)) goto fail;
+  if (run_apply_swaps(c, swap, nswaps, 1, NULL, &err) || run_setup(&s, c, &err) ||
       measure_run_read(&mr, &s, c, &err) || cfg_check_unused(c, &err) || step_init(&s, &err) ||
       check_plausible_end(&s, c, &err))
     goto fail;
@@ -367,43 +348,7 @@ int check_main(int argc, char **argv)
     printf("\n");
     report_measured(&s, &mr, first);
   }
-  const double dt0 = s.dt, dt = check_first_stable_step(&s);
-  const double steps = ceil((s.tp.end - s.t) / dt * (1.0 - 1e-12));
-  const enum dt_limit lim = s.dt_limit;
-  const int64_t lim_id = s.dt_limit_id;
-  const int lim_body = s.dt_limit_body;
-  printf("\nfirst time step  %.4g s (%s", dt0, step_limit_name(lim));
-  if ((lim == DT_CFL || lim == DT_ACCELERATION) && lim_body >= 0)
-    printf(", particle %lld in '%s'", (long long)lim_id, s.body[lim_body].name);
-  printf(")\n");
-  printf("steps            about %.*g to time.end = %g s (an estimate: time.end / the first "
-         "stable step, %.4g s;\n                 an impact shortens the step, so expect more)\n",
-         steps < 1e7 ? 7 : 3, steps, s.tp.end, dt);
-  if (s.tp.max_steps > 0 && (double)s.tp.max_steps < steps)
-    printf("                 time.max_steps = %ld stops it before\n", s.tp.max_steps);
-  fflush(stdout);
-  int timed = 0;
-  const double per_step = time_steps(&s, &timed, &err);
-  if (per_step < 0) {
-    hv_error_prefix(&err, "the case sets up, but its first steps fail: ");
-    goto fail;
-  }
-  const size_t arrays = s.p.touched * particles_bytes_per_particle(&s.p) +
-                        nbr_grid_bytes(&s.grid) +
-                        s.bnd.cap * (sizeof *s.bnd.src + sizeof *s.bnd.flip + sizeof *s.bnd.side) +
-                        sph_cache_bytes(&s.cache);
-  const long rss = peak_rss_kib();
-  printf("memory           %.1f MiB in the solver's arrays (%.0f bytes per particle, ghosts and "
-         "neighbour grid\n                 included, after %d step%s); peak resident %.1f MiB\n",
-         (double)arrays / 1048576.0, (double)arrays / (double)(s.p.n ? s.p.n : 1), timed + 1,
-         timed ? "s" : "", rss > 0 ? (double)rss / 1024.0 : -1.0);
-  char wall[64];
-  const double capped = s.tp.max_steps > 0 ? fmin(steps, (double)s.tp.max_steps) : steps;
-  run_format_duration(wall, sizeof wall, per_step * capped);
-  printf("wall time        about %s on this machine with %d thread%s (%d step%s of this case "
-         "timed here:\n                 %.3g s a step x %.*g steps; outputs and the impact's "
-         "shorter steps add to it)\n", wall, threads, threads == 1 ? "" : "s", timed,
-         timed == 1 ? "" : "s", per_step, capped < 1e7 ? 7 : 3, capped);
+  if (report_cost(&s, &err)) goto fail;
   goto done;
 fail:
   hv_log(0, "%s", err.msg);
@@ -413,7 +358,7 @@ done:
   measure_run_free(&mr);
   sim_free(&s);
   if (c) cfg_free(c);
-  free(sets);
-  free(swaps);
+  free(set);
+  free(swap);
   return status;
 }

@@ -1,0 +1,95 @@
+/* plausible.c — the plausibility checks of a set-up case that `hvsph run` and
+ * `hvsph check` both make: a bare time.end that promises more steps than any case of
+ * this code takes is bad input (docs/units.md), and step keys that the first stable
+ * step contradicts.
+ */
+#include "run/plausible.h"
+
+#include <math.h>
+
+#include "sim/sim.h"
+
+/* The particles' own smallest limit at the start (CFL and acceleration), before
+ * time.dt_max. */
+static double particle_step(const struct sim *s)
+{
+  double dt = HUGE_VAL;
+  for (size_t i = 0; i < s->p.n; i++)
+    if (s->p.dt[i] > 0 && s->p.dt[i] < dt) dt = s->p.dt[i];
+  return dt < HUGE_VAL ? dt : s->dt;
+}
+
+double check_first_stable_step(const struct sim *s)
+{
+  const double dt = particle_step(s);
+  return s->tp.dt_max > 0 && dt > s->tp.dt_max ? s->tp.dt_max : dt;
+}
+
+/* time.dt_min at or above the first stable step: the first step's successor falls
+ * below it and the run stops as failed (exit 3, after its folder was prepared); and
+ * time.dt_init far above it: a first step that the stability limits do not allow. */
+static int check_step_keys(const struct sim *s, struct cfg *c, double dt, struct hv_error *err)
+{
+  char where[256];
+  /* only a dt_min the case gives: the default (1e-30 s) is no real floor, and a step
+     below it is made so by something else (a gas at 1e306 Pa), which the run shows */
+  if (cfg_has(c, "time.dt_min") && s->tp.dt_min > 0 && s->tp.dt_min >= dt)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: time.dt_min: %g s is not below the first "
+                        "stable step, %.3g s: the run would stop as failed at its first "
+                        "step%s", cfg_where(c, "time.dt_min", where, sizeof where),
+                        s->tp.dt_min, dt, cfg_is_bare(c, "time.dt_min")
+                        ? " (a number without a unit is SI: seconds)" : "");
+  /* a warning: a deliberately unstable first step is how a failing run is made on
+     purpose (tests/unit/test_cli.c) */
+  if (s->tp.dt_init > 10.0 * particle_step(s))
+    hv_warn("%s: time.dt_init = %g s is %.2g times the first stable step, %.3g s: the first "
+            "step is unstable%s", cfg_where(c, "time.dt_init", where, sizeof where),
+            s->tp.dt_init, s->tp.dt_init / particle_step(s), particle_step(s),
+            cfg_is_bare(c, "time.dt_init") ? " (a number without a unit is SI: seconds)" : "");
+  return 0;
+}
+
+/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps at
+ * its first stable step (wp2: 250 us, 34 201; the rods 1.1e4-1.8e4; `hvsph check` on
+ * each, 2026-12-07), a run at four times the resolution some 1e5; 1e8 steps of even a
+ * thousand particles are 1e11 particle-steps, more than a day at this code's 1e6
+ * particle-steps per second on two cores (docs/performance.md).
+ * Beyond it a bare time.end is a unit left out: `end: 20` (20 s) for 20 us. */
+int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err)
+{
+  const double dt = check_first_stable_step(s), left = s->tp.end - s->t;
+  if (!(dt > 0) || !(left > 0)) return 0;
+  if (check_step_keys(s, c, dt, err)) return -1;
+  const double steps = left / dt;
+  if (!(steps > HV_CHECK_STEPS_MAX)) return 0;
+  char where[256];
+  if (dt < particle_step(s)) {   /* time.dt_max holds it down, not the time span */
+    hv_warn("%s: time.dt_max = %g s, below the first stable step (%.3g s), makes time.end "
+            "about %.2g steps: this run may take very long (hvsph check estimates its wall "
+            "time)", cfg_where(c, "time.dt_max", where, sizeof where), s->tp.dt_max,
+            particle_step(s), steps);
+    return 0;
+  }
+  cfg_where(c, "time.end", where, sizeof where);
+  const int bare = cfg_is_bare(c, "time.end");
+  static const struct {
+    const char *unit;
+    double f;
+  } units[] = {{"us", 1e-6}, {"ns", 1e-9}, {"ms", 1e-3}};
+  /* blamed on the missing unit only when a likely one brings it within: a step made
+     tiny by something else (a pressure of 1e306 Pa in a gas) is that thing's fault, and
+     the run shows it */
+  for (size_t k = 0; bare && k < sizeof units / sizeof units[0]; k++)
+    if ((s->tp.end * units[k].f - s->t) / dt <= HV_CHECK_STEPS_MAX)
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: time.end: the bare number %g is read as %g "
+                          "s (a number without a unit is SI), about %.2g steps of the first "
+                          "stable step, %.3g s: more than %.0e, far beyond any case of this "
+                          "code; was it %g %s? Write the value with its unit", where,
+                          s->tp.end, s->tp.end, steps, dt, HV_CHECK_STEPS_MAX, s->tp.end,
+                          units[k].unit);
+  /* written with its unit it is meant: said, not refused */
+  hv_warn("%s: time.end = %g s is about %.2g steps of the first stable step, %.3g s: this "
+          "run may take very long (hvsph check estimates its wall time)", where, s->tp.end,
+          steps, dt);
+  return 0;
+}
