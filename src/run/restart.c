@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fracture/fracture.h"
 #include "io/checkpoint.h"
 #include "version.h"
 
@@ -500,6 +501,15 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
       goto out;
     }
   if (check_particles(&c, p, f, nf, err)) goto out;
+  if (p->solid) {   /* each fracture state one its damage and material allow */
+    const size_t k = fracture_check_states(p, s->mat);
+    if (k != (size_t)-1) {
+      bad_record(&c, "p.fstate", err, "particle %lld: fracture state %d with damage %g, which "
+                 "material '%s' does not allow", (long long)p->id[k], (int)p->fstate[k],
+                 p->damage[k], s->mat[p->mat[k]].name);
+      goto out;
+    }
+  }
 
   if (read_outputs(&c, s, o, err) || read_measure(&c, s, o, err)) goto out;
   rc = 0;

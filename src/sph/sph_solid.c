@@ -40,9 +40,9 @@ static inline int32_t piece_of(const int32_t *piece, int32_t b)
 
 /* Whether particle i carries a deviatoric stress: a material with strength, intact or
  * split with friction (fracture.friction). */
-static int has_strength(const struct material *m, double damage)
+static int has_strength(const struct material *m, int fstate)
 {
-  return m->str.enabled && fracture_keeps_stress(&m->frac, damage);
+  return m->str.enabled && fracture_keeps_stress(&m->frac, fstate);
 }
 
 /* Stress update of particle i from its velocity gradient L. */
@@ -52,7 +52,7 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   double S0[6], dS[6], Sm[6], S1[6];
   for (int k = 0; k < 6; k++) S0[k] = p->S[k][i];
   const double G = m->str.G;
-  const double Y = fracture_yield(&m->frac, p->damage[i],
+  const double Y = fracture_yield(&m->frac, p->fstate[i],
                                   strength_yield(&m->str, p->eps_p[i],
                                                  strength_equivalent_rate(L), p->e[i]),
                                   p->p[i]);
@@ -64,20 +64,20 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   strength_return(G, Y, Sm);
   const double deps = strength_return(G, Y, S1);
   p->eps_p[i] += deps;
-  p->damage[i] = fracture_plastic(&m->frac, p->damage[i], deps);
+  fracture_plastic(&m->frac, deps, &p->damage[i], &p->fstate[i]);
   /* split without tension: the forces see the deviator S' of σ' (σ = −p I + Sm with its
      principal tensions removed, p the mid-step pressure: the EOS at the mid-step
      density and energy, as step.c finds it after this pass — the same operations, the
      same bits), so the heating takes S':ε̇ (and the pressure force's pdV work p').
      Sm itself is kept. (If the EOS fails here, update_eos reports it.) */
-  if (p->cracks && fracture_opening(&m->frac, p->damage[i])) {   /* the crack turns with the material */
+  if (p->cracks && fracture_opening(&m->frac, p->fstate[i])) {   /* the crack turns with the material */
     double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]};
     fracture_crack_rotate(n, L, dt);
     for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
   }
   double Se[6];
   const double *Sh = Sm;
-  if (fracture_no_tension(&m->frac, p->damage[i])) {
+  if (fracture_no_tension(&m->frac, p->fstate[i])) {
     struct eos_state st;
     if (!eos_evaluate(m, p->rho[i] + 0.5 * dt * p->drho[i], p->e[i], &st)) {
       fracture_effective(st.p, Sm, Se);
@@ -196,10 +196,10 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
         const double xi = p->x[0][i], yi = p->x[1][i], zi = p->x[2][i], hi = p->h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const struct material *mi = &mat[p->mat[i]];
-        const int strong = has_strength(mi, p->damage[i]);
+        const int strong = has_strength(mi, p->fstate[i]);
         /* the reconstruction's gradient: intact strength particles only (split ones
            with friction keep the standard viscosity, as without it) */
-        const int recon = strong && p->damage[i] < 1.0;
+        const int recon = strong && p->fstate[i] < FRACTURE_SPLIT;
         const int32_t bi = piece_of(piece, body[i]);
         const int cond_i = mi->eos != EOS_IDEAL_GAS;
         double sum = 0.0, L[9] = {0}, A[9] = {0};
@@ -310,7 +310,7 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
     sig[1] -= p->p[i];
     sig[2] -= p->p[i];
     const struct material *mi = &mat[p->mat[i]];
-    if (eps > 0 && has_strength(mi, p->damage[i]) && !fracture_no_tension(&mi->frac, p->damage[i]) &&
+    if (eps > 0 && has_strength(mi, p->fstate[i]) && !fracture_no_tension(&mi->frac, p->fstate[i]) &&
         sym3_max_bound(sig) > 0.0) {
       double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);
@@ -394,7 +394,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
     w[TW_M] = m[j];
     double Sj[6], pj = pr[j];
     for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
-    if (p->damage[j] >= 1.0 && fracture_no_tension(&mat[p->mat[j]].frac, p->damage[j]))
+    if (fracture_no_tension(&mat[p->mat[j]].frac, p->fstate[j]))
       pj = fracture_effective(pr[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
     w[TW_P] = pj * rj2;
     for (int t = 0; t < 6; t++) w[TW_S + t] = Sj[t] * rj2;
