@@ -61,6 +61,17 @@ void fracture_start(const struct fracture_params *fp, double d0, double *damage,
   }
 }
 
+void fracture_states_from_damage(struct particles *p, const struct material *mat)
+{
+  for (size_t i = 0; i < p->n; i++) {
+    const double d = p->damage[i];
+    p->fstate[i] = d >= 2.0 ? FRACTURE_SPLIT_AGAIN
+                   : d >= 1.0 ? FRACTURE_SPLIT
+                   : mat[p->mat[i]].frac.energy > 0.0 && d > 0.0 ? FRACTURE_OPENING
+                                                                  : FRACTURE_INTACT;
+  }
+}
+
 /* Particle i: the tensile test on σ = −pI + S (S its end-of-step deviator), then the
  * return of its rule. The tensile test runs before the rule and only on particles not
  * yet split (fracture_tension leaves D >= 1 alone): the order of the paper's step. */

@@ -100,6 +100,10 @@ double fracture_pressure(const struct fracture_params *fp, int state, double pe)
  * intact (opening with fracture.energy and D0 > 0, a plane not yet known: normal 0);
  * 1 split, or split again (fluid, D = 2) with split: crack, whose crack is not known. */
 void fracture_start(const struct fracture_params *fp, double d0, double *damage, int32_t *state);
+/* The state of each real particle from its damage and material, as the damage alone
+ * said it before the state was a field: D >= 2 split again, D >= 1 split, 0 < D < 1 with
+ * fracture.energy opening, else intact (for a checkpoint without the record p.fstate). */
+void fracture_states_from_damage(struct particles *p, const struct material *mat);
 /* Cumulative damage from a plastic strain increment deps (model cumulative with eps_f):
  * D += deps/ε_f, and the particle splits when D reaches 1; nothing otherwise. */
 void fracture_plastic(const struct fracture_params *fp, double deps, double *damage,

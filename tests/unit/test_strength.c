@@ -436,11 +436,90 @@ static void test_fracture(void)
   test_cohesive();
 }
 
+/* The explicit fracture state (fracture.h): where a body's damage starts it, the check a
+ * restart makes of a checkpoint's states, and the end of a step moving an intact
+ * particle in tension beyond |σ_c| to split (damage 1, S dropped, its pressure to be
+ * evaluated again). */
+static void test_states(void)
+{
+  struct material mat[3];
+  memset(mat, 0, sizeof mat);
+  mat[0].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9};
+  mat[1].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
+                                         .split = SPLIT_CRACK};
+  mat[2].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
+                                         .energy = 1e4};
+  double d;
+  int32_t st;
+  fracture_start(&mat[0].frac, 1.0, &d, &st);
+  CHECK(d == 1.0 && st == FRACTURE_SPLIT, "start: damage 1 is split (D = %g, state %d)", d, (int)st);
+  fracture_start(&mat[1].frac, 1.0, &d, &st);
+  CHECK(d == 2.0 && st == FRACTURE_SPLIT_AGAIN, "start: split: crack starts split again, no "
+        "crack known (D = %g, state %d)", d, (int)st);
+  fracture_start(&mat[2].frac, 0.3, &d, &st);
+  CHECK(d == 0.3 && st == FRACTURE_OPENING, "start: energy and 0 < D < 1 is opening (state %d)",
+        (int)st);
+  fracture_start(&mat[0].frac, 0.3, &d, &st);
+  CHECK(d == 0.3 && st == FRACTURE_INTACT, "start: D < 1 is intact (state %d)", (int)st);
+
+  struct particles p;
+  particles_init(&p);
+  particles_enable_solid(&p);
+  particles_add(&p, 3);
+  p.n = 3;
+  const double dmg[3] = {1.0, 2.0, 0.5};
+  const int32_t sts[3] = {FRACTURE_SPLIT, FRACTURE_SPLIT_AGAIN, FRACTURE_OPENING};
+  for (size_t i = 0; i < 3; i++) {
+    p.mat[i] = (int32_t)i;
+    p.damage[i] = dmg[i];
+    p.fstate[i] = sts[i];
+  }
+  CHECK(fracture_check_states(&p, mat) == (size_t)-1, "check: states that agree pass");
+  const struct {
+    size_t i;
+    int32_t st;
+    double d;
+    const char *what;
+  } bad[] = {{0, FRACTURE_SPLIT_AGAIN, 2.0, "split again without split: crack"},
+             {0, FRACTURE_OPENING, 0.5, "opening without fracture.energy"},
+             {1, FRACTURE_SPLIT, 0.5, "split with D = 0.5"},
+             {2, FRACTURE_INTACT, 0.5, "intact with an opening's D under fracture.energy"},
+             {2, 7, 0.5, "a state out of range"},
+             {2, -1, 0.5, "a negative state"}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    const int32_t s0 = p.fstate[bad[k].i];
+    const double d0 = p.damage[bad[k].i];
+    p.fstate[bad[k].i] = bad[k].st;
+    p.damage[bad[k].i] = bad[k].d;
+    CHECK(fracture_check_states(&p, mat) == bad[k].i, "check: %s is refused", bad[k].what);
+    p.fstate[bad[k].i] = s0;
+    p.damage[bad[k].i] = d0;
+  }
+
+  /* the end of a step: intact particle 0 in hydrostatic tension 0.5 GPa > |σ_c| splits */
+  p.fstate[0] = FRACTURE_INTACT;
+  p.damage[0] = 0.0;
+  p.p[0] = -0.5e9;
+  for (int k = 0; k < 6; k++) p.S[k][0] = k < 3 ? 1e7 * (k - 1) : 0.0;
+  p.n = 1;
+  const long again = fracture_end_step(&p, mat, 1e-9);
+  double smax = 0.0;
+  for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(p.S[k][0]));
+  CHECK(p.fstate[0] == FRACTURE_SPLIT && p.damage[0] == 1.0 && smax == 0.0 && again == 1,
+        "end of step: tension beyond |σ_c| splits (state %d, D = %g, |S| %g, %ld to evaluate "
+        "again)", (int)p.fstate[0], p.damage[0], smax, again);
+  p.p[0] = -0.3e9;   /* split, below |σ_c|: stays split, still in tension */
+  CHECK(fracture_end_step(&p, mat, 1e-9) == 1 && p.fstate[0] == FRACTURE_SPLIT,
+        "end of step: a split particle stays split");
+  particles_free(&p);
+}
+
 int main(void)
 {
   test_eigen();
   test_rate();
   test_return();
   test_fracture();
+  test_states();
   return test_finish();
 }
