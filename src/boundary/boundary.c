@@ -295,6 +295,7 @@ void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
           p->R[c][g] = p->R[c][s];
         }
         p->damage[g] = p->damage[s];
+        p->fstate[g] = p->fstate[s];
         apply_flip(p, g, b->flip[k] ^ (s >= n ? b->flip[s - n] : 0));
       }
     }

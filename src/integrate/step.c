@@ -57,21 +57,16 @@ static int update_eos(struct sim *s, struct hv_error *err)
   for (size_t i = 0; i < p->n; i++) {
     struct eos_state st;
     const struct material *m = &s->mat[p->mat[i]];
-    /* cracked (fracture.split: crack): the material's density, without the crack's
-       opening, ρ e^{ε_c} (fracture.h) */
-    const int cracked = p->cracks && fracture_opening(&m->frac, p->damage[i]);
-    const double rho_m = cracked ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];
+    /* a plane of it opening (fracture.split: crack, fracture.energy): the EOS takes the
+       material's density, without the plane's opening */
+    const double rho_m = p->solid ? fracture_eos_density(p, i, &m->frac) : p->rho[i];
     if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) ||
         eos_evaluate(m, rho_m, p->e[i], &st) || !isfinite(st.p) || !isfinite(st.cs)) {
       if ((long)i < bad) bad = (long)i;
       continue;
     }
-    /* split: no tension (fracture.split: no-tension removes it from σ instead, and a
-       cracked particle keeps the material's tension within its crack's plane) */
-    if (p->solid && p->damage[i] >= 1.0 && st.p < 0.0 && m->frac.split != SPLIT_NO_TENSION &&
-        !cracked)
-      st.p = 0.0;
-    if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->damage[i])))
+    if (p->solid) st.p = fracture_pressure(&m->frac, p->fstate[i], st.p);   /* split: no tension */
+    if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->fstate[i])))
       st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
     p->p[i] = st.p;
     p->cs[i] = st.cs;
@@ -87,8 +82,7 @@ static int update_eos(struct sim *s, struct hv_error *err)
   char what[512];
   struct eos_state st;
   const struct material *mb = &s->mat[p->mat[i]];
-  const double rho_b = p->cracks && fracture_opening(&mb->frac, p->damage[i])
-                           ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];   /* as above */
+  const double rho_b = p->solid ? fracture_eos_density(p, i, &mb->frac) : p->rho[i];   /* as above */
   const int est = eos_evaluate(mb, rho_b, p->e[i], &st);
   eos_describe(mb, rho_b, p->e[i], est, what, sizeof what);
   if (est == EOS_OK) {   /* taken, but not finite: say what came out */
@@ -252,79 +246,16 @@ static int check_state(const struct sim *s, struct hv_error *err)
                       p->rho[i], p->e[i], p->x[0][i], p->x[1][i], p->x[2][i]);
 }
 
-/* The moduli an opening plane (split: crack, fracture.energy) returns its normal stress
- * with: M = ρ_m c² from the particle's longitudinal speed at its material's density
- * ρ_m = ρ e^{ε_c}, *G the material's shear modulus, *K = max(M − 4G/3, 0). */
-static void opening_moduli(const struct particles *p, size_t i, const struct material *m,
-                           double *K, double *G)
-{
-  const double rho_m = p->rho[i] * exp(p->eps_c[i]);
-  const double M = rho_m * p->cs[i] * p->cs[i];
-  *G = m->str.G;
-  *K = fmax(M - 4.0 / 3.0 * *G, 0.0);
-}
-
-/* End of step for solids: S takes the end-of-step stress, fracture is tested on
- * σ = −pI + S; a particle that splits drops its deviatoric stress (and, without
- * fracture.friction, carries none from then on). */
+/* End of step for solids: S takes the end-of-step deviator (S1, the stress update's),
+ * then fracture acts on σ = −pI + S (fracture_end_step). Returns how many particles
+ * need their pressure evaluated again. */
 static long end_stress(struct sim *s, double dt)
 {
   struct particles *p = &s->p;
-  long splits = 0;   /* split particles still in tension */
-#pragma omp parallel for schedule(static) reduction(+ : splits)
-  for (size_t i = 0; i < p->n; i++) {
-    double S[6];
-    for (int k = 0; k < 6; k++) S[k] = p->S[k][i] = p->S1[k][i];
-    const struct material *m = &s->mat[p->mat[i]];
-    const double d0 = p->damage[i];
-    p->damage[i] = fracture_tension(&m->frac, d0, p->p[i], S, dt);
-    if (m->frac.energy > 0.0 && d0 < 1.0) {
-      /* a cohesive opening before the split (fracture.energy, fracture.h): starts where
-         the paper's rule would split, opens on under tension, splits when opened through;
-         the pressure then moves, so the EOS is evaluated again */
-      double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, w = p->eps_c[i], dp, K, G;
-      opening_moduli(p, i, m, &K, &G);
-      const double l = cbrt(p->m[i] / m->rho0);
-      p->damage[i] = fracture_cohesive_return(&m->frac, d0, p->damage[i], p->p[i], K, G, l, S,
-                                              n, &w, &dp);
-      for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
-      p->eps_c[i] = w;
-      if (p->damage[i] >= 1.0) {
-        for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;   /* split: the paper's rule */
-        splits += 1;
-      } else {
-        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
-        splits += dp != 0.0;
-      }
-    } else if (m->frac.split == SPLIT_CRACK && p->damage[i] >= 1.0) {
-      /* split along a crack (fracture.h): cracked now, the crack opened or closed to
-         carry no normal stress, or split again (fluid, damage 2: S = 0, no tension);
-         the pressure then moves, so the EOS is evaluated again */
-      if (p->damage[i] < 2.0) {
-        double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, ec = p->eps_c[i], dp, K, G;
-        opening_moduli(p, i, m, &K, &G);
-        p->damage[i] = fracture_crack_return(&m->frac, d0, p->damage[i], p->p[i], K, G,
-                                             p->eps_p[i], S, n, &ec, &dp);
-        for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
-        p->eps_c[i] = ec;
-        for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
-        splits += dp != 0.0 || (p->damage[i] >= 2.0 && p->p[i] < 0.0);
-      }
-    } else if (fracture_no_tension(&m->frac, p->damage[i])) {
-      /* split without tension: the deviator of σ with its principal tensions removed
-         (the pressure stays the EOS's; each step's forces remove its tension again) */
-      double Se[6];
-      fracture_effective(p->p[i], S, Se);
-      for (int k = 0; k < 6; k++) p->S[k][i] = Se[k];
-    } else if (p->damage[i] >= 1.0) {
-      /* splitting releases the deviatoric stress; with friction it builds up again
-         under pressure (sph_solid.c), limited by min(Y, μp) */
-      if (d0 < 1.0 || !(m->frac.friction > 0.0))
-        for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
-      splits += p->p[i] < 0.0;   /* split (now or in the first pass) and in tension */
-    }
-  }
-  return splits;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < 6; k++) p->S[k][i] = p->S1[k][i];
+  return fracture_end_step(p, s->mat, dt);
 }
 
 /* sph.rest_tolerance. The SPH stencil carries a disturbance one kernel support per step,
@@ -486,7 +417,8 @@ int step_advance(struct sim *s, struct hv_error *err)
   clamp_to_rest(s, dt);
   if (check_state(s, err) || update_eos(s, err)) return -1;
   if (p->solid) {
-    /* new splits in tension lose it: re-evaluate only when there are some */
+    /* new splits in tension lose it, opening planes move it: re-evaluate only when
+       there are some */
     if (end_stress(s, dt) > 0 && update_eos(s, err)) return -1;
   }
   update_h(s);

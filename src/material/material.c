@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "eos/eos.h"
+#include "fracture/fracture_read.h"
 
 /* ---------------------------------------------------------------- the table of models */
 
@@ -74,8 +75,6 @@ static void yield_names(const char *names[YIELD_KIND_COUNT + 1])
 #define get_q material_get_q
 #define not_used_here material_not_used_here
 
-static const char *const fracture_names[] = {"none", "tresca", "cumulative", NULL};
-static const char *const split_names[] = {"fluid", "no-tension", "crack", NULL};
 
 const char *material_key(char *buf, size_t len, const char *path, const char *key)
 {
@@ -191,151 +190,6 @@ static int read_strength(struct cfg *c, const char *path, struct material *m,
   return 0;
 }
 
-/* ---------------------------------------------------------------- fracture */
-
-/* zero_off: 0 is accepted and means "no tensile criterion" (cumulative damage, whose
- * default it is), so that a case can switch off a library material's sigma_c. */
-static int read_sigma_c(struct cfg *c, const char *fp, const double *def, int zero_off,
-                        double *out, struct hv_error *err)
-{
-  char k[320];
-  key_of(k, sizeof k, fp, "sigma_c");
-  if (cfg_get_quantity(c, k, UNIT_PRESSURE, def, -HUGE_VAL, HUGE_VAL, out, err)) return -1;
-  if (cfg_has(c, k) && !(*out < 0.0) && !(zero_off && *out == 0.0))
-    return key_error(c, k, err, "sigma_c = %.9g Pa must be negative (tension is negative, as in "
-                     "the paper's tables)%s", *out,
-                     zero_off ? "; 0 switches the tensile criterion off" : "");
-  return 0;
-}
-
-/* fracture.crack_eps_f (split: crack): a number (a constant strain to failure of the
- * cracked state) or {d1, d2, d3} (ε_f = d1 + d2 exp(d3 σ*), the Johnson–Cook form). */
-static int read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_params *f,
-                            struct hv_error *err)
-{
-  char k[320];
-  key_of(k, sizeof k, fp, "crack_eps_f");
-  if (!cfg_has(c, k)) return 0;
-  const double zero = 0.0;
-  if (!cfg_is_map(c, k)) {
-    if (cfg_get_quantity(c, k, UNIT_NONE, NULL, 0.0, HUGE_VAL, &f->crack_d[0], err)) return -1;
-    if (!(f->crack_d[0] > 0.0))
-      return key_error(c, k, err, "the strain to failure must be > 0 (leave crack_eps_f out "
-                       "for none)");
-  } else {
-    static const char *const dn[3] = {"d1", "d2", "d3"};
-    for (int j = 0; j < 3; j++) {
-      char kd[340];
-      if (cfg_get_quantity(c, key_of(kd, sizeof kd, k, dn[j]), UNIT_NONE, j ? &zero : NULL,
-                           -HUGE_VAL, HUGE_VAL, &f->crack_d[j], err))
-        return -1;
-    }
-    /* positive over the triaxialities it is evaluated at, σ* in [−1.5, 1.5] */
-    for (int e = -1; e <= 1; e += 2) {
-      const double ef = f->crack_d[0] + f->crack_d[1] * exp(f->crack_d[2] * 1.5 * e);
-      if (!(ef > 0.0))
-        return key_error(c, k, err, "d1 + d2 exp(d3 sigma*) = %.6g at sigma* = %g: the strain "
-                         "to failure must be > 0 for sigma* in [-1.5, 1.5]", ef, 1.5 * e);
-    }
-  }
-  f->crack_eps_f_on = 1;
-  return 0;
-}
-
-static int read_fracture(struct cfg *c, const char *path, struct material *m,
-                         struct hv_error *err)
-{
-  char fp[300], k[320];
-  snprintf(fp, sizeof fp, "%s.fracture", path);
-  struct fracture_params *f = &m->frac;
-  memset(f, 0, sizeof *f);
-  if (!cfg_has(c, fp)) return 0;
-  if (!cfg_is_map(c, fp))
-    return key_error(c, fp, err, "expected a mapping like {model: tresca, sigma_c: -0.39 GPa}");
-  int model;
-  if (cfg_get_choice(c, key_of(k, sizeof k, fp, "model"), NULL, fracture_names, &model, err))
-    return -1;
-  f->kind = (enum fracture_kind)model;
-  const double zero = 0.0;
-  switch (f->kind) {
-  case FRACTURE_NONE:
-    if (not_used_here(c, fp, "friction", "friction applies to split material: model tresca "
-                      "or cumulative", err) ||
-        not_used_here(c, fp, "split", "split applies to split material: model tresca or "
-                      "cumulative", err) ||
-        not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) applies "
-                      "to model: tresca", err))
-      return -1;
-    break;
-  case FRACTURE_TRESCA:
-    if (not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
-        not_used_here(c, fp, "tau", "tau applies to model: cumulative only", err) ||
-        read_sigma_c(c, fp, NULL, 0, &f->sigma_c, err) ||
-        get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy, err))
-      return -1;
-    if (f->energy > 0.0 && !m->str.enabled)
-      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
-                       "the cohesive opening (energy > 0) acts on the stress of a solid, but "
-                       "the material has no strength (give strength with shear modulus and "
-                       "yield > 0)");
-    if (f->energy > 0.0 && !(m->rho0 > 0.0))
-      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
-                       "the cohesive opening (energy > 0) takes each particle's spacing from "
-                       "its mass and the material's rho0, which this material does not give");
-    break;
-  case FRACTURE_CUMULATIVE:
-    if (not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) applies "
-                      "to model: tresca only", err) ||
-        read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
-        get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
-        get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))
-      return -1;
-    if (!(f->eps_f > 0.0) && !(f->sigma_c < 0.0))
-      return key_error(c, key_of(k, sizeof k, fp, "model"), err,
-                       "cumulative damage needs eps_f > 0 (plastic strain to failure) or "
-                       "sigma_c < 0 (with tau, the time under tension to failure)");
-    break;
-  case FRACTURE_KIND_COUNT:
-    break;
-  }
-  if (f->kind != FRACTURE_NONE) {
-    if (get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->friction, err)) return -1;
-    if (f->friction > 0.0 && !m->str.enabled)
-      return key_error(c, key_of(k, sizeof k, fp, "friction"), err,
-                       "friction limits the deviatoric stress of split material, but the "
-                       "material has no strength (give strength with shear modulus and "
-                       "yield > 0)");
-    int split;
-    if (cfg_get_choice(c, key_of(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
-      return -1;
-    f->split = (enum split_kind)split;
-    const char *sname = split_names[f->split];
-    if (f->split != SPLIT_FLUID && !m->str.enabled)
-      return key_error(c, k, err, "split: %s keeps the deviatoric stress of split "
-                       "material, but the material has no strength (give strength with "
-                       "shear modulus and yield > 0)", sname);
-    if (f->split != SPLIT_FLUID && f->energy > 0.0)
-      return key_error(c, key_of(k, sizeof k, fp, "energy"), err,
-                       "energy (a cohesive opening before the split) ends in the paper's "
-                       "split (split: fluid); with split: %s leave it out", sname);
-    if (f->split != SPLIT_FLUID && f->friction > 0.0)
-      return key_error(c, k, err, "split: %s keeps the yield stress of split material; "
-                       "friction (which limits it to min(Y, mu p)) applies to split: fluid only",
-                       sname);
-    if (f->split != SPLIT_CRACK) {
-      if (not_used_here(c, fp, "crack_eps_f", "crack_eps_f is the strain to failure of a "
-                        "cracked particle: it applies to split: crack only", err))
-        return -1;
-    } else if (read_crack_eps_f(c, fp, f, err)) {
-      return -1;
-    }
-  } else if (not_used_here(c, fp, "crack_eps_f", "crack_eps_f applies to split: crack "
-                           "(model tresca or cumulative)", err)) {
-    return -1;
-  }
-  return 0;
-}
-
 /* ---------------------------------------------------------------- the material */
 
 /* Grafts library entry `lname` under `path`. */
@@ -437,7 +291,7 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
     return -1;
   m->eos = (enum eos_kind)kind;
   if (eos_models[m->eos]->read(c, path, m, err) || read_strength(c, path, m, err) ||
-      read_fracture(c, path, m, err) || check_units(c, path, m, err)) {
+      fracture_read(c, path, m, err) || check_units(c, path, m, err)) {
     material_free(m);
     return -1;
   }

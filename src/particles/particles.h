@@ -51,7 +51,8 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double,  vol,   "m3",     0,                            "m/rho (per pass, all slots)") \
   X(double,  pr2,   "m5/kg/s2", 0,                          "p/rho^2 (per pass, all slots)") \
   X(double,  eps_p, "",       PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain") \
-  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage (1: split; 2: split again, fracture.split: crack; 0-1: opening, fracture.energy)") \
+  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage: 0-1 while intact (cumulative) or opening (fracture.energy); 1 split; 2 split again (fracture.split: crack)") \
+  X(int32_t, fstate, "",      PF_STATE | PF_SOLID,         "fracture state (enum fracture_state, fracture.h); kept out of the snapshots, which show it in damage") \
   X(double,  alpha, "",       PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)") \
   X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step") \
   X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack, fracture.energy)") \

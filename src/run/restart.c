@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fracture/fracture.h"
 #include "io/checkpoint.h"
 #include "version.h"
 
@@ -486,12 +487,15 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
                  "when continued (start it again, or continue it without it)", path);
     return -1;
   }
+  /* a checkpoint from before the fracture state was a field (no p.fstate): the state
+     follows from the damage (fracture_states_from_damage), exactly */
+  const int old_states = p->solid && !ckpt_find(c, "p.fstate");
   /* the count against the data the file holds, before the particles are allocated (a
      count of 2^40 asked for 11.7 TB): every state field's record, n elements a part */
   struct pfield f[HV_MAX_FIELDS];
   int nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
-    if (!(f[i].flags & PF_STATE)) continue;
+    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate"))) continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
     if (want_count(c, rn, ckpt_type_of(f[i].type), (uint64_t)n * (uint64_t)f[i].ncomp,
@@ -503,7 +507,7 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
   p->n = n;
   nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
-    if (!(f[i].flags & PF_STATE)) continue;
+    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate"))) continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
     if (ckpt_get_parts(c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err))
@@ -517,6 +521,16 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
       return -1;
     }
   if (check_particles(c, p, f, nf, err)) return -1;
+  if (old_states) fracture_states_from_damage(p, s->mat);
+  if (p->solid) {   /* each fracture state one its damage and material allow */
+    const size_t k = fracture_check_states(p, s->mat);
+    if (k != (size_t)-1) {
+      bad_record(c, "p.fstate", err, "particle %lld: fracture state %d with damage %g, which "
+                 "material '%s' does not allow", (long long)p->id[k], (int)p->fstate[k],
+                 p->damage[k], s->mat[p->mat[k]].name);
+      return -1;
+    }
+  }
   return 0;
 }
 

@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "eos/eos.h"
+#include "fracture/fracture.h"
 #include "material/material_read.h"
 #include "neighbours/grid.h"
 #include "setup/setup.h"
@@ -589,11 +590,7 @@ static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t f
     p->rho[q] = bs->rho;
     p->h[q] = h;
     p->e[q] = bs->e;
-    if (p->solid) p->damage[q] = bs->damage;
-    /* split at the start with fracture.split: crack: no crack is known, so split fluid
-       (damage 2, fracture.h) */
-    if (p->solid && bs->damage >= 1.0 && s->mat[bs->mat].frac.split == SPLIT_CRACK)
-      p->damage[q] = 2.0;
+    if (p->solid) fracture_start(&s->mat[bs->mat].frac, bs->damage, &p->damage[q], &p->fstate[q]);
     double r[3], rn = 0.0;
     for (int c = 0; c < 3; c++) {
       r[c] = p->x[c][q] - bs->shape.center[c];

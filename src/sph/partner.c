@@ -54,7 +54,7 @@ void partner_pack(const struct particles *p, const struct sph_params *sp,
     w[PR_M] = p->m[j];
     double Sj[6], pj = p->p[j];
     for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
-    if (p->damage[j] >= 1.0 && fracture_no_tension(&mat[p->mat[j]].frac, p->damage[j]))
+    if (fracture_no_tension(&mat[p->mat[j]].frac, p->fstate[j]))
       pj = fracture_effective(p->p[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
     w[PR_P] = pj * rj2;
     for (int t = 0; t < 6; t++) w[PR_S + t] = Sj[t] * rj2;

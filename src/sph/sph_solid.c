@@ -44,9 +44,9 @@
 /* The piece of body b (bodies[i].part_of; every body its own without a table). */
 /* Whether particle i carries a deviatoric stress: a material with strength, intact or
  * split with friction (fracture.friction). */
-static int has_strength(const struct material *m, double damage)
+static int has_strength(const struct material *m, int fstate)
 {
-  return m->str.enabled && fracture_keeps_stress(&m->frac, damage);
+  return m->str.enabled && fracture_keeps_stress(&m->frac, fstate);
 }
 
 /* Stress update of particle i from its velocity gradient L. */
@@ -56,7 +56,7 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   double S0[6], dS[6], Sm[6], S1[6];
   for (int k = 0; k < 6; k++) S0[k] = p->S[k][i];
   const double G = m->str.G;
-  const double Y = fracture_yield(&m->frac, p->damage[i],
+  const double Y = fracture_yield(&m->frac, p->fstate[i],
                                   strength_yield(&m->str, p->eps_p[i],
                                                  strength_equivalent_rate(L), p->e[i]),
                                   p->p[i]);
@@ -68,20 +68,20 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   strength_return(G, Y, Sm);
   const double deps = strength_return(G, Y, S1);
   p->eps_p[i] += deps;
-  p->damage[i] = fracture_plastic(&m->frac, p->damage[i], deps);
+  fracture_plastic(&m->frac, deps, &p->damage[i], &p->fstate[i]);
   /* split without tension: the forces see the deviator S' of σ' (σ = −p I + Sm with its
      principal tensions removed, p the mid-step pressure: the EOS at the mid-step
      density and energy, as step.c finds it after this pass — the same operations, the
      same bits), so the heating takes S':ε̇ (and the pressure force's pdV work p').
      Sm itself is kept. (If the EOS fails here, update_eos reports it.) */
-  if (p->cracks && fracture_opening(&m->frac, p->damage[i])) {   /* the crack turns with the material */
+  if (p->cracks && fracture_opening(&m->frac, p->fstate[i])) {   /* the crack turns with the material */
     double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]};
     fracture_crack_rotate(n, L, dt);
     for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
   }
   double Se[6];
   const double *Sh = Sm;
-  if (fracture_no_tension(&m->frac, p->damage[i])) {
+  if (fracture_no_tension(&m->frac, p->fstate[i])) {
     struct eos_state st;
     if (!eos_evaluate(m, p->rho[i] + 0.5 * dt * p->drho[i], p->e[i], &st)) {
       fracture_effective(st.p, Sm, Se);
@@ -235,10 +235,10 @@ static inline void density_rate_particle(const struct density_pass *dp,
   const struct material *mi = &dp->mat[p->mat[i]];
   struct density_i I = {.x = p->x[0][i], .y = p->x[1][i], .z = p->x[2][i], .h = p->h[i],
                         .vx = p->v[0][i], .vy = p->v[1][i], .vz = p->v[2][i], .m = mi};
-  I.strong = has_strength(mi, p->damage[i]);
+  I.strong = has_strength(mi, p->fstate[i]);
   /* the reconstruction's gradient: intact strength particles only (split ones with
      friction keep the standard viscosity, as without it) */
-  const int recon = I.strong && p->damage[i] < 1.0;
+  const int recon = I.strong && p->fstate[i] < FRACTURE_SPLIT;
   I.piece = sph_piece_of(sp->piece, p->body[i]);
   I.cond = mi->eos != EOS_IDEAL_GAS;
   /* the correction matrix: for the stress with sph.gradient_correction, and for the
@@ -324,7 +324,7 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
     sig[1] -= p->p[i];
     sig[2] -= p->p[i];
     const struct material *mi = &mat[p->mat[i]];
-    if (eps > 0 && has_strength(mi, p->damage[i]) && !fracture_no_tension(&mi->frac, p->damage[i]) &&
+    if (eps > 0 && has_strength(mi, p->fstate[i]) && !fracture_no_tension(&mi->frac, p->fstate[i]) &&
         sym3_max_bound(sig) > 0.0) {
       double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);

@@ -30,7 +30,9 @@
 #     refuses to take it up when continued (exit 2, its files untouched);
 #  8. 1. again with split along a crack (fracture.split: crack, and crack_eps_f for the
 #     plate), whose crack normals and opening strains are state; a run made without it
-#     refuses to take it up when continued (exit 2, its files untouched).
+#     refuses to take it up when continued (exit 2, its files untouched);
+#  9. 8. continued from its checkpoint with the record p.fstate dropped (a checkpoint
+#     from before the fracture state was a field): identical again.
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -270,6 +272,36 @@ check $? "split: crack: $ncr particles cracked (damage 1) and $nfl split again (
 same_files "$T/cr_ref" "$T/cr"
 check $? "split: crack: continued run, every file identical to the straight run's"
 refuses_to_take_up nt_cr "split: crack" "without fracture.split: crack" "${CR[@]}"
+
+# 9. a checkpoint from before the fracture state was a field (no record p.fstate; made
+#    here by dropping the record from the crack run's, its CRC recomputed): the state
+#    follows from the damage, so the continued run is again identical to the straight one
+"$BIN" run "$CASE" -o "$T/cr_old" "${SETS[@]}" "${CR[@]}" --set time.max_steps=300 \
+  --threads 2 --quiet 2> /dev/null &&
+  python3 - "$T/cr_old/checkpoint.hvc" <<'PY'
+import struct, sys, zlib
+path = sys.argv[1]
+b = open(path, 'rb').read()
+out, off, dropped = bytearray(b[:16]), 16, 0
+while True:   # records: name[56], uint32 type, uint32 0, uint64 count, data (io/checkpoint.h)
+    name = b[off:off + 56].rstrip(b'\0')
+    typ, _, cnt = struct.unpack_from('=IIQ', b, off + 56)
+    end = off + 72 + cnt * {1: 1, 2: 4, 3: 8, 4: 8}[typ]
+    if name == b'p.fstate':
+        dropped = 1
+    else:
+        out += b[off:end]
+    off = end
+    if name == b'end':
+        break
+out += struct.pack('=I', zlib.crc32(bytes(out)) & 0xffffffff)
+open(path, 'wb').write(bytes(out))
+sys.exit(0 if dropped else 1)
+PY
+check $? "split: crack: a run stopped at step 300, its checkpoint without the record p.fstate"
+"$BIN" restart "$T/cr_old" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null &&
+  same_files "$T/cr_ref" "$T/cr_old"
+check $? "split: crack: continued from a checkpoint without p.fstate, every file identical"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "fracture/fracture.h"
+#include "fracture/rules.h"
 #include "particles/particles.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
@@ -91,9 +92,9 @@ static void test_return(void)
 static void test_no_tension(void)
 {
   struct fracture_params nt = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_NO_TENSION};
-  CHECK(fracture_keeps_stress(&nt, 1.0) && fracture_no_tension(&nt, 1.0) &&
-        !fracture_no_tension(&nt, 0.99), "no-tension: split particles keep a stress");
-  CHECK(fracture_yield(&nt, 1.0, 0.383e9, -1e8) == 0.383e9, "no-tension: split keeps Y");
+  CHECK(fracture_keeps_stress(&nt, FRACTURE_SPLIT) && fracture_no_tension(&nt, FRACTURE_SPLIT) &&
+        !fracture_no_tension(&nt, FRACTURE_INTACT), "no-tension: split particles keep a stress");
+  CHECK(fracture_yield(&nt, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.383e9, "no-tension: split keeps Y");
   const double ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3}, c = cos(0.7), s = sin(0.7);
   double Q[9];   /* Rodrigues: Q = c I + s [a]x + (1 − c) a aᵀ */
   for (int a = 0; a < 3; a++)
@@ -151,13 +152,13 @@ static void test_crack(void)
 {
   const double S0c[6] = {0, 0, 0, 0, 0, 0};
   struct fracture_params cr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_CRACK};
-  CHECK(fracture_cracked(&cr, 1.0) && !fracture_cracked(&cr, 0.99) && !fracture_cracked(&cr, 2.0),
+  CHECK(fracture_cracked(&cr, FRACTURE_SPLIT) && !fracture_cracked(&cr, FRACTURE_INTACT) && !fracture_cracked(&cr, FRACTURE_SPLIT_AGAIN),
         "crack: cracked at D = 1, intact below, fluid at D = 2");
-  CHECK(fracture_keeps_stress(&cr, 1.0) && !fracture_keeps_stress(&cr, 2.0),
+  CHECK(fracture_keeps_stress(&cr, FRACTURE_SPLIT) && !fracture_keeps_stress(&cr, FRACTURE_SPLIT_AGAIN),
         "crack: a cracked particle keeps its stress, a twice-split one none");
-  CHECK(fracture_yield(&cr, 1.0, 0.383e9, -1e8) == 0.383e9 &&
-        fracture_yield(&cr, 2.0, 0.383e9, 1e9) == 0.0, "crack: cracked keeps Y, fluid has none");
-  CHECK(!fracture_no_tension(&cr, 1.0), "crack is not no-tension");
+  CHECK(fracture_yield(&cr, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.383e9 &&
+        fracture_yield(&cr, FRACTURE_SPLIT_AGAIN, 0.383e9, 1e9) == 0.0, "crack: cracked keeps Y, fluid has none");
+  CHECK(!fracture_no_tension(&cr, FRACTURE_SPLIT), "crack is not no-tension");
   const double K = 76e9, G = 26e9, M = K + 4.0 / 3.0 * G;
   /* uniaxial strain ε along y (elastic): p = −Kε, S = 2Gε dev(e_y e_y), σ_yy = Mε =
      0.5 GPa: it cracks across y, and the crack's opening ε_c = ε takes the whole
@@ -165,12 +166,12 @@ static void test_crack(void)
   const double eps = 0.5e9 / M;
   double S[6] = {-2 * G * eps / 3, 4 * G * eps / 3, -2 * G * eps / 3, 0, 0, 0}, n[3] = {0, 0, 0};
   double ec = 0.0, dp = 0.0, p = -K * eps;
-  double d = fracture_crack_return(&cr, 0.0, fracture_tension(&cr, 0.0, p, S, 1e-9), p, K, G,
-                                   0.0, S, n, &ec, &dp);
+  int st = fracture_crack_return(&cr, fracture_tension(&cr, 0.0, p, S, 1e-9) >= 1.0, p, K, G,
+                                 0.0, S, n, &ec, &dp);
   double smax = 0.0;
   for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(S[k]));
-  CHECK(d == 1.0 && fabs(fabs(n[1]) - 1.0) < 1e-12, "crack: uniaxial strain in y cracks across y "
-        "(D = %g, n = (%g, %g, %g))", d, n[0], n[1], n[2]);
+  CHECK(st == FRACTURE_SPLIT && fabs(fabs(n[1]) - 1.0) < 1e-12, "crack: uniaxial strain in y cracks across y "
+        "(state %d, n = (%g, %g, %g))", st, n[0], n[1], n[2]);
   CHECK(fabs(ec - eps) < 1e-12 * eps && smax < 1e-6 * 0.5e9 && fabs(p + dp) < 1e-6 * 0.5e9,
         "crack: the opening takes the whole uniaxial strain (ε_c/ε = %.12f, |S| %g Pa, p + dp "
         "= %g Pa)", ec / eps, smax, p + dp);
@@ -180,21 +181,21 @@ static void test_crack(void)
   double Sm[6] = {-2 * T / 3, T / 3, T / 3, 0, 0, 0}, nx[3] = {1, 0, 0}, S0[6];
   for (int k = 0; k < 6; k++) S0[k] = Sm[k];
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T / 3, K, G, 0.0, Sm, nx, &ec, &dp);
-  CHECK(d == 1.0 && ec == 0.0 && dp == 0.0 && !memcmp(Sm, S0, sizeof Sm),
+  st = fracture_crack_return(&cr, 0, -2 * T / 3, K, G, 0.0, Sm, nx, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT && ec == 0.0 && dp == 0.0 && !memcmp(Sm, S0, sizeof Sm),
         "crack: 0.3 GPa of membrane tension within the plane is carried, unchanged");
   const double T2 = 0.45e9;
   double Sm2[6] = {-2 * T2 / 3, T2 / 3, T2 / 3, 0, 0, 0}, nx2[3] = {1, 0, 0};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -2 * T2 / 3, K, G, 0.0, Sm2, nx2, &ec, &dp);
-  CHECK(d == 2.0 && Sm2[1] == 0.0 && nx2[0] == 0.0 && ec == 0.0,
-        "crack: 0.45 GPa within the plane splits it again (D = %g): S = 0, n = 0, ε_c = 0", d);
+  st = fracture_crack_return(&cr, 0, -2 * T2 / 3, K, G, 0.0, Sm2, nx2, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT_AGAIN && Sm2[1] == 0.0 && nx2[0] == 0.0 && ec == 0.0,
+        "crack: 0.45 GPa within the plane splits it again (state %d): S = 0, n = 0, ε_c = 0", st);
   /* hydrostatic tension T: the crack opens by T/M and the plane keeps T·2G/M */
   double Sh[6] = {0, 0, 0, 0, 0, 0}, nh[3] = {1, 0, 0};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, -T, K, G, 0.0, Sh, nh, &ec, &dp);
+  st = fracture_crack_return(&cr, 0, -T, K, G, 0.0, Sh, nh, &ec, &dp);
   const double syy = -(-T + dp) + Sh[T_YY], sxx = -(-T + dp) + Sh[T_XX];
-  CHECK(d == 1.0 && fabs(ec - T / M) < 1e-12 * T / M && fabs(sxx) < 1e-6 * T &&
+  CHECK(st == FRACTURE_SPLIT && fabs(ec - T / M) < 1e-12 * T / M && fabs(sxx) < 1e-6 * T &&
         fabs(syy - T * 2 * G / M) < 1e-6 * T, "crack: hydrostatic tension T opens it by T/M = "
         "%.4g and leaves σ_xx = %g Pa, σ_yy = %.5g GPa (T·2G/M = %.5g)", ec, sxx, syy * 1e-9,
         T * 2 * G / M * 1e-9);
@@ -206,8 +207,8 @@ static void test_crack(void)
   Sc[T_XX] = -2e-3 * 4 * G / 3;
   Sc[T_YY] = Sc[T_ZZ] = 2e-3 * 2 * G / 3;
   const double pcl = 2e-3 * K;
-  d = fracture_crack_return(&cr, 1.0, 1.0, pcl + pc, K, G, 0.0, Sc, nc, &ec, &dp);
-  CHECK(d == 1.0 && ec == 0.0 && fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
+  st = fracture_crack_return(&cr, 0, pcl + pc, K, G, 0.0, Sc, nc, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT && ec == 0.0 && fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
         "crack: closes by 1e-3 of its 2e-3 compression and carries σ_nn = %.5g GPa (−1e-3 M "
         "= %.5g)", sig_nn(pcl + dp, Sc, nc) * 1e-9, -1e-3 * M * 1e-9);
   /* open, with shear on its plane: the shear traction is released, in-plane shear kept */
@@ -229,7 +230,7 @@ static void test_crack(void)
   const double ps = -(m3[0][0] + m3[1][1] + m3[2][2]) / 3;
   double Sq[6] = {m3[0][0] + ps, m3[1][1] + ps, m3[2][2] + ps, m3[0][1], m3[1][2], m3[0][2]};
   ec = 0.0;
-  d = fracture_crack_return(&cr, 1.0, 1.0, ps, K, G, 0.0, Sq, nq, &ec, &dp);
+  st = fracture_crack_return(&cr, 0, ps, K, G, 0.0, Sq, nq, &ec, &dp);
   double t[3] = {0, 0, 0};   /* the traction on the plane after: (σ n) */
   const double sg[3][3] = {{Sq[T_XX] - ps - dp, Sq[T_XY], Sq[T_XZ]},
                            {Sq[T_XY], Sq[T_YY] - ps - dp, Sq[T_YZ]},
@@ -242,7 +243,7 @@ static void test_crack(void)
   double s23 = 0.0;
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) s23 += e2[a] * sg[a][b] * e3[b];
-  CHECK(d == 1.0 && ec > 0.0 && tt < 1e-6 * 1e8 && fabs(s23 - 4e7) < 1e-6 * 1e8,
+  CHECK(st == FRACTURE_SPLIT && ec > 0.0 && tt < 1e-6 * 1e8 && fabs(s23 - 4e7) < 1e-6 * 1e8,
         "crack, open in a turned frame: no traction on the plane (|σn| = %g Pa), in-plane "
         "shear kept (%.6g GPa, 0.04)", tt, s23 * 1e-9);
   /* the normal of the largest principal tension */
@@ -297,11 +298,11 @@ static void test_crack(void)
   double Sa[6], na[3] = {1, 0, 0};
   for (int k = 0; k < 6; k++) Sa[k] = Sb[k];
   ec = 0.0;
-  d = fracture_crack_return(&cf, 1.0, 1.0, -2 * Tm / 3, K, G, 0.99 * ef_b, Sa, na, &ec, &dp);
-  CHECK(d == 1.0 && !memcmp(Sa, Sb, sizeof Sa), "crack_eps_f: carried at ε_p = 0.99 ε_f");
-  d = fracture_crack_return(&cf, 1.0, 1.0, -2 * Tm / 3, K, G, ef_b, Sa, na, &ec, &dp);
-  CHECK(d == 2.0 && Sa[1] == 0.0 && na[0] == 0.0,
-        "crack_eps_f: split again (D = %g) at ε_p = ε_f", d);
+  st = fracture_crack_return(&cf, 0, -2 * Tm / 3, K, G, 0.99 * ef_b, Sa, na, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT && !memcmp(Sa, Sb, sizeof Sa), "crack_eps_f: carried at ε_p = 0.99 ε_f");
+  st = fracture_crack_return(&cf, 0, -2 * Tm / 3, K, G, ef_b, Sa, na, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT_AGAIN && Sa[1] == 0.0 && na[0] == 0.0,
+        "crack_eps_f: split again (state %d) at ε_p = ε_f", st);
   /* under compression (σ* = −1: ε_f = 0.13 + 0.13 e^{1.5} = 0.7126) the same strain is
      carried */
   const double Pc = 2e8;
@@ -310,8 +311,8 @@ static void test_crack(void)
   CHECK(fabs(fracture_crack_eps_f(&cf, Pc, Sk) - (0.13 + 0.13 * exp(1.5))) < 1e-12,
         "crack_eps_f: σ* = −1 gives 0.7126");
   ec = 0.0;
-  d = fracture_crack_return(&cf, 1.0, 1.0, Pc, K, G, 0.5, Sk, nk, &ec, &dp);
-  CHECK(d == 1.0, "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), D = %g", d);
+  st = fracture_crack_return(&cf, 0, Pc, K, G, 0.5, Sk, nk, &ec, &dp);
+  CHECK(st == FRACTURE_SPLIT, "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), state %d", st);
 }
 
 /* fracture.energy: a material point in uniaxial strain along y, stretched in small steps
@@ -332,9 +333,9 @@ static void test_cohesive(void)
   struct fracture_params co = {.kind = FRACTURE_TRESCA, .sigma_c = -sc, .energy = Gf};
   const double wu = fracture_open_strain(&co, l);
   CHECK(fabs(wu - 2 * Gf / (sc * l)) < 1e-14 * wu, "cohesive: w_u = 2 G_f/(|σ_c| l) = %.5f", wu);
-  CHECK(!fracture_opening(&co, 0.0) && fracture_opening(&co, 0.5) && !fracture_opening(&co, 1.0),
+  CHECK(!fracture_opening(&co, FRACTURE_INTACT) && fracture_opening(&co, FRACTURE_OPENING) && !fracture_opening(&co, FRACTURE_SPLIT),
         "cohesive: opening for 0 < D < 1 only");
-  CHECK(fracture_keeps_stress(&co, 0.5) && fracture_yield(&co, 0.5, 1.55e9, 0.0) == 1.55e9,
+  CHECK(fracture_keeps_stress(&co, FRACTURE_OPENING) && fracture_yield(&co, FRACTURE_OPENING, 1.55e9, 0.0) == 1.55e9,
         "cohesive: an opening particle keeps its deviator and its yield stress");
   /* monotonic stretching to the split */
   double eps = 0.0, w = 0.0, D = 0.0, S[6], n[3] = {0, 0, 0}, work = 0.0, peak = 0.0;
@@ -410,22 +411,107 @@ static void test_fracture(void)
   CHECK(fracture_tension(&tr, 0, -0.40e9, S0, 1e-9) == 1.0, "beyond |σc|: split");
   CHECK(fracture_tension(&tr, 0, 1e9, S, 1e-9) == 0.0, "compression: no split");
   struct fracture_params cu = {.kind = FRACTURE_CUMULATIVE, .sigma_c = -1e8, .eps_f = 0.5, .tau = 1e-6};
-  CHECK_CLOSE(fracture_plastic(&cu, 0.0, 0.1), 0.2, 1e-15, "cumulative: dD = deps/eps_f");
+  double Dc = 0.0;
+  int32_t sc = FRACTURE_INTACT;
+  fracture_plastic(&cu, 0.1, &Dc, &sc);
+  CHECK_CLOSE(Dc, 0.2, 1e-15, "cumulative: dD = deps/eps_f");
+  CHECK(sc == FRACTURE_INTACT, "cumulative: intact below D = 1");
+  fracture_plastic(&cu, 0.45, &Dc, &sc);
+  CHECK(Dc == 1.0 && sc == FRACTURE_SPLIT, "cumulative: plastic strain to D = 1 splits it (D = "
+        "%g, state %d)", Dc, (int)sc);
   CHECK_CLOSE(fracture_tension(&cu, 0.2, -2e8, S0, 2e-7), 0.4, 1e-12, "cumulative: dD = dt/tau in tension");
   CHECK(fracture_tension(&cu, 0.9, -2e8, S0, 2e-7) == 1.0, "cumulative: split at D = 1");
   /* split material: no deviatoric stress (the paper's rule), or min(Y, μ max(p, 0)) */
-  CHECK(fracture_keeps_stress(&tr, 0.5) && !fracture_keeps_stress(&tr, 1.0),
+  CHECK(fracture_keeps_stress(&tr, FRACTURE_INTACT) && !fracture_keeps_stress(&tr, FRACTURE_SPLIT),
         "without friction only intact particles keep a deviatoric stress");
-  CHECK(fracture_yield(&tr, 1.0, 0.383e9, 1e9) == 0.0, "split, no friction: Y = 0");
+  CHECK(fracture_yield(&tr, FRACTURE_SPLIT, 0.383e9, 1e9) == 0.0, "split, no friction: Y = 0");
   struct fracture_params fr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .friction = 0.3};
-  CHECK(fracture_keeps_stress(&fr, 1.0), "with friction split particles keep a deviatoric stress");
-  CHECK(fracture_yield(&fr, 0.99, 0.383e9, 1e9) == 0.383e9, "not yet split: the intact Y");
-  CHECK_CLOSE(fracture_yield(&fr, 1.0, 0.383e9, 1e9), 0.3e9, 1e-15, "split: Y = μp below Y0");
-  CHECK(fracture_yield(&fr, 1.0, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
-  CHECK(fracture_yield(&fr, 1.0, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
+  CHECK(fracture_keeps_stress(&fr, FRACTURE_SPLIT), "with friction split particles keep a deviatoric stress");
+  CHECK(fracture_yield(&fr, FRACTURE_INTACT, 0.383e9, 1e9) == 0.383e9, "not yet split: the intact Y");
+  CHECK_CLOSE(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, 1e9), 0.3e9, 1e-15, "split: Y = μp below Y0");
+  CHECK(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
+  CHECK(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
   test_no_tension();
   test_crack();
   test_cohesive();
+}
+
+/* The explicit fracture state (fracture.h): where a body's damage starts it, the check a
+ * restart makes of a checkpoint's states, and the end of a step moving an intact
+ * particle in tension beyond |σ_c| to split (damage 1, S dropped, its pressure to be
+ * evaluated again). */
+static void test_states(void)
+{
+  struct material mat[3];
+  memset(mat, 0, sizeof mat);
+  mat[0].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9};
+  mat[1].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
+                                         .split = SPLIT_CRACK};
+  mat[2].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
+                                         .energy = 1e4};
+  double d;
+  int32_t st;
+  fracture_start(&mat[0].frac, 1.0, &d, &st);
+  CHECK(d == 1.0 && st == FRACTURE_SPLIT, "start: damage 1 is split (D = %g, state %d)", d, (int)st);
+  fracture_start(&mat[1].frac, 1.0, &d, &st);
+  CHECK(d == 2.0 && st == FRACTURE_SPLIT_AGAIN, "start: split: crack starts split again, no "
+        "crack known (D = %g, state %d)", d, (int)st);
+  fracture_start(&mat[2].frac, 0.3, &d, &st);
+  CHECK(d == 0.3 && st == FRACTURE_OPENING, "start: energy and 0 < D < 1 is opening (state %d)",
+        (int)st);
+  fracture_start(&mat[0].frac, 0.3, &d, &st);
+  CHECK(d == 0.3 && st == FRACTURE_INTACT, "start: D < 1 is intact (state %d)", (int)st);
+
+  struct particles p;
+  particles_init(&p);
+  particles_enable_solid(&p);
+  particles_add(&p, 3);
+  p.n = 3;
+  const double dmg[3] = {1.0, 2.0, 0.5};
+  const int32_t sts[3] = {FRACTURE_SPLIT, FRACTURE_SPLIT_AGAIN, FRACTURE_OPENING};
+  for (size_t i = 0; i < 3; i++) {
+    p.mat[i] = (int32_t)i;
+    p.damage[i] = dmg[i];
+    p.fstate[i] = sts[i];
+  }
+  CHECK(fracture_check_states(&p, mat) == (size_t)-1, "check: states that agree pass");
+  const struct {
+    size_t i;
+    int32_t st;
+    double d;
+    const char *what;
+  } bad[] = {{0, FRACTURE_SPLIT_AGAIN, 2.0, "split again without split: crack"},
+             {0, FRACTURE_OPENING, 0.5, "opening without fracture.energy"},
+             {1, FRACTURE_SPLIT, 0.5, "split with D = 0.5"},
+             {2, FRACTURE_INTACT, 0.5, "intact with an opening's D under fracture.energy"},
+             {2, 7, 0.5, "a state out of range"},
+             {2, -1, 0.5, "a negative state"}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    const int32_t s0 = p.fstate[bad[k].i];
+    const double d0 = p.damage[bad[k].i];
+    p.fstate[bad[k].i] = bad[k].st;
+    p.damage[bad[k].i] = bad[k].d;
+    CHECK(fracture_check_states(&p, mat) == bad[k].i, "check: %s is refused", bad[k].what);
+    p.fstate[bad[k].i] = s0;
+    p.damage[bad[k].i] = d0;
+  }
+
+  /* the end of a step: intact particle 0 in hydrostatic tension 0.5 GPa > |σ_c| splits */
+  p.fstate[0] = FRACTURE_INTACT;
+  p.damage[0] = 0.0;
+  p.p[0] = -0.5e9;
+  for (int k = 0; k < 6; k++) p.S[k][0] = k < 3 ? 1e7 * (k - 1) : 0.0;
+  p.n = 1;
+  const long again = fracture_end_step(&p, mat, 1e-9);
+  double smax = 0.0;
+  for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(p.S[k][0]));
+  CHECK(p.fstate[0] == FRACTURE_SPLIT && p.damage[0] == 1.0 && smax == 0.0 && again == 1,
+        "end of step: tension beyond |σ_c| splits (state %d, D = %g, |S| %g, %ld to evaluate "
+        "again)", (int)p.fstate[0], p.damage[0], smax, again);
+  p.p[0] = -0.3e9;   /* split, below |σ_c|: stays split, still in tension */
+  CHECK(fracture_end_step(&p, mat, 1e-9) == 1 && p.fstate[0] == FRACTURE_SPLIT,
+        "end of step: a split particle stays split");
+  particles_free(&p);
 }
 
 int main(void)
@@ -434,5 +520,6 @@ int main(void)
   test_rate();
   test_return();
   test_fracture();
+  test_states();
   return test_finish();
 }
