@@ -30,23 +30,27 @@ static const struct {
     {"restart", "  hvsph restart RUNDIR [--set KEY=VALUE]... [--threads N] [--quiet] [--force]\n"
                 "      continue a stopped run from RUNDIR/checkpoint.hvc, in RUNDIR; e.g.\n"
                 "      --set time.end=\"60 us\" carries a finished run further\n"},
-    {"bench", "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
-              "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
-              "      elastic-plastic aluminium): particle-steps per second, bytes per particle;\n"
-              "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"},
-    {"materials", "  hvsph materials [NAME]\n"
-                  "      the material library: every entry, or one entry's parameters with units\n"},
-    {"render", "  hvsph render SNAPSHOT.vtu|csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
-               "  hvsph render RUNDIR -o FRAMEDIR [options]\n"
-               "      simulated flash radiograph or particle picture; of a run folder, one\n"
-               "      frame per snapshot for a movie (hvsph render --help)\n"},
+    {"bench",
+     "  hvsph bench [--particles N] [--steps K] [--threads T] [--solid] [--set KEY=VALUE]...\n"
+     "      solver throughput on a uniform lattice of gas (or, with --solid, of\n"
+     "      elastic-plastic aluminium): particle-steps per second, bytes per particle;\n"
+     "      --set changes its case, e.g. --set sph.viscosity.reconstruct=true\n"},
+    {"materials",
+     "  hvsph materials [NAME]\n"
+     "      the material library: every entry, or one entry's parameters with units\n"},
+    {"render",
+     "  hvsph render SNAPSHOT.vtu|csv -o FILE.png [--mode radiograph|particles] [--axis x|y|z] ...\n"
+     "  hvsph render RUNDIR -o FRAMEDIR [options]\n"
+     "      simulated flash radiograph or particle picture; of a run folder, one\n"
+     "      frame per snapshot for a movie (hvsph render --help)\n"},
     {"measure", "  hvsph measure RUNDIR [--case FILE] [--skip-missing] [--quiet]\n"
                 "      take a run's measurements again from its particle snapshots\n"
                 "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"},
-    {"validate", "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
-                 "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
-                 "      run the paper's cases (examples/paper, or --cases DIR; particle counts x S)\n"
-                 "      and compare with its experiments and simulations: DIR/validation.md and .csv\n"},
+    {"validate",
+     "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
+     "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
+     "      run the paper's cases (examples/paper, or --cases DIR; particle counts x S)\n"
+     "      and compare with its experiments and simulations: DIR/validation.md and .csv\n"},
 };
 
 static const char usage_tail[] =
@@ -79,10 +83,10 @@ static const struct {
   int (*main)(int argc, char **argv);
   int own_help;
 } commands[] = {
-    {"run", cli_run, 0},         {"check", cli_check, 0},
-    {"restart", cli_restart, 0}, {"bench", cli_bench, 0},
+    {"run", cli_run, 0},           {"check", cli_check, 0},
+    {"restart", cli_restart, 0},   {"bench", cli_bench, 0},
     {"validate", cli_validate, 0}, {"materials", material_library_main, 1},
-    {"render", cli_render, 1},   {"measure", cli_measure, 1},
+    {"render", cli_render, 1},     {"measure", cli_measure, 1},
 };
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose
@@ -95,7 +99,7 @@ static void wait_policy(char **argv)
 {
   if (getenv("OMP_WAIT_POLICY")) return;
   if (setenv("OMP_WAIT_POLICY", "passive", 1)) return;
-  execv("/proc/self/exe", argv);   /* returns only on failure: go on as we are */
+  execv("/proc/self/exe", argv); /* returns only on failure: go on as we are */
 }
 
 int main(int argc, char **argv)

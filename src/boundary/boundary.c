@@ -52,16 +52,19 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
     for (int s = 0; s < 2; s++) {
       snprintf(key, sizeof key, "domain.boundary.%s", face[d][s]);
       if (has_both && cfg_has(c, key))
-        return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.boundary.%s: give either '%c' or "
-                            "'%s', not both", cfg_where(c, key, where, sizeof where),
-                            face[d][s], "xyz"[d], face[d][s]);
+        return hv_error_set(err, HV_EXIT_INPUT,
+                            "%s: domain.boundary.%s: give either '%c' or "
+                            "'%s', not both",
+                            cfg_where(c, key, where, sizeof where), face[d][s], "xyz"[d],
+                            face[d][s]);
       b->kind[d][s] = both;
       if (!has_both &&
           cfg_get_choice(c, key, bnd_kind_names[BND_OPEN], bnd_kind_names, &b->kind[d][s], err))
         return -1;
     }
     if ((b->kind[d][0] == BND_PERIODIC) != (b->kind[d][1] == BND_PERIODIC))
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.boundary: periodic in %c needs "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: domain.boundary: periodic in %c needs "
                           "both %s and %s periodic",
                           cfg_where(c, "domain.boundary", where, sizeof where), "xyz"[d],
                           face[d][0], face[d][1]);
@@ -70,7 +73,8 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
   if (cfg_get_bool(c, "domain.half_model", &no, &b->half_model, err)) return -1;
   if (b->half_model) {
     if (b->kind[2][0] != BND_OPEN && b->kind[2][0] != BND_SYMMETRY)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.half_model: the z_min face of a half "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: domain.half_model: the z_min face of a half "
                           "model is the symmetry plane z = 0; it cannot be '%s'",
                           cfg_where(c, "domain.half_model", where, sizeof where),
                           bnd_kind_names[b->kind[2][0]]);
@@ -83,7 +87,8 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
       cfg_get_vec3(c, "domain.max", UNIT_LENGTH, NULL, hi, err))
     return -1;
   if (b->half_model && lo[2] != 0.0)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.min: a half model starts at z = 0 "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: domain.min: a half model starts at z = 0 "
                         "(the symmetry plane), not z = %g m",
                         cfg_where(c, "domain.min", where, sizeof where), lo[2]);
   for (int d = 0; d < 3; d++) {
@@ -103,8 +108,10 @@ void boundary_apply(const struct boundary *b, struct particles *p)
     double *x = p->x[d], *v = p->v[d];
     if (b->kind[d][0] == BND_PERIODIC) {
       for (size_t i = 0; i < p->n; i++) {
-        if (x[i] < lo) x[i] += L;
-        else if (x[i] >= hi) x[i] -= L;
+        if (x[i] < lo)
+          x[i] += L;
+        else if (x[i] >= hi)
+          x[i] -= L;
       }
       continue;
     }
@@ -128,10 +135,7 @@ void boundary_apply(const struct boundary *b, struct particles *p)
 }
 
 /* Shear components (bits for xy, yz, xz) reversed by a mirror normal to dimension d. */
-static uint8_t mirror_flip(int d)
-{
-  return d == 0 ? (1u | 4u) : d == 1 ? (1u | 2u) : (2u | 4u);
-}
+static uint8_t mirror_flip(int d) { return d == 0 ? (1u | 4u) : d == 1 ? (1u | 2u) : (2u | 4u); }
 
 static void apply_flip(struct particles *p, size_t g, uint8_t flip)
 {
@@ -172,8 +176,10 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
     const size_t nsrc = p->n + p->n_ghost;
     b->gstart[d] = p->n_ghost;
     if (b->kind[d][0] == BND_PERIODIC && L < 2.0 * width) {
-      snprintf(msg, msglen, "the periodic domain is %.6g m long in %c, less than two "
-               "interaction radii (2 x %.6g m)", L, "xyz"[d], width);
+      snprintf(msg, msglen,
+               "the periodic domain is %.6g m long in %c, less than two "
+               "interaction radii (2 x %.6g m)",
+               L, "xyz"[d], width);
       return -1;
     }
     int make[2];
@@ -184,7 +190,7 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
     for (size_t i = 0; i < nsrc; i++)
       count += (make[0] && p->x[d][i] < lo + width) + (make[1] && p->x[d][i] > hi - width);
     if (count == 0) continue;
-    reserve_ghosts(b, p, count);   /* may move the particle arrays */
+    reserve_ghosts(b, p, count); /* may move the particle arrays */
     const double *x = p->x[d];
     const size_t k0 = p->n_ghost, g0 = nsrc;
     size_t k = k0;
@@ -206,7 +212,7 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
       if (b->kind[d][s] == BND_PERIODIC) {
         b->flip[kk] = prev;
         xd[g] = xd[src] + (s ? -L : L);
-      } else {   /* wall or symmetry plane: mirror; the copy carries the source's
+      } else { /* wall or symmetry plane: mirror; the copy carries the source's
                     (already flipped) values, so flip only the new mirror */
         b->flip[kk] = mflip ^ prev;
         apply_flip(p, g, mflip);
@@ -255,7 +261,7 @@ size_t boundary_absorb(struct boundary *b, struct particles *p)
 
 void boundary_refresh_gradv(const struct boundary *b, size_t n, size_t n_ghost, double *G)
 {
-  for (int d = 0; d < 3; d++) {   /* one dimension's ghosts at a time: see refresh_ghosts */
+  for (int d = 0; d < 3; d++) { /* one dimension's ghosts at a time: see refresh_ghosts */
     const size_t k0 = b->gstart[d], k1 = b->gstart[d + 1] < n_ghost ? b->gstart[d + 1] : n_ghost;
 #pragma omp parallel for schedule(static)
     for (size_t k = k0; k < k1; k++) {
@@ -266,9 +272,18 @@ void boundary_refresh_gradv(const struct boundary *b, size_t n, size_t n_ghost, 
       /* a mirror normal to axis d reverses v_d and x_d, so ∂v_a/∂x_b changes sign when
          exactly one of a, b is d: the off-diagonal pairs whose shear bits the mirrors set
          (bit 0: xy, 1: yz, 2: xz); the diagonal never does */
-      if (flip & 1u) { Gg[1] = -Gg[1]; Gg[3] = -Gg[3]; }
-      if (flip & 2u) { Gg[5] = -Gg[5]; Gg[7] = -Gg[7]; }
-      if (flip & 4u) { Gg[2] = -Gg[2]; Gg[6] = -Gg[6]; }
+      if (flip & 1u) {
+        Gg[1] = -Gg[1];
+        Gg[3] = -Gg[3];
+      }
+      if (flip & 2u) {
+        Gg[5] = -Gg[5];
+        Gg[7] = -Gg[7];
+      }
+      if (flip & 4u) {
+        Gg[2] = -Gg[2];
+        Gg[6] = -Gg[6];
+      }
     }
   }
 }
@@ -280,7 +295,8 @@ void boundary_refresh_ghosts(const struct boundary *b, struct particles *p)
    * one dimension at a time, in parallel within it */
   const size_t n = p->n;
   for (int d = 0; d < 3; d++) {
-    const size_t k0 = b->gstart[d], k1 = b->gstart[d + 1] < p->n_ghost ? b->gstart[d + 1] : p->n_ghost;
+    const size_t k0 = b->gstart[d],
+                 k1 = b->gstart[d + 1] < p->n_ghost ? b->gstart[d + 1] : p->n_ghost;
 #pragma omp parallel for schedule(static)
     for (size_t k = k0; k < k1; k++) {
       const size_t g = n + k, s = b->src[k];

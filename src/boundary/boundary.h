@@ -29,24 +29,24 @@ extern const char *const bnd_kind_names[];
 
 /* What absorbing faces removed, summed over the run. */
 struct absorbed {
-  long n;                /* particles */
-  double mass;           /* [kg] */
-  double mom[3];         /* [kg m/s] */
-  double e_kin, e_int;   /* [J] */
+  long n;              /* particles */
+  double mass;         /* [kg] */
+  double mom[3];       /* [kg m/s] */
+  double e_kin, e_int; /* [J] */
 };
 
 struct boundary {
-  int kind[3][2];        /* [dim][0 = min face, 1 = max face] */
-  int half_model;        /* bodies cut at z = 0, z_min a symmetry plane */
-  int has_box;           /* domain.min/max given */
+  int kind[3][2]; /* [dim][0 = min face, 1 = max face] */
+  int half_model; /* bodies cut at z = 0, z_min a symmetry plane */
+  int has_box;    /* domain.min/max given */
   struct absorbed absorbed;
-  double lo[3], hi[3];   /* [m] domain box */
+  double lo[3], hi[3]; /* [m] domain box */
   size_t cap;
-  uint32_t *src;         /* [ghost] source slot of each ghost */
-  uint8_t *flip;         /* [ghost] shear components reversed by mirrors: bit k for
+  uint32_t *src;    /* [ghost] source slot of each ghost */
+  uint8_t *flip;    /* [ghost] shear components reversed by mirrors: bit k for
                             tensor component T_XY + k (xy, yz, xz) */
-  uint8_t *side;         /* [ghost] the face (0 min, 1 max) it was made for */
-  size_t gstart[4];      /* ghosts made before dimension d's; [3] all of them */
+  uint8_t *side;    /* [ghost] the face (0 min, 1 max) it was made for */
+  size_t gstart[4]; /* ghosts made before dimension d's; [3] all of them */
 };
 
 void boundary_init(struct boundary *b);

@@ -18,11 +18,11 @@
 #include "sim/sim.h"
 
 struct bench_options {
-  long particles;   /* approximate number (a cube of side round(cbrt(N))) */
+  long particles; /* approximate number (a cube of side round(cbrt(N))) */
   long steps;
-  long threads;     /* 0: OpenMP default */
-  int solid;        /* elastic-plastic al-alloy with fracture instead of a gas */
-  const char **sets;   /* --set KEY=VALUE overrides of the benchmark's case */
+  long threads;      /* 0: OpenMP default */
+  int solid;         /* elastic-plastic al-alloy with fracture instead of a gas */
+  const char **sets; /* --set KEY=VALUE overrides of the benchmark's case */
   int nsets;
 };
 
@@ -46,24 +46,28 @@ static int bench_main(const struct bench_options *o)
   double dx = 1.0 / (double)side;
   char yaml[2048];
   if (o->solid)
-    snprintf(yaml, sizeof yaml,
-             "name: bench-solid\n"
-             "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: periodic, y: periodic, z: periodic}}\n"
-             "bodies:\n"
-             "  - {name: block, material: al-alloy, spacing: %.17g,\n"
-             "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
-             "time: {end: 1e30, max_steps: %ld}\n"
-             "output: {vtu: false}\n", dx, o->steps);
+    snprintf(
+        yaml, sizeof yaml,
+        "name: bench-solid\n"
+        "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: periodic, y: periodic, z: periodic}}\n"
+        "bodies:\n"
+        "  - {name: block, material: al-alloy, spacing: %.17g,\n"
+        "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+        "time: {end: 1e30, max_steps: %ld}\n"
+        "output: {vtu: false}\n",
+        dx, o->steps);
   else
-    snprintf(yaml, sizeof yaml,
-             "name: bench\n"
-             "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: periodic, y: periodic, z: periodic}}\n"
-             "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
-             "bodies:\n"
-             "  - {name: gas, material: gas, spacing: %.17g, density: 1, pressure: 1,\n"
-             "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
-             "time: {end: 1e30, max_steps: %ld}\n"
-             "output: {vtu: false}\n", dx, o->steps);
+    snprintf(
+        yaml, sizeof yaml,
+        "name: bench\n"
+        "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: periodic, y: periodic, z: periodic}}\n"
+        "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+        "bodies:\n"
+        "  - {name: gas, material: gas, spacing: %.17g, density: 1, pressure: 1,\n"
+        "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+        "time: {end: 1e30, max_steps: %ld}\n"
+        "output: {vtu: false}\n",
+        dx, o->steps);
   struct hv_error err;
   hv_error_clear(&err);
   struct cfg *c = cfg_load_string(yaml, "bench", &err);
@@ -77,15 +81,15 @@ static int bench_main(const struct bench_options *o)
   memset(&s, 0, sizeof s);
   int status = HV_EXIT_OK;
   if (!c || run_setup(&s, c, &err) || cfg_check_unused(c, &err)) {
-    status = err.code ? err.code : HV_EXIT_RUN;   /* a bad --set: 2 */
+    status = err.code ? err.code : HV_EXIT_RUN; /* a bad --set: 2 */
     goto fail;
   }
   /* small random velocities (deterministic) so that the viscosity branch runs */
-  const double vscale = o->solid ? 1.0 : 0.01;   /* [m/s]: elastic for the solid */
+  const double vscale = o->solid ? 1.0 : 0.01; /* [m/s]: elastic for the solid */
   srand(12345);
   for (size_t i = 0; i < s.p.n; i++)
     for (int k = 0; k < 3; k++) s.p.v[k][i] = vscale * ((double)rand() / RAND_MAX - 0.5);
-  if (step_init(&s, &err) || step_advance(&s, &err)) {   /* warm-up step */
+  if (step_init(&s, &err) || step_advance(&s, &err)) { /* warm-up step */
     status = HV_EXIT_RUN;
     goto fail;
   }
@@ -114,8 +118,9 @@ static int bench_main(const struct bench_options *o)
   printf("us per particle-step %.3f (x %d threads = %.3f core-us)\n",
          1e6 * el / ((double)n * (double)o->steps), omp_get_max_threads(),
          1e6 * el * omp_get_max_threads() / ((double)n * (double)o->steps));
-  printf("bytes per particle   %.0f (solver arrays in use, incl. ghosts and grid), %.0f (peak RSS)\n",
-         (double)arrays / (double)n, rss > 0 ? 1024.0 * (double)rss / (double)n : -1.0);
+  printf(
+      "bytes per particle   %.0f (solver arrays in use, incl. ghosts and grid), %.0f (peak RSS)\n",
+      (double)arrays / (double)n, rss > 0 ? 1024.0 * (double)rss / (double)n : -1.0);
   sim_free(&s);
   cfg_free(c);
   return 0;
@@ -151,17 +156,19 @@ int cli_bench(int argc, char **argv)
   struct bench_options bo = {.particles = 100000, .steps = 10, .threads = 0};
   struct cli_list sets = {hv_calloc((size_t)argc + 1, sizeof *sets.v, "bench arguments"), 0, argc};
   const struct cli_opt opts[] = {
-      {"--particles", NULL, CLI_VALUE, .dest = &bo.particles, .convert = bench_number,
-       .lo = 512, .hi = 2000000000L},
+      {"--particles", NULL, CLI_VALUE, .dest = &bo.particles, .convert = bench_number, .lo = 512,
+       .hi = 2000000000L},
       {"--steps", NULL, CLI_VALUE, .dest = &bo.steps, .convert = bench_number, .lo = 1,
        .hi = 1000000},
-      {"--threads", NULL, CLI_VALUE, .dest = &bo.threads, .convert = bench_number,
-       .lo = 1, .hi = 4096},
+      {"--threads", NULL, CLI_VALUE, .dest = &bo.threads, .convert = bench_number, .lo = 1,
+       .hi = 4096},
       {"--solid", NULL, CLI_FLAG, .dest = &bo.solid, .flag = 1},
       {"--set", NULL, CLI_LIST, .eq = 1, .dest = &sets},
   };
-  const struct cli_cmd cmd = {.name = "bench", .opts = opts,
-                              .nopts = (int)(sizeof opts / sizeof opts[0]), .fail = bench_fail};
+  const struct cli_cmd cmd = {.name = "bench",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .fail = bench_fail};
   int st = cli_parse(&cmd, argc, argv);
   if (st == CLI_GO_ON) {
     bo.sets = sets.v;

@@ -38,7 +38,7 @@
  * the grid and caches), and the wall time after which timing stops early: a case of
  * 1e7 particles takes seconds a step on 2 cores. */
 #define CHECK_CALIB_STEPS 3
-#define CHECK_CALIB_WALL 10.0   /* [s] */
+#define CHECK_CALIB_WALL  10.0 /* [s] */
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -151,8 +151,10 @@ static void report_bodies(const struct sim *s, const size_t *first)
       double r = 0.0;
       for (int d = 0; d < 3; d++)
         if (d != fa) r = fmax(r, 0.5 * (bi->hi[d] - bi->lo[d]));
-      snprintf(note, sizeof note, "projectile: %.3g km/s, radius %.4g mm, %.1f particles per "
-               "radius", 1e-3 * speed, 1e3 * r, r / bi->spacing);
+      snprintf(note, sizeof note,
+               "projectile: %.3g km/s, radius %.4g mm, %.1f particles per "
+               "radius",
+               1e-3 * speed, 1e3 * r, r / bi->spacing);
     } else if (ax >= 0) {
       const int one = b;
       double t;
@@ -188,17 +190,17 @@ static void report_measured(const struct sim *s, const struct measure_run *mr, c
     int planes = body_planes(s, bodies, nb, 0, r, mr->axis_y, &thick);
     if (planes == 0) planes = body_planes(s, bodies, nb, 0, 0.0, mr->axis_y, &thick);
     printf("%-16s perforation measured (%s): %d particle layer%s through %.4g mm at the "
-           "impact point\n", s->body[bodies[0]].name, what, planes, planes == 1 ? "" : "s",
-           1e3 * thick);
+           "impact point\n",
+           s->body[bodies[0]].name, what, planes, planes == 1 ? "" : "s", 1e3 * thick);
     if (planes < CHECK_LAYERS_MIN)
       hv_warn("plate '%s' (%s): only %d particle layer%s through its %.4g mm at the impact "
               "point; its perforation is measured, and with fewer than %d layers the answer "
               "follows the lattice more than the physics (two layers of 1.26 mm gave "
               "perforated, not perforated, perforated for 2, 3 and 4 mm spheres): give it a "
               "spacing of at most %.4g mm there (a finer disc joined with part_of, as "
-              "examples/paper/wp1.yaml does)", s->body[bodies[0]].name, what, planes,
-              planes == 1 ? "" : "s", 1e3 * thick, CHECK_LAYERS_MIN,
-              1e3 * thick / CHECK_LAYERS_MIN);
+              "examples/paper/wp1.yaml does)",
+              s->body[bodies[0]].name, what, planes, planes == 1 ? "" : "s", 1e3 * thick,
+              CHECK_LAYERS_MIN, 1e3 * thick / CHECK_LAYERS_MIN);
   }
 }
 
@@ -207,7 +209,7 @@ static void report_measured(const struct sim *s, const struct measure_run *mr, c
 static double time_steps(struct sim *s, int *timed, struct hv_error *err)
 {
   const double w0 = omp_get_wtime();
-  if (step_advance(s, err)) return -1.0;   /* warm-up: the grid, caches, first sums */
+  if (step_advance(s, err)) return -1.0; /* warm-up: the grid, caches, first sums */
   const double w1 = omp_get_wtime();
   *timed = 0;
   while (*timed < CHECK_CALIB_STEPS && omp_get_wtime() - w0 < CHECK_CALIB_WALL &&
@@ -257,10 +259,10 @@ static int report_cost(struct sim *s, struct hv_error *err)
     hv_error_prefix(err, "the case sets up, but its first steps fail: ");
     return -1;
   }
-  const size_t arrays = s->p.touched * particles_bytes_per_particle(&s->p) +
-                        nbr_grid_bytes(&s->grid) +
-                        s->bnd.cap * (sizeof *s->bnd.src + sizeof *s->bnd.flip + sizeof *s->bnd.side) +
-                        sph_cache_bytes(&s->cache);
+  const size_t arrays =
+      s->p.touched * particles_bytes_per_particle(&s->p) + nbr_grid_bytes(&s->grid) +
+      s->bnd.cap * (sizeof *s->bnd.src + sizeof *s->bnd.flip + sizeof *s->bnd.side) +
+      sph_cache_bytes(&s->cache);
   const long rss = peak_rss_kib();
   printf("memory           %.1f MiB in the solver's arrays (%.0f bytes per particle, ghosts and "
          "neighbour grid\n                 included, after %d step%s); peak resident %.1f MiB\n",
@@ -271,8 +273,9 @@ static int report_cost(struct sim *s, struct hv_error *err)
   run_format_duration(wall, sizeof wall, per_step * capped);
   printf("wall time        about %s on this machine with %d thread%s (%d step%s of this case "
          "timed here:\n                 %.3g s a step x %.*g steps; outputs and the impact's "
-         "shorter steps add to it)\n", wall, threads, threads == 1 ? "" : "s", timed,
-         timed == 1 ? "" : "s", per_step, capped < 1e7 ? 7 : 3, capped);
+         "shorter steps add to it)\n",
+         wall, threads, threads == 1 ? "" : "s", timed, timed == 1 ? "" : "s", per_step,
+         capped < 1e7 ? 7 : 3, capped);
   return 0;
 }
 
@@ -308,9 +311,11 @@ int cli_check(int argc, char **argv)
       {"--material", NULL, CLI_LIST, .dest = &swaps},
       {"--threads", NULL, CLI_VALUE, .convert = check_threads, .lo = 1, .hi = 4096},
   };
-  const struct cli_cmd cmd = {.name = "check", .opts = opts,
+  const struct cli_cmd cmd = {.name = "check",
+                              .opts = opts,
                               .nopts = (int)(sizeof opts / sizeof opts[0]),
-                              .positional = &case_path, .fail = check_fail};
+                              .positional = &case_path,
+                              .fail = check_fail};
   int status = cli_parse(&cmd, argc, argv);
   if (status == CLI_GO_ON && !case_path) status = usage_error("missing case file", NULL);
   const char **const set = sets.v, **const swap = swaps.v;
@@ -340,9 +345,9 @@ int cli_check(int argc, char **argv)
   first = hv_calloc((size_t)s.nbody + 1, sizeof *first, "check bodies");
   for (int b = 1; b < s.nbody; b++) first[b] = first[b - 1] + s.body[b - 1].count;
   const int threads = omp_get_max_threads();
-  printf("case %s (%s): %d bod%s, %zu particles%s, %d thread%s\n", case_path, s.case_name,
-         s.nbody, s.nbody == 1 ? "y" : "ies", s.p.n, s.bnd.half_model ? ", half model" : "",
-         threads, threads == 1 ? "" : "s");
+  printf("case %s (%s): %d bod%s, %zu particles%s, %d thread%s\n", case_path, s.case_name, s.nbody,
+         s.nbody == 1 ? "y" : "ies", s.p.n, s.bnd.half_model ? ", half model" : "", threads,
+         threads == 1 ? "" : "s");
   report_bodies(&s, first);
   if (mr.nplate > 0 || mr.nbackwall > 0) {
     printf("\n");

@@ -86,16 +86,19 @@ static int report_missing(const char *dir, const char *ext, const int *snaps, in
     while (j < ns && snaps[j] < k) j++;
     if (j < ns && snaps[j] == k) continue;
     if (!nmiss++) first = k;
-    if (skip) hv_warn("%s/particles_%05d.%s is missing: output %d is not measured (its rows "
-                      "are not in measurements.csv)", dir, k, ext, k);
+    if (skip)
+      hv_warn("%s/particles_%05d.%s is missing: output %d is not measured (its rows "
+              "are not in measurements.csv)",
+              dir, k, ext, k);
   }
   if (!nmiss || skip) return 0;
-  return hv_error_set(err, HV_EXIT_INPUT, "%s/particles_%05d.%s is missing%s%d of the run's %d "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s/particles_%05d.%s is missing%s%d of the run's %d "
                       "outputs %s no snapshot): measurements.csv would lack their rows, so "
                       "nothing is rewritten; restore the snapshot%s, or give --skip-missing "
-                      "to measure the others", dir, first, ext, nt >= 0 ?
-                      " (summary.csv lists it; " : " (", nmiss, nout, nmiss == 1 ? "has" : "have",
-                      nmiss == 1 ? "" : "s");
+                      "to measure the others",
+                      dir, first, ext, nt >= 0 ? " (summary.csv lists it; " : " (", nmiss, nout,
+                      nmiss == 1 ? "has" : "have", nmiss == 1 ? "" : "s");
 }
 
 /* The particles of snapshot spath (number k) belong to the case's bodies and
@@ -106,19 +109,22 @@ static int check_particles(const struct sim *s, const char *spath, int k, const 
 {
   for (size_t i = 0; i < s->p.n; i++)
     if (s->p.body[i] < 0 || s->p.body[i] >= s->nbody || s->p.mat[i] < 0 || s->p.mat[i] >= s->nmat)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: particle id %lld: body %d or material %d is "
-                          "not one of the case's (%s)", spath, (long long)s->p.id[i],
-                          (int)s->p.body[i], (int)s->p.mat[i], casefile);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: particle id %lld: body %d or material %d is "
+                          "not one of the case's (%s)",
+                          spath, (long long)s->p.id[i], (int)s->p.body[i], (int)s->p.mat[i],
+                          casefile);
   if (k != 0) return 0;
   size_t cnt[sizeof s->body / sizeof s->body[0]] = {0};
   for (size_t i = 0; i < s->p.n; i++) cnt[s->p.body[i]]++;
   for (int b = 0; b < s->nbody; b++)
     if (cnt[b] != s->body[b].count)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %zu particles of body '%s', where %s set up "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %zu particles of body '%s', where %s set up "
                           "by this hvsph gives %zu: the run was set up differently (by another "
                           "version's particle counts, docs/case-files.md 'particles'); measure "
-                          "it with the hvsph that ran it", spath, cnt[b], s->body[b].name,
-                          casefile, s->body[b].count);
+                          "it with the hvsph that ran it",
+                          spath, cnt[b], s->body[b].name, casefile, s->body[b].count);
   return 0;
 }
 
@@ -137,9 +143,9 @@ static void carry_peak(const struct meas_table *old, struct measure_run *mr, dou
 /* Snapshot k of the run in dir measured, its files written into stage. Returns 1
  * measured, 0 skipped (not one of the run's outputs), -1 failed with err set. */
 static int measure_snapshot(struct sim *s, struct measure_run *mr, const struct meas_table *old,
-                            const char *dir, const char *ext, int k, const double *times,
-                            int nt, const char *stage, const char *const *matnames,
-                            const char *casefile, int quiet, struct hv_error *err)
+                            const char *dir, const char *ext, int k, const double *times, int nt,
+                            const char *stage, const char *const *matnames, const char *casefile,
+                            int quiet, struct hv_error *err)
 {
   char spath[4400];
   snprintf(spath, sizeof spath, "%s/particles_%05d.%s", dir, k, ext);
@@ -148,15 +154,16 @@ static int measure_snapshot(struct sim *s, struct measure_run *mr, const struct 
   if ((nt < 0 || k < nt) && io_read_particles(spath, &s->p, &t, err)) return -1;
   if (!io_snapshot_in_run(k, t, times, nt)) {
     hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
-            "folder): skipped", spath);
+            "folder): skipped",
+            spath);
     return 0;
   }
   if (check_particles(s, spath, k, casefile, err)) return -1;
   s->t = isfinite(t) ? t : 0.0;
-  if (k > 0) measure_run_step(mr, s);   /* as a run: no step before snapshot 0 */
+  if (k > 0) measure_run_step(mr, s); /* as a run: no step before snapshot 0 */
   carry_peak(old, mr, s->t);
   const int mrc = measure_run_output(mr, s, k, stage, matnames, err);
-  if (mrc == MEASURE_FAILED_DATA) {   /* the snapshot's particles, not the run: bad input */
+  if (mrc == MEASURE_FAILED_DATA) { /* the snapshot's particles, not the run: bad input */
     err->code = HV_EXIT_INPUT;
     hv_error_prefix(err, "%s: ", spath);
   }
@@ -178,8 +185,10 @@ static int set_up(const char *casefile, struct cfg *c, struct sim *s, struct mea
   hv_log_level = level;
   if (bad || measure_run_read(mr, s, c, err) || cfg_check_unused(c, err)) return -1;
   if (!mr->any)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: the case has no 'measure' section: nothing "
-                        "to measure (docs/case-files.md)", casefile);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: the case has no 'measure' section: nothing "
+                        "to measure (docs/case-files.md)",
+                        casefile);
   return 0;
 }
 
@@ -229,9 +238,12 @@ int cli_measure(int argc, char **argv)
       {"--quiet", "-q", CLI_FLAG, .dest = &quiet, .flag = 1},
       {"--skip-missing", NULL, CLI_FLAG, .dest = &skip_missing, .flag = 1},
   };
-  const struct cli_cmd cmd = {.name = "measure", .opts = opts,
-                              .nopts = (int)(sizeof opts / sizeof opts[0]), .positional = &dir,
-                              .fail = measure_fail, .help = usage};
+  const struct cli_cmd cmd = {.name = "measure",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .positional = &dir,
+                              .fail = measure_fail,
+                              .help = usage};
   const int st = cli_parse(&cmd, argc, argv);
   if (st != CLI_GO_ON) return st;
   if (!dir) {
@@ -247,7 +259,7 @@ int cli_measure(int argc, char **argv)
   meas_table_init(&mr.table);
   int *snaps = NULL;
   double *times = NULL;
-  struct meas_table old;   /* the earlier measurements.csv: its peak pressures */
+  struct meas_table old; /* the earlier measurements.csv: its peak pressures */
   meas_table_init(&old);
   struct cfg *c = NULL;
   int status = HV_EXIT_OK;
@@ -268,7 +280,7 @@ int cli_measure(int argc, char **argv)
   struct hv_error ignored;
   char mpath[4400];
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
-  meas_table_read(&old, mpath, &ignored);   /* none: no earlier peak pressures */
+  meas_table_read(&old, mpath, &ignored); /* none: no earlier peak pressures */
   /* the new files go to a hidden folder of their own and replace the run's only when
      every snapshot has been measured: a snapshot that fails leaves the earlier
      measurements.csv (and its peak pressures) and fragment files as they were */
@@ -282,8 +294,8 @@ int cli_measure(int argc, char **argv)
   for (int i = 0; i < s.nmat; i++) matnames[i] = s.mat[i].name;
   int measured = 0;
   for (int j = 0; j < ns; j++) {
-    const int rc = measure_snapshot(&s, &mr, &old, dir, ext, snaps[j], times, nt, stage,
-                                    matnames, casefile, quiet, &err);
+    const int rc = measure_snapshot(&s, &mr, &old, dir, ext, snaps[j], times, nt, stage, matnames,
+                                    casefile, quiet, &err);
     if (rc < 0) goto fail;
     measured += rc;
   }

@@ -7,7 +7,7 @@
 int cli_long(const char *s, long lo, long hi, long *out)
 {
   char *end;
-  double v = strtod(s, &end);  /* accepts 1e6 */
+  double v = strtod(s, &end); /* accepts 1e6 */
   if (end == s || *end || v < (double)lo || v > (double)hi || v != (double)(long)v) return -1;
   *out = (long)v;
   return 0;

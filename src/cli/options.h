@@ -27,14 +27,14 @@ struct cli_list {
 };
 
 enum cli_kind {
-  CLI_FLAG,     /* no value: dest (int) is set to .flag */
-  CLI_VALUE,    /* one value, the last one given wins: dest (const char *) holds it, or
+  CLI_FLAG,    /* no value: dest (int) is set to .flag */
+  CLI_VALUE,   /* one value, the last one given wins: dest (const char *) holds it, or
                    .convert turns it into dest */
-  CLI_LIST,     /* repeatable, one value each time: appended to dest (struct cli_list) */
-  CLI_WORDS,    /* the arguments that follow, up to the next one starting with '-':
+  CLI_LIST,    /* repeatable, one value each time: appended to dest (struct cli_list) */
+  CLI_WORDS,   /* the arguments that follow, up to the next one starting with '-':
                    appended to dest (struct cli_list); none is CLI_NO_VALUE */
-  CLI_REFUSED,  /* an option of a sibling command that this one refuses: CLI_REFUSE */
-  CLI_HELP,     /* prints the command's help to standard output: exit status 0 */
+  CLI_REFUSED, /* an option of a sibling command that this one refuses: CLI_REFUSE */
+  CLI_HELP,    /* prints the command's help to standard output: exit status 0 */
 };
 
 struct cli_opt;
@@ -42,17 +42,17 @@ struct cli_cmd;
 
 /* Turns an option's value into o->dest; opt is the option as written. Returns
  * CLI_GO_ON, or an exit status after printing its own message. */
-typedef int (*cli_convert_fn)(const struct cli_cmd *c, const struct cli_opt *o,
-                              const char *opt, const char *val);
+typedef int (*cli_convert_fn)(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                              const char *val);
 
 struct cli_opt {
-  const char *name, *alias;  /* "--output", "-o" (alias NULL when none) */
+  const char *name, *alias; /* "--output", "-o" (alias NULL when none) */
   enum cli_kind kind;
-  int eq;                    /* "--name=value" is accepted as well as "--name value" */
-  void *dest;                /* where the value goes (by kind, above) */
-  int flag;                  /* CLI_FLAG: the value stored (1, or 0 for a --no-... flag) */
-  cli_convert_fn convert;    /* CLI_VALUE: NULL stores the value itself */
-  long lo, hi;               /* a range for convert, where it has one */
+  int eq;                 /* "--name=value" is accepted as well as "--name value" */
+  void *dest;             /* where the value goes (by kind, above) */
+  int flag;               /* CLI_FLAG: the value stored (1, or 0 for a --no-... flag) */
+  cli_convert_fn convert; /* CLI_VALUE: NULL stores the value itself */
+  long lo, hi;            /* a range for convert, where it has one */
 };
 
 /* The mistakes cli_parse finds; arg is the argument as written (the option's name
@@ -67,17 +67,17 @@ enum cli_error {
 };
 
 struct cli_cmd {
-  const char *name;               /* "run": for the messages */
+  const char *name; /* "run": for the messages */
   const struct cli_opt *opts;
   int nopts;
-  const char **positional;        /* the one positional argument (NULL: none taken) */
-  int eq_strict;                  /* every "--name=value" is split: one whose name is a
+  const char **positional; /* the one positional argument (NULL: none taken) */
+  int eq_strict;           /* every "--name=value" is split: one whose name is a
                                      flag or unknown is CLI_TAKES_NO_VALUE (render);
                                      else only the options with .eq are */
-  int lone_dash;                  /* "-" is a positional argument, not an option */
+  int lone_dash;           /* "-" is a positional argument, not an option */
   /* prints the message of a mistake; returns the exit status */
   int (*fail)(const struct cli_cmd *c, enum cli_error e, const char *arg);
-  void (*help)(FILE *f);          /* CLI_HELP */
+  void (*help)(FILE *f); /* CLI_HELP */
 };
 
 /* Walks argv (the arguments after the command's name) against c's table, storing each

@@ -24,27 +24,28 @@
 
 static void render_usage(FILE *f)
 {
-  fprintf(f,
-          "usage: hvsph render SNAPSHOT.vtu|SNAPSHOT.csv -o FILE.png [options]\n"
-          "       hvsph render RUNDIR -o FRAMEDIR [options]\n"
-          "  RUNDIR                        a run's output folder: each of its snapshots becomes\n"
-          "                                FRAMEDIR/frame_NNNNN.png, all framed and coloured alike\n"
-          "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
-          "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
-          "                                and y up (along z), x and z (along y), y and z (along x)\n"
-          "  --color material|damage|velocity|pressure|density|alpha|dt   particles mode (default\n"
-          "                                material; alpha: the viscosity switch's coefficient;\n"
-          "                                dt: the time step each particle allows, log scale)\n"
-          "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
-          "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
-          "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
-          "  --mu M|auto                   film mass attenuation [m2/kg] (default auto: the lower\n"
-          "                                quartile of the material's areal densities at T = 1/2)\n"
-          "  --range LO,HI                 colour range of the quantity (units allowed)\n"
-          "  --no-labels                   no body names on the picture (default: each body's\n"
-          "                                name from the run's used_parameters.yaml where it fits)\n"
-          "  --quiet, -q                   no line per picture written (warnings and errors only)\n"
-          "see docs/rendering.md\n");
+  fprintf(
+      f,
+      "usage: hvsph render SNAPSHOT.vtu|SNAPSHOT.csv -o FILE.png [options]\n"
+      "       hvsph render RUNDIR -o FRAMEDIR [options]\n"
+      "  RUNDIR                        a run's output folder: each of its snapshots becomes\n"
+      "                                FRAMEDIR/frame_NNNNN.png, all framed and coloured alike\n"
+      "  --mode radiograph|particles   simulated flash x-ray (default) or particle discs\n"
+      "  --axis x|y|z                  line of sight (default z); the picture shows x right\n"
+      "                                and y up (along z), x and z (along y), y and z (along x)\n"
+      "  --color material|damage|velocity|pressure|density|alpha|dt   particles mode (default\n"
+      "                                material; alpha: the viscosity switch's coefficient;\n"
+      "                                dt: the time step each particle allows, log scale)\n"
+      "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
+      "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
+      "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
+      "  --mu M|auto                   film mass attenuation [m2/kg] (default auto: the lower\n"
+      "                                quartile of the material's areal densities at T = 1/2)\n"
+      "  --range LO,HI                 colour range of the quantity (units allowed)\n"
+      "  --no-labels                   no body names on the picture (default: each body's\n"
+      "                                name from the run's used_parameters.yaml where it fits)\n"
+      "  --quiet, -q                   no line per picture written (warnings and errors only)\n"
+      "see docs/rendering.md\n");
 }
 
 /* "a,b,c" -> n quantities of dimension dim. */
@@ -106,8 +107,8 @@ static int fail_usage(const char *fmt, ...)
 
 static const char *const modes[] = {"radiograph", "particles"};
 static const char *const axes[] = {"x", "y", "z"};
-static const char *const colors[] = {"material", "damage", "velocity", "pressure", "density",
-                                     "alpha", "dt"};
+static const char *const colors[] = {"material", "damage", "velocity", "pressure",
+                                     "density",  "alpha",  "dt"};
 
 /* The mistakes on render's command line, in its words. */
 static int render_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
@@ -151,7 +152,8 @@ static int set_color(const struct cli_cmd *c, const struct cli_opt *o, const cha
   const int k = pick(val, colors, 7);
   if (k < 0)
     return fail_usage("--color must be material, damage, velocity, pressure, density, alpha "
-                      "or dt, not '%s'", val);
+                      "or dt, not '%s'",
+                      val);
   *(enum render_color *)o->dest = (enum render_color)k;
   return CLI_GO_ON;
 }
@@ -199,8 +201,8 @@ static int set_mu(const struct cli_cmd *c, const struct cli_opt *o, const char *
 
 /* What the options say together: a snapshot or a run folder (*is_series), -o for it,
  * and --range for the colour quantity. Returns CLI_GO_ON or the exit status. */
-static int check_args(const char *in, const char *out, const char *range,
-                      struct render_options *o, int *is_series)
+static int check_args(const char *in, const char *out, const char *range, struct render_options *o,
+                      int *is_series)
 {
   char msg[512] = "";
   if (!in) return fail_usage("%s", "missing snapshot file");
@@ -210,22 +212,26 @@ static int check_args(const char *in, const char *out, const char *range,
   const size_t olen = strlen(out);
   if (series && olen >= 4 && !strcmp(out + olen - 4, ".png"))
     return fail_usage("'%s' is a run folder: -o names the folder of its frames, not a .png "
-                      "file", in);
+                      "file",
+                      in);
   if (range) {
-    static const enum unit_dim dim[] = {
-        [RENDER_COLOR_MATERIAL] = UNIT_NONE,    [RENDER_COLOR_DAMAGE] = UNIT_NONE,
-        [RENDER_COLOR_VELOCITY] = UNIT_VELOCITY, [RENDER_COLOR_PRESSURE] = UNIT_PRESSURE,
-        [RENDER_COLOR_DENSITY] = UNIT_DENSITY,  [RENDER_COLOR_ALPHA] = UNIT_NONE,
-        [RENDER_COLOR_DT] = UNIT_TIME};
+    static const enum unit_dim dim[] = {[RENDER_COLOR_MATERIAL] = UNIT_NONE,
+                                        [RENDER_COLOR_DAMAGE] = UNIT_NONE,
+                                        [RENDER_COLOR_VELOCITY] = UNIT_VELOCITY,
+                                        [RENDER_COLOR_PRESSURE] = UNIT_PRESSURE,
+                                        [RENDER_COLOR_DENSITY] = UNIT_DENSITY,
+                                        [RENDER_COLOR_ALPHA] = UNIT_NONE,
+                                        [RENDER_COLOR_DT] = UNIT_TIME};
     if (o->mode != RENDER_PARTICLES || o->color == RENDER_COLOR_MATERIAL)
       return fail_usage("%s", "--range needs --mode particles and a --color quantity");
-    if (parse_list(range, 2, dim[o->color], o->range, msg, sizeof msg) || !(o->range[0] < o->range[1])) {
-      fprintf(stderr, "hvsph render: --range '%s': %s\n", range, msg[0] ? msg : "low end must be below high end");
+    if (parse_list(range, 2, dim[o->color], o->range, msg, sizeof msg) ||
+        !(o->range[0] < o->range[1])) {
+      fprintf(stderr, "hvsph render: --range '%s': %s\n", range,
+              msg[0] ? msg : "low end must be below high end");
       return HV_EXIT_USAGE;
     }
-    if (o->color == RENDER_COLOR_DT) {   /* given as times, coloured by their log10 */
-      if (!(o->range[0] > 0.0))
-        return fail_usage("--range '%s': time steps are positive", range);
+    if (o->color == RENDER_COLOR_DT) { /* given as times, coloured by their log10 */
+      if (!(o->range[0] > 0.0)) return fail_usage("--range '%s': time steps are positive", range);
       o->range[0] = log10(o->range[0]);
       o->range[1] = log10(o->range[1]);
     }
@@ -288,9 +294,13 @@ int cli_render(int argc, char **argv)
       {"--mu", NULL, CLI_VALUE, .eq = 1, .dest = &o.mu, .convert = set_mu},
       {"--range", NULL, CLI_VALUE, .eq = 1, .dest = &range},
   };
-  const struct cli_cmd cmd = {.name = "render", .opts = opts,
-                              .nopts = (int)(sizeof opts / sizeof opts[0]), .positional = &in,
-                              .eq_strict = 1, .lone_dash = 1, .fail = render_fail,
+  const struct cli_cmd cmd = {.name = "render",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .positional = &in,
+                              .eq_strict = 1,
+                              .lone_dash = 1,
+                              .fail = render_fail,
                               .help = render_usage};
   int series = 0, st = cli_parse(&cmd, argc, argv);
   if (st == CLI_GO_ON) st = check_args(in, out, range, &o, &series);

@@ -46,7 +46,8 @@ static int run_or_restart(int argc, char **argv, int restart)
       {"--output", "-o", CLI_VALUE, .dest = &ro.outdir},
       {"--set", NULL, CLI_LIST, .eq = 1, .dest = &sets},
       {"--material", NULL, CLI_LIST, .dest = &swaps},
-      {"--threads", NULL, CLI_VALUE, .dest = &ro.threads, .convert = run_threads, .lo = 1, .hi = 4096},
+      {"--threads", NULL, CLI_VALUE, .dest = &ro.threads, .convert = run_threads, .lo = 1,
+       .hi = 4096},
       {"--quiet", "-q", CLI_FLAG, .dest = &ro.quiet, .flag = 1},
       {"--overwrite", NULL, CLI_FLAG, .dest = &ro.overwrite, .flag = 1},
       {"--force", NULL, CLI_FLAG, .dest = &ro.force, .flag = 1},
@@ -54,7 +55,8 @@ static int run_or_restart(int argc, char **argv, int restart)
   const struct cli_opt restart_opts[] = {
       {"--set", NULL, CLI_LIST, .eq = 1, .dest = &sets},
       {"--material", NULL, CLI_REFUSED, .dest = NULL},
-      {"--threads", NULL, CLI_VALUE, .dest = &ro.threads, .convert = run_threads, .lo = 1, .hi = 4096},
+      {"--threads", NULL, CLI_VALUE, .dest = &ro.threads, .convert = run_threads, .lo = 1,
+       .hi = 4096},
       {"--quiet", "-q", CLI_FLAG, .dest = &ro.quiet, .flag = 1},
       {"--force", NULL, CLI_FLAG, .dest = &ro.force, .flag = 1},
   };

@@ -37,23 +37,23 @@
 #include "run/runfolder.h"
 #include "version.h"
 
-#define VAL_MAX_CASES 64
-#define VAL_MAX_ROWS 512
+#define VAL_MAX_CASES     64
+#define VAL_MAX_ROWS      512
 #define VAL_MAX_OVERRIDES 32
 
 struct val_row {
   char cas[64], quantity[64], object[64], unit[16], note[256];
-  double sim, exp, paper, paper_lo, paper_hi;  /* NaN: none */
+  double sim, exp, paper, paper_lo, paper_hi; /* NaN: none */
   int approx;
-  int in_mean;      /* counted in the mean error (0: another reading of a value already counted) */
+  int in_mean; /* counted in the mean error (0: another reading of a value already counted) */
 };
 
 struct val_case {
   char name[64];
-  double runtime;   /* [s] wall clock, NaN if not run now */
-  int segments;     /* rows of its run_segments.csv (runs and restarts); 0: none */
+  double runtime; /* [s] wall clock, NaN if not run now */
+  int segments;   /* rows of its run_segments.csv (runs and restarts); 0: none */
   long particles;
-  int status;       /* exit status of the run (0 ok, -1 not run) */
+  int status; /* exit status of the run (0 ok, -1 not run) */
 };
 
 /* The row (quantity, object) at time `time` (bitwise), or NULL. */
@@ -62,8 +62,7 @@ static const struct meas_row *row_at(const struct meas_table *t, const char *qua
 {
   for (size_t k = 0; k < t->n; k++) {
     const struct meas_row *r = &t->rows[k];
-    if (r->time == time && !strcmp(r->quantity, quantity) && !strcmp(r->object, object))
-      return r;
+    if (r->time == time && !strcmp(r->quantity, quantity) && !strcmp(r->object, object)) return r;
   }
   return NULL;
 }
@@ -73,8 +72,8 @@ static const struct meas_row *row_at(const struct meas_table *t, const char *qua
  * most mass: its leading edge still short of the next plate by 5 % of the gap
  * (cloud_lead_distance < 0.95 cloud_gap; debris that has reached the plate piles up
  * there at rest and is still inside the cloud's region); NaN if absent. */
-static double pick_measurement(const struct meas_table *t, const char *quantity,
-                               const char *object, char *unit, size_t ulen)
+static double pick_measurement(const struct meas_table *t, const char *quantity, const char *object,
+                               char *unit, size_t ulen)
 {
   double v = NAN, best_time = NAN;
   if (!strncmp(quantity, "cloud_", 6)) {
@@ -85,7 +84,7 @@ static double pick_measurement(const struct meas_table *t, const char *quantity,
         continue;
       const struct meas_row *lead = row_at(t, "cloud_lead_distance", object, r->time);
       const struct meas_row *gap = row_at(t, "cloud_gap", object, r->time);
-      if (lead && gap && !(lead->value < 0.95 * gap->value)) continue;   /* arrived */
+      if (lead && gap && !(lead->value < 0.95 * gap->value)) continue; /* arrived */
       best_mass = r->value;
       best_time = r->time;
     }
@@ -177,13 +176,19 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
   snprintf(set1, sizeof set1, "resolution=%.17g", scale);
   const char *sets[VAL_MAX_OVERRIDES + 2] = {set1, "output.csv=true"};
   for (int k = 0; k < ov->nsets; k++) sets[2 + k] = ov->sets[k];
-  struct run_options ro = {.case_path = casefile, .outdir = outdir, .sets = sets,
-                           .nsets = 2 + ov->nsets, .threads = threads, .swaps = ov->swaps,
-                           .nswaps = ov->nswaps, .swaps_lenient = 1, .overwrite = 1};
+  struct run_options ro = {.case_path = casefile,
+                           .outdir = outdir,
+                           .sets = sets,
+                           .nsets = 2 + ov->nsets,
+                           .threads = threads,
+                           .swaps = ov->swaps,
+                           .nswaps = ov->nswaps,
+                           .swaps_lenient = 1,
+                           .overwrite = 1};
   char ckpt[8400];
   restart_path(outdir, ckpt, sizeof ckpt);
-  if (resume && access(ckpt, R_OK) == 0) {   /* continue it (its own resolution) */
-    ro.restart_dir = outdir;   /* its used_parameters.yaml holds the overrides */
+  if (resume && access(ckpt, R_OK) == 0) { /* continue it (its own resolution) */
+    ro.restart_dir = outdir;               /* its used_parameters.yaml holds the overrides */
     ro.nsets = 0;
     ro.nswaps = 0;
     fprintf(stderr, "hvsph validate: %s: continuing the run in %s from its checkpoint\n", name,
@@ -199,8 +204,10 @@ static int run_case(const char *cases, const char *name, const char *outdir, dou
 
 static void fmt_val(char *buf, size_t len, double v, double scale)
 {
-  if (isnan(v)) snprintf(buf, len, "–");
-  else snprintf(buf, len, "%.4g", v * scale);
+  if (isnan(v))
+    snprintf(buf, len, "–");
+  else
+    snprintf(buf, len, "%.4g", v * scale);
 }
 
 /* Display unit for a quantity: mm, km/s, deg, kbar or none, with the factor from SI. */
@@ -226,9 +233,10 @@ static int write_csv(const char *dir, const struct val_row *rows, int nrows, int
   if (atomic_file_open(&af, path, err)) return -1;
   /* a comment line first, as every CSV table of hvsph has (pandas' comment="#" and the
      numpy recipe of docs/output-files.md skip it) */
-  atomic_file_printf(&af, err, "# hvsph %s: validation against the seed paper%s (validation.md)\n"
-               "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n",
-               HVSPH_VERSION, norun ? ", re-read from earlier runs" : "");
+  atomic_file_printf(&af, err,
+                     "# hvsph %s: validation against the seed paper%s (validation.md)\n"
+                     "case,quantity,simulated,experiment,paper_simulation,unit,rel_error\n",
+                     HVSPH_VERSION, norun ? ", re-read from earlier runs" : "");
   for (int k = 0; k < nrows; k++) {
     const struct val_row *r = &rows[k];
     double f;
@@ -238,8 +246,8 @@ static int write_csv(const char *dir, const struct val_row *rows, int nrows, int
     double rel = NAN;
     if (!isnan(r->exp) && r->exp != 0) rel = (r->sim - r->exp) / r->exp;
     atomic_file_printf(&af, err, "%s,%s%s%s,%.6g,%.6g,%.6g,%s,%.4g\n", r->cas, r->quantity,
-                 strchr(r->object, ':') || strcmp(r->object, "") ? ":" : "", r->object,
-                 r->sim * f, r->exp * f, paper * f, u, rel);
+                       strchr(r->object, ':') || strcmp(r->object, "") ? ":" : "", r->object,
+                       r->sim * f, r->exp * f, paper * f, u, rel);
   }
   return atomic_file_commit(&af, err);
 }
@@ -254,13 +262,17 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   snprintf(path, sizeof path, "%s/validation.md", dir);
   if (atomic_file_open(&af, path, err)) return -1;
   if (norun)
-    atomic_file_printf(&af, err, "# Validation against the seed paper\n\nTables re-read by hvsph %s "
-                 "(`--no-run`) from earlier runs; the version, resolution and thread count "
-                 "of each run are in its `used_parameters.yaml` and log.\n\n", HVSPH_VERSION);
+    atomic_file_printf(&af, err,
+                       "# Validation against the seed paper\n\nTables re-read by hvsph %s "
+                       "(`--no-run`) from earlier runs; the version, resolution and thread count "
+                       "of each run are in its `used_parameters.yaml` and log.\n\n",
+                       HVSPH_VERSION);
   else
-    atomic_file_printf(&af, err, "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
-                 "of the paper's (resolution %g), %d thread%s.\n\n", HVSPH_VERSION, scale, scale,
-                 omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s");
+    atomic_file_printf(&af, err,
+                       "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
+                       "of the paper's (resolution %g), %d thread%s.\n\n",
+                       HVSPH_VERSION, scale, scale, omp_get_max_threads(),
+                       omp_get_max_threads() == 1 ? "" : "s");
   if (ov->nsets + ov->nswaps) {
     atomic_file_printf(&af, err, "Every case run with");
     for (int k = 0; k < ov->nswaps; k++)
@@ -268,9 +280,10 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
     for (int k = 0; k < ov->nsets; k++) atomic_file_printf(&af, err, " `--set %s`", ov->sets[k]);
     atomic_file_printf(&af, err, " (the case files otherwise as committed).\n\n");
   }
-  atomic_file_printf(&af, err,
-               "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
-               "|---|---|---|---|---|---|---|---|\n");
+  atomic_file_printf(
+      &af, err,
+      "| case | quantity | hvsph | experiment | paper (KERNEL) | unit | hvsph vs exp. | paper vs exp. |\n"
+      "|---|---|---|---|---|---|---|---|\n");
   double sum_us = 0, sum_paper = 0;
   int n_both = 0;
   for (int k = 0; k < nrows; k++) {
@@ -280,9 +293,12 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
     char s[32], e[32], pp[64], eu[32] = "–", ep[32] = "–";
     fmt_val(s, sizeof s, r->sim, f);
     fmt_val(e, sizeof e, r->exp, f);
-    if (!isnan(r->paper)) fmt_val(pp, sizeof pp, r->paper, f);
-    else if (!isnan(r->paper_lo)) snprintf(pp, sizeof pp, "%.3g–%.3g", r->paper_lo * f, r->paper_hi * f);
-    else snprintf(pp, sizeof pp, "–");
+    if (!isnan(r->paper))
+      fmt_val(pp, sizeof pp, r->paper, f);
+    else if (!isnan(r->paper_lo))
+      snprintf(pp, sizeof pp, "%.3g–%.3g", r->paper_lo * f, r->paper_hi * f);
+    else
+      snprintf(pp, sizeof pp, "–");
     if (!isnan(r->exp) && r->exp != 0 && !isnan(r->sim)) {
       double a = (r->sim - r->exp) / r->exp;
       snprintf(eu, sizeof eu, "%+.1f %%", 100 * a);
@@ -297,32 +313,40 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
       }
     }
     atomic_file_printf(&af, err, "| %s | %s (%s)%s%s | %s | %s%s | %s%s | %s | %s | %s |\n", r->cas,
-                 r->quantity, r->object, r->note[0] ? " ¹" : "", r->in_mean ? "" : " ²", s,
-                 r->approx ? "~" : "", e, r->approx ? "~" : "", pp, u, eu, ep);
+                       r->quantity, r->object, r->note[0] ? " ¹" : "", r->in_mean ? "" : " ²", s,
+                       r->approx ? "~" : "", e, r->approx ? "~" : "", pp, u, eu, ep);
   }
   if (n_both)
-    atomic_file_printf(&af, err, "\nMean |relative error| against the experiments, over the %d "
-                 "quantities where both simulations give a number: hvsph %.1f %%, the paper's "
-                 "KERNEL code %.1f %%. Rows marked ² are a second reading of an experimental "
-                 "value already counted and are left out of the mean.\n", n_both,
-                 100 * sum_us / n_both, 100 * sum_paper / n_both);
-  int noted = 0;   /* the notes' heading only where a row has one */
+    atomic_file_printf(
+        &af, err,
+        "\nMean |relative error| against the experiments, over the %d "
+        "quantities where both simulations give a number: hvsph %.1f %%, the paper's "
+        "KERNEL code %.1f %%. Rows marked ² are a second reading of an experimental "
+        "value already counted and are left out of the mean.\n",
+        n_both, 100 * sum_us / n_both, 100 * sum_paper / n_both);
+  int noted = 0; /* the notes' heading only where a row has one */
   for (int k = 0; k < nrows; k++)
     if (rows[k].note[0])
       atomic_file_printf(&af, err, "%s- %s, %s (%s): %s\n", noted++ ? "" : "\n¹ notes:\n\n",
-                   rows[k].cas, rows[k].quantity, rows[k].object, rows[k].note);
-  atomic_file_printf(&af, err, "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
+                         rows[k].cas, rows[k].quantity, rows[k].object, rows[k].note);
+  atomic_file_printf(
+      &af, err,
+      "\n## Runs\n\n| case | particles | runtime [s] | status | radiograph |\n|---|---|---|---|---|\n");
   for (int k = 0; k < ncase; k++) {
     char rt[64];
-    if (isnan(cs[k].runtime)) snprintf(rt, sizeof rt, "(earlier run)");
+    if (isnan(cs[k].runtime))
+      snprintf(rt, sizeof rt, "(earlier run)");
     else if (cs[k].segments > 1)
       snprintf(rt, sizeof rt, "%.0f (%d segments)", cs[k].runtime, cs[k].segments);
-    else snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
+    else
+      snprintf(rt, sizeof rt, "%.0f", cs[k].runtime);
     atomic_file_printf(&af, err, "| %s | %ld | %s | %s | ![%s](%s/final.png) |\n", cs[k].name,
-                 cs[k].particles, rt,
-                 cs[k].status == 0 ? "ok" : cs[k].status < 0 ? "not run"
-                 : cs[k].status == HV_EXIT_INTERRUPTED ? "interrupted" : "failed", cs[k].name,
-                 cs[k].name);
+                       cs[k].particles, rt,
+                       cs[k].status == 0                     ? "ok"
+                       : cs[k].status < 0                    ? "not run"
+                       : cs[k].status == HV_EXIT_INTERRUPTED ? "interrupted"
+                                                             : "failed",
+                       cs[k].name, cs[k].name);
   }
   return atomic_file_commit(&af, err);
 }
@@ -337,9 +361,9 @@ static int usage(void)
 
 /* validate's command line */
 struct val_args {
-  double scale;                       /* on the particle counts */
-  const char *outdir, *cases;         /* DIR; the case files' folder (NULL: the paper's) */
-  const char *only[VAL_MAX_CASES];    /* --only: the cases run (none: all) */
+  double scale;                    /* on the particle counts */
+  const char *outdir, *cases;      /* DIR; the case files' folder (NULL: the paper's) */
+  const char *only[VAL_MAX_CASES]; /* --only: the cases run (none: all) */
   int nonly;
   int threads, norun, resume;
   struct val_overrides ov;
@@ -395,10 +419,12 @@ static int parse_args(int argc, char **argv, struct val_args *a)
       {"--resume", NULL, CLI_FLAG, .dest = &a->resume, .flag = 1},
       {"--set", NULL, CLI_LIST, .dest = &sets},
       {"--material", NULL, CLI_LIST, .dest = &swaps},
-      {"--only", NULL, CLI_WORDS, .dest = &only},   /* no name: not every case */
+      {"--only", NULL, CLI_WORDS, .dest = &only}, /* no name: not every case */
   };
-  const struct cli_cmd cmd = {.name = "validate", .opts = opts,
-                              .nopts = (int)(sizeof opts / sizeof opts[0]), .fail = val_fail};
+  const struct cli_cmd cmd = {.name = "validate",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .fail = val_fail};
   const int st = cli_parse(&cmd, argc, argv);
   a->ov.nsets = sets.n;
   a->ov.nswaps = swaps.n;
@@ -428,8 +454,7 @@ static int check_only(const struct val_args *a, const char *const *names, int nn
     int found = 0;
     for (int j = 0; j < nnames; j++) found |= !strcmp(names[j], a->only[k]);
     if (!found)
-      return hv_error_set(err, HV_EXIT_INPUT, "validate: no case '%s' in %s", a->only[k],
-                          refpath);
+      return hv_error_set(err, HV_EXIT_INPUT, "validate: no case '%s' in %s", a->only[k], refpath);
   }
   return 0;
 }
@@ -445,10 +470,10 @@ static int check_swaps(const struct val_args *a, const char *const *names, int n
     char cf[8400];
     snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
     struct cfg *cc = cfg_load(cf, err);
-    if (!cc) return -1;   /* a case that cannot be read: said here, not as a swap that took nothing */
+    if (!cc) return -1; /* a case that cannot be read: said here, not as a swap that took nothing */
     struct hv_error serr;
     const int level = hv_log_level;
-    hv_log_level = 1;   /* the runs log their overrides */
+    hv_log_level = 1; /* the runs log their overrides */
     for (int k = 0; k < a->ov.nsets; k++) {
       hv_error_clear(&serr);
       cfg_apply_set(cc, a->ov.sets[k], &serr);
@@ -460,8 +485,10 @@ static int check_swaps(const struct val_args *a, const char *const *names, int n
   }
   for (int k = 0; k < a->ov.nswaps; k++)
     if (!hits[k])
-      return hv_error_set(err, HV_EXIT_INPUT, "validate: --material %s: no body of the "
-                          "selected case(s) in %s has that material", a->ov.swaps[k], casedir);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "validate: --material %s: no body of the "
+                          "selected case(s) in %s has that material",
+                          a->ov.swaps[k], casedir);
   return 0;
 }
 
@@ -484,13 +511,13 @@ static void case_runtime(const char *dir, struct val_case *vc)
 /* A validation under way: the reference, the rows and cases so far. */
 struct val_run {
   struct val_args *a;
-  struct cfg *ref;             /* data/paper_results.yaml */
+  struct cfg *ref; /* data/paper_results.yaml */
   char casedir[4200];
   struct val_row *rows;
   int nrows;
   struct val_case *cs;
   int ncase, failed, interrupted;
-  struct meas_table mt;        /* the measurements of the case at hand */
+  struct meas_table mt; /* the measurements of the case at hand */
 };
 
 /* The rows of case `name`: each quantity of the reference with its experiment's and the
@@ -534,7 +561,7 @@ static int read_rows(struct val_run *v, const char *name, struct hv_error *err)
     if (err->code) return -1;
     char unit[16];
     double val = pick_measurement(&v->mt, r->quantity, r->object, unit, sizeof unit);
-    if (d == UNIT_ANGLE) val *= 3.14159265358979323846 / 180.0;  /* the table writes degrees */
+    if (d == UNIT_ANGLE) val *= 3.14159265358979323846 / 180.0; /* the table writes degrees */
     r->sim = val * sc;
   }
   return 0;
@@ -559,9 +586,10 @@ static int validate_case(struct val_run *v, const char *name, struct hv_error *e
      another case): its run has said what; the same would stop the later cases, and the
      tables of an earlier validation in DIR are kept */
   if (!a->norun && vc->status == HV_EXIT_INPUT) {
-    fprintf(stderr, "hvsph validate: %s: bad input (above): the later cases are not run, "
-                    "%s/validation.md and validation.csv are left as they were\n", name,
-            a->outdir);
+    fprintf(stderr,
+            "hvsph validate: %s: bad input (above): the later cases are not run, "
+            "%s/validation.md and validation.csv are left as they were\n",
+            name, a->outdir);
     return HV_EXIT_INPUT;
   }
   /* Ctrl-C (or SIGTERM) ends the run with its state written and ends the validation
@@ -569,10 +597,10 @@ static int validate_case(struct val_run *v, const char *name, struct hv_error *e
      so far */
   v->interrupted = !a->norun && (vc->status == HV_EXIT_INTERRUPTED || run_interrupted());
   vc->particles = particles_of(dir);
-  if (a->norun) vc->status = vc->particles >= 0 ? 0 : -1;   /* no summary.csv: no run */
+  if (a->norun) vc->status = vc->particles >= 0 ? 0 : -1; /* no summary.csv: no run */
   case_runtime(dir, vc);
   snprintf(png, sizeof png, "%s/final.png", dir);
-  struct hv_error rerr;   /* a warning only: not the validation's error */
+  struct hv_error rerr; /* a warning only: not the validation's error */
   hv_error_clear(&rerr);
   if (render_final(dir, png, &rerr)) hv_warn("%s: no radiograph: %s", name, rerr.msg);
   snprintf(mpath, sizeof mpath, "%s/measurements.csv", dir);
@@ -615,13 +643,14 @@ static int validate(struct val_args *a, struct runfolder_lock *lock)
   meas_table_free(&v.mt);
   cfg_free(v.ref);
   if (st == HV_EXIT_INPUT) return HV_EXIT_INPUT;
-  if (st || write_reports(a->outdir, rows, v.nrows, cs, v.ncase, a->scale, a->norun, &a->ov,
-                          &err))
+  if (st || write_reports(a->outdir, rows, v.nrows, cs, v.ncase, a->scale, a->norun, &a->ov, &err))
     goto fail;
 
-  fprintf(stderr, "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
-                  "validation.csv\n", v.ncase, v.failed,
-          v.interrupted ? ", interrupted (the later cases were not run)" : "", a->outdir);
+  fprintf(stderr,
+          "hvsph validate: %d case(s), %d failed%s; results in %s/validation.md and "
+          "validation.csv\n",
+          v.ncase, v.failed, v.interrupted ? ", interrupted (the later cases were not run)" : "",
+          a->outdir);
   return v.interrupted ? HV_EXIT_INTERRUPTED : v.failed ? HV_EXIT_RUN : 0;
 fail:
   hv_log(0, "%s", err.msg);

@@ -133,8 +133,8 @@ struct builder {
   struct hv_error *err;
   struct anchor *anchors;
   int nanchors, capanchors;
-  long alias_nodes; /* values copied by aliases so far (CFG_ALIAS_MAX_NODES) */
-  int depth;        /* mappings and sequences open (at most CFG_MAX_DEPTH) */
+  long alias_nodes;   /* values copied by aliases so far (CFG_ALIAS_MAX_NODES) */
+  int depth;          /* mappings and sequences open (at most CFG_MAX_DEPTH) */
   char diagtext[512]; /* last diagnostic line (fallback if none collected) */
 };
 
@@ -263,8 +263,8 @@ static int build_map_body(struct builder *b, struct cfg_node *m)
     int kline = event_line(e);
     if (e->type != FYET_SCALAR) {
       fy_parser_event_free(b->fyp, e);
-      return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: mapping keys must be plain names",
-                          b->name, bline(b, kline, at, sizeof at));
+      return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: mapping keys must be plain names", b->name,
+                          bline(b, kline, at, sizeof at));
     }
     char *key = token_text(e->scalar.value);
     fy_parser_event_free(b->fyp, e);
@@ -272,8 +272,8 @@ static int build_map_body(struct builder *b, struct cfg_node *m)
     if (dup >= 0) {
       char first[32] = "";
       if (b->positions) snprintf(first, sizeof first, " (first at line %d)", m->items[dup]->line);
-      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: duplicate key '%s'%s",
-                   b->name, bline(b, kline, at, sizeof at), key, first);
+      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: duplicate key '%s'%s", b->name,
+                   bline(b, kline, at, sizeof at), key, first);
       free(key);
       return -1;
     }
@@ -314,8 +314,8 @@ static struct cfg_node *build_alias(struct builder *b, struct fy_event *e, int l
     if (strcmp(b->anchors[i].name, name)) continue;
     if (b->anchors[i].open) {
       hv_error_set(b->err, HV_EXIT_INPUT,
-                   "%s%s: alias '*%s' inside the value it names (a recursive alias)",
-                   b->name, bline(b, line, at, sizeof at), name);
+                   "%s%s: alias '*%s' inside the value it names (a recursive alias)", b->name,
+                   bline(b, line, at, sizeof at), name);
       free(name);
       return NULL;
     }
@@ -333,8 +333,8 @@ static struct cfg_node *build_alias(struct builder *b, struct fy_event *e, int l
     n->line = n->vline = line;
     return n;
   }
-  hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unknown alias '*%s'",
-               b->name, bline(b, line, at, sizeof at), name);
+  hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unknown alias '*%s'", b->name,
+               bline(b, line, at, sizeof at), name);
   free(name);
   return NULL;
 }
@@ -359,8 +359,8 @@ static struct cfg_node *build_node(struct builder *b, struct fy_event *e)
     int map = e->type == FYET_MAPPING_START;
     if (b->depth == CFG_MAX_DEPTH) { /* deeper than a key path reaches (and the stack) */
       fy_parser_event_free(b->fyp, e);
-      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: values nested more than %d deep",
-                   b->name, bline(b, line, at, sizeof at), CFG_MAX_DEPTH);
+      hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: values nested more than %d deep", b->name,
+                   bline(b, line, at, sizeof at), CFG_MAX_DEPTH);
       return NULL;
     }
     n = cfg_node_new(map ? CFG_MAP : CFG_SEQ, line);
@@ -376,12 +376,11 @@ static struct cfg_node *build_node(struct builder *b, struct fy_event *e)
     if (a >= 0) b->anchors[a].open = 0;
     return n;
   }
-  case FYET_ALIAS:
-    return build_alias(b, e, line);
+  case FYET_ALIAS: return build_alias(b, e, line);
   default:
     fy_parser_event_free(b->fyp, e);
-    hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unexpected YAML event",
-                 b->name, bline(b, line, at, sizeof at));
+    hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: unexpected YAML event", b->name,
+                 bline(b, line, at, sizeof at));
     return NULL;
   }
 }
@@ -396,8 +395,8 @@ static int expect_event(struct builder *b, enum fy_event_type type)
   int line = event_line(e);
   fy_parser_event_free(b->fyp, e);
   if (!ok)
-    return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: only one YAML document is allowed",
-                        b->name, bline(b, line, at, sizeof at));
+    return hv_error_set(b->err, HV_EXIT_INPUT, "%s%s: only one YAML document is allowed", b->name,
+                        bline(b, line, at, sizeof at));
   return 0;
 }
 
@@ -538,8 +537,10 @@ static char *read_file(const char *path, size_t *len, struct hv_error *err)
   }
   if (n > (size_t)CFG_MAX_FILE_BYTES) {
     free(buf);
-    hv_error_set(err, HV_EXIT_INPUT, "case file '%s' grew past %lld bytes (1 MiB) while it "
-                 "was read: is it the right file?", path, CFG_MAX_FILE_BYTES);
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "case file '%s' grew past %lld bytes (1 MiB) while it "
+                 "was read: is it the right file?",
+                 path, CFG_MAX_FILE_BYTES);
     return NULL;
   }
   buf[n] = '\0';
@@ -810,7 +811,7 @@ int cfg_apply_set(struct cfg *c, const char *assignment, struct hv_error *err)
     char parent[1024];
     snprintf(parent, sizeof parent, "%.*s", plen, key);
     const struct cfg_node *pn = cfg_lookup(c, parent, NULL);
-    if (!pn || pn->line == CFG_LINE_SET)   /* itself from an earlier --set */
+    if (!pn || pn->line == CFG_LINE_SET) /* itself from an earlier --set */
       return hv_error_set(err, HV_EXIT_INPUT, "--set %s: '%s' %s", key, parent, why);
     return hv_error_set(err, HV_EXIT_INPUT, "%s: --set %s: '%s' %s",
                         cfg_where(c, parent, where, sizeof where), key, parent, why);
@@ -873,8 +874,7 @@ int cfg_graft(struct cfg *dst, const char *dst_path, struct cfg *src, const char
     return hv_error_set(err, HV_EXIT_INPUT, "%s: bad key path '%s'", dst->name,
                         dst_path ? dst_path : "");
   struct cfg_node *s = (src_path && *src_path) ? cfg_lookup(src, src_path, NULL) : src->root;
-  if (!s)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: no entry '%s'", src->name, src_path);
+  if (!s) return hv_error_set(err, HV_EXIT_INPUT, "%s: no entry '%s'", src->name, src_path);
   if (s->kind != CFG_MAP)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: '%s' must be a mapping of keys, not %s",
                         cfg_where_line(src, s->file, s->line, where, sizeof where), src_path,

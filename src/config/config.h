@@ -30,7 +30,7 @@ int cfg_apply_set(struct cfg *c, const char *assignment, struct hv_error *err);
 
 /* Structure queries (these do not mark anything as used). */
 int cfg_has(struct cfg *c, const char *path);
-int cfg_len(struct cfg *c, const char *path);          /* sequence length, -1 if none */
+int cfg_len(struct cfg *c, const char *path); /* sequence length, -1 if none */
 int cfg_is_map(struct cfg *c, const char *path);
 /* Keys of a mapping in document order; *names valid until cfg_free. Returns count or -1. */
 int cfg_keys(struct cfg *c, const char *path, const char *const **names);
@@ -74,10 +74,9 @@ int cfg_get_vec3(struct cfg *c, const char *path, enum unit_dim dim, const doubl
 /* A sequence of quantities of any length; *out malloc'ed (caller frees). */
 int cfg_get_list(struct cfg *c, const char *path, enum unit_dim dim, double **out, int *n,
                  struct hv_error *err);
-int cfg_get_int(struct cfg *c, const char *path, const long *def, long lo, long hi,
-                long *out, struct hv_error *err);
-int cfg_get_bool(struct cfg *c, const char *path, const int *def, int *out,
-                 struct hv_error *err);
+int cfg_get_int(struct cfg *c, const char *path, const long *def, long lo, long hi, long *out,
+                struct hv_error *err);
+int cfg_get_bool(struct cfg *c, const char *path, const int *def, int *out, struct hv_error *err);
 /* *out valid until cfg_free. */
 int cfg_get_string(struct cfg *c, const char *path, const char *def, const char **out,
                    struct hv_error *err);
@@ -87,8 +86,8 @@ int cfg_get_string(struct cfg *c, const char *path, const char *def, const char 
  * resolved; its checksum). Marks nothing used. */
 void cfg_record_string(struct cfg *c, const char *path, const char *value);
 /* One of `choices` (NULL-terminated); *out is its index. */
-int cfg_get_choice(struct cfg *c, const char *path, const char *def,
-                   const char *const *choices, int *out, struct hv_error *err);
+int cfg_get_choice(struct cfg *c, const char *path, const char *def, const char *const *choices,
+                   int *out, struct hv_error *err);
 
 /* Error for every key in the document never queried: lists them all with lines
  * ("case.yaml:7: unknown key 'sph.etta'"). */

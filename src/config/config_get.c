@@ -113,8 +113,9 @@ static int value_error(struct cfg *c, const struct cfg_node *n, const char *path
  * one or two edits from it (`time: {ennd: 0.02}` for time.end): that key (and *node its
  * value, *want the key asked for), else NULL. The same distance as the unknown-key hints
  * (config_used.c), so the two messages agree on what a misspelling is. */
-static const char *missing_near_miss(struct cfg *c, const char *path, const struct cfg_node *deepest,
-                                     const struct cfg_node **node, const char **want)
+static const char *missing_near_miss(struct cfg *c, const char *path,
+                                     const struct cfg_node *deepest, const struct cfg_node **node,
+                                     const char **want)
 {
   struct path_comp comp[CFG_MAX_DEPTH];
   const int nc = cfg_path_parse(path, comp, CFG_MAX_DEPTH);
@@ -141,7 +142,7 @@ static const char *missing_near_miss(struct cfg *c, const char *path, const stru
       *node = p->items[i];
     }
   }
-  *want = key;   /* the last component runs to the end of the path */
+  *want = key; /* the last component runs to the end of the path */
   return best;
 }
 
@@ -162,8 +163,9 @@ static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node *
   char where[512];
   const struct cfg_node *near;
   const char *want, *near_key = missing_near_miss(c, path, deepest, &near, &want);
-  if (near_key)   /* `time: {ennd: 0.02}`: the misspelt key's line, and the key meant */
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: missing required key '%s': this line has "
+  if (near_key) /* `time: {ennd: 0.02}`: the misspelt key's line, and the key meant */
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: missing required key '%s': this line has "
                         "'%s' instead; did you mean '%s'?",
                         cfg_where_line(c, near->file, near->line, where, sizeof where), path,
                         near_key, want);
@@ -173,9 +175,8 @@ static int fetch(struct cfg *c, const char *path, int has_def, struct cfg_node *
 
 int cfg_scalar_is_null(const struct cfg_node *n)
 {
-  return n->kind == CFG_SCALAR &&
-         (!n->text || (n->plain && (!n->text[0] || !strcmp(n->text, "~") ||
-                                    !strcmp(n->text, "null"))));
+  return n->kind == CFG_SCALAR && (!n->text || (n->plain && (!n->text[0] || !strcmp(n->text, "~") ||
+                                                             !strcmp(n->text, "null"))));
 }
 
 /* The text of a scalar node that has a value. */
@@ -280,7 +281,7 @@ static struct cfg_node *bare_number(struct cfg *c, const char *path, double *v)
   char *end;
   *v = strtod(n->text, &end);
   while (isspace((unsigned char)*end)) end++;
-  return end == n->text || *end || !isfinite(*v) ? NULL : n;   /* a unit, or no number */
+  return end == n->text || *end || !isfinite(*v) ? NULL : n; /* a unit, or no number */
 }
 
 int cfg_is_bare(struct cfg *c, const char *path)
@@ -309,10 +310,12 @@ int cfg_check_typical(struct cfg *c, const char *path, enum unit_dim dim, double
   char a[40], b[40];
   fmt_double(a, sizeof a, lo);
   fmt_double(b, sizeof b, hi);
-  return value_error(c, n, path, err, "the bare number %s is read as %s %s (a number without a "
+  return value_error(c, n, path, err,
+                     "the bare number %s is read as %s %s (a number without a "
                      "unit is SI), outside the %s, %s to %s %s%s%s the value with its unit "
-                     "('%s %s' keeps this one)", n->text, n->text, si, what, a, b, si, guess,
-                     guess[0] ? " Write" : "; write", n->text, si);
+                     "('%s %s' keeps this one)",
+                     n->text, n->text, si, what, a, b, si, guess, guess[0] ? " Write" : "; write",
+                     n->text, si);
 }
 
 /* Reads every entry of a sequence node as a quantity (n entries into v). */

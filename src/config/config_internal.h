@@ -9,8 +9,8 @@
 
 #include "config/config.h"
 
-#define CFG_LINE_SET (-1) /* line of nodes created by --set */
-#define CFG_MAX_DEPTH 64  /* components in a path */
+#define CFG_LINE_SET  (-1) /* line of nodes created by --set */
+#define CFG_MAX_DEPTH 64   /* components in a path */
 
 enum cfg_kind { CFG_SCALAR, CFG_SEQ, CFG_MAP };
 

@@ -145,8 +145,7 @@ static void find_unused(const struct cfg *c, const struct cfg_node *n, const cha
     if (n->kind == CFG_MAP) suggest(c, n, path, n->keys[i], hint, sizeof hint);
     snprintf(line, sizeof line, "%s: unknown %s '%s'%s",
              cfg_where_line(c, ch->file, ch->line, where, sizeof where),
-             n->kind == CFG_MAP ? "key" : "entry",
-             sub, hint);
+             n->kind == CFG_MAP ? "key" : "entry", sub, hint);
     unused_add(u, line);
   }
 }
@@ -307,8 +306,8 @@ int cfg_write_used(struct cfg *c, const char *path, const char *version, struct 
   char tmp[4096];
   const char *slash = strrchr(path, '/');
   const int dirlen = slash ? (int)(slash - path + 1) : 0;
-  if (snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld", dirlen, path, path + dirlen,
-               (long)getpid()) >= (int)sizeof tmp)
+  if (snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld", dirlen, path, path + dirlen, (long)getpid()) >=
+      (int)sizeof tmp)
     return hv_error_set(err, HV_EXIT_INPUT, "cannot write '%s': path too long", path);
   FILE *f = fopen(tmp, "w");
   if (!f) return hv_error_set(err, HV_EXIT_INPUT, "cannot write '%s': %s", path, strerror(errno));

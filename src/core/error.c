@@ -8,7 +8,7 @@
 
 int hv_log_level = 2;
 
-static size_t status_len = 0;   /* see hv_status_line() */
+static size_t status_len = 0; /* see hv_status_line() */
 
 void hv_status_line(size_t len) { status_len = len; }
 

@@ -12,14 +12,14 @@
 
 enum hv_exit {
   HV_EXIT_OK = 0,
-  HV_EXIT_USAGE = 1,   /* bad command line */
-  HV_EXIT_INPUT = 2,   /* bad case file, material, unit, unwritable output folder */
-  HV_EXIT_RUN = 3,     /* a run that failed: NaN, negative density, full disk, internal error */
+  HV_EXIT_USAGE = 1, /* bad command line */
+  HV_EXIT_INPUT = 2, /* bad case file, material, unit, unwritable output folder */
+  HV_EXIT_RUN = 3,   /* a run that failed: NaN, negative density, full disk, internal error */
   HV_EXIT_INTERRUPTED = 130
 };
 
 struct hv_error {
-  int code;            /* one of enum hv_exit; 0 while no error */
+  int code; /* one of enum hv_exit; 0 while no error */
   char msg[2048];
 };
 
@@ -56,7 +56,10 @@ _Noreturn void hv_fatal(const char *file, int line, const char *func, const char
     __attribute__((format(printf, 4, 5)));
 #define HV_FATAL(...) hv_fatal(__FILE__, __LINE__, __func__, __VA_ARGS__)
 /* Always-on check (not compiled out in release builds). */
-#define HV_CHECK(cond, ...) do { if (!(cond)) HV_FATAL(__VA_ARGS__); } while (0)
+#define HV_CHECK(cond, ...)                                                                        \
+  do {                                                                                             \
+    if (!(cond)) HV_FATAL(__VA_ARGS__);                                                            \
+  } while (0)
 
 /* Allocation that never returns NULL: reports the size and exits HV_EXIT_RUN. */
 void *hv_malloc(size_t bytes, const char *what);

@@ -10,9 +10,12 @@
 /* "a directory", "a FIFO"... for a file that is not regular. */
 static const char *kind_of(mode_t m)
 {
-  return S_ISDIR(m) ? "a directory" : S_ISFIFO(m) ? "a FIFO (named pipe)"
-         : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
-         : S_ISSOCK(m) ? "a socket" : "not a regular file";
+  return S_ISDIR(m)    ? "a directory"
+         : S_ISFIFO(m) ? "a FIFO (named pipe)"
+         : S_ISCHR(m)  ? "a character device"
+         : S_ISBLK(m)  ? "a block device"
+         : S_ISSOCK(m) ? "a socket"
+                       : "not a regular file";
 }
 
 /* Refuses st unless it is a regular file within max_bytes. */
@@ -20,14 +23,17 @@ static int check_stat(const struct stat *st, const char *path, const char *what,
                       long long max_bytes, struct hv_error *err)
 {
   if (!S_ISREG(st->st_mode))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s%s'%s' is %s: hvsph reads its input only from "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s%s'%s' is %s: hvsph reads its input only from "
                         "regular files (a FIFO would wait for a writer for ever, a device may "
-                        "never end)", what, *what ? " " : "", path, kind_of(st->st_mode));
+                        "never end)",
+                        what, *what ? " " : "", path, kind_of(st->st_mode));
   if (max_bytes > 0 && (long long)st->st_size > max_bytes)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s%s'%s' is %lld bytes, more than the %lld "
-                        "(%g MiB) hvsph reads%s%s: is it the right file?", what, *what ? " " : "",
-                        path, (long long)st->st_size, max_bytes, (double)max_bytes / 1048576.0,
-                        *what ? " as a " : "", what);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s%s'%s' is %lld bytes, more than the %lld "
+                        "(%g MiB) hvsph reads%s%s: is it the right file?",
+                        what, *what ? " " : "", path, (long long)st->st_size, max_bytes,
+                        (double)max_bytes / 1048576.0, *what ? " as a " : "", what);
   return 0;
 }
 

@@ -6,18 +6,18 @@ size_t hv_utf8_char(const unsigned char *s, size_t len)
   if (len == 0) return 0;
   const unsigned c = s[0];
   if (c < 0x80) return 1;
-  size_t n;                        /* continuation bytes */
-  unsigned lo = 0x80, hi = 0xbf;   /* range of the second byte */
+  size_t n;                      /* continuation bytes */
+  unsigned lo = 0x80, hi = 0xbf; /* range of the second byte */
   if (c >= 0xc2 && c <= 0xdf) {
     n = 1;
   } else if (c >= 0xe0 && c <= 0xef) {
     n = 2;
-    if (c == 0xe0) lo = 0xa0;      /* overlong */
-    if (c == 0xed) hi = 0x9f;      /* surrogates */
+    if (c == 0xe0) lo = 0xa0; /* overlong */
+    if (c == 0xed) hi = 0x9f; /* surrogates */
   } else if (c >= 0xf0 && c <= 0xf4) {
     n = 3;
-    if (c == 0xf0) lo = 0x90;      /* overlong */
-    if (c == 0xf4) hi = 0x8f;      /* beyond U+10FFFF */
+    if (c == 0xf0) lo = 0x90; /* overlong */
+    if (c == 0xf4) hi = 0x8f; /* beyond U+10FFFF */
   } else {
     return 0;
   }

@@ -6,11 +6,11 @@
 #include "particles/particles.h"
 
 struct totals {
-  double mass;      /* [kg] */
-  double mom[3];    /* [kg m/s] */
-  double e_kin;     /* [J] */
-  double e_int;     /* [J] */
-  double e_total;   /* [J] */
+  double mass;    /* [kg] */
+  double mom[3];  /* [kg m/s] */
+  double e_kin;   /* [J] */
+  double e_int;   /* [J] */
+  double e_total; /* [J] */
 };
 
 void diag_totals(const struct particles *p, struct totals *t);

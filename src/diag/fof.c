@@ -31,7 +31,7 @@ void fof_result_free(struct fof_result *r)
 static uint32_t uf_find(uint32_t *parent, uint32_t k)
 {
   while (parent[k] != k) {
-    parent[k] = parent[parent[k]];  /* path halving */
+    parent[k] = parent[parent[k]]; /* path halving */
     k = parent[k];
   }
   return k;
@@ -75,7 +75,7 @@ static void link_pairs(const struct nbr_grid *g, const double *const xs[3], cons
         const int32_t nc = g->nbr_list[kk];
         for (uint32_t jj = g->cell_start[nc]; jj < g->cell_start[nc + 1]; jj++) {
           const uint32_t j = g->order[jj];
-          if (j <= i) continue;  /* each pair once */
+          if (j <= i) continue; /* each pair once */
           const double dx = xi - xs[0][j], dy = yi - xs[1][j], dz = zi - xs[2][j];
           const double reach = hi + hs[j];
           if (dx * dx + dy * dy + dz * dz < reach * reach) uf_union(parent, i, j);
@@ -87,14 +87,14 @@ static void link_pairs(const struct nbr_grid *g, const double *const xs[3], cons
 /* The working arrays of one fof_find: the selection's compact copy (positions, half
  * linking lengths), its union-find parents and its fragments before sorting. */
 struct fof_work {
-  size_t ns;                /* particles selected */
-  uint32_t *sel;            /* their indices in the particles */
-  double *xs[3], *hs;       /* their positions, half linking lengths */
+  size_t ns;          /* particles selected */
+  uint32_t *sel;      /* their indices in the particles */
+  double *xs[3], *hs; /* their positions, half linking lengths */
   double hmin, hmax;
-  uint32_t *parent, *fid;   /* union-find parent; fragment of each, in slot order */
-  size_t nf;                /* fragments */
-  struct fof_fragment *fr;  /* per fragment, in slot order */
-  double *mm;               /* [nf][nmat] mass per material */
+  uint32_t *parent, *fid;  /* union-find parent; fragment of each, in slot order */
+  size_t nf;               /* fragments */
+  struct fof_fragment *fr; /* per fragment, in slot order */
+  double *mm;              /* [nf][nmat] mass per material */
 };
 
 static void fof_work_free(struct fof_work *w)
@@ -128,8 +128,10 @@ static int fof_select(const struct particles *p, const struct fof_params *par,
       free(sel);
       w->sel = NULL;
       fof_result_free(out);
-      return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: linking length %g m of "
-                          "particle %zu must be positive", bi, i);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "friends-of-friends: linking length %g m of "
+                          "particle %zu must be positive",
+                          bi, i);
     }
     if (bi > bmax) bmax = bi;
     sel[ns++] = (uint32_t)i;
@@ -158,7 +160,7 @@ static int fof_link(struct fof_work *w, double b, struct hv_error *err)
   w->parent = hv_malloc((ns + 1) * sizeof *w->parent, "fof parents");
   for (size_t k = 0; k < ns; k++) w->parent[k] = (uint32_t)k;
   int rc = 0;
-  if (ns > 1) {  /* the grid indexes at most 2^21 cells a side: check before building it */
+  if (ns > 1) { /* the grid indexes at most 2^21 cells a side: check before building it */
     for (int d = 0; d < 3 && !rc; d++) {
       double lo = INFINITY, hi = -INFINITY;
       for (size_t k = 0; k < ns; k++) {
@@ -167,19 +169,20 @@ static int fof_link(struct fof_work *w, double b, struct hv_error *err)
       }
       const double cells = (hi - lo) / nbr_cell_size(w->hmin, w->hmax);
       if (!(cells < 2.0e6))
-        rc = hv_error_set(err, HV_EXIT_RUN, "friends-of-friends: the particles span %g m in %c, "
-                          "%g linking lengths of %g m (at most 2e6)", hi - lo, "xyz"[d], cells,
-                          b);
+        rc = hv_error_set(err, HV_EXIT_RUN,
+                          "friends-of-friends: the particles span %g m in %c, "
+                          "%g linking lengths of %g m (at most 2e6)",
+                          hi - lo, "xyz"[d], cells, b);
     }
   }
   if (ns > 1 && !rc) {
     struct nbr_grid g;
     nbr_grid_init(&g);
     char msg[256];
-    if (nbr_grid_build(&g, (const double *const *)w->xs, w->hs, ns,
-                       nbr_cell_size(w->hmin, w->hmax), msg, sizeof msg)) {
-      rc = hv_error_set(err, HV_EXIT_RUN, "friends-of-friends with linking length %g m: %s",
-                        b, msg);
+    if (nbr_grid_build(&g, (const double *const *)w->xs, w->hs, ns, nbr_cell_size(w->hmin, w->hmax),
+                       msg, sizeof msg)) {
+      rc =
+          hv_error_set(err, HV_EXIT_RUN, "friends-of-friends with linking length %g m: %s", b, msg);
     } else {
       link_pairs(&g, (const double *const *)w->xs, w->hs, w->parent);
     }
@@ -191,8 +194,7 @@ static int fof_link(struct fof_work *w, double b, struct hv_error *err)
 /* 3. The fragments labelled in slot order and summed: mass, centre of mass, velocity,
  * mass per material; in a half model one that touches the plane is doubled with its
  * mirror image, the others count twice. */
-static void fof_sum(const struct particles *p, const struct fof_params *par,
-                    struct fof_work *w)
+static void fof_sum(const struct particles *p, const struct fof_params *par, struct fof_work *w)
 {
   const size_t ns = w->ns;
   const uint32_t *sel = w->sel;
@@ -200,7 +202,7 @@ static void fof_sum(const struct particles *p, const struct fof_params *par,
   size_t nf = 0;
   for (size_t k = 0; k < ns; k++) {
     const uint32_t r = uf_find(w->parent, (uint32_t)k);
-    fid[k] = r == k ? (uint32_t)nf++ : fid[r];  /* the root (smallest) comes first */
+    fid[k] = r == k ? (uint32_t)nf++ : fid[r]; /* the root (smallest) comes first */
   }
   w->nf = nf;
   struct fof_fragment *fr = w->fr = hv_calloc(nf + 1, sizeof *fr, "fragments");
@@ -222,7 +224,7 @@ static void fof_sum(const struct particles *p, const struct fof_params *par,
     }
     const int mat = p->mat[i];
     if (mat >= 0 && mat < par->nmat) mm[fid[k] * (size_t)par->nmat + (size_t)mat] += m;
-    if (par->half_model && p->x[2][i] < w->hs[k]) on_plane[fid[k]] = 1;  /* z < b_i/2 */
+    if (par->half_model && p->x[2][i] < w->hs[k]) on_plane[fid[k]] = 1; /* z < b_i/2 */
   }
   for (size_t f = 0; f < nf; f++) {
     struct fof_fragment *q = &fr[f];
@@ -231,7 +233,7 @@ static void fof_sum(const struct particles *p, const struct fof_params *par,
       q->v[d] = q->m > 0 ? q->v[d] / q->m : 0.0;
     }
     q->multiplicity = par->half_model && !on_plane[f] ? 2 : 1;
-    if (on_plane[f]) {  /* one fragment with its mirror image */
+    if (on_plane[f]) { /* one fragment with its mirror image */
       q->m *= 2.0;
       q->x[2] = 0.0;
       q->v[2] = 0.0;
@@ -242,8 +244,7 @@ static void fof_sum(const struct particles *p, const struct fof_params *par,
 }
 
 /* 4. The fragments sorted (frag_cmp) and renumbered into out. */
-static void fof_sort(const struct fof_params *par, const struct fof_work *w,
-                     struct fof_result *out)
+static void fof_sort(const struct fof_params *par, const struct fof_work *w, struct fof_result *out)
 {
   const size_t nf = w->nf;
   const struct fof_fragment *fr = w->fr;
@@ -274,8 +275,10 @@ int fof_find(const struct particles *p, const struct fof_params *par, struct fof
   fof_result_init(out);
   const size_t n = p->n;
   if (!par->b_particle && !(par->b > 0.0 && isfinite(par->b)))
-    return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: linking length %g m must be "
-                        "positive", par->b);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "friends-of-friends: linking length %g m must be "
+                        "positive",
+                        par->b);
   if (par->nmat < 0)
     return hv_error_set(err, HV_EXIT_INPUT, "friends-of-friends: negative material count");
   out->n = n;
@@ -305,20 +308,16 @@ size_t fof_count_min(const struct fof_result *r, size_t nmin)
 }
 
 /* A material name usable as a CSV column: no comma, quote or line break. */
-static int name_ok(const char *s)
-{
-  return s && *s && !strpbrk(s, ",\"\r\n") && strlen(s) < 56;
-}
+static int name_ok(const char *s) { return s && *s && !strpbrk(s, ",\"\r\n") && strlen(s) < 56; }
 
 int fof_write_csv(const char *path, const struct fof_result *r, double time,
-                  const char *const *material_names, const char *comment,
-                  struct hv_error *err)
+                  const char *const *material_names, const char *comment, struct hv_error *err)
 {
   enum { NFIX = 11 };
-  static const char *const fixed[NFIX] = {"rank", "mass", "multiplicity", "count", "x", "y",
-                                          "z", "vx", "vy", "vz", "root_id"};
+  static const char *const fixed[NFIX] = {"rank", "mass", "multiplicity", "count", "x",      "y",
+                                          "z",    "vx",   "vy",           "vz",    "root_id"};
   const int ncols = NFIX + r->nmat;
-  char (*names)[64] = hv_malloc(((size_t)r->nmat + 1) * sizeof *names, "fragment columns");
+  char(*names)[64] = hv_malloc(((size_t)r->nmat + 1) * sizeof *names, "fragment columns");
   const char **cols = hv_malloc((size_t)ncols * sizeof *cols, "fragment columns");
   for (int c = 0; c < NFIX; c++) cols[c] = fixed[c];
   for (int k = 0; k < r->nmat; k++) {
@@ -346,10 +345,11 @@ int fof_write_csv(const char *path, const struct fof_result *r, double time,
   }
   size_t clen = (comment ? strlen(comment) : 0) + 512;
   char *text = hv_malloc(clen, "fragment comment");
-  snprintf(text, clen, "%s%stime %.17g s; friends-of-friends linking length %.17g m; %zu "
+  snprintf(text, clen,
+           "%s%stime %.17g s; friends-of-friends linking length %.17g m; %zu "
            "fragments (%zu in the full picture), largest first; SI units; definitions in "
-           "docs/measurements.md", comment ? comment : "", comment ? "\n" : "", time, r->b,
-           r->nfrag, r->n_full);
+           "docs/measurements.md",
+           comment ? comment : "", comment ? "\n" : "", time, r->b, r->nfrag, r->n_full);
   int rc = 0;
   if (r->nfrag > (size_t)0x7fffffff)
     rc = hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': too many fragments", path);

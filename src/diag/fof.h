@@ -35,40 +35,40 @@
 #include "core/error.h"
 #include "particles/particles.h"
 
-#define FOF_B_FACTOR 1.5  /* documented default: b = 1.5 × initial lattice spacing */
+#define FOF_B_FACTOR 1.5 /* documented default: b = 1.5 × initial lattice spacing */
 
 struct fof_params {
-  double b;                   /* [m] linking length (> 0); used when b_particle is NULL */
-  const double *b_particle;   /* optional [p->n] per-particle linking length [m]: i, j link
+  double b;                  /* [m] linking length (> 0); used when b_particle is NULL */
+  const double *b_particle;  /* optional [p->n] per-particle linking length [m]: i, j link
                                  when r < (b_i + b_j)/2; NULL: b for every particle */
-  const unsigned char *mask;  /* optional [p->n]: only particles with mask[i] != 0 take part;
+  const unsigned char *mask; /* optional [p->n]: only particles with mask[i] != 0 take part;
                                  NULL: every real particle */
-  int nmat;                   /* materials 0 .. nmat-1 get a mass column (others are in m only) */
-  int half_model;             /* 1: only z >= 0 is simulated; report the mirrored full picture */
+  int nmat;                  /* materials 0 .. nmat-1 get a mass column (others are in m only) */
+  int half_model;            /* 1: only z >= 0 is simulated; report the mirrored full picture */
 };
 
 struct fof_fragment {
-  double m;          /* [kg] mass of the fragment (full picture; see multiplicity) */
-  double x[3];       /* [m] centre of mass */
-  double v[3];       /* [m/s] mass-weighted mean velocity (momentum / mass) */
-  size_t count;      /* simulated particles in it (the half model's particles) */
-  size_t root;       /* smallest particle slot in it */
-  int64_t root_id;   /* id of that particle */
-  int multiplicity;  /* fragments of the full picture it stands for: 1, or 2 (mirror twin) */
+  double m;         /* [kg] mass of the fragment (full picture; see multiplicity) */
+  double x[3];      /* [m] centre of mass */
+  double v[3];      /* [m/s] mass-weighted mean velocity (momentum / mass) */
+  size_t count;     /* simulated particles in it (the half model's particles) */
+  size_t root;      /* smallest particle slot in it */
+  int64_t root_id;  /* id of that particle */
+  int multiplicity; /* fragments of the full picture it stands for: 1, or 2 (mirror twin) */
 };
 
 struct fof_result {
-  size_t nfrag;               /* fragments among the simulated particles */
-  struct fof_fragment *frag;  /* [nfrag] largest mass first */
-  int nmat;                   /* material columns */
-  double *mat_mass;           /* [nfrag * nmat] [kg] mass of material k in fragment f at
+  size_t nfrag;              /* fragments among the simulated particles */
+  struct fof_fragment *frag; /* [nfrag] largest mass first */
+  int nmat;                  /* material columns */
+  double *mat_mass;          /* [nfrag * nmat] [kg] mass of material k in fragment f at
                                  mat_mass[f * nmat + k] (full picture, like m) */
-  int32_t *group;             /* [n] fragment of each particle (index into frag), -1: not taken */
-  size_t n;                   /* length of group (p->n at the call) */
-  size_t n_skipped;           /* selected particles with a non-finite position (left out) */
-  size_t n_full;              /* fragments of the full picture: sum of multiplicities */
-  double m_total;             /* [kg] mass of all fragments of the full picture */
-  double b;                   /* [m] linking length used (params.b, or the largest b_i) */
+  int32_t *group;            /* [n] fragment of each particle (index into frag), -1: not taken */
+  size_t n;                  /* length of group (p->n at the call) */
+  size_t n_skipped;          /* selected particles with a non-finite position (left out) */
+  size_t n_full;             /* fragments of the full picture: sum of multiplicities */
+  double m_total;            /* [kg] mass of all fragments of the full picture */
+  double b;                  /* [m] linking length used (params.b, or the largest b_i) */
 };
 
 void fof_result_init(struct fof_result *r);
@@ -94,7 +94,6 @@ size_t fof_count_min(const struct fof_result *r, size_t nmin);
  * (material_names[k], or "mat<k>" where names are NULL). `comment` (may be NULL) is
  * written as "# " lines first, followed by a line giving time [s] and b [m]. */
 int fof_write_csv(const char *path, const struct fof_result *r, double time,
-                  const char *const *material_names, const char *comment,
-                  struct hv_error *err);
+                  const char *const *material_names, const char *comment, struct hv_error *err);
 
 #endif

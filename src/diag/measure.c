@@ -12,7 +12,7 @@
 
 #include "diag/fof.h"
 
-#define MEAS_MAX_CELLS 4096     /* per side of the backwall's column grid */
+#define MEAS_MAX_CELLS    4096 /* per side of the backwall's column grid */
 #define CAVITY_MAX_SLICES 100000000
 
 /* Particle i belongs to the body (body < 0: any), passes the mask and has a finite position. */
@@ -33,9 +33,10 @@ static int geom_ok(const struct meas_geom *g, const char *what, struct hv_error 
 {
   if (!(g->spacing > 0 && isfinite(g->spacing) && isfinite(g->x0) && isfinite(g->yc) &&
         g->thickness >= 0 && isfinite(g->thickness)))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: the geometry needs a positive spacing (%g m), "
-                        "a thickness >= 0 (%g m) and finite x0, yc", what, g->spacing,
-                        g->thickness);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: the geometry needs a positive spacing (%g m), "
+                        "a thickness >= 0 (%g m) and finite x0, yc",
+                        what, g->spacing, g->thickness);
   return 0;
 }
 
@@ -74,7 +75,7 @@ static int cavity_taken(const struct particles *p, size_t i, const struct meas_g
 }
 
 #define CAVITY_MAX_WALL_BINS 50000000
-#define CAVITY_WALL_ANNULI 4000.0
+#define CAVITY_WALL_ANNULI   4000.0
 
 /* Adds w × (the share of [lo, hi] that falls in bin j, bins of width d from 0) to
  * acc[j] for j < n. */
@@ -109,8 +110,10 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
      fragment flung far out is not wall, and the wall lies within the first few hundred */
   const double nbd = fmin(floor((rmax + g->spacing) / dr) + 2.0, CAVITY_WALL_ANNULI);
   if (!(nsd * nbd <= CAVITY_MAX_WALL_BINS))
-    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: %g × %g wall bins; use wider "
-                        "wall_slab or wall_dr", nsd, nbd);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "cavity measurement: %g × %g wall bins; use wider "
+                        "wall_slab or wall_dr",
+                        nsd, nbd);
   const size_t ns = (size_t)nsd, nb = (size_t)nbd;
   double *vol = hv_calloc(ns * nb, sizeof *vol, "cavity wall bins");
   for (size_t i = 0; i < p->n; i++) {
@@ -132,12 +135,12 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
       const double r0 = (double)b * dr, r1 = r0 + dr;
       f[b] /= share * HV_MEAS_PI * (r1 * r1 - r0 * r0) * ds;
     }
-    double rw = (double)nb * dr;  /* no crossing: the wall is beyond the material */
+    double rw = (double)nb * dr; /* no crossing: the wall is beyond the material */
     for (size_t b = 0; b < nb; b++) {
       if (f[b] < par->wall_fill || (b + 1 < nb && f[b + 1] < par->wall_fill)) continue;
       if (b == 0) {
         rw = 0.0;
-      } else {  /* between the centres of annuli b − 1 (below the fill) and b */
+      } else { /* between the centres of annuli b − 1 (below the fill) and b */
         const double f0 = f[b - 1], f1 = f[b];
         const double t = f1 > f0 ? (par->wall_fill - f0) / (f1 - f0) : 1.0;
         rw = ((double)b - 0.5 + fmin(1.0, fmax(0.0, t))) * dr;
@@ -159,14 +162,15 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
 {
   memset(out, 0, sizeof *out);
   if (geom_ok(g, "cavity measurement", err)) return -1;
-  if (!(par->slice > 0 && isfinite(par->slice) && par->footprint >= 0 &&
-        isfinite(par->footprint) && par->r_open >= 0 && isfinite(par->r_open) &&
-        par->v_max > 0 && par->min_count >= 1 && par->min_count <= MEAS_CAVITY_MAX_COUNT &&
-        par->wall_slab > 0 && isfinite(par->wall_slab) && par->wall_dr > 0 &&
-        isfinite(par->wall_dr) && par->wall_fill > 0 && par->wall_fill < 1))
-    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: slice (> 0), footprint, r_open "
+  if (!(par->slice > 0 && isfinite(par->slice) && par->footprint >= 0 && isfinite(par->footprint) &&
+        par->r_open >= 0 && isfinite(par->r_open) && par->v_max > 0 && par->min_count >= 1 &&
+        par->min_count <= MEAS_CAVITY_MAX_COUNT && par->wall_slab > 0 && isfinite(par->wall_slab) &&
+        par->wall_dr > 0 && isfinite(par->wall_dr) && par->wall_fill > 0 && par->wall_fill < 1))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "cavity measurement: slice (> 0), footprint, r_open "
                         "(>= 0), v_max (> 0), min_count (1..%d), wall_slab and wall_dr (> 0) "
-                        "and wall_fill (0..1) out of range", MEAS_CAVITY_MAX_COUNT);
+                        "and wall_fill (0..1) out of range",
+                        MEAS_CAVITY_MAX_COUNT);
   const int K = par->min_count;
   const double dx = par->slice, fp = par->footprint;
   out->slice = dx;
@@ -176,13 +180,14 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   const double xcap = g->thickness > 0 ? g->x0 + g->thickness + 2.0 * g->spacing : (double)INFINITY;
   double xmax = -INFINITY;
   for (size_t i = 0; i < p->n; i++)
-    if (cavity_taken(p, i, g, par) && p->x[0][i] > xmax && p->x[0][i] <= xcap)
-      xmax = p->x[0][i];
-  if (!isfinite(xmax)) return 0;  /* no target material below the surface */
+    if (cavity_taken(p, i, g, par) && p->x[0][i] > xmax && p->x[0][i] <= xcap) xmax = p->x[0][i];
+  if (!isfinite(xmax)) return 0; /* no target material below the surface */
   const double ns = floor((xmax - g->x0) / dx) + 1.0;
   if (!(ns <= CAVITY_MAX_SLICES))
-    return hv_error_set(err, HV_EXIT_INPUT, "cavity measurement: %g slices of %g m; use thicker "
-                        "slices", ns, dx);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "cavity measurement: %g slices of %g m; use thicker "
+                        "slices",
+                        ns, dx);
   const size_t nslice = (size_t)ns;
   double *best = hv_malloc(nslice * (size_t)K * sizeof *best, "cavity slices");
   for (size_t k = 0; k < nslice * (size_t)K; k++) best[k] = INFINITY;
@@ -191,7 +196,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
     size_t k = (size_t)((p->x[0][i] - g->x0) / dx);
     if (k >= nslice) k = nslice - 1;
     double r = radial(p, i, g->yc), *b = best + k * (size_t)K;
-    for (int j = 0; j < K; j++)  /* keep the K smallest, ascending */
+    for (int j = 0; j < K; j++) /* keep the K smallest, ascending */
       if (r < b[j]) {
         const double t = b[j];
         b[j] = r;
@@ -200,7 +205,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   }
   out->nslice = nslice;
   out->r_profile = hv_malloc(nslice * sizeof *out->r_profile, "cavity profile");
-  size_t kc = nslice;  /* first closed slice */
+  size_t kc = nslice; /* first closed slice */
   for (size_t k = 0; k < nslice; k++) {
     const double r = best[k * (size_t)K + (size_t)K - 1];
     out->r_profile[k] = isfinite(r) ? r - fp : (double)INFINITY;
@@ -208,7 +213,7 @@ int measure_cavity(const struct particles *p, const struct meas_geom *g,
   }
   free(best);
   out->nopen = kc;
-  if (kc == 0) return 0;  /* no cavity at the surface */
+  if (kc == 0) return 0; /* no cavity at the surface */
   if (kc == nslice) {
     out->perforated = 1;
     out->L = xmax - g->x0 + fp;
@@ -284,11 +289,11 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
                    struct meas_debris *out, struct hv_error *err)
 {
   memset(out, 0, sizeof *out);
-  if (!(isfinite(par->x_rear) && isfinite(par->yc) && par->margin >= 0 &&
-        isfinite(par->margin) && !isnan(par->x_limit) && par->q_lead > 0 && par->q_lead <= 1 &&
-        par->q_angle > 0 && par->q_angle <= 1 && par->front_fraction >= 0 &&
-        par->front_fraction < 1))
-    return hv_error_set(err, HV_EXIT_INPUT, "debris cloud measurement: x_rear, yc, margin "
+  if (!(isfinite(par->x_rear) && isfinite(par->yc) && par->margin >= 0 && isfinite(par->margin) &&
+        !isnan(par->x_limit) && par->q_lead > 0 && par->q_lead <= 1 && par->q_angle > 0 &&
+        par->q_angle <= 1 && par->front_fraction >= 0 && par->front_fraction < 1))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "debris cloud measurement: x_rear, yc, margin "
                         "(>= 0) must be finite, the quantiles in (0, 1] and the front "
                         "fraction in [0, 1)");
   const double xlo = par->x_rear + par->margin;
@@ -362,22 +367,25 @@ void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_
 }
 
 int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g,
-                              const double *scale, unsigned char *sel, struct hv_error *err)
+                            const double *scale, unsigned char *sel, struct hv_error *err)
 {
   double *b = NULL;
   if (scale) {
     b = hv_malloc((p->n + 1) * sizeof *b, "linking lengths");
     for (size_t i = 0; i < p->n; i++) b[i] = FOF_B_FACTOR * g->spacing * scale[i];
   }
-  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing, .b_particle = b, .mask = sel,
-                          .nmat = 0, .half_model = g->half_model};
+  struct fof_params fp = {.b = FOF_B_FACTOR * g->spacing,
+                          .b_particle = b,
+                          .mask = sel,
+                          .nmat = 0,
+                          .half_model = g->half_model};
   struct fof_result fr;
   fof_result_init(&fr);
   const int rc = fof_find(p, &fp, &fr, err);
   free(b);
   if (rc == 0)
     for (size_t i = 0; i < p->n; i++)
-      if (sel[i] && fr.group[i] != 0) sel[i] = 0;   /* sorted by mass: 0 is the largest */
+      if (sel[i] && fr.group[i] != 0) sel[i] = 0; /* sorted by mass: 0 is the largest */
   fof_result_free(&fr);
   return rc;
 }
@@ -430,7 +438,7 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
   out->crater_depth_local = 0.0;
   const int st = par->local_inner / (4.0 * c) > 1.0 ? (int)(par->local_inner / (4.0 * c)) : 1;
   const int m = (int)ceil(par->local_outer / c) / st * st;
-  const size_t side = (size_t)(2 * (m / st) + 1);   /* the sampled square holds the ring */
+  const size_t side = (size_t)(2 * (m / st) + 1); /* the sampled square holds the ring */
   int *off = hv_malloc(2 * side * side * sizeof *off, "crater ring");
   struct wval *ring = hv_malloc(side * side * sizeof *ring, "crater ring");
   size_t noff = 0;
@@ -442,7 +450,7 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
       off[2 * noff + 1] = db;
       noff++;
     }
-  double best = -INFINITY;   /* stays so (no reading) when the ring holds no sample */
+  double best = -INFINITY; /* stays so (no reading) when the ring holds no sample */
   for (int b = 0; noff && b < nw; b++)
     for (int a = 0; a < nu; a++) {
       const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
@@ -474,12 +482,12 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
 static int backwall_params_ok(const struct meas_backwall_params *par)
 {
   return (par->tol > 0 && isfinite(par->tol) && par->cell > 0 && isfinite(par->cell) &&
-         par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
-         isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
-         par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
-         par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1 &&
-         par->local_inner >= 0 && par->local_outer > par->local_inner &&
-         isfinite(par->local_outer));
+          par->footprint >= 0 && isfinite(par->footprint) && par->margin_front >= 0 &&
+          isfinite(par->margin_front) && par->crater_min >= 0 && isfinite(par->crater_min) &&
+          par->ring > 0 && isfinite(par->ring) && par->area_fraction > 0 &&
+          par->area_fraction <= 1 && par->far_fraction > 0 && par->far_fraction <= 1 &&
+          par->local_inner >= 0 && par->local_outer > par->local_inner &&
+          isfinite(par->local_outer));
 }
 
 /* The wall's particles at or behind xlo: counted, their (u, w) extent (each widened by
@@ -518,7 +526,7 @@ static double far_wall_front(const struct meas_geom *g, const struct meas_backwa
   if (!g->half_model) r_in = fmin(r_in, -lo[1]);
   struct wval *far = NULL;
   size_t nfar = 0;
-  for (int pass = 0; pass < 2 && r_in > 0; pass++) {  /* count, then collect */
+  for (int pass = 0; pass < 2 && r_in > 0; pass++) { /* count, then collect */
     if (pass == 1) {
       if (!nfar) break;
       far = hv_malloc(nfar * sizeof *far, "backwall far wall");
@@ -533,7 +541,7 @@ static double far_wall_front(const struct meas_geom *g, const struct meas_backwa
         nfar++;
       }
   }
-  if (far) shift = wquantile(far, nfar, 0.5);  /* the median (the lower one of two) */
+  if (far) shift = wquantile(far, nfar, 0.5); /* the median (the lower one of two) */
   free(far);
   return shift;
 }
@@ -558,9 +566,9 @@ static double ring_damage(const struct meas_geom *g, const struct meas_backwall_
       const double u = lo[0] + ((double)a + 0.5) * c, w = lo[1] + ((double)b + 0.5) * c;
       const double r = hypot(u, w);
       const size_t q = (size_t)(r / par->ring);
-      int damaged = !isfinite(x) || hit[k];   /* a hole, or damaged material */
+      int damaged = !isfinite(x) || hit[k]; /* a hole, or damaged material */
       if (isfinite(x)) {
-        const double d = x - g->x0 - shift;   /* xf: the particles' front, x − footprint */
+        const double d = x - g->x0 - shift; /* xf: the particles' front, x − footprint */
         if (d > dmax) {
           dmax = d;
           out->crater_pos[0] = u + g->yc;
@@ -578,8 +586,7 @@ static double ring_damage(const struct meas_geom *g, const struct meas_backwall_
     }
   out->r_damage = 0.0;
   for (size_t q = 0; q < nring; q++) {
-    if (!ring_n[2 * q] ||
-        (double)ring_n[2 * q + 1] < par->area_fraction * (double)ring_n[2 * q])
+    if (!ring_n[2 * q] || (double)ring_n[2 * q + 1] < par->area_fraction * (double)ring_n[2 * q])
       break;
     out->r_damage = (double)(q + 1) * par->ring;
   }
@@ -594,7 +601,8 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   memset(out, 0, sizeof *out);
   if (geom_ok(g, "backwall measurement", err)) return -1;
   if (!backwall_params_ok(par))
-    return hv_error_set(err, HV_EXIT_INPUT, "backwall measurement: tol, cell, ring (> 0), "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "backwall measurement: tol, cell, ring (> 0), "
                         "footprint, margin_front and crater_min (>= 0) must be finite, "
                         "area_fraction and far_fraction in (0, 1] and 0 <= local_inner < "
                         "local_outer finite");
@@ -607,14 +615,13 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   unsigned char *col = NULL;
   if (par->attached_only) {
     col = hv_calloc(p->n + 1, 1, "backwall selection");
-    for (size_t i = 0; i < p->n; i++)
-      col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
+    for (size_t i = 0; i < p->n; i++) col[i] = taken(p, i, g->body, par->mask) && p->x[0][i] >= xlo;
     if (meas_keep_largest_piece(p, g, par->scale, col, err)) {
       free(col);
       return -1;
     }
   }
-  if (g->half_model) lo[1] = 0.0;  /* columns on the simulated side suffice: see below */
+  if (g->half_model) lo[1] = 0.0; /* columns on the simulated side suffice: see below */
   double c = par->cell;
   const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
   if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;
@@ -689,10 +696,11 @@ int measure_gas_front(const struct particles *p, const struct meas_gas_params *p
                       struct meas_gas_front *out, struct hv_error *err)
 {
   memset(out, 0, sizeof *out);
-  if (!(par->rho_ref > 0 && isfinite(par->rho_ref) && par->factor > 0 &&
-        isfinite(par->factor) && par->r_axis >= 0 && isfinite(par->origin[0]) &&
-        isfinite(par->origin[1]) && isfinite(par->origin[2])))
-    return hv_error_set(err, HV_EXIT_INPUT, "gas front measurement: rho_ref and factor must be "
+  if (!(par->rho_ref > 0 && isfinite(par->rho_ref) && par->factor > 0 && isfinite(par->factor) &&
+        par->r_axis >= 0 && isfinite(par->origin[0]) && isfinite(par->origin[1]) &&
+        isfinite(par->origin[2])))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "gas front measurement: rho_ref and factor must be "
                         "positive, r_axis >= 0 and the origin finite");
   const double rho_s = par->factor * par->rho_ref;
   size_t on_axis = 0;

@@ -37,12 +37,12 @@
 
 /* Where a plate-like body was and how it was built. */
 struct meas_geom {
-  int body;          /* body index of the plate, block or backwall (< 0: any body) */
-  double x0;         /* [m] original front (impact-side) face: the plane x = x0 */
-  double thickness;  /* [m] original thickness: the body filled x0 <= x <= x0 + thickness */
-  double yc;         /* [m] the impact point is (x0, yc, 0); the axis is y = yc, z = 0 */
-  double spacing;    /* [m] initial lattice spacing Δ of the body */
-  int half_model;    /* 1: only z >= 0 is simulated (symmetry plane z = 0) */
+  int body;         /* body index of the plate, block or backwall (< 0: any body) */
+  double x0;        /* [m] original front (impact-side) face: the plane x = x0 */
+  double thickness; /* [m] original thickness: the body filled x0 <= x <= x0 + thickness */
+  double yc;        /* [m] the impact point is (x0, yc, 0); the axis is y = yc, z = 0 */
+  double spacing;   /* [m] initial lattice spacing Δ of the body */
+  int half_model;   /* 1: only z >= 0 is simulated (symmetry plane z = 0) */
 };
 
 /* The largest friends-of-friends piece of a plate or wall among the particles with
@@ -82,21 +82,21 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  * next one (a single filled annulus of stray particles is passed over). D_wall = 2 max
  * and D_wall_mean = the mean of the wall radius over the slabs that lie wholly within
  * x0 .. x0 + L; 0 when none does. Resolution: about wall_dr where the wall is sharp. */
-#define MEAS_CAVITY_MAX_COUNT 8  /* the largest min_count */
+#define MEAS_CAVITY_MAX_COUNT 8 /* the largest min_count */
 
 struct meas_cavity_params {
-  double slice;      /* [m] slice thickness (default Δ/2) */
-  double footprint;  /* [m] (default Δ/2) */
-  double r_open;     /* [m] open-slice threshold on the cavity radius (default Δ) */
-  double v_max;      /* [m/s] target particles faster than this are flying debris, not
+  double slice;              /* [m] slice thickness (default Δ/2) */
+  double footprint;          /* [m] (default Δ/2) */
+  double r_open;             /* [m] open-slice threshold on the cavity radius (default Δ) */
+  double v_max;              /* [m/s] target particles faster than this are flying debris, not
                         cavity wall (default INFINITY: all taken) */
-  int min_count;     /* 1..MEAS_CAVITY_MAX_COUNT: the radius is set by the min_count-th
+  int min_count;             /* 1..MEAS_CAVITY_MAX_COUNT: the radius is set by the min_count-th
                         nearest particle, so min_count − 1 stray particles inside the
                         cavity are ignored (default 1) */
-  double wall_slab;  /* [m] slab thickness of the filled-volume wall (default 4Δ) */
-  double wall_dr;    /* [m] annulus width of the filled-volume wall (default Δ/4) */
-  double wall_fill;  /* filled fraction that marks the wall, in (0, 1) (default 0.5) */
-  const unsigned char *mask;  /* optional [p->n] */
+  double wall_slab;          /* [m] slab thickness of the filled-volume wall (default 4Δ) */
+  double wall_dr;            /* [m] annulus width of the filled-volume wall (default Δ/4) */
+  double wall_fill;          /* filled fraction that marks the wall, in (0, 1) (default 0.5) */
+  const unsigned char *mask; /* optional [p->n] */
 };
 struct meas_cavity {
   double L;           /* [m] penetration depth */
@@ -107,10 +107,11 @@ struct meas_cavity {
   double D_wall_mean; /* [m] mean wall diameter by filled volume over the same slabs */
   size_t nwall;       /* slabs wholly within L (those D_wall and D_wall_mean cover) */
   int perforated;     /* the cavity runs through all the target material */
-  size_t nslice;      /* slices examined (x0 to the deepest target particle within 2Δ of the rear face) */
-  size_t nopen;       /* open slices from the surface (K) */
-  double slice;       /* [m] slice thickness used */
-  double *r_profile;  /* [nslice] cavity radius r_k of slice k, depth (k + ½) slice [m];
+  size_t
+      nslice; /* slices examined (x0 to the deepest target particle within 2Δ of the rear face) */
+  size_t nopen;      /* open slices from the surface (K) */
+  double slice;      /* [m] slice thickness used */
+  double *r_profile; /* [nslice] cavity radius r_k of slice k, depth (k + ½) slice [m];
                          INFINITY where a slice has no target particle */
 };
 void meas_cavity_defaults(struct meas_cavity_params *par, const struct meas_geom *g);
@@ -154,30 +155,30 @@ void meas_cavity_free(struct meas_cavity *c);
  * that the coarse part is as solid as it is alone; d_equiv's edge term keeps the finest
  * spacing (the hole's rim lies in the fine part). */
 struct meas_plate_params {
-  double tol;          /* [m] a projected particle covers the plane within tol (default Δ) */
-  double footprint;    /* [m] (default Δ/2) */
-  double cell;         /* [m] projection grid cell (default Δ/4; enlarged when the window
+  double tol;         /* [m] a projected particle covers the plane within tol (default Δ) */
+  double footprint;   /* [m] (default Δ/2) */
+  double cell;        /* [m] projection grid cell (default Δ/4; enlarged when the window
                           would need more than 4096 cells a side) */
-  double slab_front;   /* [m] (default max(thickness, 2Δ)) */
-  double slab_rear;    /* [m] (default max(thickness, 2Δ)) */
-  double seed_radius;  /* [m] the hole must come this close to the impact point (default Δ) */
-  double r_max;        /* [m] half-width W of the window (default 0: the plate's extent) */
-  const unsigned char *mask;  /* optional [p->n] */
-  const double *scale; /* optional [p->n]: Δ_i/Δ per particle (a plate of several bodies);
+  double slab_front;  /* [m] (default max(thickness, 2Δ)) */
+  double slab_rear;   /* [m] (default max(thickness, 2Δ)) */
+  double seed_radius; /* [m] the hole must come this close to the impact point (default Δ) */
+  double r_max;       /* [m] half-width W of the window (default 0: the plate's extent) */
+  const unsigned char *mask; /* optional [p->n] */
+  const double *scale;       /* optional [p->n]: Δ_i/Δ per particle (a plate of several bodies);
                           NULL: 1 for all */
-  int attached_only;   /* 1 (default): only the plate's largest connected piece is plate */
+  int attached_only;         /* 1 (default): only the plate's largest connected piece is plate */
 };
 struct meas_plate {
   int perforated;
-  int hole_open;            /* the hole reaches the window's edge */
-  double d_circle;          /* [m] largest material-free circle in the hole */
-  double circle_center[2];  /* [m] its centre (y, z) */
-  double d_circle_impact;   /* [m] material-free circle centred at the impact point */
-  double d_equiv;           /* [m] equivalent-area diameter */
-  double area;              /* [m2] hole area (full plane, mirrored) */
-  double cell;              /* [m] grid cell used */
-  size_t n_plate;           /* particles taken as plate */
-  size_t n_detached;        /* particles in the slab left out as loose fragments */
+  int hole_open;           /* the hole reaches the window's edge */
+  double d_circle;         /* [m] largest material-free circle in the hole */
+  double circle_center[2]; /* [m] its centre (y, z) */
+  double d_circle_impact;  /* [m] material-free circle centred at the impact point */
+  double d_equiv;          /* [m] equivalent-area diameter */
+  double area;             /* [m2] hole area (full plane, mirrored) */
+  double cell;             /* [m] grid cell used */
+  size_t n_plate;          /* particles taken as plate */
+  size_t n_detached;       /* particles in the slab left out as loose fragments */
 };
 void meas_plate_defaults(struct meas_plate_params *par, const struct meas_geom *g);
 int measure_plate(const struct particles *p, const struct meas_geom *g,
@@ -203,27 +204,27 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
  *    (which the 90 % cone takes in; docs/measurements.md).
  * An empty cloud gives count 0 and NaN for the velocities, x_lead and the angle. */
 struct meas_debris_params {
-  int body;          /* body of the cloud's particles (< 0: any) */
-  double x_rear;     /* [m] rear face of the plate, x0 + thickness */
-  double yc;         /* [m] axis y */
-  double margin;     /* [m] cloud starts at x_rear + margin (default 2Δ) */
-  double x_limit;    /* [m] cloud ends before x_limit (default INFINITY) */
-  double q_lead;     /* leading-edge mass quantile (default 0.99) */
-  double q_angle;    /* spray-cone mass quantile (default 0.90) */
+  int body;              /* body of the cloud's particles (< 0: any) */
+  double x_rear;         /* [m] rear face of the plate, x0 + thickness */
+  double yc;             /* [m] axis y */
+  double margin;         /* [m] cloud starts at x_rear + margin (default 2Δ) */
+  double x_limit;        /* [m] cloud ends before x_limit (default INFINITY) */
+  double q_lead;         /* leading-edge mass quantile (default 0.99) */
+  double q_angle;        /* spray-cone mass quantile (default 0.90) */
   double front_fraction; /* the front: x − x_rear >= front_fraction x_lead (default 0.5) */
   int half_model;
-  const unsigned char *mask;  /* optional [p->n] */
+  const unsigned char *mask; /* optional [p->n] */
 };
 struct meas_debris {
-  size_t count;       /* simulated particles in the cloud */
-  double m;           /* [kg] cloud mass (full picture) */
-  double v_mean;      /* [m/s] */
-  double v_lead;      /* [m/s] */
-  double v_max;       /* [m/s] */
-  double x_lead;      /* [m] */
-  double half_angle;  /* [rad] */
+  size_t count;            /* simulated particles in the cloud */
+  double m;                /* [kg] cloud mass (full picture) */
+  double v_mean;           /* [m/s] */
+  double v_lead;           /* [m/s] */
+  double v_max;            /* [m/s] */
+  double x_lead;           /* [m] */
+  double half_angle;       /* [rad] */
   double half_angle_front; /* [rad] the same over the cloud's front */
-  double gap;         /* [m] x_limit − x_rear: how far the leading edge can go (INFINITY:
+  double gap;              /* [m] x_limit − x_rear: how far the leading edge can go (INFINITY:
                          no next plate) */
 };
 /* Defaults for the cloud behind plate g: body any, x_rear = x0 + thickness, margin 2Δ. */
@@ -278,22 +279,22 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  * footprint scale_i footprint, so that the coarse part is as solid as it is alone
  * (crater_min, ring and cell keep the finest spacing). */
 struct meas_backwall_params {
-  double tol;           /* [m] (default Δ) */
-  double footprint;     /* [m] (default Δ/2) */
-  double cell;          /* [m] column section (default Δ/2; enlarged beyond 4096 a side) */
-  double margin_front;  /* [m] (default max(thickness, 2Δ)) */
-  double damage_min;    /* (default 1: split) */
-  double eps_p_min;     /* (default 0.1) */
-  double crater_min;    /* [m] (default Δ) */
-  double ring;          /* [m] ring width for r_damage (default 2Δ) */
-  double area_fraction; /* damaged share of a ring's columns, in (0, 1] (default 0.5) */
-  const unsigned char *mask;  /* optional [p->n] */
-  const double *scale;  /* optional [p->n]: Δ_i/Δ per particle; NULL: 1 for all */
-  int attached_only;    /* 1 (default): the columns see only the wall's largest piece */
-  int far_reference;    /* 1 (default): depths from the far wall (wall_shift); 0: from x0 */
-  double far_fraction;  /* the far wall: ρ >= far_fraction R_in, in (0, 1] (default 0.8) */
-  double local_inner;   /* [m] crater_depth_local's ring (default max(thickness/2, 2Δ)) */
-  double local_outer;   /* [m] (default max(thickness, 4Δ)); > local_inner */
+  double tol;                /* [m] (default Δ) */
+  double footprint;          /* [m] (default Δ/2) */
+  double cell;               /* [m] column section (default Δ/2; enlarged beyond 4096 a side) */
+  double margin_front;       /* [m] (default max(thickness, 2Δ)) */
+  double damage_min;         /* (default 1: split) */
+  double eps_p_min;          /* (default 0.1) */
+  double crater_min;         /* [m] (default Δ) */
+  double ring;               /* [m] ring width for r_damage (default 2Δ) */
+  double area_fraction;      /* damaged share of a ring's columns, in (0, 1] (default 0.5) */
+  const unsigned char *mask; /* optional [p->n] */
+  const double *scale;       /* optional [p->n]: Δ_i/Δ per particle; NULL: 1 for all */
+  int attached_only;         /* 1 (default): the columns see only the wall's largest piece */
+  int far_reference;         /* 1 (default): depths from the far wall (wall_shift); 0: from x0 */
+  double far_fraction;       /* the far wall: ρ >= far_fraction R_in, in (0, 1] (default 0.8) */
+  double local_inner;        /* [m] crater_depth_local's ring (default max(thickness/2, 2Δ)) */
+  double local_outer;        /* [m] (default max(thickness, 4Δ)); > local_inner */
 };
 struct meas_backwall {
   double crater_depth;        /* [m] */
@@ -307,7 +308,7 @@ struct meas_backwall {
   double r_damage;            /* [m] */
   double m_damaged;           /* [kg] */
   size_t n_damaged;
-  size_t n_wall;              /* particles taken as wall */
+  size_t n_wall; /* particles taken as wall */
 };
 void meas_backwall_defaults(struct meas_backwall_params *par, const struct meas_geom *g);
 int measure_backwall(const struct particles *p, const struct meas_geom *g,
@@ -333,18 +334,18 @@ double measure_center_pressure(const struct particles *p, const struct meas_geom
  * r_max: the largest distance from the origin. 0 when nothing is shocked; x_axial NaN
  * when gas is shocked but none within r_axis of the axis. */
 struct meas_gas_params {
-  int body;          /* gas body (< 0: any) */
-  double rho_ref;    /* [kg/m3] initial (undisturbed) gas density */
-  double factor;     /* (default 1.1) */
-  double origin[3];  /* [m] */
-  double r_axis;     /* [m] (default 2Δ of the gas) */
-  const unsigned char *mask;  /* optional [p->n] */
+  int body;                  /* gas body (< 0: any) */
+  double rho_ref;            /* [kg/m3] initial (undisturbed) gas density */
+  double factor;             /* (default 1.1) */
+  double origin[3];          /* [m] */
+  double r_axis;             /* [m] (default 2Δ of the gas) */
+  const unsigned char *mask; /* optional [p->n] */
 };
 struct meas_gas_front {
   size_t n_shocked;
-  double x_axial;    /* [m] */
-  double r_radial;   /* [m] */
-  double r_max;      /* [m] */
+  double x_axial;  /* [m] */
+  double r_radial; /* [m] */
+  double r_max;    /* [m] */
 };
 /* Defaults: factor 1.1, r_axis = 2 × spacing (the gas's lattice spacing). */
 void meas_gas_defaults(struct meas_gas_params *par, int body, double rho_ref,

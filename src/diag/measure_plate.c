@@ -24,7 +24,7 @@
 
 #include "diag/measure.h"
 
-#define PLATE_MAX_CELLS 4096  /* per side of the projection grid */
+#define PLATE_MAX_CELLS  4096 /* per side of the projection grid */
 #define PLATE_CANDIDATES 8    /* starts of the circle search */
 
 void meas_plate_defaults(struct meas_plate_params *par, const struct meas_geom *g)
@@ -107,9 +107,9 @@ static int cell_hi(double a, double a0, double c) { return (int)floor((a - a0) /
 
 /* The grid of the projection. */
 struct pgrid {
-  double u0, w0, c;  /* lower corner [m], cell edge [m] */
+  double u0, w0, c; /* lower corner [m], cell edge [m] */
   int nu, nw;
-  unsigned char *occ;  /* 0 empty, 1 material, 2 hole */
+  unsigned char *occ; /* 0 empty, 1 material, 2 hole */
 };
 
 /* (u, w) lies in a hole cell. */
@@ -224,7 +224,8 @@ static int check_params(const struct meas_geom *g, const struct meas_plate_param
         par->slab_rear >= 0 && par->seed_radius >= 0 && par->r_max >= 0 && isfinite(par->tol) &&
         isfinite(par->cell) && isfinite(par->footprint) && isfinite(par->slab_front) &&
         isfinite(par->slab_rear) && isfinite(par->seed_radius) && isfinite(par->r_max)))
-    return hv_error_set(err, HV_EXIT_INPUT, "plate measurement: tol, cell (> 0), footprint, "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "plate measurement: tol, cell (> 0), footprint, "
                         "slab margins, seed radius and r_max (>= 0) must be finite");
   if (!(g->thickness >= 0 && isfinite(g->thickness) && isfinite(g->x0) && isfinite(g->yc)))
     return hv_error_set(err, HV_EXIT_INPUT, "plate measurement: bad plate geometry");
@@ -377,8 +378,8 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
   const int ru0 = box[0] - m, rw0 = box[2] - m;
   const int rnu = box[1] - box[0] + 1 + 2 * m, rnw = box[3] - box[2] + 1 + 2 * m;
   const size_t rn = (size_t)rnu * (size_t)rnw;
-  double *dh = hv_malloc(rn * sizeof *dh, "hole distances");  /* to the non-hole cells */
-  double *dr = hv_malloc(rn * sizeof *dr, "hole distances");  /* to the hole cells */
+  double *dh = hv_malloc(rn * sizeof *dh, "hole distances"); /* to the non-hole cells */
+  double *dr = hv_malloc(rn * sizeof *dr, "hole distances"); /* to the hole cells */
   for (int b = 0; b < rnw; b++)
     for (int a = 0; a < rnu; a++) {
       const int ga = ru0 + a, gb = rw0 + b;
@@ -443,7 +444,7 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
     start[nstart++][1] = 0.0;
   }
   double r = -INFINITY;
-  if (!nrim && nb) {  /* no rim particle: the grid's estimate */
+  if (!nrim && nb) { /* no rim particle: the grid's estimate */
     const int a = (int)(best[0].idx % (size_t)rnu), b = (int)(best[0].idx / (size_t)rnu);
     r = best[0].r - 0.5 * c + par->tol - par->footprint;
     centre[0] = G->u0 + ((double)(ru0 + a) + 0.5) * c;
@@ -466,8 +467,7 @@ static double largest_circle(const struct pgrid *G, const int box[4], const doub
 }
 
 int measure_plate(const struct particles *p, const struct meas_geom *g,
-                  const struct meas_plate_params *par, struct meas_plate *out,
-                  struct hv_error *err)
+                  const struct meas_plate_params *par, struct meas_plate *out, struct hv_error *err)
 {
   memset(out, 0, sizeof *out);
   if (check_params(g, par, err)) return -1;
@@ -492,7 +492,7 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
     out->d_circle = 2.0 * fmax(r, 0.0);
     out->circle_center[0] = centre[0] + g->yc;
     out->circle_center[1] = centre[1];
-    for (size_t k = 0; k < np; k++) sc[k] *= par->footprint;   /* now the footprints */
+    for (size_t k = 0; k < np; k++) sc[k] *= par->footprint; /* now the footprints */
     out->d_circle_impact = 2.0 * fmax(nearest(pts, sc, np, 0.0, 0.0), 0.0);
   }
   free(G.occ);

@@ -60,7 +60,8 @@ static int put_text(struct atomic_file *af, const char *s, struct hv_error *err)
   if (!strpbrk(s, ",\"\r\n")) return atomic_file_printf(af, err, "%s", s);
   if (atomic_file_printf(af, err, "\"")) return -1;
   for (const char *c = s; *c; c++) {
-    const int rc = *c == '"' ? atomic_file_printf(af, err, "\"\"") : atomic_file_printf(af, err, "%c", *c);
+    const int rc =
+        *c == '"' ? atomic_file_printf(af, err, "\"\"") : atomic_file_printf(af, err, "%c", *c);
     if (rc) return -1;
   }
   return atomic_file_printf(af, err, "\"");
@@ -202,8 +203,12 @@ static int next_field(const char **s, char *buf, size_t len)
   if (!c) return -1;
   if (*c == '"') {
     for (c++; *c; c++) {
-      if (*c == '"' && c[1] == '"') c++;
-      else if (*c == '"') { c++; break; }
+      if (*c == '"' && c[1] == '"')
+        c++;
+      else if (*c == '"') {
+        c++;
+        break;
+      }
       if (k + 1 < len) buf[k++] = *c;
     }
   } else {
@@ -217,7 +222,7 @@ static int next_field(const char **s, char *buf, size_t len)
 
 int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err)
 {
-  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err); /* a FIFO would block the open */
   if (!f) return -1;
   char *line = NULL, *more = NULL;
   size_t cap = 0, mcap = 0;
@@ -239,7 +244,7 @@ int meas_table_read(struct meas_table *t, const char *path, struct hv_error *err
       }
       memcpy(line + len, more, (size_t)l + 1);
     }
-    if (header) {   /* time,quantity,value,unit,object */
+    if (header) { /* time,quantity,value,unit,object */
       header = 0;
       continue;
     }

@@ -23,11 +23,11 @@
 #include "diag/measure.h"
 
 struct meas_row {
-  double time;      /* [s] */
-  char *quantity;   /* e.g. "hole_diameter" */
-  double value;     /* in `unit` */
-  char *unit;       /* e.g. "m", "m/s", "deg", "" for counts and flags */
-  char *object;     /* what was measured, e.g. the body's name "bumper" */
+  double time;    /* [s] */
+  char *quantity; /* e.g. "hole_diameter" */
+  double value;   /* in `unit` */
+  char *unit;     /* e.g. "m", "m/s", "deg", "" for counts and flags */
+  char *object;   /* what was measured, e.g. the body's name "bumper" */
 };
 
 struct meas_table {

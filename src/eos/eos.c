@@ -20,8 +20,7 @@ int eos_energy_from_pressure(const struct material *m, double rho, double p, dou
   return eos_models[m->eos]->energy_from_pressure(m, rho, p, e);
 }
 
-void eos_describe(const struct material *m, double rho, double e, int status, char *buf,
-                  size_t len)
+void eos_describe(const struct material *m, double rho, double e, int status, char *buf, size_t len)
 {
   const struct eos_model *model = (unsigned)m->eos < EOS_KIND_COUNT ? eos_models[m->eos] : NULL;
   char name[600] = "", outside[200] = "";
@@ -34,23 +33,26 @@ void eos_describe(const struct material *m, double rho, double e, int status, ch
   switch (status) {
   case EOS_OK:
     /* taken, but its result is not finite (the caller found it so) */
-    snprintf(r, rl, "): rho = %.9g kg/m3, e = %.9g J/kg gives no finite pressure or sound "
-             "speed", rho, e);
+    snprintf(r, rl,
+             "): rho = %.9g kg/m3, e = %.9g J/kg gives no finite pressure or sound "
+             "speed",
+             rho, e);
     break;
   case EOS_ERR_INPUT:
-    snprintf(r, rl, "): cannot evaluate rho = %.9g kg/m3, e = %.9g J/kg (density must be a "
-             "positive finite number and the energy finite)", rho, e);
+    snprintf(r, rl,
+             "): cannot evaluate rho = %.9g kg/m3, e = %.9g J/kg (density must be a "
+             "positive finite number and the energy finite)",
+             rho, e);
     break;
   case EOS_ERR_OUTSIDE_TABLE:
-    snprintf(r, rl, "): rho = %.9g kg/m3, e = %.9g J/kg is outside the table%s", rho, e,
-             outside);
+    snprintf(r, rl, "): rho = %.9g kg/m3, e = %.9g J/kg is outside the table%s", rho, e, outside);
     break;
   case EOS_ERR_NO_SOLUTION:
     snprintf(r, rl, "): no energy gives pressure %.9g Pa at rho = %.9g kg/m3", e, rho);
     break;
   default:
-    snprintf(r, rl, "): internal error (EOS status %d) at rho = %.9g kg/m3, e = %.9g J/kg",
-             status, rho, e);
+    snprintf(r, rl, "): internal error (EOS status %d) at rho = %.9g kg/m3, e = %.9g J/kg", status,
+             rho, e);
     break;
   }
 }

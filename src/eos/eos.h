@@ -15,17 +15,17 @@
 #include "material/material.h"
 
 struct eos_state {
-  double p;    /* [Pa] pressure */
-  double cs;   /* [m/s] sound speed (floored where the EOS has a floor) */
+  double p;  /* [Pa] pressure */
+  double cs; /* [m/s] sound speed (floored where the EOS has a floor) */
 };
 
 /* Return codes of eos_evaluate / eos_energy_from_pressure. */
 enum eos_status {
   EOS_OK = 0,
-  EOS_ERR_INPUT = -1,          /* ρ <= 0 or a non-finite ρ or e */
-  EOS_ERR_OUTSIDE_TABLE = -2,  /* (ρ, e) outside a tabulated EOS */
-  EOS_ERR_NO_SOLUTION = -3,    /* eos_energy_from_pressure: no energy gives that pressure */
-  EOS_ERR_KIND = -4            /* unknown EOS kind (internal error) */
+  EOS_ERR_INPUT = -1,         /* ρ <= 0 or a non-finite ρ or e */
+  EOS_ERR_OUTSIDE_TABLE = -2, /* (ρ, e) outside a tabulated EOS */
+  EOS_ERR_NO_SOLUTION = -3,   /* eos_energy_from_pressure: no energy gives that pressure */
+  EOS_ERR_KIND = -4           /* unknown EOS kind (internal error) */
 };
 
 /* p and c at density rho [kg/m3] and specific internal energy e [J/kg].
@@ -53,8 +53,7 @@ void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
                      struct eos_state *out);
 double eos_mg_cold_pressure(const struct eos_mie_gruneisen *g, double rho); /* p_c [Pa] */
 double eos_mg_cold_energy(const struct eos_mie_gruneisen *g, double rho);   /* E_c [J/kg] */
-int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, double p,
-                                double *e);
+int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, double p, double *e);
 
 /* Tillotson (tillotson.c). */
 void eos_tillotson_evaluate(const struct eos_tillotson *t, double rho, double e,

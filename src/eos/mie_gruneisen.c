@@ -42,9 +42,9 @@
  * (ρ/ρ₀)ⁿ − 1 = x t + (x − 1) (both terms of one sign: no cancellation) and
  * ((ρ/ρ₀)ⁿ⁻¹ − 1)/(n − 1) = t/(n − 1), or ln x in the limit n = 1. */
 struct mg_cold {
-  double pc;   /* [Pa] p_c */
-  double Ec;   /* [J/kg] E_c */
-  double xn1;  /* [-] (ρ/ρ₀)ⁿ⁻¹ */
+  double pc;  /* [Pa] p_c */
+  double Ec;  /* [J/kg] E_c */
+  double xn1; /* [-] (ρ/ρ₀)ⁿ⁻¹ */
 };
 
 static struct mg_cold mg_cold_curve(const struct eos_mie_gruneisen *g, double rho)
@@ -69,8 +69,7 @@ double eos_mg_cold_energy(const struct eos_mie_gruneisen *g, double rho)
   return mg_cold_curve(g, rho).Ec;
 }
 
-void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
-                     struct eos_state *out)
+void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e, struct eos_state *out)
 {
   const struct mg_cold cc = mg_cold_curve(g, rho);
   double Et = e - cc.Ec; /* thermal energy E_τ */
@@ -94,8 +93,7 @@ void eos_mg_evaluate(const struct eos_mie_gruneisen *g, double rho, double e,
 
 /* p is linear in E: E = E_c + (p − p_c)/(Γρ). With Γ = 0 the pressure does not depend on
  * E: only p = p_c(ρ) is reachable (to round-off), and E = E_c is returned. */
-int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, double p,
-                                double *e)
+int eos_mg_energy_from_pressure(const struct eos_mie_gruneisen *g, double rho, double p, double *e)
 {
   const struct mg_cold cc = mg_cold_curve(g, rho);
   const double pc = cc.pc, Ec = cc.Ec;
@@ -131,8 +129,8 @@ static int mg_read_keys(struct cfg *c, const char *path, struct material *m, str
       material_get_q(c, path, "gamma", UNIT_NONE, NULL, 0.0, 100.0, &g->Gamma, err))
     return -1;
   const double floor_def = g->c0 / 10.0;
-  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, HUGE_VAL,
-                     &g->cs_floor, err))
+  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, HUGE_VAL, &g->cs_floor,
+                     err))
     return -1;
   m->rho0 = g->rho0;
   m->K0 = g->rho0 * g->c0 * g->c0;

@@ -51,10 +51,10 @@ struct tab_reader {
   size_t clen, cpos;
   unsigned long crc;
   const char *path;
-  int line;          /* number of the last line read */
-  char *buf;         /* current line, comments removed */
+  int line;  /* number of the last line read */
+  char *buf; /* current line, comments removed */
   size_t cap;
-  char *cur;         /* next unread character of buf */
+  char *cur; /* next unread character of buf */
   struct hv_error *err;
 };
 
@@ -127,8 +127,7 @@ static int tab_next_nonblank(struct tab_reader *r)
 }
 
 /* Parses a token as a finite number. */
-static int tab_number(struct tab_reader *r, const char *t, size_t len, const char *what,
-                      double *v)
+static int tab_number(struct tab_reader *r, const char *t, size_t len, const char *what, double *v)
 {
   char tmp[64];
   if (len >= sizeof tmp)
@@ -140,8 +139,8 @@ static int tab_number(struct tab_reader *r, const char *t, size_t len, const cha
   errno = 0;
   *v = strtod(tmp, &end);
   if (end == tmp || *end)
-    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s: '%s' is not a number", r->path,
-                        r->line, what, tmp);
+    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s: '%s' is not a number", r->path, r->line,
+                        what, tmp);
   if (!isfinite(*v))
     return hv_error_set(r->err, HV_EXIT_INPUT,
                         "%s:%d: %s: '%s' is not a finite number (holes are not allowed)", r->path,
@@ -158,8 +157,8 @@ static int tab_header(struct tab_reader *r, long *nrho, long *ne)
     const char *t = tab_token(r, &len);
     if (!t || len != strlen(want[k]) || strncmp(t, want[k], len))
       return hv_error_set(r->err, HV_EXIT_INPUT,
-                          "%s:%d: expected the header 'rho_count N e_count M'%s", r->path,
-                          r->line, t ? "" : " (the file is empty)");
+                          "%s:%d: expected the header 'rho_count N e_count M'%s", r->path, r->line,
+                          t ? "" : " (the file is empty)");
     t = tab_token(r, &len);
     double v = 0.0;
     char what[32];
@@ -174,8 +173,8 @@ static int tab_header(struct tab_reader *r, long *nrho, long *ne)
     *val[k] = (long)v;
   }
   if (*nrho * *ne > TAB_MAX_VALUES)
-    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: the table is too large (%ld x %ld)",
-                        r->path, r->line, *nrho, *ne);
+    return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: the table is too large (%ld x %ld)", r->path,
+                        r->line, *nrho, *ne);
   return 0;
 }
 
@@ -186,8 +185,10 @@ static int tab_axis(struct tab_reader *r, const char *name, double *x, long n, d
     size_t len;
     const char *t = tab_token(r, &len);
     if (!t)
-      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: expected %ld %s values, found %ld "
-                          "(the file ends)", r->path, r->line, n, name, i);
+      return hv_error_set(r->err, HV_EXIT_INPUT,
+                          "%s:%d: expected %ld %s values, found %ld "
+                          "(the file ends)",
+                          r->path, r->line, n, name, i);
     char what[48];
     snprintf(what, sizeof what, "%s[%ld]", name, i + 1);
     if (tab_number(r, t, len, what, &x[i])) return -1;
@@ -203,13 +204,15 @@ static int tab_axis(struct tab_reader *r, const char *name, double *x, long n, d
 }
 
 /* Reads nrow rows of ncol values, one row per line; `first` = a line is already loaded. */
-static int tab_rows(struct tab_reader *r, const char *name, const double *rho, double *v,
-                    long nrow, long ncol, int first, double lo, double hi)
+static int tab_rows(struct tab_reader *r, const char *name, const double *rho, double *v, long nrow,
+                    long ncol, int first, double lo, double hi)
 {
   for (long i = 0; i < nrow; i++) {
     if (!(first && i == 0) && !tab_next_nonblank(r))
-      return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: expected %ld %s rows of %ld values, "
-                          "found %ld (the file ends)", r->path, r->line, nrow, name, ncol, i);
+      return hv_error_set(r->err, HV_EXIT_INPUT,
+                          "%s:%d: expected %ld %s rows of %ld values, "
+                          "found %ld (the file ends)",
+                          r->path, r->line, nrow, name, ncol, i);
     long k = 0;
     size_t len;
     const char *t;
@@ -220,17 +223,20 @@ static int tab_rows(struct tab_reader *r, const char *name, const double *rho, d
       if (tab_number(r, t, len, what, &x)) return -1;
       if (k < ncol) v[i * ncol + k] = x;
       if (x <= lo)
-        return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g must be > %g", r->path,
-                            r->line, what, x, lo);
-      if (x > hi)   /* a sound speed past the speed of light: not SI (the file is in m/s) */
-        return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g m/s is faster than light "
-                            "(%g m/s): the table is in SI units", r->path, r->line, what, x, hi);
+        return hv_error_set(r->err, HV_EXIT_INPUT, "%s:%d: %s = %g must be > %g", r->path, r->line,
+                            what, x, lo);
+      if (x > hi) /* a sound speed past the speed of light: not SI (the file is in m/s) */
+        return hv_error_set(r->err, HV_EXIT_INPUT,
+                            "%s:%d: %s = %g m/s is faster than light "
+                            "(%g m/s): the table is in SI units",
+                            r->path, r->line, what, x, hi);
       k++;
     }
     if (k != ncol)
       return hv_error_set(r->err, HV_EXIT_INPUT,
                           "%s:%d: %s row %ld (rho = %g kg/m3) has %ld values, expected %ld "
-                          "(e_count)", r->path, r->line, name, i + 1, rho[i], k, ncol);
+                          "(e_count)",
+                          r->path, r->line, name, i + 1, rho[i], k, ncol);
   }
   return 0;
 }
@@ -272,17 +278,20 @@ static int tab_read(struct tab_reader *r, struct eos_table *t)
   if (!rc) {
     size_t len;
     if (tab_token_here(r, &len))
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: more values than e_count = %ld on the line "
-                        "of the last e value (each pressure row starts on a new line)", path,
-                        r->line, ne);
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "%s:%d: more values than e_count = %ld on the line "
+                        "of the last e value (each pressure row starts on a new line)",
+                        path, r->line, ne);
   }
   if (!rc) rc = tab_rows(r, "pressure", t->rho, t->p, nrho, ne, 0, -HUGE_VAL, HUGE_VAL);
   if (!rc && tab_next_nonblank(r)) {
     t->cs = hv_malloc((size_t)(nrho * ne) * sizeof *t->cs, "EOS table");
     rc = tab_rows(r, "sound-speed", t->rho, t->cs, nrho, ne, 1, 0.0, 299792458.0);
     if (!rc && tab_next_nonblank(r))
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s:%d: unexpected values after the %ld sound-speed "
-                        "rows", path, r->line, nrho);
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "%s:%d: unexpected values after the %ld sound-speed "
+                        "rows",
+                        path, r->line, nrho);
   }
   return rc;
 }
@@ -294,7 +303,7 @@ int eos_table_load(const char *path, struct eos_table *t, struct hv_error *err)
   /* a regular file only: a FIFO would block the open, a device might never end */
   FILE *f = hv_open_input(path, "EOS table", 0, NULL, err);
   if (!f) return -1;
-  struct tab_reader *r = hv_calloc(1, sizeof *r, "EOS table reader");   /* 64 KiB chunk */
+  struct tab_reader *r = hv_calloc(1, sizeof *r, "EOS table reader"); /* 64 KiB chunk */
   r->f = f;
   r->path = path;
   r->err = err;
@@ -351,13 +360,13 @@ int eos_table_evaluate(const struct eos_table *t, double rho, double e, struct e
   const double dr = t->rho[i + 1] - t->rho[i], de = t->e[j + 1] - t->e[j];
   const double tx = (rho - t->rho[i]) / dr, ty = (e - t->e[j]) / de;
   const double *p0 = t->p + (size_t)i * ne + j, *p1 = p0 + ne;
-  const double p = (1 - tx) * (1 - ty) * p0[0] + tx * (1 - ty) * p1[0] + (1 - tx) * ty * p0[1] +
-                   tx * ty * p1[1];
+  const double p =
+      (1 - tx) * (1 - ty) * p0[0] + tx * (1 - ty) * p1[0] + (1 - tx) * ty * p0[1] + tx * ty * p1[1];
   double c2;
   if (t->cs) {
     const double *c0 = t->cs + (size_t)i * ne + j, *c1 = c0 + ne;
-    const double c = (1 - tx) * (1 - ty) * c0[0] + tx * (1 - ty) * c1[0] +
-                     (1 - tx) * ty * c0[1] + tx * ty * c1[1];
+    const double c = (1 - tx) * (1 - ty) * c0[0] + tx * (1 - ty) * c1[0] + (1 - tx) * ty * c0[1] +
+                     tx * ty * c1[1];
     c2 = c * c;
   } else {
     const double dpdr = ((1 - ty) * (p1[0] - p0[0]) + ty * (p1[1] - p0[1])) / dr;
@@ -425,7 +434,7 @@ static int table_read_keys(struct cfg *c, const char *path, struct material *m,
     snprintf(full, sizeof full, "%.*s/%s", (int)(slash - src), src, file);
   if (eos_table_load(full, &m->eosp.tab, err))
     return hv_error_prefix(err, "%s: %s: ", cfg_where(c, k, where, sizeof where), k);
-  char *abs = realpath(full, NULL);   /* the file exists: it was just read */
+  char *abs = realpath(full, NULL); /* the file exists: it was just read */
   cfg_record_string(c, k, abs ? abs : full);
   char crc[16];
   snprintf(crc, sizeof crc, "%08lx", m->eosp.tab.crc32 & 0xffffffffUL);
@@ -436,14 +445,17 @@ static int table_read_keys(struct cfg *c, const char *path, struct material *m,
     const unsigned long w = strtoul(want, &end, 16);
     if (strlen(want) != 8 || *end || !isxdigit((unsigned char)want[0])) {
       free(abs);
-      return material_key_error(c, kc, err, "'%s' is not a CRC-32 (8 hexadecimal digits, as "
-                                "hvsph writes it in used_parameters.yaml)", want);
+      return material_key_error(c, kc, err,
+                                "'%s' is not a CRC-32 (8 hexadecimal digits, as "
+                                "hvsph writes it in used_parameters.yaml)",
+                                want);
     }
     if (w != (m->eosp.tab.crc32 & 0xffffffffUL)) {
-      material_key_error(c, kc, err, "EOS table '%s' has CRC-32 %s, not the %s recorded here: "
+      material_key_error(c, kc, err,
+                         "EOS table '%s' has CRC-32 %s, not the %s recorded here: "
                          "the table changed since the run that used it (restore it, or remove "
-                         "file_crc32 to run with the table as it is now)", abs ? abs : full,
-                         crc, want);
+                         "file_crc32 to run with the table as it is now)",
+                         abs ? abs : full, crc, want);
       free(abs);
       return -1;
     }

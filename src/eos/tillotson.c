@@ -57,9 +57,9 @@ static inline double till_domega(double b, double e, double w)
 }
 
 struct till_branch {
-  double p;     /* [Pa] */
-  double dpdr;  /* [Pa m3/kg] ∂p/∂ρ at constant E */
-  double dpde;  /* [kg/m3] ∂p/∂E at constant ρ */
+  double p;    /* [Pa] */
+  double dpdr; /* [Pa m3/kg] ∂p/∂ρ at constant E */
+  double dpde; /* [kg/m3] ∂p/∂E at constant ρ */
 };
 
 static void till_compressed(const struct eos_tillotson *t, double rho, double e,
@@ -69,8 +69,7 @@ static void till_compressed(const struct eos_tillotson *t, double rho, double e,
   const double w = till_omega(t, eta, e);
   o->p = (t->a + t->b / w) * rho * e + t->A * mu + t->B * mu * mu;
   o->dpde = rho * (t->a + t->b / (w * w));
-  o->dpdr = (t->a + t->b / w) * e + till_domega(t->b, e, w) +
-            (t->A + 2.0 * t->B * mu) / t->rho0;
+  o->dpdr = (t->a + t->b / w) * e + till_domega(t->b, e, w) + (t->A + 2.0 * t->B * mu) / t->rho0;
   if (rho < t->rho_iv && o->p < 0.0) o->p = o->dpde = o->dpdr = 0.0;
 }
 
@@ -192,16 +191,15 @@ static int til_read_keys(struct cfg *c, const char *path, struct material *m, st
   if (!(t->E_cv > t->E_iv))
     return material_key_error(c, material_key(k, sizeof k, path, "E_cv"), err,
                               "E_cv = %.9g J/kg must be greater than E_iv = %.9g J/kg "
-                              "(complete vaporisation after incipient)", t->E_cv, t->E_iv);
-  if (material_get_q(c, path, "rho_iv", UNIT_DENSITY, &zero, 0.0, inf, &t->rho_iv, err))
-    return -1;
+                              "(complete vaporisation after incipient)",
+                              t->E_cv, t->E_iv);
+  if (material_get_q(c, path, "rho_iv", UNIT_DENSITY, &zero, 0.0, inf, &t->rho_iv, err)) return -1;
   if (!(t->rho_iv < t->rho0))
     return material_key_error(c, material_key(k, sizeof k, path, "rho_iv"), err,
                               "rho_iv = %.9g kg/m3 must be below rho0 = %.9g kg/m3", t->rho_iv,
                               t->rho0);
   const double floor_def = sqrt(t->A / t->rho0) / 100.0;
-  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, inf, &t->cs_floor,
-                     err))
+  if (material_get_q(c, path, "cs_floor", UNIT_VELOCITY, &floor_def, 0.0, inf, &t->cs_floor, err))
     return -1;
   m->rho0 = t->rho0;
   m->K0 = t->A;

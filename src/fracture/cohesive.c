@@ -23,13 +23,13 @@ double fracture_open_strain(const struct fracture_params *fp, double l)
 }
 
 double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
-                                double K, double G, double l, double S[6], double n[3],
-                                double *w, double *dp)
+                                double K, double G, double l, double S[6], double n[3], double *w,
+                                double *dp)
 {
   *dp = 0.0;
   if (!(d0 > 0.0)) {
-    if (d < 1.0) return d0;   /* intact, and stays so */
-    fracture_crack_normal(p, S, n);   /* starts to open */
+    if (d < 1.0) return d0;         /* intact, and stays so */
+    fracture_crack_normal(p, S, n); /* starts to open */
     *w = 0.0;
     d0 = 1e-12;
   }
@@ -38,16 +38,16 @@ double fracture_cohesive_return(const struct fracture_params *fp, double d0, dou
   const double snn = fracture_normal_stress(p, S, n);
   const double M = K + 4.0 / 3.0 * G, T = sc * (1.0 - wmax / wu), soft = sc / wu;
   double dw = 0.0, s = snn;
-  if (s > 0.0 && *w < wmax) {   /* a part closed before reopens without traction */
+  if (s > 0.0 && *w < wmax) { /* a part closed before reopens without traction */
     dw = s / M < wmax - *w ? s / M : wmax - *w;
     s -= M * dw;
   }
-  if (s > T) {   /* opens on along the softening line */
+  if (s > T) { /* opens on along the softening line */
     double more = M > soft ? (s - T) / (M - soft) : wu - wmax;
     if (wmax + more > wu || !isfinite(more)) more = wu - wmax;
     dw += more;
     wmax += more;
-  } else if (s < 0.0 && *w > 0.0) {   /* closes under compression, without traction */
+  } else if (s < 0.0 && *w > 0.0) { /* closes under compression, without traction */
     dw = s / M < -*w ? -*w : s / M;
   }
   if (dw != 0.0) {
@@ -55,7 +55,7 @@ double fracture_cohesive_return(const struct fracture_params *fp, double d0, dou
     fracture_open_by(S, n, G, dw);
     *dp = K * dw;
   }
-  if (!(wmax < wu)) {   /* opened through: split (the paper's rule) */
+  if (!(wmax < wu)) { /* opened through: split (the paper's rule) */
     n[0] = n[1] = n[2] = 0.0;
     *w = 0.0;
     return 1.0;
@@ -71,14 +71,14 @@ int fracture_cohesive_end(struct particles *p, size_t i, const struct material *
   for (int k = 0; k < 6; k++) S[k] = p->S[k][i];
   fracture_opening_moduli(p, i, m, &K, &G);
   const double l = cbrt(p->m[i] / m->rho0);
-  const double D = fracture_cohesive_return(&m->frac, p->damage[i], d, p->p[i], K, G, l, S, n,
-                                            &w, &dp);
+  const double D =
+      fracture_cohesive_return(&m->frac, p->damage[i], d, p->p[i], K, G, l, S, n, &w, &dp);
   p->damage[i] = D;
   p->fstate[i] = D >= 1.0 ? FRACTURE_SPLIT : D > 0.0 ? FRACTURE_OPENING : FRACTURE_INTACT;
   for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
   p->eps_c[i] = w;
   if (D >= 1.0) {
-    for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;   /* split: the paper's rule */
+    for (int k = 0; k < 6; k++) p->S[k][i] = 0.0; /* split: the paper's rule */
     return 1;
   }
   for (int k = 0; k < 6; k++) p->S[k][i] = S[k];
@@ -92,8 +92,7 @@ int fracture_read_energy(struct cfg *c, const char *fp, struct material *m, stru
   struct fracture_params *f = &m->frac;
   const double zero = 0.0;
   char k[320];
-  if (fracture_get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy,
-                     err))
+  if (fracture_get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy, err))
     return -1;
   if (f->energy > 0.0 && !m->str.enabled)
     return fracture_key_error(c, fracture_key(k, sizeof k, fp, "energy"), err,

@@ -39,7 +39,7 @@ int fracture_crack_return(const struct fracture_params *fp, int split_now, doubl
                           double *dp)
 {
   *dp = 0.0;
-  if (split_now) {   /* the crack */
+  if (split_now) { /* the crack */
     fracture_crack_normal(p, S, n);
     *eps_c = 0.0;
   }
@@ -53,7 +53,7 @@ int fracture_crack_return(const struct fracture_params *fp, int split_now, doubl
     fracture_open_by(S, n, G, de);
     *dp = K * de;
   }
-  if (*eps_c > 0.0) {   /* open: no shear traction on the plane, t_s = Sn − (nᵀSn) n */
+  if (*eps_c > 0.0) { /* open: no shear traction on the plane, t_s = Sn − (nᵀSn) n */
     double t[3];
     sym3_apply(S, n, t);
     const double tn = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
@@ -67,7 +67,7 @@ int fracture_crack_return(const struct fracture_params *fp, int split_now, doubl
   }
   if ((fp->sigma_c < 0.0 && fracture_max_principal(p + *dp, S) > -fp->sigma_c) ||
       (fp->crack_eps_f_on && eps_p >= fracture_crack_eps_f(fp, p + *dp, S))) {
-    for (int k = 0; k < 6; k++) S[k] = 0.0;   /* split again: fluid */
+    for (int k = 0; k < 6; k++) S[k] = 0.0; /* split again: fluid */
     n[0] = n[1] = n[2] = 0.0;
     *eps_c = 0.0;
     return FRACTURE_SPLIT_AGAIN;
@@ -77,14 +77,14 @@ int fracture_crack_return(const struct fracture_params *fp, int split_now, doubl
 
 int fracture_crack_end(struct particles *p, size_t i, const struct material *m, int split_now)
 {
-  if (p->fstate[i] != FRACTURE_SPLIT) return 0;   /* split again: fluid, S = 0 for good */
+  if (p->fstate[i] != FRACTURE_SPLIT) return 0; /* split again: fluid, S = 0 for good */
   /* cracked now, the crack opened or closed to carry no normal stress, or split again;
      the pressure then moves, so the caller evaluates the EOS again */
   double S[6], n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]}, ec = p->eps_c[i], dp, K, G;
   for (int k = 0; k < 6; k++) S[k] = p->S[k][i];
   fracture_opening_moduli(p, i, m, &K, &G);
-  const int st = fracture_crack_return(&m->frac, split_now, p->p[i], K, G, p->eps_p[i], S, n,
-                                       &ec, &dp);
+  const int st =
+      fracture_crack_return(&m->frac, split_now, p->p[i], K, G, p->eps_p[i], S, n, &ec, &dp);
   p->fstate[i] = st;
   if (st == FRACTURE_SPLIT_AGAIN) p->damage[i] = 2.0;
   for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
@@ -107,21 +107,23 @@ int fracture_read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_par
   if (!cfg_is_map(c, k)) {
     if (cfg_get_quantity(c, k, UNIT_NONE, NULL, 0.0, HUGE_VAL, &f->crack_d[0], err)) return -1;
     if (!(f->crack_d[0] > 0.0))
-      return fracture_key_error(c, k, err, "the strain to failure must be > 0 (leave "
+      return fracture_key_error(c, k, err,
+                                "the strain to failure must be > 0 (leave "
                                 "crack_eps_f out for none)");
   } else {
     static const char *const dn[3] = {"d1", "d2", "d3"};
     for (int j = 0; j < 3; j++) {
       char kd[340];
-      if (cfg_get_quantity(c, fracture_key(kd, sizeof kd, k, dn[j]), UNIT_NONE,
-                           j ? &zero : NULL, -HUGE_VAL, HUGE_VAL, &f->crack_d[j], err))
+      if (cfg_get_quantity(c, fracture_key(kd, sizeof kd, k, dn[j]), UNIT_NONE, j ? &zero : NULL,
+                           -HUGE_VAL, HUGE_VAL, &f->crack_d[j], err))
         return -1;
     }
     /* positive over the triaxialities it is evaluated at, σ* in [−1.5, 1.5] */
     for (int e = -1; e <= 1; e += 2) {
       const double ef = f->crack_d[0] + f->crack_d[1] * exp(f->crack_d[2] * 1.5 * e);
       if (!(ef > 0.0))
-        return fracture_key_error(c, k, err, "d1 + d2 exp(d3 sigma*) = %.6g at sigma* = %g: "
+        return fracture_key_error(c, k, err,
+                                  "d1 + d2 exp(d3 sigma*) = %.6g at sigma* = %g: "
                                   "the strain to failure must be > 0 for sigma* in [-1.5, 1.5]",
                                   ef, 1.5 * e);
     }

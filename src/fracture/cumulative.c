@@ -8,8 +8,7 @@
 
 #include "fracture/read.h"
 
-void fracture_plastic(const struct fracture_params *fp, double deps, double *damage,
-                      int32_t *state)
+void fracture_plastic(const struct fracture_params *fp, double deps, double *damage, int32_t *state)
 {
   /* D < 1 in the intact state only (cumulative has no opening: fracture_read) */
   if (fp->kind != FRACTURE_CUMULATIVE || fp->eps_f <= 0 || *damage >= 1.0) return;
@@ -33,8 +32,10 @@ int fracture_read_cumulative(struct cfg *c, const char *fp, struct material *m,
   struct fracture_params *f = &m->frac;
   const double zero = 0.0;
   char k[320];
-  if (fracture_not_used_here(c, fp, "energy", "energy (a cohesive opening before the split) "
-                             "applies to model: tresca only", err) ||
+  if (fracture_not_used_here(c, fp, "energy",
+                             "energy (a cohesive opening before the split) "
+                             "applies to model: tresca only",
+                             err) ||
       fracture_read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
       fracture_get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
       fracture_get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))

@@ -36,8 +36,7 @@ int fracture_opening(const struct fracture_params *fp, int state)
 
 double fracture_eos_density(const struct particles *p, size_t i, const struct fracture_params *fp)
 {
-  return p->cracks && fracture_opening(fp, p->fstate[i]) ? p->rho[i] * exp(p->eps_c[i])
-                                                         : p->rho[i];
+  return p->cracks && fracture_opening(fp, p->fstate[i]) ? p->rho[i] * exp(p->eps_c[i]) : p->rho[i];
 }
 
 double fracture_pressure(const struct fracture_params *fp, int state, double pe)
@@ -65,10 +64,10 @@ void fracture_states_from_damage(struct particles *p, const struct material *mat
 {
   for (size_t i = 0; i < p->n; i++) {
     const double d = p->damage[i];
-    p->fstate[i] = d >= 2.0 ? FRACTURE_SPLIT_AGAIN
-                   : d >= 1.0 ? FRACTURE_SPLIT
+    p->fstate[i] = d >= 2.0                                      ? FRACTURE_SPLIT_AGAIN
+                   : d >= 1.0                                    ? FRACTURE_SPLIT
                    : mat[p->mat[i]].frac.energy > 0.0 && d > 0.0 ? FRACTURE_OPENING
-                                                                  : FRACTURE_INTACT;
+                                                                 : FRACTURE_INTACT;
   }
 }
 
@@ -81,8 +80,8 @@ static int end_particle(struct particles *p, size_t i, const struct material *m,
   const int st0 = p->fstate[i];
   double S[6];
   for (int k = 0; k < 6; k++) S[k] = p->S[k][i];
-  const double d = st0 < FRACTURE_SPLIT ? fracture_tension(fp, p->damage[i], p->p[i], S, dt)
-                                        : p->damage[i];
+  const double d =
+      st0 < FRACTURE_SPLIT ? fracture_tension(fp, p->damage[i], p->p[i], S, dt) : p->damage[i];
   if (fp->energy > 0.0 && st0 < FRACTURE_SPLIT) return fracture_cohesive_end(p, i, m, d);
   p->damage[i] = d;
   const int split_now = st0 < FRACTURE_SPLIT && d >= 1.0;

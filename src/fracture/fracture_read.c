@@ -24,8 +24,8 @@ int fracture_key_error(struct cfg *c, const char *key, struct hv_error *err, con
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", cfg_where(c, key, where, sizeof where),
-                      key, msg);
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", cfg_where(c, key, where, sizeof where), key,
+                      msg);
 }
 
 int fracture_get_q(struct cfg *c, const char *path, const char *key, enum unit_dim dim,
@@ -52,28 +52,33 @@ static int read_split(struct cfg *c, const char *fp, struct material *m, struct 
   struct fracture_params *f = &m->frac;
   char k[320];
   int split;
-  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "split"), "fluid", split_names, &split,
-                     err))
+  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
     return -1;
   f->split = (enum split_kind)split;
   const char *sname = split_names[f->split];
   if (f->split != SPLIT_FLUID && !m->str.enabled)
-    return fracture_key_error(c, k, err, "split: %s keeps the deviatoric stress of split "
+    return fracture_key_error(c, k, err,
+                              "split: %s keeps the deviatoric stress of split "
                               "material, but the material has no strength (give strength "
-                              "with shear modulus and yield > 0)", sname);
+                              "with shear modulus and yield > 0)",
+                              sname);
   if (f->split != SPLIT_FLUID && f->energy > 0.0)
     return fracture_key_error(c, fracture_key(k, sizeof k, fp, "energy"), err,
                               "energy (a cohesive opening before the split) ends in the "
                               "paper's split (split: fluid); with split: %s leave it out",
                               sname);
   if (f->split != SPLIT_FLUID && f->friction > 0.0)
-    return fracture_key_error(c, k, err, "split: %s keeps the yield stress of split "
+    return fracture_key_error(c, k, err,
+                              "split: %s keeps the yield stress of split "
                               "material; friction (which limits it to min(Y, mu p)) applies "
-                              "to split: fluid only", sname);
+                              "to split: fluid only",
+                              sname);
   if (f->split != SPLIT_CRACK)
-    return fracture_not_used_here(c, fp, "crack_eps_f", "crack_eps_f is the strain to "
+    return fracture_not_used_here(c, fp, "crack_eps_f",
+                                  "crack_eps_f is the strain to "
                                   "failure of a cracked particle: it applies to split: crack "
-                                  "only", err);
+                                  "only",
+                                  err);
   return fracture_read_crack_eps_f(c, fp, f, err);
 }
 
@@ -88,20 +93,27 @@ int fracture_read(struct cfg *c, const char *path, struct material *m, struct hv
     return fracture_key_error(c, fp, err,
                               "expected a mapping like {model: tresca, sigma_c: -0.39 GPa}");
   int model;
-  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "model"), NULL, fracture_names, &model,
-                     err))
+  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "model"), NULL, fracture_names, &model, err))
     return -1;
   f->kind = (enum fracture_kind)model;
   switch (f->kind) {
   case FRACTURE_NONE:
-    if (fracture_not_used_here(c, fp, "friction", "friction applies to split material: model "
-                               "tresca or cumulative", err) ||
-        fracture_not_used_here(c, fp, "split", "split applies to split material: model "
-                               "tresca or cumulative", err) ||
-        fracture_not_used_here(c, fp, "energy", "energy (a cohesive opening before the "
-                               "split) applies to model: tresca", err) ||
-        fracture_not_used_here(c, fp, "crack_eps_f", "crack_eps_f applies to split: crack "
-                               "(model tresca or cumulative)", err))
+    if (fracture_not_used_here(c, fp, "friction",
+                               "friction applies to split material: model "
+                               "tresca or cumulative",
+                               err) ||
+        fracture_not_used_here(c, fp, "split",
+                               "split applies to split material: model "
+                               "tresca or cumulative",
+                               err) ||
+        fracture_not_used_here(c, fp, "energy",
+                               "energy (a cohesive opening before the "
+                               "split) applies to model: tresca",
+                               err) ||
+        fracture_not_used_here(c, fp, "crack_eps_f",
+                               "crack_eps_f applies to split: crack "
+                               "(model tresca or cumulative)",
+                               err))
       return -1;
     return 0;
   case FRACTURE_TRESCA:
@@ -110,8 +122,7 @@ int fracture_read(struct cfg *c, const char *path, struct material *m, struct hv
   case FRACTURE_CUMULATIVE:
     if (fracture_read_cumulative(c, fp, m, err)) return -1;
     break;
-  case FRACTURE_KIND_COUNT:
-    break;
+  case FRACTURE_KIND_COUNT: break;
   }
   if (fracture_read_friction(c, fp, m, err)) return -1;
   return read_split(c, fp, m, err);

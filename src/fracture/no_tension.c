@@ -30,7 +30,7 @@ double fracture_effective(double p, const double S[6], double Se[6])
 {
   for (int k = 0; k < 6; k++) Se[k] = S[k];
   if (!fracture_project(p, Se)) return p;
-  const double m = (Se[0] + Se[1] + Se[2]) / 3.0;   /* σ' = −(p − m) I + dev(Se) */
+  const double m = (Se[0] + Se[1] + Se[2]) / 3.0; /* σ' = −(p − m) I + dev(Se) */
   for (int k = 0; k < 3; k++) Se[k] -= m;
   return p - m;
 }

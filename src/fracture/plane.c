@@ -36,7 +36,7 @@ void fracture_crack_rotate(double n[3], const double L[9], double dt)
 {
   double m[3];
   for (int a = 0; a < 3; a++) {
-    double w = 0.0;   /* (Ω n)_a = Σ_b ½(L_ab − L_ba) n_b */
+    double w = 0.0; /* (Ω n)_a = Σ_b ½(L_ab − L_ba) n_b */
     for (int b = 0; b < 3; b++) w += 0.5 * (L[3 * a + b] - L[3 * b + a]) * n[b];
     m[a] = n[a] + dt * w;
   }
@@ -54,7 +54,8 @@ double fracture_normal_stress(double p, const double S[6], const double n[3])
 
 void fracture_open_by(double S[6], const double n[3], double G, double dw)
 {
-  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[1] * n[2], n[0] * n[2]};
+  const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2],
+                        n[0] * n[1], n[1] * n[2], n[0] * n[2]};
   for (int k = 0; k < 6; k++) S[k] -= 2.0 * G * dw * (nn[k] - (k < 3 ? 1.0 / 3.0 : 0.0));
 }
 

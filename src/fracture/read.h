@@ -30,8 +30,7 @@ int fracture_read_cumulative(struct cfg *c, const char *fp, struct material *m,
 /* cohesive.c: energy (model tresca). */
 int fracture_read_energy(struct cfg *c, const char *fp, struct material *m, struct hv_error *err);
 /* split_fluid.c: friction (any model but none). */
-int fracture_read_friction(struct cfg *c, const char *fp, struct material *m,
-                           struct hv_error *err);
+int fracture_read_friction(struct cfg *c, const char *fp, struct material *m, struct hv_error *err);
 /* crack.c: crack_eps_f (split: crack). */
 int fracture_read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_params *f,
                               struct hv_error *err);

@@ -75,8 +75,8 @@ double fracture_open_strain(const struct fracture_params *fp, double l);
  * is left to the yield stress. Returns the new D: w_max/w_u (at least 10⁻¹²), or 1 when
  * w_max reaches w_u (split: the caller drops S; n = 0, w = 0); d0 when nothing opens. */
 double fracture_cohesive_return(const struct fracture_params *fp, double d0, double d, double p,
-                                double K, double G, double l, double S[6], double n[3],
-                                double *w, double *dp);
+                                double K, double G, double l, double S[6], double n[3], double *w,
+                                double *dp);
 /* fracture_cohesive_return on particle i given its tensile test d (its S holding the
  * end-of-step deviator): moves its state and damage; returns 1 when its pressure must be
  * evaluated again. */

@@ -22,18 +22,16 @@ int fracture_fluid_end(struct particles *p, size_t i, const struct fracture_para
 {
   if (split_now || !(fp->friction > 0.0))
     for (int k = 0; k < 6; k++) p->S[k][i] = 0.0;
-  return p->p[i] < 0.0;   /* split (now or in the first pass) and in tension */
+  return p->p[i] < 0.0; /* split (now or in the first pass) and in tension */
 }
 
 /* ---- reading (fracture_read.c) ---------------------------------------------------- */
 
-int fracture_read_friction(struct cfg *c, const char *fp, struct material *m,
-                           struct hv_error *err)
+int fracture_read_friction(struct cfg *c, const char *fp, struct material *m, struct hv_error *err)
 {
   const double zero = 0.0;
   char k[320];
-  if (fracture_get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &m->frac.friction,
-                     err))
+  if (fracture_get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &m->frac.friction, err))
     return -1;
   if (m->frac.friction > 0.0 && !m->str.enabled)
     return fracture_key_error(c, fracture_key(k, sizeof k, fp, "friction"), err,

@@ -10,7 +10,7 @@
 
 int fracture_over_limit(const struct fracture_params *fp, double p, const double S[6])
 {
-  const double limit = -fp->sigma_c;   /* σ_c < 0: tension */
+  const double limit = -fp->sigma_c; /* σ_c < 0: tension */
   const double sig[6] = {S[0] - p, S[1] - p, S[2] - p, S[3], S[4], S[5]};
   /* the bound first: most particles are far from the limit, the eigenvalues cost more */
   return limit > 0 && sym3_max_bound(sig) > limit && fracture_max_principal(p, S) > limit;
@@ -34,9 +34,10 @@ int fracture_read_sigma_c(struct cfg *c, const char *fp, const double *def, int 
   fracture_key(k, sizeof k, fp, "sigma_c");
   if (cfg_get_quantity(c, k, UNIT_PRESSURE, def, -HUGE_VAL, HUGE_VAL, out, err)) return -1;
   if (cfg_has(c, k) && !(*out < 0.0) && !(zero_off && *out == 0.0))
-    return fracture_key_error(c, k, err, "sigma_c = %.9g Pa must be negative (tension is "
-                              "negative, as in the paper's tables)%s", *out,
-                              zero_off ? "; 0 switches the tensile criterion off" : "");
+    return fracture_key_error(c, k, err,
+                              "sigma_c = %.9g Pa must be negative (tension is "
+                              "negative, as in the paper's tables)%s",
+                              *out, zero_off ? "; 0 switches the tensile criterion off" : "");
   return 0;
 }
 

@@ -60,38 +60,40 @@ static int update_eos(struct sim *s, struct hv_error *err)
     /* a plane of it opening (fracture.split: crack, fracture.energy): the EOS takes the
        material's density, without the plane's opening */
     const double rho_m = p->solid ? fracture_eos_density(p, i, &m->frac) : p->rho[i];
-    if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) ||
-        eos_evaluate(m, rho_m, p->e[i], &st) || !isfinite(st.p) || !isfinite(st.cs)) {
+    if (!(p->rho[i] > 0) || !isfinite(p->rho[i]) || eos_evaluate(m, rho_m, p->e[i], &st) ||
+        !isfinite(st.p) || !isfinite(st.cs)) {
       if ((long)i < bad) bad = (long)i;
       continue;
     }
-    if (p->solid) st.p = fracture_pressure(&m->frac, p->fstate[i], st.p);   /* split: no tension */
+    if (p->solid) st.p = fracture_pressure(&m->frac, p->fstate[i], st.p); /* split: no tension */
     if (m->str.enabled && (!p->solid || fracture_keeps_stress(&m->frac, p->fstate[i])))
-      st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]);  /* longitudinal */
+      st.cs = sqrt(st.cs * st.cs + 4.0 / 3.0 * m->str.G / p->rho[i]); /* longitudinal */
     p->p[i] = st.p;
     p->cs[i] = st.cs;
   }
   if (bad == LONG_MAX) return 0;
   size_t i = (size_t)bad;
   const char *bname = s->body[p->body[i]].name, *mname = s->mat[p->mat[i]].name;
-  if (!(p->rho[i] > 0) || !isfinite(p->rho[i]))   /* ρⁿ exp(Δt Dρ/ρⁿ): 0 or inf */
-    return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s to %.9g s): particle %lld (body "
+  if (!(p->rho[i] > 0) || !isfinite(p->rho[i])) /* ρⁿ exp(Δt Dρ/ρⁿ): 0 or inf */
+    return hv_error_set(err, HV_EXIT_RUN,
+                        "step %ld (t = %.9g s to %.9g s): particle %lld (body "
                         "'%s'): field rho: %g kg/m3 is not a positive finite density "
                         "(compressed or stretched beyond what the time step can follow)",
                         s->step, s->t, s->t + s->dt, (long long)p->id[i], bname, p->rho[i]);
   char what[512];
   struct eos_state st;
   const struct material *mb = &s->mat[p->mat[i]];
-  const double rho_b = p->solid ? fracture_eos_density(p, i, &mb->frac) : p->rho[i];   /* as above */
+  const double rho_b = p->solid ? fracture_eos_density(p, i, &mb->frac) : p->rho[i]; /* as above */
   const int est = eos_evaluate(mb, rho_b, p->e[i], &st);
   eos_describe(mb, rho_b, p->e[i], est, what, sizeof what);
-  if (est == EOS_OK) {   /* taken, but not finite: say what came out */
+  if (est == EOS_OK) { /* taken, but not finite: say what came out */
     const size_t k = strlen(what);
     snprintf(what + k, sizeof what - k, " (p = %g Pa, c = %g m/s)", st.p, st.cs);
   }
-  return hv_error_set(err, HV_EXIT_RUN, "step %ld (t = %.9g s): particle %lld (body '%s', "
-                      "material '%s'): field p: %s", s->step, s->t, (long long)p->id[i], bname,
-                      mname, what);
+  return hv_error_set(err, HV_EXIT_RUN,
+                      "step %ld (t = %.9g s): particle %lld (body '%s', "
+                      "material '%s'): field p: %s",
+                      s->step, s->t, (long long)p->id[i], bname, mname, what);
 }
 
 /* Ghosts and the cell grid at the current positions. */
@@ -171,7 +173,7 @@ static double next_dt(struct sim *s)
           k = DT_ACCELERATION;
         }
       }
-      for (int dim = 0; any_mirror && dim < 3; dim++) {   /* approach to a mirror face */
+      for (int dim = 0; any_mirror && dim < 3; dim++) { /* approach to a mirror face */
         const double v = p->v[dim][i];
         double dist, u;
         if (mirror[dim][0] && v < 0.0) {
@@ -189,7 +191,7 @@ static double next_dt(struct sim *s)
           k = DT_CFL;
         }
       }
-      p->dt[i] = d;   /* its own limit, for the snapshots (output-files.md) */
+      p->dt[i] = d; /* its own limit, for the snapshots (output-files.md) */
       if (d < tdt) {
         tdt = d;
         twho = i;
@@ -219,8 +221,8 @@ static double next_dt(struct sim *s)
 
 const char *step_limit_name(enum dt_limit k)
 {
-  static const char *const names[] = {"CFL h/v_sig", "acceleration sqrt(h/|a|)",
-                                      "growth limit", "time.dt_max", "time.dt_init"};
+  static const char *const names[] = {"CFL h/v_sig", "acceleration sqrt(h/|a|)", "growth limit",
+                                      "time.dt_max", "time.dt_init"};
   return names[k];
 }
 
@@ -237,10 +239,13 @@ static int check_state(const struct sim *s, struct hv_error *err)
   }
   if (bad == LONG_MAX) return 0;
   size_t i = (size_t)bad;
-  const char *field = isnan(p->rho[i]) ? "rho (NaN)" : !isfinite(p->rho[i]) ? "rho (infinite)"
-                      : !(p->rho[i] > 0) ? "rho (<= 0)"
-                      : !isfinite(p->e[i]) ? "e (not finite)" : "x or v (not finite)";
-  return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: particle %lld (body '%s'): "
+  const char *field = isnan(p->rho[i])       ? "rho (NaN)"
+                      : !isfinite(p->rho[i]) ? "rho (infinite)"
+                      : !(p->rho[i] > 0)     ? "rho (<= 0)"
+                      : !isfinite(p->e[i])   ? "e (not finite)"
+                                             : "x or v (not finite)";
+  return hv_error_set(err, HV_EXIT_RUN,
+                      "t = %.9g s, step %ld: particle %lld (body '%s'): "
                       "field %s: rho = %g kg/m3, e = %g J/kg, x = (%g, %g, %g) m",
                       s->t, s->step, (long long)p->id[i], s->body[p->body[i]].name, field,
                       p->rho[i], p->e[i], p->x[0][i], p->x[1][i], p->x[2][i]);
@@ -314,8 +319,10 @@ int step_init(struct sim *s, struct hv_error *err)
       const char *key = s->cfg && cfg_has(s->cfg, "domain") ? "domain" : "bodies";
       char where[256] = "";
       if (s->cfg) cfg_where(s->cfg, key, where, sizeof where);
-      hv_error_prefix(err, "%s%s%s: the bodies with their boundary ghosts do not fit the "
-                      "neighbour grid: ", where, *where ? ": " : "", key);
+      hv_error_prefix(err,
+                      "%s%s%s: the bodies with their boundary ghosts do not fit the "
+                      "neighbour grid: ",
+                      where, *where ? ": " : "", key);
       err->code = HV_EXIT_INPUT;
     }
     return -1;
@@ -325,7 +332,7 @@ int step_init(struct sim *s, struct hv_error *err)
   for (size_t i = 0; i < p->n; i++) p->de[i] = 0.0;
   sph_forces(p, &s->grid, &s->sph, NULL, s->mat);
   s->dt_prop = 0.0;
-  const double dt = next_dt(s);   /* with time.dt_init too: each particle's own limit */
+  const double dt = next_dt(s); /* with time.dt_init too: each particle's own limit */
   s->dt = s->dt_prop = s->tp.dt_init > 0 ? s->tp.dt_init : dt;
   if (s->tp.dt_init > 0) s->dt_limit = DT_INIT;
   return 0;
@@ -348,7 +355,7 @@ int step_advance(struct sim *s, struct hv_error *err)
   size_t n = p->n;
   if (s->reorder_every > 0 && s->step % s->reorder_every == 0) reorder(s);
 
-  /* 1. predictor: coordinates, velocities and energy at mid-step (from the last
+    /* 1. predictor: coordinates, velocities and energy at mid-step (from the last
    *    step's rates); save the step start */
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
@@ -366,7 +373,7 @@ int step_advance(struct sim *s, struct hv_error *err)
   /* 2. density rate (and, for solids, the stress update) at mid-step; mid-step
    *    density and pressure; artificial stress; ghosts take the mid-step values */
   sph_density_rate(p, &s->grid, &s->sph, &s->cache, s->mat, dt);
-  const int summed = s->sph.summation && !p->solid;   /* rho holds the mid-step sum */
+  const int summed = s->sph.summation && !p->solid; /* rho holds the mid-step sum */
   /* continuity in the volume form, Dρ = ρ Σⱼ Vⱼ vᵢⱼ·∇ᵢWᵢⱼ, integrated as
      d ln ρ/dt = Dρ/ρ over the step with the mid-step rate: ρ = ρⁿ exp(Δt Dρ/ρⁿ), the
      same as ρⁿ + Δt Dρ to second order in Δt Dρ/ρⁿ (the scheme's order) and positive
@@ -374,12 +381,12 @@ int step_advance(struct sim *s, struct hv_error *err)
      neighbours: W.P.3 with density diffusion went below 0 at 5 µs with the linear
      update, before the neighbour-volume bound of sph_solid.c); the mass form, the
      exact rate of the summed density, is not proportional to ρ and stays linear */
-  const int logrho = !s->sph.continuity_mass;   /* an error with strength or fracture */
+  const int logrho = !s->sph.continuity_mass; /* an error with strength or fracture */
   if (!summed) {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++)
-      p->rho[i] = logrho ? p->rho0[i] * exp(hdt * p->drho[i] / p->rho0[i])
-                         : p->rho0[i] + hdt * p->drho[i];
+      p->rho[i] =
+          logrho ? p->rho0[i] * exp(hdt * p->drho[i] / p->rho0[i]) : p->rho0[i] + hdt * p->drho[i];
   }
   if (update_eos(s, err)) return -1;
   sph_artificial_stress(p, &s->sph, s->mat);
@@ -400,7 +407,7 @@ int step_advance(struct sim *s, struct hv_error *err)
       p->x[k][i] += hdt * p->v[k][i];
     }
     /* continuity: over the whole step; summation: from the mid-step sum */
-    p->rho[i] = summed    ? p->rho[i] + hdt * p->drho[i]
+    p->rho[i] = summed   ? p->rho[i] + hdt * p->drho[i]
                 : logrho ? p->rho0[i] * exp(dt * p->drho[i] / p->rho0[i])
                          : p->rho0[i] + dt * p->drho[i];
     p->e[i] = p->e0[i] + dt * p->de[i];
@@ -424,7 +431,9 @@ int step_advance(struct sim *s, struct hv_error *err)
   update_h(s);
   s->dt = s->dt_prop = next_dt(s);
   if (!(s->dt >= s->tp.dt_min))
-    return hv_error_set(err, HV_EXIT_RUN, "t = %.9g s, step %ld: the time step fell to %g s, "
-                        "below time.dt_min = %g s", s->t, s->step, s->dt, s->tp.dt_min);
+    return hv_error_set(err, HV_EXIT_RUN,
+                        "t = %.9g s, step %ld: the time step fell to %g s, "
+                        "below time.dt_min = %g s",
+                        s->t, s->step, s->dt, s->tp.dt_min);
   return 0;
 }

@@ -47,8 +47,8 @@ int atomic_file_open(struct atomic_file *af, const char *path, struct hv_error *
   af->f = fopen(af->tmp, "wb");
   if (!af->f) {
     int e = errno;
-    hv_error_set(err, HV_EXIT_RUN, "cannot create '%s' (temporary file '%s'): %s", path,
-                 af->tmp, strerror(e));
+    hv_error_set(err, HV_EXIT_RUN, "cannot create '%s' (temporary file '%s'): %s", path, af->tmp,
+                 strerror(e));
     af->tmp[0] = '\0';
     return -1;
   }
@@ -89,8 +89,8 @@ int atomic_file_commit(struct atomic_file *af, struct hv_error *err)
   if (fclose(f) != 0) return commit_fail(af, err, "close", errno);
   if (rename(af->tmp, af->path) != 0) {
     e = errno;
-    hv_error_set(err, HV_EXIT_RUN, "cannot write '%s' (rename from '%s'): %s", af->path,
-                 af->tmp, strerror(e));
+    hv_error_set(err, HV_EXIT_RUN, "cannot write '%s' (rename from '%s'): %s", af->path, af->tmp,
+                 strerror(e));
     atomic_file_abort(af);
     return -1;
   }
@@ -144,8 +144,7 @@ static int mkdir_one(const char *d, const char *whole, struct hv_error *err)
   const char *why = e == EEXIST ? "exists and is not a folder" : strerror(e);
   if (strcmp(d, whole) == 0)
     return hv_error_set(err, HV_EXIT_INPUT, "cannot create folder '%s': %s", whole, why);
-  return hv_error_set(err, HV_EXIT_INPUT, "cannot create folder '%s' (at '%s'): %s", whole, d,
-                      why);
+  return hv_error_set(err, HV_EXIT_INPUT, "cannot create folder '%s' (at '%s'): %s", whole, d, why);
 }
 
 int io_mkdir_p(const char *dir, struct hv_error *err)
@@ -180,7 +179,7 @@ int atomic_file_remove_stale(const char *dir)
     char *end;
     long pid = strtol(t + 5, &end, 10);
     if (*end || pid <= 0 || pid == (long)getpid()) continue;
-    if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue;   /* that writer may live */
+    if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue; /* that writer may live */
     if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) < sizeof path &&
         unlink(path) == 0)
       removed++;

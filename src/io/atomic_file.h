@@ -28,9 +28,9 @@
 #include "core/error.h"
 
 struct atomic_file {
-  FILE *f;           /* the temporary file, open for writing; NULL once closed */
-  char path[4096];   /* the target */
-  char tmp[4096];    /* the temporary file; "" once removed or renamed */
+  FILE *f;         /* the temporary file, open for writing; NULL once closed */
+  char path[4096]; /* the target */
+  char tmp[4096];  /* the temporary file; "" once removed or renamed */
 };
 
 /* Creates "<dir>/.<base>.tmp.<pid>" next to `path` and opens it for binary writing.

@@ -12,7 +12,7 @@
 
 static const char MAGIC[8] = {'H', 'V', 'S', 'P', 'H', 'C', 'K', 'P'};
 enum { FORMAT_VERSION = 1, BOM = 0x01020304, BOM_SWAPPED = 0x04030201 };
-#define HEADER_BYTES 16
+#define HEADER_BYTES        16
 #define RECORD_HEADER_BYTES (CKPT_NAME_LEN + 16)
 
 static size_t type_size(enum ckpt_type t)
@@ -20,7 +20,8 @@ static size_t type_size(enum ckpt_type t)
   switch (t) {
   case CKPT_BYTES: return 1;
   case CKPT_I32: return 4;
-  case CKPT_I64: case CKPT_F64: return 8;
+  case CKPT_I64:
+  case CKPT_F64: return 8;
   }
   return 0;
 }
@@ -39,7 +40,7 @@ static const char *type_name(enum ckpt_type t)
 static int wr(struct ckpt_writer *w, const void *buf, size_t len, struct hv_error *err)
 {
   const unsigned char *b = buf;
-  for (size_t done = 0; done < len;) {   /* crc32_z would do; chunks keep uInt safe */
+  for (size_t done = 0; done < len;) { /* crc32_z would do; chunks keep uInt safe */
     size_t k = len - done > (1u << 30) ? (1u << 30) : len - done;
     w->crc = (uint32_t)crc32(w->crc, b + done, (uInt)k);
     done += k;
@@ -64,16 +65,18 @@ int ckpt_write_open(struct ckpt_writer *w, const char *path, struct hv_error *er
   return 0;
 }
 
-static int put_header(struct ckpt_writer *w, const char *name, enum ckpt_type type,
-                      uint64_t count, struct hv_error *err)
+static int put_header(struct ckpt_writer *w, const char *name, enum ckpt_type type, uint64_t count,
+                      struct hv_error *err)
 {
   unsigned char h[RECORD_HEADER_BYTES];
   memset(h, 0, sizeof h);
   const size_t len = strlen(name);
   if (len == 0 || len > CKPT_NAME_LEN) {
     atomic_file_abort(&w->af);
-    return hv_error_set(err, HV_EXIT_RUN, "%s: checkpoint record name '%s' is empty or longer "
-                        "than %d characters", w->af.path, name, CKPT_NAME_LEN);
+    return hv_error_set(err, HV_EXIT_RUN,
+                        "%s: checkpoint record name '%s' is empty or longer "
+                        "than %d characters",
+                        w->af.path, name, CKPT_NAME_LEN);
   }
   memcpy(h, name, len);
   const uint32_t t = (uint32_t)type;
@@ -148,8 +151,7 @@ int ckpt_open(struct ckpt_file *c, const char *path, struct hv_error *err)
   if (fread(h, 1, HEADER_BYTES, f) != HEADER_BYTES || memcmp(h, MAGIC, 8))
     return bad(c, err, "no HVSPHCKP header");
   memcpy(&bom, h + 12, 4);
-  if (bom == BOM_SWAPPED)
-    return bad(c, err, "written on a machine of the other byte order");
+  if (bom == BOM_SWAPPED) return bad(c, err, "written on a machine of the other byte order");
   rewind(f);
 
   /* the CRC of everything before the last 4 bytes */
@@ -227,8 +229,8 @@ const struct ckpt_record *ckpt_find(const struct ckpt_file *c, const char *name)
   return NULL;
 }
 
-static const struct ckpt_record *lookup(struct ckpt_file *c, const char *name,
-                                        enum ckpt_type type, struct hv_error *err)
+static const struct ckpt_record *lookup(struct ckpt_file *c, const char *name, enum ckpt_type type,
+                                        struct hv_error *err)
 {
   const struct ckpt_record *r = ckpt_find(c, name);
   if (!r) {
@@ -236,15 +238,15 @@ static const struct ckpt_record *lookup(struct ckpt_file *c, const char *name,
     return NULL;
   }
   if (r->type != type) {
-    hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s' holds %s, expected %s",
-                 c->path, name, type_name(r->type), type_name(type));
+    hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s' holds %s, expected %s", c->path,
+                 name, type_name(r->type), type_name(type));
     return NULL;
   }
   return r;
 }
 
-static int read_at(struct ckpt_file *c, const struct ckpt_record *r, long long offset,
-                   void *dst, size_t bytes, struct hv_error *err)
+static int read_at(struct ckpt_file *c, const struct ckpt_record *r, long long offset, void *dst,
+                   size_t bytes, struct hv_error *err)
 {
   if (bytes == 0) return 0;
   if (fseeko(c->f, (off_t)(r->offset + offset), SEEK_SET) || fread(dst, 1, bytes, c->f) != bytes)
@@ -259,8 +261,10 @@ int ckpt_get_parts(struct ckpt_file *c, const char *name, enum ckpt_type type, s
   const struct ckpt_record *r = lookup(c, name, type, err);
   if (!r) return -1;
   if (r->count != (uint64_t)count * (uint64_t)nparts)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s' has %llu elements, "
-                        "expected %llu", c->path, name, (unsigned long long)r->count,
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: checkpoint record '%s' has %llu elements, "
+                        "expected %llu",
+                        c->path, name, (unsigned long long)r->count,
                         (unsigned long long)count * (unsigned long long)nparts);
   const size_t bytes = count * type_size(type);
   for (int k = 0; k < nparts; k++)
@@ -268,8 +272,8 @@ int ckpt_get_parts(struct ckpt_file *c, const char *name, enum ckpt_type type, s
   return 0;
 }
 
-int ckpt_get(struct ckpt_file *c, const char *name, enum ckpt_type type, size_t count,
-             void *dst, struct hv_error *err)
+int ckpt_get(struct ckpt_file *c, const char *name, enum ckpt_type type, size_t count, void *dst,
+             struct hv_error *err)
 {
   return ckpt_get_parts(c, name, type, count, &dst, 1, err);
 }

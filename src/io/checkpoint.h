@@ -50,12 +50,12 @@ struct ckpt_record {
   char name[CKPT_NAME_LEN + 1];
   enum ckpt_type type;
   uint64_t count;
-  long long offset;   /* of the data in the file */
+  long long offset; /* of the data in the file */
 };
 
 struct ckpt_file {
   char path[4096];
-  void *f;            /* FILE * */
+  void *f; /* FILE * */
   struct ckpt_record *rec;
   int nrec;
 };
@@ -67,8 +67,8 @@ void ckpt_close(struct ckpt_file *c);
 /* The record of that name, or NULL. */
 const struct ckpt_record *ckpt_find(const struct ckpt_file *c, const char *name);
 /* Reads record `name`, which must have `type` and exactly `count` elements, into dst. */
-int ckpt_get(struct ckpt_file *c, const char *name, enum ckpt_type type, size_t count,
-             void *dst, struct hv_error *err);
+int ckpt_get(struct ckpt_file *c, const char *name, enum ckpt_type type, size_t count, void *dst,
+             struct hv_error *err);
 /* Same for a record written by ckpt_put_parts: count elements into each part. */
 int ckpt_get_parts(struct ckpt_file *c, const char *name, enum ckpt_type type, size_t count,
                    void *const *parts, int nparts, struct hv_error *err);

@@ -36,9 +36,9 @@ static const struct {
   const char *col, *field;
   int comp;
 } csv_fixed[] = {
-    {"id", "id", 0},   {"x", "x", 0},   {"y", "x", 1}, {"z", "x", 2}, {"vx", "v", 0},
-    {"vy", "v", 1},    {"vz", "v", 2},  {"m", "m", 0}, {"rho", "rho", 0}, {"p", "p", 0},
-    {"e", "e", 0},     {"h", "h", 0},   {"mat", "mat", 0},
+    {"id", "id", 0}, {"x", "x", 0},  {"y", "x", 1},     {"z", "x", 2},     {"vx", "v", 0},
+    {"vy", "v", 1},  {"vz", "v", 2}, {"m", "m", 0},     {"rho", "rho", 0}, {"p", "p", 0},
+    {"e", "e", 0},   {"h", "h", 0},  {"mat", "mat", 0},
 };
 #define CSV_NFIXED ((int)(sizeof csv_fixed / sizeof csv_fixed[0]))
 
@@ -63,12 +63,14 @@ static int csv_columns(const struct pfield *f, int nf, struct csv_col *cols)
     used[fi] = 1;
   }
   static const char *sfx3[3] = {"_x", "_y", "_z"};
-  static const char *sfx6[6] = {"_xx", "_yy", "_zz", "_xy", "_yz", "_xz"};  /* VTK order */
+  static const char *sfx6[6] = {"_xx", "_yy", "_zz", "_xy", "_yz", "_xz"}; /* VTK order */
   for (int k = 0; k < nf; k++) {
     if (used[k] || !(f[k].flags & PF_OUT)) continue;
     for (int c = 0; c < f[k].ncomp; c++) {
       snprintf(cols[nc].name, sizeof cols[nc].name, "%s%s", f[k].name,
-               f[k].ncomp == 3 ? sfx3[c] : f[k].ncomp == 6 ? sfx6[c] : "");
+               f[k].ncomp == 3   ? sfx3[c]
+               : f[k].ncomp == 6 ? sfx6[c]
+                                 : "");
       cols[nc].field = k;
       cols[nc++].comp = c;
     }
@@ -103,7 +105,7 @@ static int csv_body(struct atomic_file *af, struct particles *p, const struct sn
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 0);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 0);
   if (atomic_file_printf(af, err, "# hvsph %s case %s time %.17g s step %ld\n", ver, name,
-                   meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
+                         meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
       io_put_materials(af, meta, "# ", "\n", 0, err))
     return -1;
   for (int c = 0; c < nc; c++)
@@ -122,8 +124,8 @@ static int csv_body(struct atomic_file *af, struct particles *p, const struct sn
   return 0;
 }
 
-int io_write_particles_csv(const char *path, struct particles *p,
-                           const struct snapshot_meta *meta, struct hv_error *err)
+int io_write_particles_csv(const char *path, struct particles *p, const struct snapshot_meta *meta,
+                           struct hv_error *err)
 {
   struct atomic_file af;
   if (atomic_file_open(&af, path, err)) return -1;
@@ -139,14 +141,14 @@ int io_write_particles_csv(const char *path, struct particles *p,
 struct csv_reader {
   const char *path;
   long lineno;
-  int ncols;   /* columns in the file's header; 0 until the header is read */
-  int *map;    /* file column -> index into cols[], or -1 (ignored) */
-  char **tok;  /* ncols token pointers, reused for every row */
-  int nknown;  /* entries in cols[] */
-  int solid;   /* the file has solid fields (PF_SOLID) */
-  int av;      /* the file has the viscosity switch's fields (PF_AV) */
-  int crack;   /* the file has the crack normals (PF_CRACK) */
-  const struct pfield *fields;  /* particles_fields_all() view the cols refer to */
+  int ncols;                   /* columns in the file's header; 0 until the header is read */
+  int *map;                    /* file column -> index into cols[], or -1 (ignored) */
+  char **tok;                  /* ncols token pointers, reused for every row */
+  int nknown;                  /* entries in cols[] */
+  int solid;                   /* the file has solid fields (PF_SOLID) */
+  int av;                      /* the file has the viscosity switch's fields (PF_AV) */
+  int crack;                   /* the file has the crack normals (PF_CRACK) */
+  const struct pfield *fields; /* particles_fields_all() view the cols refer to */
   struct csv_col cols[CSV_MAX_COLS];
 };
 
@@ -184,7 +186,7 @@ static int csv_header(struct csv_reader *r, char *line, struct hv_error *err)
       if (strcmp(r->tok[c], r->cols[k].name) == 0) r->map[c] = k;
     if (r->map[c] >= 0 && r->map[c] < 4) have[r->map[c]] = 1;
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_SOLID))
-      r->solid = 1;  /* a solid field in the file: the store needs its solid arrays */
+      r->solid = 1; /* a solid field in the file: the store needs its solid arrays */
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_AV)) r->av = 1;
     if (r->map[c] >= 0 && (r->fields[r->cols[r->map[c]].field].flags & PF_CRACK)) r->crack = 1;
   }
@@ -222,8 +224,8 @@ static int csv_row(struct csv_reader *r, struct particles *p, char *line, struct
 {
   int n = csv_count(line);
   if (n != r->ncols)
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s' line %ld: %d values, the header has %d",
-                        r->path, r->lineno, n, r->ncols);
+    return hv_error_set(err, HV_EXIT_INPUT, "'%s' line %ld: %d values, the header has %d", r->path,
+                        r->lineno, n, r->ncols);
   csv_split(line, r->tok, n);
   size_t i = particles_add(p, 1);
   struct pfield f[HV_MAX_FIELDS];
@@ -275,17 +277,15 @@ static int csv_lines(struct csv_reader *r, FILE *f, struct particles *p, double 
   if (rc == 0 && ferror(f))
     rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", r->path,
                       strerror(errno ? errno : EIO));
-  if (rc == 0 && !r->map)
-    rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no header line", r->path);
+  if (rc == 0 && !r->map) rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no header line", r->path);
   free(line);
   return rc;
 }
 
-int io_read_particles_csv(const char *path, struct particles *p, double *time,
-                          struct hv_error *err)
+int io_read_particles_csv(const char *path, struct particles *p, double *time, struct hv_error *err)
 {
   if (time) *time = NAN;
-  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err); /* a FIFO would block the open */
   if (!f) return -1;
   struct csv_reader *r = hv_calloc(1, sizeof *r, "CSV reader");
   struct pfield fv[HV_MAX_FIELDS];

@@ -29,7 +29,7 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
   const char *const src_end = src + strlen(src);
   for (const char *s = src; *s && k + 1 < len; s++) {
     unsigned char c = (unsigned char)*s;
-    if (c >= 0x80) {   /* XML (and UTF-8 CSV readers) refuse malformed UTF-8: keep only */
+    if (c >= 0x80) { /* XML (and UTF-8 CSV readers) refuse malformed UTF-8: keep only */
       /* whole, valid characters */
       const size_t n = hv_utf8_char((const unsigned char *)s, (size_t)(src_end - s));
       if (n && k + n < len) {
@@ -38,11 +38,13 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
         s += n - 1;
         continue;
       }
-      if (n) break;    /* a valid character that does not fit: end here, not in its middle */
+      if (n) break; /* a valid character that does not fit: end here, not in its middle */
       c = '_';
     }
-    if (c < 0x20 || c == 0x7f) c = '_';
-    else if (xml_comment && c == '-' && k > 0 && dst[k - 1] == '-') c = '_';
+    if (c < 0x20 || c == 0x7f)
+      c = '_';
+    else if (xml_comment && c == '-' && k > 0 && dst[k - 1] == '-')
+      c = '_';
     dst[k++] = (char)c;
   }
   /* An XML comment must not end in '-' either ("--->"). */
@@ -92,14 +94,14 @@ static int pvd_body(struct atomic_file *af, const double *times, const char *con
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
   if (atomic_file_printf(af, err,
-                   "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n"
-                   "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
-                   "  <Collection>\n",
-                   ver, name, first ? "LittleEndian" : "BigEndian"))
+                         "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n"
+                         "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
+                         "  <Collection>\n",
+                         ver, name, first ? "LittleEndian" : "BigEndian"))
     return -1;
   for (int k = 0; k < n; k++) {
     if (atomic_file_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",
-                     times[k]) ||
+                           times[k]) ||
         io_put_xml_attr(af, files[k] ? files[k] : "", err) || atomic_file_printf(af, err, "\"/>\n"))
       return -1;
   }
@@ -140,8 +142,8 @@ static int table_comment(struct atomic_file *af, const char *comment, struct hv_
   return 0;
 }
 
-static int table_body(struct atomic_file *af, const char *const *cols, int ncols, const double *rows,
-                      int nrows, const char *comment, struct hv_error *err)
+static int table_body(struct atomic_file *af, const char *const *cols, int ncols,
+                      const double *rows, int nrows, const char *comment, struct hv_error *err)
 {
   if (comment && table_comment(af, comment, err)) return -1;
   for (int c = 0; c < ncols; c++)
@@ -177,7 +179,7 @@ int io_write_table_csv(const char *path, const char *const *cols, int ncols, con
 int io_read_table_column(const char *path, const char *col, double **vals, struct hv_error *err)
 {
   *vals = NULL;
-  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err); /* a FIFO would block the open */
   if (!f) return -1;
   char line[8192];
   int which = -1, n = 0;
@@ -185,9 +187,10 @@ int io_read_table_column(const char *path, const char *col, double **vals, struc
   while (fgets(line, sizeof line, f)) {
     if (line[0] == '#') continue;
     line[strcspn(line, "\r\n")] = 0;
-    if (which < 0) {   /* the header */
+    if (which < 0) { /* the header */
       int c = 0;
-      for (char *save = NULL, *t = strtok_r(line, ",", &save); t; t = strtok_r(NULL, ",", &save), c++)
+      for (char *save = NULL, *t = strtok_r(line, ",", &save); t;
+           t = strtok_r(NULL, ",", &save), c++)
         if (!strcmp(t, col)) which = c;
       if (which < 0) {
         fclose(f);
@@ -206,7 +209,7 @@ int io_read_table_column(const char *path, const char *col, double **vals, struc
   }
   const int e = ferror(f) ? (errno ? errno : EIO) : 0;
   fclose(f);
-  if (e || which < 0) {   /* unreadable, or no header line: not "no rows" */
+  if (e || which < 0) { /* unreadable, or no header line: not "no rows" */
     free(*vals);
     *vals = NULL;
     if (e) return hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
@@ -291,7 +294,7 @@ int io_read_pvd(const char *path, double **times, char ***files, struct hv_error
 {
   *times = NULL;
   *files = NULL;
-  FILE *f = hv_open_input(path, NULL, 0, NULL, err);   /* a FIFO would block the open */
+  FILE *f = hv_open_input(path, NULL, 0, NULL, err); /* a FIFO would block the open */
   if (!f) return -1;
   char *text = NULL;
   size_t len = 0, cap = 0, got;
@@ -313,23 +316,30 @@ int io_read_pvd(const char *path, double **times, char ***files, struct hv_error
      it cannot hold "\n<VTKFile"); a file of another writer is read from its start */
   const char *root = strstr(text, "\n<VTKFile");
   const char *coll = memchr(text, '\0', len) ? NULL : strstr(root ? root : text, "<Collection");
-  if (e) rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
+  if (e)
+    rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(e));
   else if (!coll)
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: not a ParaView collection (no <Collection> "
-                      "element)", path);
+    rc = hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: not a ParaView collection (no <Collection> "
+                      "element)",
+                      path);
   for (const char *q = coll; !rc && (q = strstr(q, "<DataSet")) != NULL; n++) {
     const char *end = strchr(q, '>');
     char name[4096], ts[128], *tend;
     if (!end || io_xml_attr(q, end, "file", name, sizeof name) ||
         io_xml_attr(q, end, "timestep", ts, sizeof ts)) {
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: DataSet entry %d has no readable file and "
-                        "timestep", path, n + 1);
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: DataSet entry %d has no readable file and "
+                        "timestep",
+                        path, n + 1);
       break;
     }
     const double t = strtod(ts, &tend);
     if (tend == ts || *tend) {
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: DataSet entry %d: timestep '%s' is not a "
-                        "number", path, n + 1, ts);
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: DataSet entry %d: timestep '%s' is not a "
+                        "number",
+                        path, n + 1, ts);
       break;
     }
     *times = hv_realloc(*times, (size_t)(n + 1) * sizeof **times, "run.pvd");
@@ -372,18 +382,21 @@ int io_run_snapshots(const char *dir, const char *prefer, struct io_run_snapshot
     if (n < 0) return -1;
     nums = hv_malloc((size_t)(n ? n : 1) * sizeof *nums, "snapshot list");
     int bad = -1;
-    for (int k = 0; k < n; k++) {   /* particles_NNNNN.vtu exactly, as the run writes it */
+    for (int k = 0; k < n; k++) { /* particles_NNNNN.vtu exactly, as the run writes it */
       char again[64];
       int len = 0;
       nums[k] = -1;
       if (sscanf(files[k], "particles_%d%n", &nums[k], &len) == 1 && nums[k] >= 0)
         snprintf(again, sizeof again, "particles_%05d.vtu", nums[k]);
-      else again[0] = '\0';
+      else
+        again[0] = '\0';
       if (strcmp(again, files[k]) && bad < 0) bad = k;
     }
     if (bad >= 0)
-      hv_error_set(err, HV_EXIT_INPUT, "%s: entry %d names '%s', not a particles_NNNNN.vtu "
-                   "snapshot of the folder", path, bad + 1, files[bad]);
+      hv_error_set(err, HV_EXIT_INPUT,
+                   "%s: entry %d names '%s', not a particles_NNNNN.vtu "
+                   "snapshot of the folder",
+                   path, bad + 1, files[bad]);
     for (int k = 0; k < n; k++) free(files[k]);
     free(files);
     free(times);

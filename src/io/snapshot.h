@@ -14,15 +14,15 @@
 #include "particles/particles.h"
 
 struct snapshot_meta {
-  double time;                        /* [s] simulated time of the snapshot */
-  long step;                          /* step number */
-  const char *version;                /* hvsph version string, written into every file */
-  const char *case_name;              /* name of the case */
-  const char *const *material_names;  /* index -> name, for the mat column; may be NULL */
-  int nmat;                           /* entries in material_names */
-  const char *const *body_names;      /* index -> name, for the body column; may be NULL */
-  int nbody;                          /* entries in body_names */
-  int vtu_zlib;                       /* VTU: zlib-compressed arrays (output.compress) */
+  double time;                       /* [s] simulated time of the snapshot */
+  long step;                         /* step number */
+  const char *version;               /* hvsph version string, written into every file */
+  const char *case_name;             /* name of the case */
+  const char *const *material_names; /* index -> name, for the mat column; may be NULL */
+  int nmat;                          /* entries in material_names */
+  const char *const *body_names;     /* index -> name, for the body column; may be NULL */
+  int nbody;                         /* entries in body_names */
+  int vtu_zlib;                      /* VTU: zlib-compressed arrays (output.compress) */
 };
 
 /* VTK XML UnstructuredGrid (.vtu), appended raw binary data with
@@ -38,8 +38,8 @@ int io_write_vtu(const char *path, struct particles *p, const struct snapshot_me
  * optionally a "# materials ..." comment line, then the header
  * id,x,y,z,vx,vy,vz,m,rho,p,e,h,mat followed by the other PF_OUT fields in list
  * order (vectors as name_x,name_y,name_z); values %.17g (round-trip exact). */
-int io_write_particles_csv(const char *path, struct particles *p,
-                           const struct snapshot_meta *meta, struct hv_error *err);
+int io_write_particles_csv(const char *path, struct particles *p, const struct snapshot_meta *meta,
+                           struct hv_error *err);
 
 /* Reads a file written by io_write_particles_csv, appending its rows to p as
  * real particles (ghosts are dropped). Columns are matched by name; unknown
@@ -108,8 +108,8 @@ int io_snapshot_in_run(int k, double t, const double *times, int nt);
 
 /* A snapshot of a run folder: the file particles_NNNNN.<ext>. */
 struct io_run_snapshot {
-  int num;           /* NNNNN */
-  const char *ext;   /* "vtu" or "csv" (a string constant) */
+  int num;         /* NNNNN */
+  const char *ext; /* "vtu" or "csv" (a string constant) */
 };
 
 /* The snapshots of the run whose output folder is dir, in the run's order, into a new

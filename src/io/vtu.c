@@ -46,26 +46,26 @@
 #include "io/io_internal.h"
 #include "io/snapshot.h"
 
-#define VTU_CHUNK 32768   /* bytes of an array's values staged at a time; a multiple of 8 */
-#define VTU_ZBLOCK 32768  /* uncompressed bytes per zlib block: VTK's own default */
+#define VTU_CHUNK  32768 /* bytes of an array's values staged at a time; a multiple of 8 */
+#define VTU_ZBLOCK 32768 /* uncompressed bytes per zlib block: VTK's own default */
 /* zlib's fastest level: a snapshot's doubles are nearly random in their low bytes, so a
    higher level gains little (measured on a bumper-1 snapshot: docs/output-files.md) */
-#define VTU_ZLEVEL Z_BEST_SPEED
+#define VTU_ZLEVEL     Z_BEST_SPEED
 #define VTU_MAX_ARRAYS (HV_MAX_FIELDS + 3)
 
 enum vtu_source { SRC_FIELD, SRC_CONNECTIVITY, SRC_OFFSETS, SRC_TYPES };
 
 struct vtu_array {
   const char *name, *type;
-  int ncomp;                 /* 0: no NumberOfComponents attribute (the cell arrays) */
+  int ncomp; /* 0: no NumberOfComponents attribute (the cell arrays) */
   enum vtu_source src;
-  const struct pfield *f;    /* SRC_FIELD */
-  size_t esize;              /* bytes per value */
-  uint64_t bytes;            /* of the values */
-  uint64_t block;            /* of the appended block: header and data */
-  uint64_t offset;           /* of the block, from the byte after '_' */
-  uint64_t *zhdr;            /* compressed: the header (3 + blocks entries) */
-  unsigned char *z;          /* compressed: the zlib streams, back to back */
+  const struct pfield *f; /* SRC_FIELD */
+  size_t esize;           /* bytes per value */
+  uint64_t bytes;         /* of the values */
+  uint64_t block;         /* of the appended block: header and data */
+  uint64_t offset;        /* of the block, from the byte after '_' */
+  uint64_t *zhdr;         /* compressed: the header (3 + blocks entries) */
+  unsigned char *z;       /* compressed: the zlib streams, back to back */
   size_t zlen;
 };
 
@@ -91,10 +91,10 @@ static void fill(const struct vtu_array *a, uint64_t start, size_t len, unsigned
   const size_t s = a->esize, m = len / s;
   const uint64_t e0 = start / s;
   if (a->src == SRC_TYPES) {
-    memset(buf, 1, len);   /* VTK_VERTEX */
+    memset(buf, 1, len); /* VTK_VERTEX */
     return;
   }
-  if (a->src != SRC_FIELD) {   /* connectivity 0, 1, ...; offsets 1, 2, ... */
+  if (a->src != SRC_FIELD) { /* connectivity 0, 1, ...; offsets 1, 2, ... */
     const int64_t d = a->src == SRC_OFFSETS;
     for (size_t k = 0; k < m; k++) {
       const int64_t v = (int64_t)(e0 + k) + d;
@@ -134,8 +134,10 @@ static int compress_array(struct vtu_array *a, unsigned char *buf, const char *p
     const int zrc = compress2(zb, &zl, buf, (uLong)len, VTU_ZLEVEL);
     if (zrc != Z_OK) {
       free(zb);
-      return hv_error_set(err, HV_EXIT_RUN, "cannot write '%s': zlib compression of array "
-                          "'%s' failed (%d)", path, a->name, zrc);
+      return hv_error_set(err, HV_EXIT_RUN,
+                          "cannot write '%s': zlib compression of array "
+                          "'%s' failed (%d)",
+                          path, a->name, zrc);
     }
     if (a->zlen + zl > cap) {
       cap = 2 * cap + 4 * (size_t)bound;
@@ -146,7 +148,7 @@ static int compress_array(struct vtu_array *a, unsigned char *buf, const char *p
     a->zhdr[3 + b] = zl;
   }
   free(zb);
-  if (a->zlen) a->z = hv_realloc(a->z, a->zlen, "snapshot compression");   /* the slack back */
+  if (a->zlen) a->z = hv_realloc(a->z, a->zlen, "snapshot compression"); /* the slack back */
   a->block = 8 * (3 + nb) + a->zlen;
   return 0;
 }
@@ -185,12 +187,14 @@ static int put_array_tag(struct atomic_file *af, const struct vtu_array *a, stru
 {
   char nc[48] = "";
   if (a->ncomp) snprintf(nc, sizeof nc, " NumberOfComponents=\"%d\"", a->ncomp);
-  return atomic_file_printf(af, err, "        <DataArray type=\"%s\" Name=\"%s\"%s format=\"appended\""
-                      " offset=\"%" PRIu64 "\"/>\n", a->type, a->name, nc, a->offset);
+  return atomic_file_printf(af, err,
+                            "        <DataArray type=\"%s\" Name=\"%s\"%s format=\"appended\""
+                            " offset=\"%" PRIu64 "\"/>\n",
+                            a->type, a->name, nc, a->offset);
 }
 
-static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int na, int npd, size_t n,
-                      const struct snapshot_meta *meta, struct hv_error *err)
+static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int na, int npd,
+                      size_t n, const struct snapshot_meta *meta, struct hv_error *err)
 {
   const unsigned short one = 1;
   unsigned char first;
@@ -198,31 +202,34 @@ static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int n
   char ver[256], name[1024];
   io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
-  if (atomic_file_printf(af, err,
-                   "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n", ver, name) ||
+  if (atomic_file_printf(af, err, "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n", ver,
+                         name) ||
       io_put_materials(af, meta, "<!-- ", " -->\n", 1, err) ||
       atomic_file_printf(af, err,
-                   "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
-                   " header_type=\"UInt64\"%s>\n  <UnstructuredGrid>\n    <FieldData>\n"
-                   "      <DataArray type=\"Float64\" Name=\"TIME\" NumberOfTuples=\"1\""
-                   " format=\"ascii\">%.17g</DataArray>\n"
-                   "      <DataArray type=\"Int64\" Name=\"STEP\" NumberOfTuples=\"1\""
-                   " format=\"ascii\">%ld</DataArray>\n",
-                   first ? "LittleEndian" : "BigEndian",
-                   meta && meta->vtu_zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
-                   meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
+                         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
+                         " header_type=\"UInt64\"%s>\n  <UnstructuredGrid>\n    <FieldData>\n"
+                         "      <DataArray type=\"Float64\" Name=\"TIME\" NumberOfTuples=\"1\""
+                         " format=\"ascii\">%.17g</DataArray>\n"
+                         "      <DataArray type=\"Int64\" Name=\"STEP\" NumberOfTuples=\"1\""
+                         " format=\"ascii\">%ld</DataArray>\n",
+                         first ? "LittleEndian" : "BigEndian",
+                         meta && meta->vtu_zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
+                         meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
       (meta && put_names(af, "mat", meta->material_names, meta->nmat, err)) ||
       (meta && put_names(af, "body", meta->body_names, meta->nbody, err)) ||
-      atomic_file_printf(af, err, "    </FieldData>\n    <Piece NumberOfPoints=\"%zu\""
-                   " NumberOfCells=\"%zu\">\n      <PointData>\n", n, n))
+      atomic_file_printf(af, err,
+                         "    </FieldData>\n    <Piece NumberOfPoints=\"%zu\""
+                         " NumberOfCells=\"%zu\">\n      <PointData>\n",
+                         n, n))
     return -1;
   for (int k = 0; k < na; k++) {
     if (k == npd && atomic_file_printf(af, err, "      </PointData>\n      <Points>\n")) return -1;
     if (k == npd + 1 && atomic_file_printf(af, err, "      </Points>\n      <Cells>\n")) return -1;
     if (put_array_tag(af, &arr[k], err)) return -1;
   }
-  return atomic_file_printf(af, err, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-                      "  <AppendedData encoding=\"raw\">\n   _");
+  return atomic_file_printf(af, err,
+                            "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+                            "  <AppendedData encoding=\"raw\">\n   _");
 }
 
 /* The arrays in declaration order: PointData (npd of them), Points, the three Cells. */
@@ -232,18 +239,21 @@ static int vtu_arrays(const struct pfield *f, int nf, size_t n, struct vtu_array
   for (int k = 0; k < nf; k++) {
     if (!strcmp(f[k].name, "x")) ix = k;
     if (!is_point_data(&f[k])) continue;
-    arr[na++] = (struct vtu_array){.name = f[k].name, .type = vtk_type(f[k].type),
-                                   .ncomp = f[k].ncomp, .src = SRC_FIELD, .f = &f[k],
+    arr[na++] = (struct vtu_array){.name = f[k].name,
+                                   .type = vtk_type(f[k].type),
+                                   .ncomp = f[k].ncomp,
+                                   .src = SRC_FIELD,
+                                   .f = &f[k],
                                    .esize = pf_type_size(f[k].type)};
   }
   HV_CHECK(ix >= 0 && f[ix].ncomp == 3 && f[ix].type == PF_DOUBLE, "no position field x");
   *npd = na;
-  arr[na++] = (struct vtu_array){.name = "x", .type = "Float64", .ncomp = 3, .src = SRC_FIELD,
-                                 .f = &f[ix], .esize = 8};
-  arr[na++] = (struct vtu_array){.name = "connectivity", .type = "Int64",
-                                 .src = SRC_CONNECTIVITY, .esize = 8};
-  arr[na++] = (struct vtu_array){.name = "offsets", .type = "Int64", .src = SRC_OFFSETS,
-                                 .esize = 8};
+  arr[na++] = (struct vtu_array){
+      .name = "x", .type = "Float64", .ncomp = 3, .src = SRC_FIELD, .f = &f[ix], .esize = 8};
+  arr[na++] = (struct vtu_array){
+      .name = "connectivity", .type = "Int64", .src = SRC_CONNECTIVITY, .esize = 8};
+  arr[na++] =
+      (struct vtu_array){.name = "offsets", .type = "Int64", .src = SRC_OFFSETS, .esize = 8};
   arr[na++] = (struct vtu_array){.name = "types", .type = "UInt8", .src = SRC_TYPES, .esize = 1};
   for (int k = 0; k < na; k++) {
     const uint64_t nc = arr[k].src == SRC_FIELD ? (uint64_t)arr[k].f->ncomp : 1;
@@ -263,7 +273,7 @@ static int vtu_body(struct atomic_file *af, struct particles *p, const struct sn
   if (meta && meta->vtu_zlib)
     for (int k = 0; k < na; k++)
       if (compress_array(&arr[k], buf, af->path, err)) return -1;
-  uint64_t off = 0;   /* the blocks in reverse order (see the file's head) */
+  uint64_t off = 0; /* the blocks in reverse order (see the file's head) */
   for (int k = na - 1; k >= 0; k--) {
     arr[k].offset = off;
     off += arr[k].block;

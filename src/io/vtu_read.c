@@ -27,12 +27,12 @@
 
 #define VTU_HEADER_MAX (16u << 20) /* the XML before the data: a few kB in practice */
 #define VTU_MAX_ARRAYS 64
-#define VTU_CHUNK 4096             /* tuples per de-interleaving buffer */
+#define VTU_CHUNK      4096 /* tuples per de-interleaving buffer */
 
 struct vtu_array {
   char name[64], type[16];
   int ncomp;
-  long long offset;   /* from the byte after '_' */
+  long long offset; /* from the byte after '_' */
 };
 
 static size_t vtk_size(const char *type)
@@ -49,18 +49,18 @@ static const char *vtk_name(enum pf_type t)
 }
 
 struct vtu_header {
-  size_t n;              /* NumberOfPoints */
-  int zlib;              /* compressor="vtkZLibDataCompressor" */
-  double time;           /* FieldData TIME, NaN when absent */
-  long long data_start;  /* file position of the byte after '_' */
+  size_t n;             /* NumberOfPoints */
+  int zlib;             /* compressor="vtkZLibDataCompressor" */
+  double time;          /* FieldData TIME, NaN when absent */
+  long long data_start; /* file position of the byte after '_' */
   int narr;
-  struct vtu_array arr[VTU_MAX_ARRAYS];   /* PointData and Points */
+  struct vtu_array arr[VTU_MAX_ARRAYS]; /* PointData and Points */
 };
 
 static int bad(struct hv_error *err, const char *path, const char *what)
 {
-  return hv_error_set(err, HV_EXIT_INPUT, "'%s': %s (not a VTU snapshot written by hvsph?)",
-                      path, what);
+  return hv_error_set(err, HV_EXIT_INPUT, "'%s': %s (not a VTU snapshot written by hvsph?)", path,
+                      what);
 }
 
 /* Parses the XML text h[0, len) up to the appended block's '_'. */
@@ -84,13 +84,17 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
   memcpy(&little, &one, 1);
   if (io_xml_attr(file, fe, "byte_order", v, sizeof v) ||
       strcmp(v, little ? "LittleEndian" : "BigEndian"))
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': written in the other byte order (%s); "
-                        "this machine reads only its own", path, v);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': written in the other byte order (%s); "
+                        "this machine reads only its own",
+                        path, v);
   vh->zlib = 0;
   if (!io_xml_attr(file, fe, "compressor", v, sizeof v)) {
     if (strcmp(v, "vtkZLibDataCompressor"))
-      return hv_error_set(err, HV_EXIT_INPUT, "'%s': compressed by '%s'; hvsph reads "
-                          "vtkZLibDataCompressor only", path, v);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "'%s': compressed by '%s'; hvsph reads "
+                          "vtkZLibDataCompressor only",
+                          path, v);
     vh->zlib = 1;
   }
   const char *piece = strstr(fe, "<Piece");
@@ -141,8 +145,8 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
     io_xml_attr(d, de, "NumberOfComponents", nc, sizeof nc);
     if (io_xml_attr(d, de, "format", fmt, sizeof fmt) || strcmp(fmt, "appended") ||
         io_xml_attr(d, de, "offset", off, sizeof off))
-      return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is not in the appended block",
-                          path, a->name);
+      return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is not in the appended block", path,
+                          a->name);
     for (int k = 0; k < vh->narr; k++)
       if (!strcmp(vh->arr[k].name, a->name))
         return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' appears twice", path, a->name);
@@ -178,8 +182,10 @@ static void scatter(const struct pfield *f, size_t first, uint64_t pos, const un
 
 static int cut_short(struct hv_error *err, const char *path, const struct vtu_array *a)
 {
-  return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': the file ends inside its "
-                      "block (cut short?)", path, a->name);
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "'%s': array '%s': the file ends inside its "
+                      "block (cut short?)",
+                      path, a->name);
 }
 
 static int short_read(FILE *fp, struct hv_error *err, const char *path, const struct vtu_array *a)
@@ -191,26 +197,28 @@ static int short_read(FILE *fp, struct hv_error *err, const char *path, const st
 static int wrong_size(struct hv_error *err, const char *path, const struct vtu_array *a,
                       uint64_t nb, size_t n, uint64_t want)
 {
-  return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' holds %llu bytes, %zu points "
-                      "need %llu", path, a->name, (unsigned long long)nb, n,
-                      (unsigned long long)want);
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "'%s': array '%s' holds %llu bytes, %zu points "
+                      "need %llu",
+                      path, a->name, (unsigned long long)nb, n, (unsigned long long)want);
 }
 
 /* A compressed block at the file's position (after fseeko): the header [blocks, block
    size, last partial block's size, compressed sizes], checked against want and the file's
    size; with f->comp[0], every zlib stream inflated into f. */
 static int read_zblock(FILE *fp, const char *path, const struct vtu_array *a,
-                       const struct pfield *f, size_t first, size_t n, uint64_t want,
-                       uint64_t room, struct hv_error *err)
+                       const struct pfield *f, size_t first, size_t n, uint64_t want, uint64_t room,
+                       struct hv_error *err)
 {
   const size_t s = pf_type_size(f->type);
   uint64_t h[3];
   if (room < sizeof h || fread(h, 8, 3, fp) != 3) return cut_short(err, path, a);
   const uint64_t nb = h[0], bs = h[1], last = h[2];
   if (bs == 0 || bs > (1u << 30) || bs % s || last >= bs || (nb == 0 && last))
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': a compression header hvsph "
-                        "does not read (%llu blocks of %llu bytes, the last %llu)", path,
-                        a->name, (unsigned long long)nb, (unsigned long long)bs,
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s': a compression header hvsph "
+                        "does not read (%llu blocks of %llu bytes, the last %llu)",
+                        path, a->name, (unsigned long long)nb, (unsigned long long)bs,
                         (unsigned long long)last);
   if (nb > (room - sizeof h) / 8) return cut_short(err, path, a);
   const uint64_t total = nb == 0 ? 0 : last ? (nb - 1) * bs + last : nb * bs;
@@ -224,13 +232,17 @@ static int read_zblock(FILE *fp, const char *path, const struct vtu_array *a,
   uint64_t left = room - sizeof h - 8 * nb;
   for (uint64_t b = 0; !rc && b < nb; b++) {
     if (cs[b] > bound)
-      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': block %llu claims %llu "
-                        "compressed bytes, more than zlib makes of %llu", path, a->name,
-                        (unsigned long long)b, (unsigned long long)cs[b], (unsigned long long)bs);
-    else if (cs[b] > left) rc = cut_short(err, path, a);
-    else left -= cs[b];
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s': block %llu claims %llu "
+                        "compressed bytes, more than zlib makes of %llu",
+                        path, a->name, (unsigned long long)b, (unsigned long long)cs[b],
+                        (unsigned long long)bs);
+    else if (cs[b] > left)
+      rc = cut_short(err, path, a);
+    else
+      left -= cs[b];
   }
-  if (rc || !f->comp[0]) {   /* with no storage: the check only */
+  if (rc || !f->comp[0]) { /* with no storage: the check only */
     free(cs);
     return rc;
   }
@@ -246,9 +258,10 @@ static int read_zblock(FILE *fp, const char *path, const struct vtu_array *a,
     }
     const int zrc = uncompress(out, &ol, zin, (uLong)cs[b]);
     if (zrc != Z_OK || ol != expect)
-      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': block %llu does not inflate "
-                        "to its %llu bytes (zlib: %s; a damaged file?)", path, a->name,
-                        (unsigned long long)b, (unsigned long long)expect,
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s': block %llu does not inflate "
+                        "to its %llu bytes (zlib: %s; a damaged file?)",
+                        path, a->name, (unsigned long long)b, (unsigned long long)expect,
                         zrc == Z_OK ? "another size" : zError(zrc));
     else
       scatter(f, first, b * bs, out, (size_t)ol);
@@ -270,19 +283,22 @@ static int read_block(FILE *fp, const char *path, const struct vtu_header *vh,
   const uint64_t want = (uint64_t)n * nc * s;
   uint64_t nb = 0;
   if (a->offset > fsize - vh->data_start - 8) /* data_start < fsize: cannot overflow */
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
-                        "of the file (cut short?)", path, a->name);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s': its block lies beyond the end "
+                        "of the file (cut short?)",
+                        path, a->name);
   const long long pos = vh->data_start + a->offset;
   errno = 0;
   if (fseeko(fp, (off_t)pos, SEEK_SET))
-    return hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s': its block lies beyond the end "
-                        "of the file (cut short?)", path, a->name);
-  if (vh->zlib)
-    return read_zblock(fp, path, a, f, first, n, want, (uint64_t)(fsize - pos), err);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s': its block lies beyond the end "
+                        "of the file (cut short?)",
+                        path, a->name);
+  if (vh->zlib) return read_zblock(fp, path, a, f, first, n, want, (uint64_t)(fsize - pos), err);
   if (fread(&nb, 8, 1, fp) != 1) return cut_short(err, path, a);
   if (nb != want) return wrong_size(err, path, a, nb, n, want);
   if (nb > (uint64_t)(fsize - pos - 8)) return cut_short(err, path, a);
-  if (!f->comp[0]) return 0;   /* the check only */
+  if (!f->comp[0]) return 0; /* the check only */
   /* VTU_CHUNK tuples of at most 6 values of 8 bytes: a multiple of every value size */
   const size_t chunk = VTU_CHUNK * 48;
   unsigned char *buf = malloc(chunk);
@@ -328,7 +344,7 @@ static int read_header(FILE *fp, const char *path, struct vtu_header *vh, struct
     const char *root = strstr(h, "\n<VTKFile ");
     const char *app = root ? strstr(root, "<AppendedData") : NULL;
     char *us = app ? strchr(app, '_') : NULL;
-    if (us) {   /* the header ends here: parse nothing of the binary data after it */
+    if (us) { /* the header ends here: parse nothing of the binary data after it */
       len = (size_t)(us + 1 - h);
       h[len] = '\0';
       break;
@@ -344,11 +360,10 @@ static int read_header(FILE *fp, const char *path, struct vtu_header *vh, struct
   return rc;
 }
 
-int io_read_particles_vtu(const char *path, struct particles *p, double *time,
-                          struct hv_error *err)
+int io_read_particles_vtu(const char *path, struct particles *p, double *time, struct hv_error *err)
 {
   if (time) *time = NAN;
-  long long fsize;   /* a regular file only: a FIFO would block the open */
+  long long fsize; /* a regular file only: a FIFO would block the open */
   FILE *fp = hv_open_input(path, NULL, 0, &fsize, err);
   if (!fp) return -1;
   struct vtu_header *vh = calloc(1, sizeof *vh);
@@ -358,8 +373,10 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
   char tail[32] = "";
   if (!rc && (fsize < 24 || fseeko(fp, (off_t)(fsize - 24), SEEK_SET) ||
               fread(tail, 1, 24, fp) != 24 || !strstr(tail, "</VTKFile>")))
-    rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': no closing </VTKFile> at its end (the file "
-                      "was cut short?)", path);
+    rc = hv_error_set(err, HV_EXIT_INPUT,
+                      "'%s': no closing </VTKFile> at its end (the file "
+                      "was cut short?)",
+                      path);
   const struct vtu_array *ax = NULL, *aid = NULL;
   int solid = 0, av = 0, crack = 0;
   struct pfield fv[HV_MAX_FIELDS];
@@ -369,14 +386,17 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
     const struct vtu_array *a = &vh->arr[k];
     match[k] = -1;
     if (vtk_size(a->type) == 0)
-      rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' has type '%s', which hvsph "
-                        "does not write", path, a->name, a->type);
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s': array '%s' has type '%s', which hvsph "
+                        "does not write",
+                        path, a->name, a->type);
     for (int j = 0; !rc && j < nf; j++) {
       if (strcmp(a->name, fv[j].name) != 0) continue;
       if (strcmp(a->type, vtk_name(fv[j].type)) || a->ncomp != fv[j].ncomp)
-        rc = hv_error_set(err, HV_EXIT_INPUT, "'%s': array '%s' is %s × %d, hvsph's field is "
-                          "%s × %d", path, a->name, a->type, a->ncomp, vtk_name(fv[j].type),
-                          fv[j].ncomp);
+        rc = hv_error_set(err, HV_EXIT_INPUT,
+                          "'%s': array '%s' is %s × %d, hvsph's field is "
+                          "%s × %d",
+                          path, a->name, a->type, a->ncomp, vtk_name(fv[j].type), fv[j].ncomp);
       match[k] = j;
       if (!strcmp(a->name, "x")) ax = a;
       if (!strcmp(a->name, "id")) aid = a;
@@ -398,12 +418,12 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time,
     if (crack) particles_enable_crack(p);
     const size_t first = particles_add(p, vh->n);
     struct pfield f[HV_MAX_FIELDS];
-    particles_fields_all(p, f);   /* after particles_add: the arrays may have moved */
+    particles_fields_all(p, f); /* after particles_add: the arrays may have moved */
     for (int k = 0; !rc && k < vh->narr; k++)
       if (match[k] >= 0)
         rc = read_block(fp, path, vh, &vh->arr[k], &f[match[k]], first, fsize, err);
     if (rc) {
-      p->n = n0;   /* drop what was read */
+      p->n = n0; /* drop what was read */
       p->n_ghost = 0;
     } else if (time) {
       *time = vh->time;
@@ -424,16 +444,19 @@ int io_read_particles(const char *path, struct particles *p, double *time, struc
 int io_read_material_names(const char *path, char names[][64], int max)
 {
   struct hv_error ignored;
-  FILE *f = hv_open_input(path, NULL, 0, NULL, &ignored);   /* a FIFO would block */
+  FILE *f = hv_open_input(path, NULL, 0, NULL, &ignored); /* a FIFO would block */
   if (!f) return 0;
   char line[8192];
   int n = 0;
   /* CSV: the "# materials ..." comment; VTU: "<!-- materials ... -->" in its first lines */
   while (fgets(line, sizeof line, f)) {
     char *m = NULL;
-    if (!strncmp(line, "# materials", 11)) m = line + 11;
-    else if (!strncmp(line, "<!-- materials", 14)) m = line + 14;
-    else if (line[0] != '#' && strncmp(line, "<?xml", 5) && strncmp(line, "<!--", 4)) break;
+    if (!strncmp(line, "# materials", 11))
+      m = line + 11;
+    else if (!strncmp(line, "<!-- materials", 14))
+      m = line + 14;
+    else if (line[0] != '#' && strncmp(line, "<?xml", 5) && strncmp(line, "<!--", 4))
+      break;
     if (!m) continue;
     char *close = strstr(m, "-->");
     if (close) *close = '\0';

@@ -25,8 +25,7 @@ int material_library_path(char *buf, size_t len, struct hv_error *err)
   if (env && *env) {
     snprintf(buf, len, "%s/materials.yaml", env);
     if (file_exists(buf)) return 0;
-    return hv_error_set(err, HV_EXIT_INPUT, "HVSPH_DATA=%s: no readable materials.yaml there",
-                        env);
+    return hv_error_set(err, HV_EXIT_INPUT, "HVSPH_DATA=%s: no readable materials.yaml there", env);
   }
 #ifdef HVSPH_DATA_DIR
   snprintf(buf, len, "%s/materials.yaml", HVSPH_DATA_DIR);
@@ -45,7 +44,8 @@ int material_library_path(char *buf, size_t len, struct hv_error *err)
       if (file_exists(buf)) return 0;
     }
   }
-  return hv_error_set(err, HV_EXIT_INPUT, "cannot find the material library materials.yaml "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "cannot find the material library materials.yaml "
                       "(looked next to the program in ../data and ../share/hvsph); set "
                       "HVSPH_DATA to the folder that holds it");
 }
@@ -105,8 +105,8 @@ int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
     if (!strcmp(mats[i].name, name)) return i;
   cfg_where(c, key_path, where, sizeof where);
   if (strpbrk(name, ".[]") || !name[0])
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: '%s' is not a material name", where,
-                        key_path, name);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: '%s' is not a material name", where, key_path,
+                        name);
   snprintf(path, sizeof path, "materials.%s", name);
   const int in_case = cfg_is_map(c, path);
   struct cfg *lib = NULL;
@@ -117,11 +117,15 @@ int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
     name_list(c, "materials", cl, sizeof cl);
     if (lib) {
       name_list(lib, "", ll, sizeof ll);
-      hv_error_set(err, HV_EXIT_INPUT, "%s: %s: unknown material '%s' (the case defines: %s; "
-                   "the library %s has: %s)", where, key_path, name, cl, cfg_file(lib), ll);
+      hv_error_set(err, HV_EXIT_INPUT,
+                   "%s: %s: unknown material '%s' (the case defines: %s; "
+                   "the library %s has: %s)",
+                   where, key_path, name, cl, cfg_file(lib), ll);
     } else {
-      hv_error_set(err, HV_EXIT_INPUT, "%s: %s: unknown material '%s' (the case defines: %s; "
-                   "no library: %s)", where, key_path, name, cl, lerr.msg);
+      hv_error_set(err, HV_EXIT_INPUT,
+                   "%s: %s: unknown material '%s' (the case defines: %s; "
+                   "no library: %s)",
+                   where, key_path, name, cl, lerr.msg);
     }
     cfg_free(lib);
     return -1;
@@ -195,8 +199,7 @@ void material_print(FILE *f, const struct material *m)
 int material_library_main(int argc, char **argv)
 {
   if (argc > 1 || (argc == 1 && argv[0][0] == '-')) {
-    FILE *f = argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? stdout
-                                                                                    : stderr;
+    FILE *f = argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? stdout : stderr;
     fprintf(f, "usage: hvsph materials [NAME]\n"
                "  lists the material library (name, EOS, reference density, source), or every\n"
                "  parameter of one entry with its unit; HVSPH_DATA names the folder of\n"
@@ -214,14 +217,13 @@ int material_library_main(int argc, char **argv)
   if (argc == 1 && !cfg_is_map(lib, argv[0])) {
     char list[1200];
     name_list(lib, "", list, sizeof list);
-    fprintf(stderr, "hvsph materials: unknown material '%s'; %s has: %s\n", argv[0],
-            cfg_file(lib), list);
+    fprintf(stderr, "hvsph materials: unknown material '%s'; %s has: %s\n", argv[0], cfg_file(lib),
+            list);
     cfg_free(lib);
     return HV_EXIT_INPUT;
   }
   if (argc == 0)
-    printf("# %s\n%-20s %-14s %-13s %s\n", cfg_file(lib), "name", "eos", "rho0 [kg/m3]",
-           "source");
+    printf("# %s\n%-20s %-14s %-13s %s\n", cfg_file(lib), "name", "eos", "rho0 [kg/m3]", "source");
   for (int i = 0; i < n && st == HV_EXIT_OK; i++) {
     if (argc == 1 && strcmp(names[i], argv[0])) continue;
     struct material m;

@@ -36,8 +36,8 @@
 /* ---------------------------------------------------------------- the table of models */
 
 /* Adding a model: its file, its kind in material.h's enum, and its row here. */
-extern const struct eos_model eos_ideal_gas_model, eos_mie_gruneisen_model,
-    eos_tillotson_model, eos_table_model;
+extern const struct eos_model eos_ideal_gas_model, eos_mie_gruneisen_model, eos_tillotson_model,
+    eos_table_model;
 const struct eos_model *const eos_models[EOS_KIND_COUNT] = {
     [EOS_IDEAL_GAS] = &eos_ideal_gas_model,
     [EOS_MIE_GRUNEISEN] = &eos_mie_gruneisen_model,
@@ -45,8 +45,7 @@ const struct eos_model *const eos_models[EOS_KIND_COUNT] = {
     [EOS_TABLE] = &eos_table_model,
 };
 
-extern const struct yield_model yield_constant_model, yield_linear_model,
-    yield_johnson_cook_model;
+extern const struct yield_model yield_constant_model, yield_linear_model, yield_johnson_cook_model;
 const struct yield_model *const yield_models[YIELD_KIND_COUNT] = {
     [YIELD_CONSTANT] = &yield_constant_model,
     [YIELD_LINEAR] = &yield_linear_model,
@@ -69,12 +68,11 @@ static void yield_names(const char *names[YIELD_KIND_COUNT + 1])
 /* ---------------------------------------------------------------- helpers for readers */
 
 /* The short names this file's readers use; the models' files use material_read.h's. */
-#define key_of material_key
-#define key_error material_key_error
-#define from_case material_from_case
-#define get_q material_get_q
+#define key_of        material_key
+#define key_error     material_key_error
+#define from_case     material_from_case
+#define get_q         material_get_q
 #define not_used_here material_not_used_here
-
 
 const char *material_key(char *buf, size_t len, const char *path, const char *key)
 {
@@ -82,16 +80,15 @@ const char *material_key(char *buf, size_t len, const char *path, const char *ke
   return buf;
 }
 
-int material_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt,
-                       ...)
+int material_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt, ...)
 {
   char where[512], msg[1200];
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", cfg_where(c, key, where, sizeof where),
-                      key, msg);
+  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", cfg_where(c, key, where, sizeof where), key,
+                      msg);
 }
 
 int material_from_case(struct cfg *c, const char *key)
@@ -145,8 +142,10 @@ static int read_shear_modulus(struct cfg *c, const char *sp, struct material *m,
   const int which = pick_alternative(c, kg, kn, err);
   if (!which) return -1;
   if (which == 1) {
-    if (not_used_here(c, sp, "youngs_modulus", "youngs_modulus goes with poisson, not with "
-                      "shear_modulus", err))
+    if (not_used_here(c, sp, "youngs_modulus",
+                      "youngs_modulus goes with poisson, not with "
+                      "shear_modulus",
+                      err))
       return -1;
     return cfg_get_quantity(c, kg, UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &s->G, err);
   }
@@ -160,15 +159,16 @@ static int read_shear_modulus(struct cfg *c, const char *sp, struct material *m,
     return 0;
   }
   if (!(m->K0 > 0.0))
-    return key_error(c, kn, err, "G from Poisson's ratio needs the bulk modulus K = rho0 c0^2 "
+    return key_error(c, kn, err,
+                     "G from Poisson's ratio needs the bulk modulus K = rho0 c0^2 "
                      "(mie-gruneisen) or A (tillotson); EOS '%s' has none: give shear_modulus "
-                     "or youngs_modulus", eos_models[m->eos]->name);
+                     "or youngs_modulus",
+                     eos_models[m->eos]->name);
   s->G = 3.0 * m->K0 * (1.0 - 2.0 * s->nu) / (2.0 * (1.0 + s->nu));
   return 0;
 }
 
-static int read_strength(struct cfg *c, const char *path, struct material *m,
-                         struct hv_error *err)
+static int read_strength(struct cfg *c, const char *path, struct material *m, struct hv_error *err)
 {
   char sp[300], k[320];
   snprintf(sp, sizeof sp, "%s.strength", path);
@@ -210,8 +210,8 @@ static int graft_library(struct cfg *c, const char *path, const char *key, const
     list[0] = '\0';
     for (int i = 0; i < n && k < sizeof list; i++)
       k += (size_t)snprintf(list + k, sizeof list - k, "%s%s", i ? ", " : "", names[i]);
-    rc = key_error(c, key, err, "unknown library material '%s' (%s has: %s)", lname,
-                   cfg_file(lib), list);
+    rc = key_error(c, key, err, "unknown library material '%s' (%s has: %s)", lname, cfg_file(lib),
+                   list);
   } else if (cfg_has(lib, key_of(sub, sizeof sub, lname, "library"))) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a library entry cannot name another",
                       cfg_where(lib, sub, where, sizeof where), sub);
@@ -267,8 +267,10 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
   memset(m, 0, sizeof *m);
   snprintf(m->name, sizeof m->name, "%s", name);
   if (!cfg_is_map(c, path))
-    return key_error(c, path, err, "material '%s' must be a mapping of its parameters "
-                     "(eos: ..., or library: NAME)", name);
+    return key_error(c, path, err,
+                     "material '%s' must be a mapping of its parameters "
+                     "(eos: ..., or library: NAME)",
+                     name);
   key_of(key, sizeof key, path, "library");
   if (cfg_has(c, key)) {
     const char *lname;
@@ -281,14 +283,12 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
     if (cfg_get_string(c, key, NULL, &text, err)) return -1;
     snprintf(m->source, sizeof m->source, "%s", text);
   }
-  if (cfg_has(c, key_of(key, sizeof key, path, "note")) &&
-      cfg_get_string(c, key, NULL, &text, err))
+  if (cfg_has(c, key_of(key, sizeof key, path, "note")) && cfg_get_string(c, key, NULL, &text, err))
     return -1;
   int kind;
   const char *names[EOS_KIND_COUNT + 1];
   eos_names(names);
-  if (cfg_get_choice(c, key_of(key, sizeof key, path, "eos"), NULL, names, &kind, err))
-    return -1;
+  if (cfg_get_choice(c, key_of(key, sizeof key, path, "eos"), NULL, names, &kind, err)) return -1;
   m->eos = (enum eos_kind)kind;
   if (eos_models[m->eos]->read(c, path, m, err) || read_strength(c, path, m, err) ||
       fracture_read(c, path, m, err) || check_units(c, path, m, err)) {

@@ -26,30 +26,30 @@ struct material;
 enum eos_kind { EOS_IDEAL_GAS = 0, EOS_MIE_GRUNEISEN, EOS_TILLOTSON, EOS_TABLE, EOS_KIND_COUNT };
 
 struct eos_ideal_gas {
-  double gamma;        /* [-] adiabatic exponent, > 1 */
+  double gamma; /* [-] adiabatic exponent, > 1 */
 };
 
 /* Mie–Grüneisen with the Murnaghan cold curve (the paper's §2.1). */
 struct eos_mie_gruneisen {
-  double rho0;         /* [kg/m3] */
-  double c0;           /* [m/s] bulk sound speed */
-  double n;            /* [-] Murnaghan exponent, >= 1 (1: the limit, E_c with ln) */
-  double Gamma;        /* [-] Grüneisen coefficient */
-  double cs_floor;     /* [m/s] smallest sound speed returned; default 0.1 c0 */
+  double rho0;     /* [kg/m3] */
+  double c0;       /* [m/s] bulk sound speed */
+  double n;        /* [-] Murnaghan exponent, >= 1 (1: the limit, E_c with ln) */
+  double Gamma;    /* [-] Grüneisen coefficient */
+  double cs_floor; /* [m/s] smallest sound speed returned; default 0.1 c0 */
 };
 
 /* Tillotson (1962); notation of Melosh (1989), Impact Cratering, appendix II. */
 struct eos_tillotson {
-  double rho0;         /* [kg/m3] */
-  double a, b;         /* [-] */
-  double A, B;         /* [Pa] */
-  double E0;           /* [J/kg] */
-  double alpha, beta;  /* [-] */
-  double E_iv, E_cv;   /* [J/kg] incipient and complete vaporisation, E_cv > E_iv */
-  double rho_iv;       /* [kg/m3] below this density the compressed-branch pressure used
+  double rho0;        /* [kg/m3] */
+  double a, b;        /* [-] */
+  double A, B;        /* [Pa] */
+  double E0;          /* [J/kg] */
+  double alpha, beta; /* [-] */
+  double E_iv, E_cv;  /* [J/kg] incipient and complete vaporisation, E_cv > E_iv */
+  double rho_iv;      /* [kg/m3] below this density the compressed-branch pressure used
                           for cold and hybrid expanded states carries no tension
                           (p_c <- max(p_c, 0)); 0 (default): no cut; see eos/tillotson.c */
-  double cs_floor;     /* [m/s] smallest sound speed returned; default 0.01 sqrt(A/rho0) */
+  double cs_floor;    /* [m/s] smallest sound speed returned; default 0.01 sqrt(A/rho0) */
 };
 
 /* p(ρ, e) and c(ρ, e) on a rectangular grid, bilinear; see eos/table.c for the file. */
@@ -68,17 +68,17 @@ struct eos_table {
 enum yield_kind { YIELD_CONSTANT = 0, YIELD_LINEAR, YIELD_JOHNSON_COOK, YIELD_KIND_COUNT };
 
 struct strength_params {
-  int enabled;         /* 0: fluid (no deviatoric stress) */
-  double G;            /* [Pa] shear modulus (given, or from Poisson's ratio) */
-  double nu;           /* [-] Poisson's ratio if given, else 0 */
+  int enabled; /* 0: fluid (no deviatoric stress) */
+  double G;    /* [Pa] shear modulus (given, or from Poisson's ratio) */
+  double nu;   /* [-] Poisson's ratio if given, else 0 */
   enum yield_kind yield;
-  double Y0;           /* [Pa] yield stress (constant, or initial for linear hardening) */
-  double H;            /* [Pa] linear hardening modulus: Y = Y0 + H eps_p */
+  double Y0; /* [Pa] yield stress (constant, or initial for linear hardening) */
+  double H;  /* [Pa] linear hardening modulus: Y = Y0 + H eps_p */
   /* Johnson–Cook: Y = (A + B eps_p^N)(1 + C ln(rate/rate0))(1 − T*^M) */
-  double jc_A, jc_B, jc_N, jc_C, jc_M;   /* [Pa], [Pa], [-], [-], [-] */
-  double jc_rate0;     /* [1/s] */
-  double T_ref, T_melt;/* [K] */
-  double cv;           /* [J/kg/K] heat capacity, T = T_ref + e/cv */
+  double jc_A, jc_B, jc_N, jc_C, jc_M; /* [Pa], [Pa], [-], [-], [-] */
+  double jc_rate0;                     /* [1/s] */
+  double T_ref, T_melt;                /* [K] */
+  double cv;                           /* [J/kg/K] heat capacity, T = T_ref + e/cv */
 };
 
 enum fracture_kind { FRACTURE_NONE = 0, FRACTURE_TRESCA, FRACTURE_CUMULATIVE, FRACTURE_KIND_COUNT };
@@ -93,15 +93,15 @@ enum split_kind { SPLIT_FLUID = 0, SPLIT_NO_TENSION, SPLIT_CRACK, SPLIT_KIND_COU
 
 struct fracture_params {
   enum fracture_kind kind;
-  double sigma_c;      /* [Pa] < 0: ultimate tensile stress (tension negative, as the paper's tables) */
+  double sigma_c; /* [Pa] < 0: ultimate tensile stress (tension negative, as the paper's tables) */
   /* cumulative: damage D grows with plastic strain, dD = d(eps_p)/eps_f, and with time
      under tension beyond |sigma_c|, dD = dt/tau; split at D = 1 */
-  double eps_f;        /* [-] plastic strain to failure (0: not used) */
-  double tau;          /* [s] time under tension to failure (0: not used) */
+  double eps_f; /* [-] plastic strain to failure (0: not used) */
+  double tau;   /* [s] time under tension to failure (0: not used) */
   /* split particles (D = 1): 0 (the paper's rule) — no deviatoric stress; > 0 — the
      friction coefficient μ of the broken material, whose yield stress is then
      min(Y, μ max(p, 0)) (a cohesionless Drucker–Prager/Coulomb limit) */
-  double friction;     /* [-] */
+  double friction; /* [-] */
   enum split_kind split;
   /* split: crack — strain to failure of the cracked state (fracture.crack_eps_f): a
      cracked particle splits again (fluid) once its equivalent plastic strain reaches
@@ -109,7 +109,7 @@ struct fracture_params {
      (the Johnson–Cook form without its rate and temperature factors); off when
      crack_eps_f_on is 0 */
   int crack_eps_f_on;
-  double crack_d[3];   /* d1, d2 [-], d3 [-] */
+  double crack_d[3]; /* d1, d2 [-], d3 [-] */
   /* fracture.energy (model tresca, split fluid): the fracture energy G_f [J/m2] of a
      cohesive opening before the split (fracture.h); 0: split at once (the paper's rule) */
   double energy;
@@ -117,11 +117,11 @@ struct fracture_params {
 
 struct material {
   char name[64];
-  char source[256];    /* where the values come from (library entries) */
-  char library[64];    /* the library entry it was read from ("" if none) */
+  char source[256]; /* where the values come from (library entries) */
+  char library[64]; /* the library entry it was read from ("" if none) */
   enum eos_kind eos;
-  double rho0;         /* [kg/m3] reference density (0 if none, e.g. a gas) */
-  double K0;           /* [Pa] reference bulk modulus: rho0 c0^2 (Mie–Grüneisen), A
+  double rho0; /* [kg/m3] reference density (0 if none, e.g. a gas) */
+  double K0;   /* [Pa] reference bulk modulus: rho0 c0^2 (Mie–Grüneisen), A
                           (Tillotson), 0 if none (gas, table); used for G from Poisson's ratio */
   union {
     struct eos_ideal_gas gas;
@@ -137,8 +137,8 @@ struct material {
 
 /* The densities condensed materials span [kg/m3]: a bare number outside is a wrong unit
  * (cfg_check_typical; a material's rho0 and a body's density, docs/units.md). */
-#define HV_RHO_CONDENSED_LO 50.0
-#define HV_RHO_CONDENSED_HI 1e5
+#define HV_RHO_CONDENSED_LO   50.0
+#define HV_RHO_CONDENSED_HI   1e5
 #define HV_RHO_CONDENSED_WHAT "densities of condensed materials"
 
 /* Releases what material_read allocated (the arrays of a table EOS). */
@@ -149,10 +149,10 @@ void material_free(struct material *m);
 /* A key whose bare number far outside what real materials span is refused as a wrong
  * unit (a density in g/cm3; material.c, check_units). */
 struct material_typical {
-  const char *key;     /* under the material, e.g. "c0" */
-  int dim;             /* enum unit_dim (core/units.h) */
-  double lo, hi;       /* [SI] the span of real condensed materials */
-  const char *what;    /* "bulk sound speeds of condensed materials" */
+  const char *key;  /* under the material, e.g. "c0" */
+  int dim;          /* enum unit_dim (core/units.h) */
+  double lo, hi;    /* [SI] the span of real condensed materials */
+  const char *what; /* "bulk sound speeds of condensed materials" */
 };
 
 /* An EOS model: its case-file name and its operations on a material whose `eos` is

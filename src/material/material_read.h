@@ -26,8 +26,8 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
 const char *material_key(char *buf, size_t len, const char *path, const char *key);
 /* "file:line: key: message" (the line of the key, or of the deepest node present) in
  * err, exit status 2; returns -1. */
-int material_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt,
-                       ...) __attribute__((format(printf, 4, 5)));
+int material_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 /* The key is present and written in the case itself, not grafted from the library. */
 int material_from_case(struct cfg *c, const char *key);
 /* The quantity path.key in unit dimension dim, within [lo, hi]; def NULL: required. */

@@ -97,11 +97,10 @@ static int compute_keys(const double *const x[3], size_t n, double cell, double 
     }
   int64_t maxc = 1;
   for (int d = 0; d < 3; d++) {
-    origin[d] = n ? lo[d] - cell : 0.0;   /* one empty layer keeps i-1 >= 0 */
-    const double span = n ? (hi[d] - origin[d]) / cell + 2.0 : 1.0;   /* cells, before any cast */
+    origin[d] = n ? lo[d] - cell : 0.0; /* one empty layer keeps i-1 >= 0 */
+    const double span = n ? (hi[d] - origin[d]) / cell + 2.0 : 1.0; /* cells, before any cast */
     if (!(span < (double)(GRID_MAXC - 1))) {
-      snprintf(msg, msglen,
-               "particles span %.6g m in direction %c, more than 2^21 cells of %.6g m",
+      snprintf(msg, msglen, "particles span %.6g m in direction %c, more than 2^21 cells of %.6g m",
                hi[d] - lo[d], "xyz"[d], cell);
       return -1;
     }
@@ -218,7 +217,6 @@ static void build_cells(struct nbr_grid *g)
   build_rows(g);
 }
 
-
 /* Visits the candidate neighbour cells of cell c in a fixed order; stores them in
  * out (if not NULL) and returns their count. */
 static uint32_t cell_neighbours(const struct nbr_grid *g, size_t c, double hglob, int32_t *out)
@@ -239,10 +237,12 @@ static uint32_t cell_neighbours(const struct nbr_grid *g, size_t c, double hglob
       if (r < 0) continue;
       uint32_t lo = g->row_start[r], hi = g->row_start[r + 1];
       const int64_t xmin = ci - R, xmax = ci + R;
-      while (lo < hi) {   /* first cell with x >= xmin */
+      while (lo < hi) { /* first cell with x >= xmin */
         const uint32_t mid = lo + (hi - lo) / 2;
-        if ((int64_t)g->row_x[mid] < xmin) lo = mid + 1;
-        else hi = mid;
+        if ((int64_t)g->row_x[mid] < xmin)
+          lo = mid + 1;
+        else
+          hi = mid;
       }
       const double gj = abs(dj) > 1 ? (abs(dj) - 1) * cell : 0.0;
       const double gk = abs(dk) > 1 ? (abs(dk) - 1) * cell : 0.0;
@@ -280,8 +280,11 @@ static void link_cells(struct nbr_grid *g, const double *h)
      the lists are copied in cell order (the result does not depend on the threads) */
   const size_t nc = g->ncells;
   const int nt = omp_get_max_threads();
-  struct tbuf { int32_t *a; size_t n, cap; } *tb = hv_calloc((size_t)nt, sizeof *tb, "cell lists");
-  size_t *where = hv_malloc((nc + 1) * sizeof *where, "cell lists");   /* thread << 40 | offset */
+  struct tbuf {
+    int32_t *a;
+    size_t n, cap;
+  } *tb = hv_calloc((size_t)nt, sizeof *tb, "cell lists");
+  size_t *where = hv_malloc((nc + 1) * sizeof *where, "cell lists"); /* thread << 40 | offset */
 #pragma omp parallel
   {
     struct tbuf *b = &tb[omp_get_thread_num()];
@@ -309,13 +312,13 @@ static void link_cells(struct nbr_grid *g, const double *h)
   }
 #pragma omp parallel for schedule(static)
   for (size_t c = 0; c < nc; c++)
-    memcpy(g->nbr_list + g->nbr_start[c], tb[where[c] >> 40].a + (where[c] & (((size_t)1 << 40) - 1)),
+    memcpy(g->nbr_list + g->nbr_start[c],
+           tb[where[c] >> 40].a + (where[c] & (((size_t)1 << 40) - 1)),
            (g->nbr_start[c + 1] - g->nbr_start[c]) * sizeof *g->nbr_list);
   for (int t = 0; t < nt; t++) free(tb[t].a);
   free(tb);
   free(where);
 }
-
 
 double nbr_cell_size(double hmin, double hmax)
 {
@@ -362,7 +365,7 @@ size_t nbr_grid_bytes(const struct nbr_grid *g)
 {
   return g->wcap * (sizeof *g->order + 2 * sizeof *g->key + sizeof *g->idx2) +
          g->ccap * (sizeof *g->cell_start + sizeof *g->cell_key + 4 * sizeof *g->cell_h +
-                    sizeof *g->nbr_start) + g->nbr_cap * sizeof *g->nbr_list +
-         g->hcap * (sizeof *g->hkey + sizeof *g->hval) +
+                    sizeof *g->nbr_start) +
+         g->nbr_cap * sizeof *g->nbr_list + g->hcap * (sizeof *g->hkey + sizeof *g->hval) +
          g->ccap * (2 * sizeof *g->row_cell + sizeof *g->row_start);
 }

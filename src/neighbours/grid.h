@@ -19,28 +19,28 @@
 #include <stdint.h>
 
 struct nbr_grid {
-  double cell;           /* [m] cell edge */
-  double origin[3];      /* [m] corner of cell (0,0,0) */
-  size_t n;              /* particles indexed */
-  size_t ncells;         /* occupied cells */
-  uint32_t *order;       /* [n] particle indices sorted by cell */
-  uint32_t *cell_start;  /* [ncells+1] ranges into order */
-  uint64_t *cell_key;    /* [ncells] Morton key of each cell */
-  double *cell_h;        /* [ncells] largest h in the cell [m] */
-  double *cell_lo;       /* [3*ncells] lower corner of each cell [m] */
-  uint32_t *nbr_start;   /* [ncells+1] ranges into nbr_list */
-  int32_t *nbr_list;     /* neighbour cells of each cell, self included, fixed order */
+  double cell;          /* [m] cell edge */
+  double origin[3];     /* [m] corner of cell (0,0,0) */
+  size_t n;             /* particles indexed */
+  size_t ncells;        /* occupied cells */
+  uint32_t *order;      /* [n] particle indices sorted by cell */
+  uint32_t *cell_start; /* [ncells+1] ranges into order */
+  uint64_t *cell_key;   /* [ncells] Morton key of each cell */
+  double *cell_h;       /* [ncells] largest h in the cell [m] */
+  double *cell_lo;      /* [3*ncells] lower corner of each cell [m] */
+  uint32_t *nbr_start;  /* [ncells+1] ranges into nbr_list */
+  int32_t *nbr_list;    /* neighbour cells of each cell, self included, fixed order */
   size_t nbr_cap;
   /* rows: the cells sorted by (z, y, x) cell coordinates, so that the occupied cells of
      one row (fixed y and z) are contiguous and sorted by x; a hash table maps a row's
      (z, y) to its index */
-  uint32_t *row_cell;    /* [ncells] cells in row order */
-  uint32_t *row_x;       /* [ncells] x cell coordinate of each, in row order */
-  uint32_t *row_start;   /* [nrows+1] ranges into row_cell */
+  uint32_t *row_cell;  /* [ncells] cells in row order */
+  uint32_t *row_x;     /* [ncells] x cell coordinate of each, in row order */
+  uint32_t *row_start; /* [nrows+1] ranges into row_cell */
   size_t nrows;
   size_t hcap;
-  uint64_t *hkey;        /* row key (z << 21 | y) */
-  int32_t *hval;         /* row index */
+  uint64_t *hkey; /* row key (z << 21 | y) */
+  int32_t *hval;  /* row index */
   /* work arrays, kept between builds */
   uint64_t *key, *key2;
   uint32_t *idx2;

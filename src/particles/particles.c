@@ -16,30 +16,45 @@ size_t pf_type_size(enum pf_type t)
   return 8;
 }
 
-#define HV_PF_TYPE(ctype) _Generic((ctype)0, int32_t: PF_INT32, int64_t: PF_INT64, double: PF_DOUBLE)
+#define HV_PF_TYPE(ctype)                                                                          \
+  _Generic((ctype)0, int32_t : PF_INT32, int64_t : PF_INT64, double : PF_DOUBLE)
 
 /* Pointers to every component array of every field, allocated or not (all_fields). */
 static int all_fields(struct particles *p, struct pfield *out)
 {
   int k = 0;
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(ctype), .ncomp = 1, .flags = fflags};     \
-  if (p) out[k].comp[0] = (void *)p->fname;                                             \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  out[k] = (struct pfield){.name = #fname,                                                         \
+                           .unit = funit,                                                          \
+                           .desc = fdesc,                                                          \
+                           .type = HV_PF_TYPE(ctype),                                              \
+                           .ncomp = 1,                                                             \
+                           .flags = fflags};                                                       \
+  if (p) out[k].comp[0] = (void *)p->fname;                                                        \
   k++;
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(ctype), .ncomp = 3, .flags = fflags};     \
-  if (p) for (int c_ = 0; c_ < 3; c_++) out[k].comp[c_] = (void *)p->fname[c_];         \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  out[k] = (struct pfield){.name = #fname,                                                         \
+                           .unit = funit,                                                          \
+                           .desc = fdesc,                                                          \
+                           .type = HV_PF_TYPE(ctype),                                              \
+                           .ncomp = 3,                                                             \
+                           .flags = fflags};                                                       \
+  if (p)                                                                                           \
+    for (int c_ = 0; c_ < 3; c_++) out[k].comp[c_] = (void *)p->fname[c_];                         \
   k++;
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  out[k] = (struct pfield){.name = #fname, .unit = funit, .desc = fdesc,                \
-                           .type = HV_PF_TYPE(ctype), .ncomp = 6, .flags = fflags};     \
-  if (p) for (int c_ = 0; c_ < 6; c_++) out[k].comp[c_] = (void *)p->fname[c_];         \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  out[k] = (struct pfield){.name = #fname,                                                         \
+                           .unit = funit,                                                          \
+                           .desc = fdesc,                                                          \
+                           .type = HV_PF_TYPE(ctype),                                              \
+                           .ncomp = 6,                                                             \
+                           .flags = fflags};                                                       \
+  if (p)                                                                                           \
+    for (int c_ = 0; c_ < 6; c_++) out[k].comp[c_] = (void *)p->fname[c_];                         \
   k++;
   HV_PARTICLE_TENSORS(HV_X)
 #undef HV_X
@@ -103,16 +118,18 @@ static void reserve_to(struct particles *p, size_t newcap)
   void **slot[HV_MAX_FIELDS][6];
   /* the pfield view holds copies of the pointers: write back through the struct */
   int k = 0;
-#define HV_X(ctype, fname, funit, fflags, fdesc) slot[k][0] = (void **)&p->fname; k++;
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  slot[k][0] = (void **)&p->fname;                                                                 \
+  k++;
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  for (int c_ = 0; c_ < 3; c_++) slot[k][c_] = (void **)&p->fname[c_];                  \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  for (int c_ = 0; c_ < 3; c_++) slot[k][c_] = (void **)&p->fname[c_];                             \
   k++;
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  for (int c_ = 0; c_ < 6; c_++) slot[k][c_] = (void **)&p->fname[c_];                  \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  for (int c_ = 0; c_ < 6; c_++) slot[k][c_] = (void **)&p->fname[c_];                             \
   k++;
   HV_PARTICLE_TENSORS(HV_X)
 #undef HV_X
@@ -138,21 +155,21 @@ void particles_enable_solid(struct particles *p)
 {
   if (p->solid) return;
   p->solid = 1;
-  if (p->cap) reserve_to(p, p->cap);   /* allocates the solid fields only */
+  if (p->cap) reserve_to(p, p->cap); /* allocates the solid fields only */
 }
 
 void particles_enable_av(struct particles *p)
 {
   if (p->av) return;
   p->av = 1;
-  if (p->cap) reserve_to(p, p->cap);   /* allocates the switch's fields only */
+  if (p->cap) reserve_to(p, p->cap); /* allocates the switch's fields only */
 }
 
 void particles_enable_crack(struct particles *p)
 {
   if (p->cracks) return;
   p->cracks = 1;
-  if (p->cap) reserve_to(p, p->cap);   /* allocates the crack normals only */
+  if (p->cap) reserve_to(p, p->cap); /* allocates the crack normals only */
 }
 
 size_t particles_add(struct particles *p, size_t count)
@@ -160,7 +177,7 @@ size_t particles_add(struct particles *p, size_t count)
   size_t first = p->n;
   p->n_ghost = 0;
   particles_reserve(p, p->n + count);
-  if (count == 0) return first;   /* an empty store's arrays are NULL: no memset on them */
+  if (count == 0) return first; /* an empty store's arrays are NULL: no memset on them */
   struct pfield f[HV_MAX_FIELDS];
   int nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
@@ -187,17 +204,17 @@ void particles_touch(struct particles *p, size_t slot)
 
 void particles_copy(struct particles *p, size_t dst, size_t src, unsigned flags_mask)
 {
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  if (((fflags) & flags_mask) && p->fname) p->fname[dst] = p->fname[src];
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  if (((fflags)&flags_mask) && p->fname) p->fname[dst] = p->fname[src];
   HV_PARTICLE_SCALARS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  if (((fflags) & flags_mask) && p->fname[0])                                           \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  if (((fflags)&flags_mask) && p->fname[0])                                                        \
     for (int c_ = 0; c_ < 3; c_++) p->fname[c_][dst] = p->fname[c_][src];
   HV_PARTICLE_VECTORS(HV_X)
 #undef HV_X
-#define HV_X(ctype, fname, funit, fflags, fdesc)                                      \
-  if (((fflags) & flags_mask) && p->fname[0])                                           \
+#define HV_X(ctype, fname, funit, fflags, fdesc)                                                   \
+  if (((fflags)&flags_mask) && p->fname[0])                                                        \
     for (int c_ = 0; c_ < 6; c_++) p->fname[c_][dst] = p->fname[c_][src];
   HV_PARTICLE_TENSORS(HV_X)
 #undef HV_X

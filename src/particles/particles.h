@@ -33,55 +33,59 @@ enum {
 enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
 
 /* Scalars */
-#define HV_PARTICLE_SCALARS(X)                                                        \
-  X(int64_t, id,    "",       PF_OUT | PF_GHOST | PF_STATE, "particle identifier")    \
-  X(int32_t, mat,   "",       PF_OUT | PF_GHOST | PF_STATE, "material index")         \
-  X(int32_t, body,  "",       PF_OUT | PF_GHOST | PF_STATE, "body index")             \
-  X(double,  m,     "kg",     PF_OUT | PF_GHOST | PF_STATE, "mass")                   \
-  X(double,  h,     "m",      PF_OUT | PF_GHOST | PF_STATE, "smoothing length")       \
-  X(double,  rho,   "kg/m3",  PF_OUT | PF_GHOST | PF_STATE, "density")                \
-  X(double,  e,     "J/kg",   PF_OUT | PF_GHOST | PF_STATE, "specific internal energy") \
-  X(double,  p,     "Pa",     PF_OUT | PF_GHOST | PF_STATE, "pressure")               \
-  X(double,  cs,    "m/s",    PF_OUT | PF_GHOST | PF_STATE, "sound speed")            \
-  X(double,  drho,  "kg/m3/s", 0,                           "density rate")           \
-  X(double,  de,    "J/kg/s", PF_STATE,                     "energy rate (the predictor's)")            \
-  X(double,  rho0,  "kg/m3",  0,                            "density at step start")  \
-  X(double,  e0,    "J/kg",   0,                            "energy at step start")   \
-  X(double,  vsig,  "m/s",    0,                            "largest signal speed")  \
-  X(double,  vol,   "m3",     0,                            "m/rho (per pass, all slots)") \
-  X(double,  pr2,   "m5/kg/s2", 0,                          "p/rho^2 (per pass, all slots)") \
-  X(double,  eps_p, "",       PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain") \
-  X(double,  damage, "",      PF_OUT | PF_STATE | PF_SOLID, "damage: 0-1 while intact (cumulative) or opening (fracture.energy); 1 split; 2 split again (fracture.split: crack)") \
-  X(int32_t, fstate, "",      PF_STATE | PF_SOLID,         "fracture state (enum fracture_state, fracture.h); kept out of the snapshots, which show it in damage") \
-  X(double,  alpha, "",       PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)") \
-  X(double,  divv,  "1/s",    PF_STATE | PF_AV,            "velocity divergence at the last mid-step") \
-  X(double,  eps_c, "",       PF_OUT | PF_STATE | PF_CRACK, "crack opening strain (fracture.split: crack, fracture.energy)") \
-  X(double,  dt,    "s",      PF_OUT,                      "time step the particle allows (CFL, acceleration, wall approach)")
+#define HV_PARTICLE_SCALARS(X)                                                                                            \
+  X(int64_t, id, "", PF_OUT | PF_GHOST | PF_STATE, "particle identifier")                                                 \
+  X(int32_t, mat, "", PF_OUT | PF_GHOST | PF_STATE, "material index")                                                     \
+  X(int32_t, body, "", PF_OUT | PF_GHOST | PF_STATE, "body index")                                                        \
+  X(double, m, "kg", PF_OUT | PF_GHOST | PF_STATE, "mass")                                                                \
+  X(double, h, "m", PF_OUT | PF_GHOST | PF_STATE, "smoothing length")                                                     \
+  X(double, rho, "kg/m3", PF_OUT | PF_GHOST | PF_STATE, "density")                                                        \
+  X(double, e, "J/kg", PF_OUT | PF_GHOST | PF_STATE, "specific internal energy")                                          \
+  X(double, p, "Pa", PF_OUT | PF_GHOST | PF_STATE, "pressure")                                                            \
+  X(double, cs, "m/s", PF_OUT | PF_GHOST | PF_STATE, "sound speed")                                                       \
+  X(double, drho, "kg/m3/s", 0, "density rate")                                                                           \
+  X(double, de, "J/kg/s", PF_STATE, "energy rate (the predictor's)")                                                      \
+  X(double, rho0, "kg/m3", 0, "density at step start")                                                                    \
+  X(double, e0, "J/kg", 0, "energy at step start")                                                                        \
+  X(double, vsig, "m/s", 0, "largest signal speed")                                                                       \
+  X(double, vol, "m3", 0, "m/rho (per pass, all slots)")                                                                  \
+  X(double, pr2, "m5/kg/s2", 0, "p/rho^2 (per pass, all slots)")                                                          \
+  X(double, eps_p, "", PF_OUT | PF_STATE | PF_SOLID, "equivalent plastic strain")                                         \
+  X(double, damage, "", PF_OUT | PF_STATE | PF_SOLID,                                                                     \
+    "damage: 0-1 while intact (cumulative) or opening (fracture.energy); 1 split; 2 split again (fracture.split: crack)") \
+  X(int32_t, fstate, "", PF_STATE | PF_SOLID,                                                                             \
+    "fracture state (enum fracture_state, fracture.h); kept out of the snapshots, which show it in damage")               \
+  X(double, alpha, "", PF_OUT | PF_GHOST | PF_STATE | PF_AV, "viscosity coefficient (switch)")                            \
+  X(double, divv, "1/s", PF_STATE | PF_AV, "velocity divergence at the last mid-step")                                    \
+  X(double, eps_c, "", PF_OUT | PF_STATE | PF_CRACK,                                                                      \
+    "crack opening strain (fracture.split: crack, fracture.energy)")                                                      \
+  X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")
 
 /* Vectors (3 components: name[0..2]) */
-#define HV_PARTICLE_VECTORS(X)                                                        \
-  X(double, x,  "m",    PF_OUT | PF_GHOST | PF_STATE, "position")                    \
-  X(double, v,  "m/s",  PF_OUT | PF_GHOST | PF_STATE, "velocity")                    \
-  X(double, a,  "m/s2", PF_STATE,                     "acceleration (last step)")    \
-  X(double, v0, "m/s",  0,                            "velocity at step start")      \
-  X(double, crack, "",  PF_OUT | PF_STATE | PF_CRACK,  "crack normal (fracture.split: crack, fracture.energy; 0: none)")
+#define HV_PARTICLE_VECTORS(X)                                                                     \
+  X(double, x, "m", PF_OUT | PF_GHOST | PF_STATE, "position")                                      \
+  X(double, v, "m/s", PF_OUT | PF_GHOST | PF_STATE, "velocity")                                    \
+  X(double, a, "m/s2", PF_STATE, "acceleration (last step)")                                       \
+  X(double, v0, "m/s", 0, "velocity at step start")                                                \
+  X(double, crack, "", PF_OUT | PF_STATE | PF_CRACK,                                               \
+    "crack normal (fracture.split: crack, fracture.energy; 0: none)")
 
 /* Symmetric tensors (6 components: name[0..5], order T_XX ... T_XZ) */
-#define HV_PARTICLE_TENSORS(X)                                                        \
-  X(double, S,  "Pa", PF_OUT | PF_GHOST | PF_STATE | PF_SOLID, "deviatoric stress")  \
-  X(double, S1, "Pa", PF_SOLID,                     "deviatoric stress at step end")  \
-  X(double, R,  "Pa", PF_GHOST | PF_SOLID,          "artificial stress (Monaghan 2000)")
+#define HV_PARTICLE_TENSORS(X)                                                                     \
+  X(double, S, "Pa", PF_OUT | PF_GHOST | PF_STATE | PF_SOLID, "deviatoric stress")                 \
+  X(double, S1, "Pa", PF_SOLID, "deviatoric stress at step end")                                   \
+  X(double, R, "Pa", PF_GHOST | PF_SOLID, "artificial stress (Monaghan 2000)")
 
 enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
 
 struct particles {
-  int solid;       /* the PF_SOLID fields are allocated */
-  int av;          /* the PF_AV fields are allocated */
-  int cracks;      /* the PF_CRACK fields are allocated */
-  size_t n;        /* real particles */
-  size_t n_ghost;  /* ghosts after the reals */
-  size_t cap;      /* allocated length of every array */
-  size_t touched;  /* slots [0, touched) are initialised in every allocated array; the
+  int solid;      /* the PF_SOLID fields are allocated */
+  int av;         /* the PF_AV fields are allocated */
+  int cracks;     /* the PF_CRACK fields are allocated */
+  size_t n;       /* real particles */
+  size_t n_ghost; /* ghosts after the reals */
+  size_t cap;     /* allocated length of every array */
+  size_t touched; /* slots [0, touched) are initialised in every allocated array; the
                       rest of the capacity is never written, so it costs address space
                       but no memory */
 #define HV_X(type, name, unit, flags, desc) type *name;
@@ -99,9 +103,9 @@ struct particles {
 struct pfield {
   const char *name, *unit, *desc;
   enum pf_type type;
-  int ncomp;          /* 1, 3 or 6 */
+  int ncomp; /* 1, 3 or 6 */
   unsigned flags;
-  void *comp[6];      /* component arrays */
+  void *comp[6]; /* component arrays */
 };
 
 #define HV_MAX_FIELDS 64

@@ -21,11 +21,11 @@ static const unsigned char line[3] = {110, 110, 110};
 double render_tick_step(double span, double npx, double min_px)
 {
   if (!(span > 0.0 && npx > 0.0 && min_px > 0.0) || !isfinite(span)) return 0.0;
-  const double want = span * min_px / npx;   /* the least step, in the units of span */
+  const double want = span * min_px / npx; /* the least step, in the units of span */
   double e = pow(10.0, floor(log10(want)));
   for (;; e *= 10.0) {
     static const double m[3] = {1.0, 2.0, 5.0};
-    for (int k = 0; k < 3; k++)   /* a hair of tolerance: 2 · 10ᵏ asked is 2 · 10ᵏ given */
+    for (int k = 0; k < 3; k++) /* a hair of tolerance: 2 · 10ᵏ asked is 2 · 10ᵏ given */
       if (m[k] * e >= want * (1.0 - 1e-9)) return m[k] * e;
   }
 }
@@ -40,7 +40,7 @@ static void tick_label(char *buf, size_t len, double t, double step)
 void render_axes(struct canvas *c, const struct render_view *v)
 {
   const int s = v->scale, ml = v->ml, nu = v->nu, nv = v->nv;
-  const double pmm = v->pix * 1e3;   /* pixel edge [mm] */
+  const double pmm = v->pix * 1e3; /* pixel edge [mm] */
   char name[32], lab[48];
 
   /* the axis lines, just outside the plot area */

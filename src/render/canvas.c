@@ -88,8 +88,8 @@ int canvas_text(struct canvas *c, int x, int y, int scale, const unsigned char r
     for (int r = 0; r < FONT_H; r++)
       for (int col = 0; col < FONT_W; col++)
         if (g[r] & (0x10u >> col))
-          canvas_rect(c, x + col * scale, y + r * scale, x + (col + 1) * scale,
-                      y + (r + 1) * scale, rgb);
+          canvas_rect(c, x + col * scale, y + r * scale, x + (col + 1) * scale, y + (r + 1) * scale,
+                      rgb);
     x += FONT_ADVANCE * scale;
   }
   return x - x0;
@@ -118,11 +118,11 @@ static void png_on_warning(png_structp png, png_const_charp msg)
 }
 
 /* Encodes the canvas into f. Returns 0, or -1 with the libpng message in pe. */
-static int png_encode(FILE *f, const struct canvas *c, const char *description,
-                      png_bytep *rows, struct png_err *pe)
+static int png_encode(FILE *f, const struct canvas *c, const char *description, png_bytep *rows,
+                      struct png_err *pe)
 {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, pe, png_on_error,
-                                            png_on_warning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, pe, png_on_error, png_on_warning);
   if (!png) {
     snprintf(pe->msg, sizeof pe->msg, "libpng could not start");
     return -1;

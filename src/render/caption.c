@@ -32,19 +32,27 @@ static double nice_step(double span, int n)
 
 static void format_length(char *buf, size_t len, double L)
 {
-  if (L >= 1.0) snprintf(buf, len, "%g m", L);
-  else if (L >= 1e-3) snprintf(buf, len, "%g mm", round(L * 1e6) / 1e3);
-  else snprintf(buf, len, "%g µm", round(L * 1e9) / 1e3);
+  if (L >= 1.0)
+    snprintf(buf, len, "%g m", L);
+  else if (L >= 1e-3)
+    snprintf(buf, len, "%g mm", round(L * 1e6) / 1e3);
+  else
+    snprintf(buf, len, "%g µm", round(L * 1e9) / 1e3);
 }
 
 static void format_time(char *buf, size_t len, double t)
 {
   double us = t * 1e6;
-  if (us == 0.0) snprintf(buf, len, "t = 0 µs");
-  else if (fabs(us) >= 100.0) snprintf(buf, len, "t = %.0f µs", us);
-  else if (fabs(us) >= 10.0) snprintf(buf, len, "t = %.1f µs", us);
-  else if (fabs(us) >= 0.1) snprintf(buf, len, "t = %.2f µs", us);
-  else snprintf(buf, len, "t = %.3g µs", us);
+  if (us == 0.0)
+    snprintf(buf, len, "t = 0 µs");
+  else if (fabs(us) >= 100.0)
+    snprintf(buf, len, "t = %.0f µs", us);
+  else if (fabs(us) >= 10.0)
+    snprintf(buf, len, "t = %.1f µs", us);
+  else if (fabs(us) >= 0.1)
+    snprintf(buf, len, "t = %.2f µs", us);
+  else
+    snprintf(buf, len, "t = %.3g µs", us);
 }
 
 /* Ticks and labels under a horizontal bar [x0, x0 + w) for values lo..hi (display units). */
@@ -95,14 +103,15 @@ static void key_colorbar(struct canvas *c, int x0, int y, int w, int s)
 static void key_legend(struct canvas *c, const struct caption_key *k,
                        const struct render_info *info, int x, int y, int s)
 {
-  for (int slot = 0; slot < k->nmat; slot++) {   /* in palette order */
+  for (int slot = 0; slot < k->nmat; slot++) { /* in palette order */
     int m = 0;
     while (m < k->nmat && k->slot[m] != slot) m++;
     if (m == k->nmat || !k->present[m]) continue;
     char name[96];
     if (info && info->material_names && m < info->nmat && info->material_names[m])
       snprintf(name, sizeof name, "%s", info->material_names[m]);
-    else snprintf(name, sizeof name, "material %d", m);
+    else
+      snprintf(name, sizeof name, "material %d", m);
     int need = 10 * s + canvas_text_width(s, name);
     if (x + need > c->w - 8 * s) {
       canvas_text(c, x, y, s, ink, "...");
@@ -164,8 +173,10 @@ void render_caption(struct canvas *c, const struct render_view *v, const struct 
     bw = c->w - 16 * s; /* no room for the label beside the bar */
     label = NULL;
   }
-  if (key->kind == 0) key_wedge(c, key, 8 * s, yb, bw, s);
-  else key_colorbar(c, 8 * s, yb, bw, s);
+  if (key->kind == 0)
+    key_wedge(c, key, 8 * s, yb, bw, s);
+  else
+    key_colorbar(c, 8 * s, yb, bw, s);
   bar_ticks(c, 8 * s, bw, yb + 6 * s, s, key->lo / key->unit, key->hi / key->unit);
   if (label) canvas_text(c, 8 * s + bw + 12 * s, yb - s, s, ink, label);
 }

@@ -92,7 +92,8 @@ int render_check_particles(const struct particles *p, int nmat, const char *path
   if (nbad > 1) snprintf(more, sizeof more, "; %zu particles more are bad", nbad - 1);
   if (field[0] == 'm' && field[1] == 'a' && nmat > 0)
     snprintf(range, sizeof range, " (0 to %d)", nmat - 1);
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: particle %zu (id %" PRId64 "), field '%s' = "
-                      "%.9g: %s%s%s; not drawn", path, first, p->id[first], field, value, rule,
-                      range, more);
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: particle %zu (id %" PRId64 "), field '%s' = "
+                      "%.9g: %s%s%s; not drawn",
+                      path, first, p->id[first], field, value, rule, range, more);
 }

@@ -15,12 +15,12 @@ static const struct {
   double t;
   unsigned char rgb[3];
 } cmap_points[] = {
-    {0.0, {48, 18, 80}},    /* dark indigo */
-    {0.2, {72, 48, 150}},   /* violet blue */
-    {0.4, {40, 110, 170}},  /* blue */
-    {0.6, {30, 160, 140}},  /* teal */
-    {0.8, {130, 200, 70}},  /* green */
-    {1.0, {250, 230, 50}},  /* yellow */
+    {0.0, {48, 18, 80}},   /* dark indigo */
+    {0.2, {72, 48, 150}},  /* violet blue */
+    {0.4, {40, 110, 170}}, /* blue */
+    {0.6, {30, 160, 140}}, /* teal */
+    {0.8, {130, 200, 70}}, /* green */
+    {1.0, {250, 230, 50}}, /* yellow */
 };
 #define CMAP_N ((int)(sizeof cmap_points / sizeof cmap_points[0]))
 
@@ -38,16 +38,16 @@ void render_colormap(double t, unsigned char rgb[3])
 }
 
 static const unsigned char palette[10][3] = {
-    {70, 110, 190},   /* steel blue */
-    {235, 140, 35},   /* orange */
-    {55, 160, 75},    /* green */
-    {205, 55, 55},    /* red */
-    {140, 90, 185},   /* purple */
-    {150, 105, 65},   /* brown */
-    {225, 115, 180},  /* pink */
-    {115, 115, 115},  /* grey */
-    {175, 175, 40},   /* olive */
-    {50, 180, 195},   /* cyan */
+    {70, 110, 190},  /* steel blue */
+    {235, 140, 35},  /* orange */
+    {55, 160, 75},   /* green */
+    {205, 55, 55},   /* red */
+    {140, 90, 185},  /* purple */
+    {150, 105, 65},  /* brown */
+    {225, 115, 180}, /* pink */
+    {115, 115, 115}, /* grey */
+    {175, 175, 40},  /* olive */
+    {50, 180, 195},  /* cyan */
 };
 
 void render_palette(int k, unsigned char rgb[3])

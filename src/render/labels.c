@@ -51,7 +51,7 @@ int render_read_body_names(const char *dir, char names[][64], int max)
 }
 
 struct box {
-  int x0, y0, x1, y1;   /* [x0, x1) × [y0, y1) */
+  int x0, y0, x1, y1; /* [x0, x1) × [y0, y1) */
 };
 
 static int overlap(const struct box *a, const struct box *b)
@@ -59,8 +59,8 @@ static int overlap(const struct box *a, const struct box *b)
   return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
 }
 
-int render_body_labels(struct canvas *plot, const struct particles *p,
-                       const struct render_view *v, const struct render_info *info)
+int render_body_labels(struct canvas *plot, const struct particles *p, const struct render_view *v,
+                       const struct render_info *info)
 {
   int nb = 0;
   for (size_t i = 0; i < p->n; i++)
@@ -89,7 +89,8 @@ int render_body_labels(struct canvas *plot, const struct particles *p,
     if (info && info->body_names && b < info->nbody && info->body_names[b] &&
         info->body_names[b][0])
       snprintf(name, sizeof name, "%s", info->body_names[b]);
-    else snprintf(name, sizeof name, "body %d", b);
+    else
+      snprintf(name, sizeof name, "body %d", b);
     const int bw = canvas_text_width(s, name) + 2 * pad, bh = FONT_H * s + 2 * pad;
     if (bw > v->nu || bh > v->nv) continue;
     struct box r;

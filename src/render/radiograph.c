@@ -51,9 +51,9 @@
 #include "kernel/kernel.h"
 #include "render/render_internal.h"
 
-#define COL_N 2048   /* table intervals for s in [0, 2] */
-#define COL_NT 512   /* Simpson intervals along the line of sight */
-#define NARROW 12    /* [px] footprint radius up to which weights are normalised numerically */
+#define COL_N  2048 /* table intervals for s in [0, 2] */
+#define COL_NT 512  /* Simpson intervals along the line of sight */
+#define NARROW 12   /* [px] footprint radius up to which weights are normalised numerically */
 
 double render_kernel_column(double s)
 {
@@ -142,8 +142,7 @@ static void deposit(double *acc, int nu, int nv, const struct column_table *ct, 
       acc[(size_t)j * (size_t)nu + (size_t)i] += scale * w[(j - j0) * wi + (i - i0)];
 }
 
-void render_areal_density(const struct particles *p, const struct render_view *view,
-                          double *sigma)
+void render_areal_density(const struct particles *p, const struct render_view *view, double *sigma)
 {
   const struct render_view *v = view;
   size_t npix = (size_t)v->nu * (size_t)v->nv;
@@ -183,7 +182,7 @@ double render_auto_mu(const double *sigma, const unsigned char *occupied, size_t
   for (size_t k = 0; k < npix; k++)
     if (sigma[k] > 0.0 && (!occupied || occupied[k])) s[n++] = sigma[k];
   qsort(s, n, sizeof *s, cmp_double);
-  const double q = s[(n - 1) / 4];   /* the lower quartile (nearest rank) */
+  const double q = s[(n - 1) / 4]; /* the lower quartile (nearest rank) */
   free(s);
   const double mu = log(2.0) / q;
   if (!(mu > 0.0 && isfinite(mu))) return RENDER_MU_FALLBACK; /* σ of 1e-320: underflow */
@@ -205,8 +204,7 @@ void render_occupied(const struct particles *p, const struct render_view *v,
     }
 }
 
-void render_film(struct canvas *c, const struct render_view *view, const double *sigma,
-                 double mu)
+void render_film(struct canvas *c, const struct render_view *view, const double *sigma, double mu)
 {
   for (int j = 0; j < view->nv && j < c->h; j++)
     for (int i = 0; i < view->nu && i < c->w; i++) {

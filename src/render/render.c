@@ -42,8 +42,7 @@ static void color_unit(enum render_color c, double lo, double hi, double *unit, 
 
 static const char *color_name(enum render_color c)
 {
-  static const char *n[] = {"material", "damage", "velocity", "pressure", "density", "alpha",
-                            "dt"};
+  static const char *n[] = {"material", "damage", "velocity", "pressure", "density", "alpha", "dt"};
   return n[c];
 }
 
@@ -78,12 +77,15 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
   key->mu = mu;
   char how[160] = "";
   if (automatic)
-    snprintf(how, sizeof how, " (automatic: the lower quartile of the areal densities of the "
-             "pixels holding a particle, %.6g kg/m2, at T = 1/2)", quartile);
-  snprintf(desc, dlen, "simulated flash radiograph along %c%s: areal density, film T = "
+    snprintf(how, sizeof how,
+             " (automatic: the lower quartile of the areal densities of the "
+             "pixels holding a particle, %.6g kg/m2, at T = 1/2)",
+             quartile);
+  snprintf(desc, dlen,
+           "simulated flash radiograph along %c%s: areal density, film T = "
            "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg, peak areal density "
            "%.6g kg/m2",
-           "xyz"[v->axis], v->mirror ? ", mirrored at z = 0" : "", mu, how, mass, smax);
+           "xyz"[v->axis], v -> mirror ? ", mirrored at z = 0" : "", mu, how, mass, smax);
   return mu;
 }
 
@@ -93,16 +95,19 @@ static int check_input(const struct particles *p, const struct render_options *o
                        struct hv_error *err)
 {
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DAMAGE && !p->damage)
-    return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no damage column (no material "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "the snapshot has no damage column (no material "
                         "with strength or fracture): colour by another quantity");
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_ALPHA && !p->alpha)
-    return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no alpha column (a run without "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "the snapshot has no alpha column (a run without "
                         "sph.viscosity.switch): colour by another quantity");
   if (o->mode == RENDER_PARTICLES && o->color == RENDER_COLOR_DT) {
     size_t k = 0;
     while (k < p->n && !(p->dt[k] > 0.0)) k++;
-    if (k == p->n)   /* the field reads 0 where a snapshot has no such column */
-      return hv_error_set(err, HV_EXIT_INPUT, "the snapshot has no dt column (written by an "
+    if (k == p->n) /* the field reads 0 where a snapshot has no such column */
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "the snapshot has no dt column (written by an "
                           "hvsph before it kept each particle's time step): colour by another "
                           "quantity");
   }
@@ -122,7 +127,7 @@ int render_png(const char *path, const struct particles *p, const struct render_
 
   struct canvas c, plot;
   canvas_init(&c, v.width, v.height);
-  canvas_init(&plot, v.nu, v.nv);   /* the plot area, drawn alone, then put in place */
+  canvas_init(&plot, v.nu, v.nv); /* the plot area, drawn alone, then put in place */
   struct caption_key key = {0};
   char what[2][128], desc[1024], mu_label[96];
   char axis = "xyz"[v.axis], right = "xyz"[v.iu], up = "xyz"[v.iv];
@@ -145,8 +150,10 @@ int render_png(const char *path, const struct particles *p, const struct render_
     if (given) nmat = info->nslot; /* a series' ranking, over all its pictures */
     present = hv_calloc((size_t)nmat, 1, "material flags");
     slot = hv_malloc((size_t)nmat * sizeof *slot, "material slots");
-    if (given) memcpy(slot, info->material_slot, (size_t)nmat * sizeof *slot);
-    else render_material_slots(p, nmat, slot);
+    if (given)
+      memcpy(slot, info->material_slot, (size_t)nmat * sizeof *slot);
+    else
+      render_material_slots(p, nmat, slot);
     double lo, hi;
     size_t nd = render_discs(&plot, p, &v, o, &lo, &hi, present, slot, nmat);
     key.kind = o->color == RENDER_COLOR_MATERIAL ? 2 : 1;
@@ -159,9 +166,10 @@ int render_png(const char *path, const struct particles *p, const struct render_
     const char *how = v.mirror ? ", mirrored" : v.axis == 2 ? ", cut at z = 0" : "";
     snprintf(what[0], sizeof what[0], "seen along +%c (%c→ %c↑)%s", axis, right, up, how);
     snprintf(what[1], sizeof what[1], "along +%c%s", axis, how);
-    snprintf(desc, sizeof desc, "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
-             "SI), %zu discs", axis, v.mirror ? ", mirrored at z = 0" : "",
-             color_name(o->color), lo, hi, nd);
+    snprintf(desc, sizeof desc,
+             "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
+             "SI), %zu discs",
+             axis, v.mirror ? ", mirrored at z = 0" : "", color_name(o->color), lo, hi, nd);
   }
   if (o->labels && info && !info->body_names && info->source) {
     /* names not given: the run's, next to the snapshot (validate's pictures, say) */
@@ -170,8 +178,10 @@ int render_png(const char *path, const struct particles *p, const struct render_
     char dir[4096];
     snprintf(dir, sizeof dir, "%s", info->source);
     char *slash = strrchr(dir, '/');
-    if (slash) slash[slash == dir] = '\0';   /* "/snap.csv": the root */
-    else snprintf(dir, sizeof dir, ".");
+    if (slash)
+      slash[slash == dir] = '\0'; /* "/snap.csv": the root */
+    else
+      snprintf(dir, sizeof dir, ".");
     struct render_info named = *info;
     named.nbody = render_read_body_names(dir, names, RENDER_MAX_BODIES);
     for (int k = 0; k < named.nbody; k++) ptr[k] = names[k];
@@ -181,8 +191,8 @@ int render_png(const char *path, const struct particles *p, const struct render_
     render_body_labels(&plot, p, &v, info);
   }
   for (int j = 0; j < v.nv; j++)
-    memcpy(c.rgb + 3 * ((size_t)j * (size_t)c.w + (size_t)v.ml), plot.rgb + 3 * (size_t)j * (size_t)v.nu,
-           3 * (size_t)v.nu);
+    memcpy(c.rgb + 3 * ((size_t)j * (size_t)c.w + (size_t)v.ml),
+           plot.rgb + 3 * (size_t)j * (size_t)v.nu, 3 * (size_t)v.nu);
   canvas_free(&plot);
   render_axes(&c, &v);
   const char *whatp[2] = {what[0], what[1]};
@@ -191,10 +201,12 @@ int render_png(const char *path, const struct particles *p, const struct render_
   free(slot);
 
   char full[2048];
-  snprintf(full, sizeof full, "%s; %s%s%st = %.9g s; picture %c right %.6g..%.6g m, %c up "
-           "%.6g..%.6g m, pixel %.6g m", desc, info && info->source ? "snapshot " : "",
-           info && info->source ? info->source : "", info && info->source ? ", " : "",
-           info ? info->time : (double)NAN, "xyz"[v.iu], v.u0, v.u1, "xyz"[v.iv], v.v0, v.v1, v.pix);
+  snprintf(full, sizeof full,
+           "%s; %s%s%st = %.9g s; picture %c right %.6g..%.6g m, %c up "
+           "%.6g..%.6g m, pixel %.6g m",
+           desc, info && info->source ? "snapshot " : "", info && info->source ? info->source : "",
+           info && info->source ? ", " : "", info ? info->time : (double)NAN, "xyz"[v.iu], v.u0,
+           v.u1, "xyz"[v.iv], v.v0, v.v1, v.pix);
   int rc = canvas_write_png(&c, path, full, err);
   canvas_free(&c);
   return rc;

@@ -40,23 +40,24 @@
 enum render_mode { RENDER_RADIOGRAPH = 0, RENDER_PARTICLES = 1 };
 
 enum render_color {
-  RENDER_COLOR_MATERIAL = 0,  /* fixed palette by material index */
-  RENDER_COLOR_DAMAGE,        /* 0..1 */
-  RENDER_COLOR_VELOCITY,      /* |v| [m/s], labelled in km/s */
-  RENDER_COLOR_PRESSURE,      /* p [Pa], labelled in GPa */
-  RENDER_COLOR_DENSITY,       /* rho [kg/m3], labelled in g/cm3 */
-  RENDER_COLOR_ALPHA,         /* the viscosity switch's α (sph.viscosity.switch), 0..its max */
-  RENDER_COLOR_DT             /* the time step a particle allows [s], coloured by its log10 */
+  RENDER_COLOR_MATERIAL = 0, /* fixed palette by material index */
+  RENDER_COLOR_DAMAGE,       /* 0..1 */
+  RENDER_COLOR_VELOCITY,     /* |v| [m/s], labelled in km/s */
+  RENDER_COLOR_PRESSURE,     /* p [Pa], labelled in GPa */
+  RENDER_COLOR_DENSITY,      /* rho [kg/m3], labelled in g/cm3 */
+  RENDER_COLOR_ALPHA,        /* the viscosity switch's α (sph.viscosity.switch), 0..its max */
+  RENDER_COLOR_DT            /* the time step a particle allows [s], coloured by its log10 */
 };
 
-#define RENDER_MU_AUTO 0.0      /* --mu not given: chosen from the areal densities in view */
-#define RENDER_MU_FALLBACK 0.05  /* [m2/kg] the automatic μ of a picture without material
+#define RENDER_MU_AUTO 0.0 /* --mu not given: chosen from the areal densities in view */
+#define RENDER_MU_FALLBACK                                                                         \
+  0.05                             /* [m2/kg] the automatic μ of a picture without material
                                     (about iron's at 90 keV) */
-#define RENDER_MAX_COORD 1e6     /* [m] a position farther from the origin is bad data */
+#define RENDER_MAX_COORD     1e6   /* [m] a position farther from the origin is bad data */
 #define RENDER_WIDTH_DEFAULT 1200  /* [px] picture width when --size is not given */
-#define RENDER_MIN_WIDTH 200     /* [px] */
-#define RENDER_MIN_HEIGHT 100    /* [px] */
-#define RENDER_MAX_SIDE 16384    /* [px] */
+#define RENDER_MIN_WIDTH     200   /* [px] */
+#define RENDER_MIN_HEIGHT    100   /* [px] */
+#define RENDER_MAX_SIDE      16384 /* [px] */
 /* Background of both modes and of the caption band: white. */
 #define RENDER_BG_R 255
 #define RENDER_BG_G 255
@@ -64,37 +65,37 @@ enum render_color {
 
 struct render_options {
   enum render_mode mode;
-  int axis;                  /* line of sight: 0 x, 1 y, 2 z */
-  enum render_color color;   /* particles mode */
-  int width, height;         /* [px] the whole picture (plot + caption band); 0: automatic */
+  int axis;                /* line of sight: 0 x, 1 y, 2 z */
+  enum render_color color; /* particles mode */
+  int width, height;       /* [px] the whole picture (plot + caption band); 0: automatic */
   int have_box;
-  double box[6];             /* [m] xmin, xmax, ymin, ymax, zmin, zmax */
-  int mirror;                /* -1: automatic (on for a half model), 0 off, 1 on */
-  double mu;                 /* [m2/kg] mass attenuation coefficient (radiograph);
+  double box[6]; /* [m] xmin, xmax, ymin, ymax, zmin, zmax */
+  int mirror;    /* -1: automatic (on for a half model), 0 off, 1 on */
+  double mu;     /* [m2/kg] mass attenuation coefficient (radiograph);
                                 RENDER_MU_AUTO: render_auto_mu of the picture */
-  int labels;                /* 1: each body's name where it fits (default), 0: none */
+  int labels;    /* 1: each body's name where it fits (default), 0: none */
   int have_range;
-  double range[2];           /* colour range in SI units of the quantity (particles mode) */
+  double range[2]; /* colour range in SI units of the quantity (particles mode) */
 };
 
 void render_options_default(struct render_options *o);
 
 /* Where the picture lies in space and on the page. */
 struct render_view {
-  int axis, iu, iv;          /* line of sight; coordinates shown right (iu) and up (iv) */
-  int mirror;                /* particles are reflected across z = 0 (copies at -z) */
-  double u0, u1, v0, v1;     /* [m] extent of the plot area (square pixels) */
-  double ext[4];             /* [m] the extent asked for, u0, u1, v0, v1 before it was grown to
+  int axis, iu, iv;      /* line of sight; coordinates shown right (iu) and up (iv) */
+  int mirror;            /* particles are reflected across z = 0 (copies at -z) */
+  double u0, u1, v0, v1; /* [m] extent of the plot area (square pixels) */
+  double ext[4];         /* [m] the extent asked for, u0, u1, v0, v1 before it was grown to
                                 the plot area's aspect: the box's, or the particles' with their
                                 supports and the margin */
-  double d0, d1;             /* [m] slab along the line of sight (particle centres), ±inf by default */
-  double pix;                /* [m] pixel edge */
-  int nu, nv;                /* [px] plot area, at the top of the picture right of the
+  double d0, d1;         /* [m] slab along the line of sight (particle centres), ±inf by default */
+  double pix;            /* [m] pixel edge */
+  int nu, nv;            /* [px] plot area, at the top of the picture right of the
                                 left axis margin: columns ml..ml+nu-1, rows 0..nv-1 */
-  int ml, mb;                /* [px] left margin (y axis' ticks and labels), bottom axis band */
-  int width, height;         /* [px] whole picture: ml + nu wide, nv + mb + band high */
-  int band;                  /* [px] caption band height */
-  int scale;                 /* font scale of the caption (1 or 2) */
+  int ml, mb;            /* [px] left margin (y axis' ticks and labels), bottom axis band */
+  int width, height;     /* [px] whole picture: ml + nu wide, nv + mb + band high */
+  int band;              /* [px] caption band height */
+  int scale;             /* font scale of the caption (1 or 2) */
 };
 
 /* Chooses mirroring, the extent (the box, or every particle with its 2h support plus a
@@ -137,8 +138,7 @@ int render_check_particles(const struct particles *p, int nmat, const char *path
 
 /* Areal density σ [kg/m²] on the view's nu × nv plot pixels (row 0 at the top, v = v1):
  * sigma[j * nu + i]. Σ sigma · pix² equals the mass in the view (mirror copies included). */
-void render_areal_density(const struct particles *p, const struct render_view *view,
-                          double *sigma);
+void render_areal_density(const struct particles *p, const struct render_view *view, double *sigma);
 
 /* Particles mode, a quantity: widens [*lo, *hi] to the values (SI) of the particles drawn
  * in the view (start from HUGE_VAL, -HUGE_VAL); non-finite values are left out. */
@@ -156,15 +156,15 @@ void render_palette(int k, unsigned char rgb[3]);
 
 /* What the caption says besides the options. */
 struct render_info {
-  double time;                        /* [s] snapshot time; NaN: not shown */
-  const char *const *material_names;  /* index -> name; may be NULL */
+  double time;                       /* [s] snapshot time; NaN: not shown */
+  const char *const *material_names; /* index -> name; may be NULL */
   int nmat;
-  const char *source;                 /* snapshot file name, for the PNG's text chunk; may be NULL */
-  const int *material_slot;           /* palette slot of each material index < nslot, kept the
+  const char *source;       /* snapshot file name, for the PNG's text chunk; may be NULL */
+  const int *material_slot; /* palette slot of each material index < nslot, kept the
                                          same over a series of pictures; NULL: ranked from p's
                                          bodies (render.c) */
   int nslot;
-  const char *const *body_names;      /* body index -> name (labels), may hold NULLs
+  const char *const *body_names; /* body index -> name (labels), may hold NULLs
                                          ("body N"); NULL: render_png reads them from the
                                          used_parameters.yaml in source's folder */
   int nbody;

@@ -14,10 +14,10 @@
 /* 8-bit sRGB picture, rows top to bottom. */
 struct canvas {
   int w, h;
-  unsigned char *rgb;  /* 3 * w * h bytes */
+  unsigned char *rgb; /* 3 * w * h bytes */
 };
 
-void canvas_init(struct canvas *c, int w, int h);  /* filled with the background colour */
+void canvas_init(struct canvas *c, int w, int h); /* filled with the background colour */
 void canvas_free(struct canvas *c);
 /* Mixes colour into pixel (x, y) with opacity a in [0, 1]; outside the canvas: nothing. */
 void canvas_blend(struct canvas *c, int x, int y, const unsigned char rgb[3], double a);
@@ -37,15 +37,14 @@ int canvas_write_png(const struct canvas *c, const char *path, const char *descr
 /* Font: cells of FONT_W × FONT_H pixels (5 × 7 above the baseline plus a descender row),
  * advance FONT_W + 1. font_glyph fills FONT_H row masks (bit 4 the leftmost column) and
  * returns 0, or -1 when the code point has no glyph. */
-#define FONT_W 5
-#define FONT_H 8
+#define FONT_W       5
+#define FONT_H       8
 #define FONT_ADVANCE 6
 int font_glyph(unsigned long cp, unsigned char rows[FONT_H]);
 
 /* The radiograph: film picture of the areal density into the plot area, and the caption's
  * density wedge. */
-void render_film(struct canvas *c, const struct render_view *view, const double *sigma,
-                 double mu);
+void render_film(struct canvas *c, const struct render_view *view, const double *sigma, double mu);
 
 /* Axes with ticks in mm in the margins of the view: left (v) and bottom (u) edges of the
  * plot area (axes.c). */
@@ -54,9 +53,9 @@ void render_axes(struct canvas *c, const struct render_view *v);
  * centred at the mass-weighted centre of its particles in view, where the label lies
  * wholly in the plot and overlaps no label placed before (bodies in index order).
  * Returns the count of labels drawn. */
-int render_body_labels(struct canvas *plot, const struct particles *p,
-                       const struct render_view *v, const struct render_info *info);
-#define RENDER_MAX_BODIES 256   /* bodies labelled: indices below this */
+int render_body_labels(struct canvas *plot, const struct particles *p, const struct render_view *v,
+                       const struct render_info *info);
+#define RENDER_MAX_BODIES 256 /* bodies labelled: indices below this */
 
 /* The palette slot of each material index 0..nmat-1 (slot[m]): the materials ranked by
  * the first body (lowest body index) made of them, ties and materials without particles
@@ -78,18 +77,19 @@ void render_material_rank(const int *first, int nmat, int *slot);
  * (SI); present[k] is set for every material index drawn (k < nmat_present), whose
  * colour is the palette's entry slot[k]. Returns the count of discs drawn. */
 size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *view,
-                    const struct render_options *o, double *lo, double *hi,
-                    unsigned char *present, const int *slot, int nmat_present);
+                    const struct render_options *o, double *lo, double *hi, unsigned char *present,
+                    const int *slot, int nmat_present);
 
 /* The caption band below the plot: scale bar, time, view, and the colour key of the mode. */
 struct caption_key {
-  int kind;               /* 0: film wedge, 1: colour bar, 2: material legend */
-  double lo, hi;          /* range of the key in SI */
-  double unit;            /* SI per display unit (e.g. 1e3 for km/s) */
-  const char *label[2];   /* quantity and unit, e.g. "|v| [km/s]": long form, short form (may be NULL) */
-  double mu;              /* [m2/kg] film wedge */
-  const unsigned char *present;  /* materials drawn (legend) */
-  const int *slot;        /* palette slot of each material (legend order) */
+  int kind;      /* 0: film wedge, 1: colour bar, 2: material legend */
+  double lo, hi; /* range of the key in SI */
+  double unit;   /* SI per display unit (e.g. 1e3 for km/s) */
+  const char
+      *label[2]; /* quantity and unit, e.g. "|v| [km/s]": long form, short form (may be NULL) */
+  double mu;     /* [m2/kg] film wedge */
+  const unsigned char *present; /* materials drawn (legend) */
+  const int *slot;              /* palette slot of each material (legend order) */
   int nmat;
 };
 /* what[0]: the long description of the view, what[1] a short one for narrow pictures. */

@@ -15,11 +15,11 @@
 #include "render/render_internal.h"
 
 struct disc {
-  double depth;     /* [m] along the line of sight */
-  double fu, fv;    /* picture position [px], integers at pixel centres */
-  double r;         /* [px] */
-  double value;     /* colour quantity (SI), or material index */
-  size_t order;     /* tie-break */
+  double depth;  /* [m] along the line of sight */
+  double fu, fv; /* picture position [px], integers at pixel centres */
+  double r;      /* [px] */
+  double value;  /* colour quantity (SI), or material index */
+  size_t order;  /* tie-break */
 };
 
 static int disc_cmp(const void *a, const void *b)
@@ -38,7 +38,7 @@ static double particle_value(const struct particles *p, size_t i, enum render_co
   case RENDER_COLOR_PRESSURE: return p->p[i];
   case RENDER_COLOR_DENSITY: return p->rho[i];
   case RENDER_COLOR_ALPHA: return p->alpha ? p->alpha[i] : 0.0;
-  case RENDER_COLOR_DT: return p->dt[i] > 0.0 ? log10(p->dt[i]) : (double)NAN;   /* not drawn */
+  case RENDER_COLOR_DT: return p->dt[i] > 0.0 ? log10(p->dt[i]) : (double)NAN; /* not drawn */
   case RENDER_COLOR_MATERIAL: break;
   }
   return (double)p->mat[i];
@@ -75,7 +75,7 @@ void render_material_first_body(const struct particles *p, int nmat, int *first)
 
 void render_material_rank(const int *first, int nmat, int *slot)
 {
-  for (int m = 0; m < nmat; m++) {   /* rank: materials ahead of m by (first body, index) */
+  for (int m = 0; m < nmat; m++) { /* rank: materials ahead of m by (first body, index) */
     slot[m] = 0;
     for (int k = 0; k < nmat; k++)
       if (first[k] < first[m] || (first[k] == first[m] && k < m)) slot[m]++;
@@ -138,8 +138,8 @@ void render_color_limits(const struct render_options *o, double *lo, double *hi)
 }
 
 size_t render_discs(struct canvas *c, const struct particles *p, const struct render_view *v,
-                    const struct render_options *o, double *lo, double *hi,
-                    unsigned char *present, const int *slot, int nmat_present)
+                    const struct render_options *o, double *lo, double *hi, unsigned char *present,
+                    const int *slot, int nmat_present)
 {
   size_t cap = p->n * (size_t)(v->mirror + 1), n = 0;
   struct disc *d = hv_malloc((cap ? cap : 1) * sizeof *d, "particle discs");
@@ -164,8 +164,8 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
     if (o->color == RENDER_COLOR_MATERIAL) {
       const int m = (int)d[k].value;
       render_palette(m >= 0 && m < nmat_present ? slot[m] : m, rgb);
-    }
-    else render_colormap((d[k].value - vmin) / (vmax - vmin), rgb);
+    } else
+      render_colormap((d[k].value - vmin) / (vmax - vmin), rgb);
     draw_disc(c, v, &d[k], rgb);
   }
   free(d);

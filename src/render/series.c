@@ -39,8 +39,8 @@
 
 /* A snapshot of the run, to become a frame. */
 struct frame {
-  int num;          /* its NNNNN */
-  const char *ext;  /* "vtu" or "csv" */
+  int num;         /* its NNNNN */
+  const char *ext; /* "vtu" or "csv" */
 };
 
 static void snapshot_path(char *buf, size_t len, const char *dir, const struct frame *f)
@@ -71,22 +71,22 @@ static int load(const char *path, struct particles *p, double *t, struct hv_erro
   if (io_read_particles(path, p, t, err)) return -1;
   if (p->n == 0) return hv_error_set(err, HV_EXIT_INPUT, "'%s' holds no particles", path);
   char names[RENDER_MAX_MATERIALS][64] = {{0}};
-  return render_check_particles(p, io_read_material_names(path, names, RENDER_MAX_MATERIALS),
-                                path, err);
+  return render_check_particles(p, io_read_material_names(path, names, RENDER_MAX_MATERIALS), path,
+                                err);
 }
 
 /* A series under way: what every frame shares, gathered over the run's snapshots. */
 struct series {
   const char *rundir;
-  double *times;            /* summary.csv's output times, nt of them (nt < 0: none read) */
+  double *times; /* summary.csv's output times, nt of them (nt < 0: none read) */
   int nt;
-  struct render_options o;  /* the options of every frame */
-  int want_range;           /* a colour range from all the frames */
+  struct render_options o; /* the options of every frame */
+  int want_range;          /* a colour range from all the frames */
   /* per mirroring (0 off, 1 on) while the automatic choice is not yet known */
   double ext[2][4], lo[2], hi[2];
   int half, nmat, iu, iv;
-  int *first, *slot;        /* per material: its first body; its colour slot */
-  struct frame *frames;     /* the snapshots that are outputs of the run, nf of them */
+  int *first, *slot;    /* per material: its first body; its colour slot */
+  struct frame *frames; /* the snapshots that are outputs of the run, nf of them */
   int nf;
 };
 
@@ -104,7 +104,8 @@ static int scan_snapshot(struct series *s, const struct frame *f, struct hv_erro
   if (ours) rc = load(path, &p, &t, err);
   if (!rc && !(ours = io_snapshot_in_run(f->num, t, s->times, s->nt)))
     hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
-            "folder): skipped", path);
+            "folder): skipped",
+            path);
   if (!rc && ours) {
     s->half = s->half && render_half_model(&p);
     for (int m = 0; m < 2 && !rc; m++) {
@@ -193,15 +194,16 @@ static int share_mu(struct series *s, struct hv_error *err)
     free(occ);
     free(sigma);
     hv_info("film mu = %.3g m2/kg for every frame (the lower quartile of the areal "
-            "densities of the material in %s, %.3g kg/m2, at T = 1/2)", s->o.mu, path, quartile);
+            "densities of the material in %s, %.3g kg/m2, at T = 1/2)",
+            s->o.mu, path, quartile);
   }
   particles_free(&p);
   return rc;
 }
 
 /* Pass 2: frame j of the series written as framedir/frame_NNNNN.png. */
-static int write_frame(const struct series *s, int j, const char *framedir,
-                       const char *const *bptr, int nb, struct hv_error *err)
+static int write_frame(const struct series *s, int j, const char *framedir, const char *const *bptr,
+                       int nb, struct hv_error *err)
 {
   char path[4400], fpath[4400];
   double t;
@@ -215,9 +217,14 @@ static int write_frame(const struct series *s, int j, const char *framedir,
     const char *ptr[RENDER_MAX_MATERIALS];
     const int nm = io_read_material_names(path, names, RENDER_MAX_MATERIALS);
     for (int k = 0; k < RENDER_MAX_MATERIALS; k++) ptr[k] = names[k][0] ? names[k] : NULL;
-    const struct render_info info = {.time = t, .material_names = ptr, .nmat = nm,
-                                     .source = path, .material_slot = s->slot,
-                                     .nslot = s->nmat, .body_names = bptr, .nbody = nb};
+    const struct render_info info = {.time = t,
+                                     .material_names = ptr,
+                                     .nmat = nm,
+                                     .source = path,
+                                     .material_slot = s->slot,
+                                     .nslot = s->nmat,
+                                     .body_names = bptr,
+                                     .nbody = nb};
     rc = render_png(fpath, &p, &s->o, &info, err);
     /* a failure to write names the frame; one that does not is about the snapshot */
     if (rc && !strstr(err->msg, fpath)) hv_error_prefix(err, "%s: ", path);
@@ -235,13 +242,21 @@ int render_series(const char *rundir, const char *framedir, const struct render_
   if (ns < 0) return -1;
   if (ns == 0) {
     free(snaps);
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: no particle snapshots (particles_NNNNN.vtu or "
-                        ".csv) in the run folder", rundir);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: no particle snapshots (particles_NNNNN.vtu or "
+                        ".csv) in the run folder",
+                        rundir);
   }
   char path[4400];
   struct hv_error ignored;
-  struct series s = {.rundir = rundir, .o = *opt, .lo = {HUGE_VAL, HUGE_VAL},
-                     .hi = {-HUGE_VAL, -HUGE_VAL}, .half = 1, .nmat = 1, .iu = 0, .iv = 1};
+  struct series s = {.rundir = rundir,
+                     .o = *opt,
+                     .lo = {HUGE_VAL, HUGE_VAL},
+                     .hi = {-HUGE_VAL, -HUGE_VAL},
+                     .half = 1,
+                     .nmat = 1,
+                     .iu = 0,
+                     .iv = 1};
   snprintf(path, sizeof path, "%s/summary.csv", rundir);
   s.nt = io_read_table_column(path, "time", &s.times, &ignored);
   if (s.nt < 0) hv_warn("%s: every snapshot is taken as the run's", ignored.msg);
@@ -263,8 +278,10 @@ int render_series(const char *rundir, const char *framedir, const struct render_
     rc = scan_snapshot(&s, &f, err);
   }
   if (!rc && s.nf == 0)
-    rc = hv_error_set(err, HV_EXIT_INPUT, "%s: none of the snapshots is one of the outputs in "
-                      "the run's summary.csv", rundir);
+    rc = hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: none of the snapshots is one of the outputs in "
+                      "the run's summary.csv",
+                      rundir);
   if (!rc) rc = share_frame(&s, err);
   if (!rc && s.o.mode == RENDER_RADIOGRAPH && !(s.o.mu > 0.0)) rc = share_mu(&s, err);
   static char bnames[RENDER_MAX_BODIES][64];
@@ -281,11 +298,11 @@ int render_series(const char *rundir, const char *framedir, const struct render_
     const int stale = frames_beyond(framedir, written);
     if (stale > 0)
       hv_warn("%s also holds %d frame_NNNNN.png of an earlier, longer series (from "
-              "frame_%05d.png on): remove them before making a movie of this one", framedir,
-              stale, written);
+              "frame_%05d.png on): remove them before making a movie of this one",
+              framedir, stale, written);
     hv_info("%d frame%s of %s in %s (%dx%d pixels); a movie: ffmpeg -framerate 10 -i "
-            "%s/frame_%%05d.png%s -pix_fmt yuv420p movie.mp4", written, written == 1 ? "" : "s",
-            rundir, framedir, s.o.width, s.o.height, framedir,
+            "%s/frame_%%05d.png%s -pix_fmt yuv420p movie.mp4",
+            written, written == 1 ? "" : "s", rundir, framedir, s.o.width, s.o.height, framedir,
             s.o.width % 2 || s.o.height % 2 ? " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'" : "");
   }
   free(s.frames);

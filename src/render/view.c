@@ -111,8 +111,8 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
     if (v.height - v.band - v.mb < 40)
       return hv_error_set(err, HV_EXIT_USAGE,
                           "--size: a picture %d pixels wide needs a height of at least %d "
-                          "(%d for the axis and the caption)", v.width, v.band + v.mb + 40,
-                          v.band + v.mb);
+                          "(%d for the axis and the caption)",
+                          v.width, v.band + v.mb + 40, v.band + v.mb);
     v.nv = v.height - v.band - v.mb;
   } else {
     double nv = round(v.nu * dv / du);
@@ -123,12 +123,15 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
   if (!(v.pix > 0.0 && isfinite(0.5 * v.pix * v.nu) && isfinite(0.5 * v.pix * v.nv) &&
         isfinite(ext[0] + ext[1]) && isfinite(ext[2] + ext[3])))
     return o->have_box
-               ? hv_error_set(err, HV_EXIT_USAGE, "--box: %.6g..%.6g m by %.6g..%.6g m cannot be "
-                              "drawn with pixels of a finite, nonzero size", ext[0], ext[1],
-                              ext[2], ext[3])
-               : hv_error_set(err, HV_EXIT_INPUT, "the particles' extent (%.6g..%.6g m by "
+               ? hv_error_set(err, HV_EXIT_USAGE,
+                              "--box: %.6g..%.6g m by %.6g..%.6g m cannot be "
+                              "drawn with pixels of a finite, nonzero size",
+                              ext[0], ext[1], ext[2], ext[3])
+               : hv_error_set(err, HV_EXIT_INPUT,
+                              "the particles' extent (%.6g..%.6g m by "
                               "%.6g..%.6g m) cannot be drawn with pixels of a finite, nonzero "
-                              "size", ext[0], ext[1], ext[2], ext[3]);
+                              "size",
+                              ext[0], ext[1], ext[2], ext[3]);
   double cu = 0.5 * (ext[0] + ext[1]), cv = 0.5 * (ext[2] + ext[3]);
   v.u0 = cu - 0.5 * v.pix * v.nu;
   v.u1 = cu + 0.5 * v.pix * v.nu;

@@ -53,8 +53,10 @@ static int body_or_list(const struct sim *s, struct cfg *c, const char *path, co
   if (cfg_len(c, path) >= 0) {
     if (body_list(s, c, path, out, n, err)) return -1;
     if (*n == 0)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: an empty list (name %s body, or its "
-                          "bodies)", cfg_where(c, path, where, sizeof where), path, whose);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: an empty list (name %s body, or its "
+                          "bodies)",
+                          cfg_where(c, path, where, sizeof where), path, whose);
     for (int a = 0; a < *n; a++)
       for (int b = a + 1; b < *n; b++)
         if (out[a] == out[b])
@@ -78,7 +80,8 @@ static int plate_list(const struct sim *s, struct cfg *c, struct measure_run *mr
   if (!cfg_has(c, path)) return 0;
   const int len = cfg_len(c, path);
   if (len < 0 || len > MR_MAX)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s must be a list of at most %d plates (a "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s must be a list of at most %d plates (a "
                         "body's name, or a list of the bodies that make one plate)",
                         cfg_where(c, path, where, sizeof where), path, MR_MAX);
   for (int k = 0; k < len; k++) {
@@ -86,8 +89,10 @@ static int plate_list(const struct sim *s, struct cfg *c, struct measure_run *mr
     if (cfg_len(c, key) >= 0) {
       if (body_list(s, c, key, mr->plate[k], &mr->nplate_body[k], err)) return -1;
       if (mr->nplate_body[k] == 0)
-        return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: an empty list (name the plate's "
-                            "body, or its bodies)", cfg_where(c, key, where, sizeof where), key);
+        return hv_error_set(err, HV_EXIT_INPUT,
+                            "%s: %s: an empty list (name the plate's "
+                            "body, or its bodies)",
+                            cfg_where(c, key, where, sizeof where), key);
       for (int a = 0; a < mr->nplate_body[k]; a++)
         for (int b = a + 1; b < mr->nplate_body[k]; b++)
           if (mr->plate[k][a] == mr->plate[k][b])
@@ -112,10 +117,9 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
   mr->any = 1;
   double zero = 0.0;
   int no = 0;
-  if (cfg_get_quantity(c, "measure.axis_y", UNIT_LENGTH, &zero, -HUGE_VAL, HUGE_VAL,
-                       &mr->axis_y, err) ||
-      cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) ||
-      plate_list(s, c, mr, err) ||
+  if (cfg_get_quantity(c, "measure.axis_y", UNIT_LENGTH, &zero, -HUGE_VAL, HUGE_VAL, &mr->axis_y,
+                       err) ||
+      cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) || plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
   if (body_or_list(s, c, "measure.thick_target", "the target's", mr->target, &mr->ntarget, err) ||
@@ -129,21 +133,24 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
   mr->cavity_min_count = (int)mc;
   if (mc > 1 && mr->ntarget == 0) {
     char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.cavity_min_count is the thick target's, "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: measure.cavity_min_count is the thick target's, "
                         "but there is no measure.thick_target",
                         cfg_where(c, "measure.cavity_min_count", where, sizeof where));
   }
   mr->peak_pressure = -HUGE_VAL;
   if (cfg_get_quantity(c, "measure.pressure_radius", UNIT_LENGTH, &zero, 0.0, HUGE_VAL,
                        &mr->p_radius, err) ||
-      cfg_get_quantity(c, "measure.pressure_depth", UNIT_LENGTH, &zero, 0.0, HUGE_VAL,
-                       &mr->p_depth, err))
+      cfg_get_quantity(c, "measure.pressure_depth", UNIT_LENGTH, &zero, 0.0, HUGE_VAL, &mr->p_depth,
+                       err))
     return -1;
   if ((mr->p_radius > 0 || mr->p_depth > 0) && mr->nbackwall == 0) {
     char where[256];
     const char *key = mr->p_radius > 0 ? "measure.pressure_radius" : "measure.pressure_depth";
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s is the backwall's centre pressure, but there is "
-                        "no measure.backwall", cfg_where(c, key, where, sizeof where), key);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s is the backwall's centre pressure, but there is "
+                        "no measure.backwall",
+                        cfg_where(c, key, where, sizeof where), key);
   }
   static const char *const crater_refs[] = {"far-wall", "original-face", NULL};
   if (cfg_get_choice(c, "measure.crater_reference", crater_refs[0], crater_refs,
@@ -151,7 +158,8 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
     return -1;
   if (mr->crater_original && mr->nbackwall == 0) {
     char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: measure.crater_reference is the backwall's, but "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: measure.crater_reference is the backwall's, but "
                         "there is no measure.backwall",
                         cfg_where(c, "measure.crater_reference", where, sizeof where));
   }
@@ -163,8 +171,11 @@ void measure_run_free(struct measure_run *mr) { meas_table_free(&mr->table); }
 static struct meas_geom geom(const struct measure_run *mr, const struct sim *s, int b)
 {
   const struct body_info *bi = &s->body[b];
-  return (struct meas_geom){.body = b, .x0 = bi->lo[0], .thickness = bi->hi[0] - bi->lo[0],
-                            .yc = mr->axis_y, .spacing = bi->spacing,
+  return (struct meas_geom){.body = b,
+                            .x0 = bi->lo[0],
+                            .thickness = bi->hi[0] - bi->lo[0],
+                            .yc = mr->axis_y,
+                            .spacing = bi->spacing,
                             .half_model = s->bnd.half_model};
 }
 
@@ -261,7 +272,7 @@ static int measure_target(struct measure_run *mr, const struct sim *s, double t,
   const int rc = measure_cavity(&s->p, &g, &cp, &cav, err);
   free(mask);
   if (rc) {
-    meas_cavity_free(&cav);   /* the profile, when the wall's step failed */
+    meas_cavity_free(&cav); /* the profile, when the wall's step failed */
     return -1;
   }
   meas_table_add_cavity(&mr->table, t, s->body[mr->target[0]].name, &cav);
@@ -340,7 +351,7 @@ static int measure_clouds(struct measure_run *mr, const struct sim *s, double t,
     for (size_t i = 0; i < s->p.n; i++) {
       const struct material *m = &s->mat[s->p.mat[i]];
       mask[i] = s->body[s->p.body[i]].lo[0] < dp.x_limit &&
-                (m->str.enabled || m->frac.kind != FRACTURE_NONE);   /* not a gas */
+                (m->str.enabled || m->frac.kind != FRACTURE_NONE); /* not a gas */
     }
     dp.mask = mask;
     const int drc = measure_debris(&s->p, &dp, &cloud, err);
@@ -386,13 +397,13 @@ static int measure_rear_wall(struct measure_run *mr, const struct sim *s, double
   for (size_t i = 0; i < s->p.n; i++)
     if ((mask ? mask[i] : s->p.body[i] == g.body) && isfinite(s->p.x[0][i]))
       pp.slab_rear = fmax(pp.slab_rear, s->p.x[0][i] - (g.x0 + g.thickness) + g.spacing);
-  const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
-                  measure_plate(&s->p, &g, &pp, &hole, err);
+  const int brc =
+      measure_backwall(&s->p, &g, &bp, &bw, err) || measure_plate(&s->p, &g, &pp, &hole, err);
   free(mask);
   free(bscale);
   if (brc) return -1;
   meas_table_add_backwall(&mr->table, t, name, &bw);
-  meas_table_add_plate(&mr->table, t, name, &hole);   /* perforated, and the hole if any */
+  meas_table_add_plate(&mr->table, t, name, &hole); /* perforated, and the hole if any */
   meas_table_add(&mr->table, t, "peak_pressure_center",
                  mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
   return 0;
@@ -439,8 +450,8 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
       mask[i] = m->str.enabled || m->frac.kind != FRACTURE_NONE;
       b[i] = FOF_B_FACTOR * s->body[s->p.body[i]].spacing;
     }
-    struct fof_params fp = {.b = b[0], .b_particle = b, .mask = mask, .nmat = s->nmat,
-                            .half_model = s->bnd.half_model};
+    struct fof_params fp = {
+        .b = b[0], .b_particle = b, .mask = mask, .nmat = s->nmat, .half_model = s->bnd.half_model};
     struct fof_result fr;
     fof_result_init(&fr);
     int frc = fof_find(&s->p, &fp, &fr, err);
@@ -453,7 +464,7 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
     }
     meas_table_add_fragments(&mr->table, s->t, "all", &fr);
     int rc = 0;
-    if (k >= 0) {   /* an output time: the fragments' own file too */
+    if (k >= 0) { /* an output time: the fragments' own file too */
       snprintf(path, sizeof path, "%s/fragments_%05d.csv", outdir, k);
       rc = fof_write_csv(path, &fr, s->t, matnames, comment, err);
     }

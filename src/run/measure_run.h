@@ -29,25 +29,25 @@
 
 struct measure_run {
   int any;
-  double axis_y;         /* [m] */
-  int target[MR_MAX], ntarget;  /* the thick target's bodies (its rows are named after
+  double axis_y;               /* [m] */
+  int target[MR_MAX], ntarget; /* the thick target's bodies (its rows are named after
                                    the first) */
-  int plate[MR_MAX][MR_MAX];    /* plate k's bodies (its rows named after the first) */
+  int plate[MR_MAX][MR_MAX];   /* plate k's bodies (its rows named after the first) */
   int nplate_body[MR_MAX], nplate;
   int debris[MR_MAX], ndebris;
-  int backwall[MR_MAX], nbackwall;  /* the backwall's bodies (rows named after the first) */
-  int cavity_min_count;  /* the thick target's min_count (measure.cavity_min_count, default
+  int backwall[MR_MAX], nbackwall; /* the backwall's bodies (rows named after the first) */
+  int cavity_min_count; /* the thick target's min_count (measure.cavity_min_count, default
                            1): min_count - 1 strays in a slice do not close the cavity */
   int gas;
   int fragments;
-  double peak_pressure;  /* [Pa] running maximum at the backwall's centre */
-  double p_radius, p_depth;  /* [m] the centre pressure's averaging disc and depth
+  double peak_pressure;     /* [Pa] running maximum at the backwall's centre */
+  double p_radius, p_depth; /* [m] the centre pressure's averaging disc and depth
                                 (measure.pressure_radius/_depth; 0: 2 x the finest
                                 backwall spacing) */
-  int crater_original;   /* 1: backwall depths from the original face x0
+  int crater_original;      /* 1: backwall depths from the original face x0
                             (measure.crater_reference: original-face); 0 (default,
                             far-wall): from the wall far from the impact */
-  double every;          /* [s] measurements also at these intervals between output times
+  double every;             /* [s] measurements also at these intervals between output times
                             (measure.every; 0: at output times only) */
   struct meas_table table;
 };

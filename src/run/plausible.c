@@ -34,17 +34,20 @@ static int check_step_keys(const struct sim *s, struct cfg *c, double dt, struct
   /* only a dt_min the case gives: the default (1e-30 s) is no real floor, and a step
      below it is made so by something else (a gas at 1e306 Pa), which the run shows */
   if (cfg_has(c, "time.dt_min") && s->tp.dt_min > 0 && s->tp.dt_min >= dt)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: time.dt_min: %g s is not below the first "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: time.dt_min: %g s is not below the first "
                         "stable step, %.3g s: the run would stop as failed at its first "
-                        "step%s", cfg_where(c, "time.dt_min", where, sizeof where),
-                        s->tp.dt_min, dt, cfg_is_bare(c, "time.dt_min")
-                        ? " (a number without a unit is SI: seconds)" : "");
+                        "step%s",
+                        cfg_where(c, "time.dt_min", where, sizeof where), s->tp.dt_min, dt,
+                        cfg_is_bare(c, "time.dt_min") ? " (a number without a unit is SI: seconds)"
+                                                      : "");
   /* a warning: a deliberately unstable first step is how a failing run is made on
      purpose (tests/unit/test_cli.c) */
   if (s->tp.dt_init > 10.0 * particle_step(s))
     hv_warn("%s: time.dt_init = %g s is %.2g times the first stable step, %.3g s: the first "
-            "step is unstable%s", cfg_where(c, "time.dt_init", where, sizeof where),
-            s->tp.dt_init, s->tp.dt_init / particle_step(s), particle_step(s),
+            "step is unstable%s",
+            cfg_where(c, "time.dt_init", where, sizeof where), s->tp.dt_init,
+            s->tp.dt_init / particle_step(s), particle_step(s),
             cfg_is_bare(c, "time.dt_init") ? " (a number without a unit is SI: seconds)" : "");
   return 0;
 }
@@ -63,11 +66,12 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
   const double steps = left / dt;
   if (!(steps > HV_CHECK_STEPS_MAX)) return 0;
   char where[256];
-  if (dt < particle_step(s)) {   /* time.dt_max holds it down, not the time span */
+  if (dt < particle_step(s)) { /* time.dt_max holds it down, not the time span */
     hv_warn("%s: time.dt_max = %g s, below the first stable step (%.3g s), makes time.end "
             "about %.2g steps: this run may take very long (hvsph check estimates its wall "
-            "time)", cfg_where(c, "time.dt_max", where, sizeof where), s->tp.dt_max,
-            particle_step(s), steps);
+            "time)",
+            cfg_where(c, "time.dt_max", where, sizeof where), s->tp.dt_max, particle_step(s),
+            steps);
     return 0;
   }
   cfg_where(c, "time.end", where, sizeof where);
@@ -81,15 +85,16 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
      the run shows it */
   for (size_t k = 0; bare && k < sizeof units / sizeof units[0]; k++)
     if ((s->tp.end * units[k].f - s->t) / dt <= HV_CHECK_STEPS_MAX)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: time.end: the bare number %g is read as %g "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: time.end: the bare number %g is read as %g "
                           "s (a number without a unit is SI), about %.2g steps of the first "
                           "stable step, %.3g s: more than %.0e, far beyond any case of this "
-                          "code; was it %g %s? Write the value with its unit", where,
-                          s->tp.end, s->tp.end, steps, dt, HV_CHECK_STEPS_MAX, s->tp.end,
+                          "code; was it %g %s? Write the value with its unit",
+                          where, s->tp.end, s->tp.end, steps, dt, HV_CHECK_STEPS_MAX, s->tp.end,
                           units[k].unit);
   /* written with its unit it is meant: said, not refused */
   hv_warn("%s: time.end = %g s is about %.2g steps of the first stable step, %.3g s: this "
-          "run may take very long (hvsph check estimates its wall time)", where, s->tp.end,
-          steps, dt);
+          "run may take very long (hvsph check estimates its wall time)",
+          where, s->tp.end, steps, dt);
   return 0;
 }

@@ -112,8 +112,7 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
          ckpt_put(&w, "out.t_start", CKPT_F64, 1, &o->t_start, err) ||
 
          ckpt_put(&w, "out.summary_cols", CKPT_I64, 1, &ncols, err) ||
-         ckpt_put(&w, "out.summary", CKPT_F64, (size_t)o->nrows * RUN_SUMMARY_COLS, o->rows,
-                  err) ||
+         ckpt_put(&w, "out.summary", CKPT_F64, (size_t)o->nrows * RUN_SUMMARY_COLS, o->rows, err) ||
          ckpt_put(&w, "out.snapshot_files", CKPT_BYTES, len, j, err) ||
          ckpt_put(&w, "out.snapshot_times", CKPT_F64, ntimes, o->times, err);
     free(j);
@@ -148,10 +147,11 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
 static int mismatch(struct ckpt_file *c, struct hv_error *err, const char *what, const char *a,
                     const char *b)
 {
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint does not belong to this case: "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: the checkpoint does not belong to this case: "
                       "%s '%s' in the checkpoint, '%s' in the case (a restart continues the "
-                      "run that wrote it, with the same case and resolution)", c->path, what,
-                      a, b);
+                      "run that wrote it, with the same case and resolution)",
+                      c->path, what, a, b);
 }
 
 static int bad_record(const struct ckpt_file *c, const char *rec, struct hv_error *err,
@@ -169,9 +169,10 @@ static int bad_record(const struct ckpt_file *c, const char *rec, struct hv_erro
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s': %s (hvsph writes no "
-                      "such value: the file was made or altered by something else)", c->path,
-                      rec, msg);
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: checkpoint record '%s': %s (hvsph writes no "
+                      "such value: the file was made or altered by something else)",
+                      c->path, rec, msg);
 }
 
 /* The most outputs (and output or measurement time indices) a checkpoint may count:
@@ -185,11 +186,13 @@ static int want_count(const struct ckpt_file *c, const char *rec, enum ckpt_type
                       uint64_t count, const char *from, struct hv_error *err)
 {
   const struct ckpt_record *r = ckpt_find(c, rec);
-  if (!r) return hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint has no record '%s'",
-                              c->path, rec);
+  if (!r)
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: the checkpoint has no record '%s'", c->path, rec);
   if (r->type != type)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: checkpoint record '%s' holds values of "
-                        "another type than this hvsph writes there", c->path, rec);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: checkpoint record '%s' holds values of "
+                        "another type than this hvsph writes there",
+                        c->path, rec);
   if (r->count == count) return 0;
   return bad_record(c, from, err, "it counts %llu elements for record '%s', which holds %llu",
                     (unsigned long long)count, rec, (unsigned long long)r->count);
@@ -226,20 +229,24 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
       ckpt_get(c, "out.summary_cols", CKPT_I64, 1, &ncols, err))
     return -1;
   if (ncols != RUN_SUMMARY_COLS)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: output bookkeeping not understood by this "
-                        "hvsph (%lld summary columns, %d expected)", c->path, (long long)ncols,
-                        RUN_SUMMARY_COLS);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: output bookkeeping not understood by this "
+                        "hvsph (%lld summary columns, %d expected)",
+                        c->path, (long long)ncols, RUN_SUMMARY_COLS);
   /* one summary row per output, written together (run.c, write_outputs) */
   if (ints[0] < 0 || ints[0] > RESTART_MAX_OUTPUTS || ints[2] != ints[0])
-    return bad_record(c, ro, err, "%lld outputs and %lld summary rows (a run writes one "
-                      "row per output, at most %lld)", (long long)ints[0], (long long)ints[2],
-                      RESTART_MAX_OUTPUTS);
+    return bad_record(c, ro, err,
+                      "%lld outputs and %lld summary rows (a run writes one "
+                      "row per output, at most %lld)",
+                      (long long)ints[0], (long long)ints[2], RESTART_MAX_OUTPUTS);
   if (ints[1] < 1 || ints[1] > RESTART_MAX_OUTPUTS)
     return bad_record(c, ro, err, "index of the next output time %lld (from 1 to %lld)",
                       (long long)ints[1], RESTART_MAX_OUTPUTS);
   if (!isfinite(o->t_start) || o->t_start < 0 || o->t_start > s->t)
-    return bad_record(c, "out.t_start", err, "start time %g s (finite, from 0 to the "
-                      "checkpoint's time %g s)", o->t_start, s->t);
+    return bad_record(c, "out.t_start", err,
+                      "start time %g s (finite, from 0 to the "
+                      "checkpoint's time %g s)",
+                      o->t_start, s->t);
   const int count = (int)ints[0];
   o->next_k = (long)ints[1];
   if (want_count(c, "out.summary", CKPT_F64, (uint64_t)count * RUN_SUMMARY_COLS, ro, err))
@@ -248,14 +255,15 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   o->nrows = count;
   if (ckpt_get(c, "out.summary", CKPT_F64, (size_t)count * RUN_SUMMARY_COLS, o->rows, err))
     return -1;
-  for (int k = 0; k < count; k++) {   /* finite; step and time (columns 0, 1) in order */
+  for (int k = 0; k < count; k++) { /* finite; step and time (columns 0, 1) in order */
     const double *row = o->rows + (size_t)k * RUN_SUMMARY_COLS;
     for (int q = 0; q < RUN_SUMMARY_COLS; q++)
       if (!isfinite(row[q]))
         return bad_record(c, "out.summary", err, "row %d column %d is %g", k, q + 1, row[q]);
     if (row[0] < 0 || row[0] > (double)s->step || row[1] < o->t_start || row[1] > s->t ||
         (k > 0 && (row[0] < row[-RUN_SUMMARY_COLS] || row[1] < row[1 - RUN_SUMMARY_COLS])))
-      return bad_record(c, "out.summary", err, "row %d: step %g at t = %g s, not in order "
+      return bad_record(c, "out.summary", err,
+                        "row %d: step %g at t = %g s, not in order "
                         "between the start (t = %g s) and the checkpoint (step %ld, t = %g s)",
                         k, row[0], row[1], o->t_start, s->step, s->t);
   }
@@ -264,21 +272,20 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   if (ckpt_get_alloc(c, "out.snapshot_files", CKPT_BYTES, (void **)&b, &len, err)) return -1;
   const char **names = hv_malloc(((size_t)count + 1) * sizeof *names, "checkpoint");
   int rc = split(b, len, names, (size_t)count);
-  if (rc)
-    bad_record(c, "out.snapshot_files", err, "it does not hold %d names", count);
+  if (rc) bad_record(c, "out.snapshot_files", err, "it does not hold %d names", count);
   /* each name is the one write_outputs gives output k, or empty (no .vtu): run.pvd
      lists them, and no other name may get into it */
   for (int k = 0; k < count && !rc; k++) {
     char want[32];
     snprintf(want, sizeof want, "particles_%05d.vtu", k);
     if (*names[k] && strcmp(names[k], want))
-      rc = bad_record(c, "out.snapshot_files", err, "name %d is '%.80s', not '%s'", k,
-                      names[k], want);
+      rc = bad_record(c, "out.snapshot_files", err, "name %d is '%.80s', not '%s'", k, names[k],
+                      want);
   }
   if (!rc) {
     o->files = hv_malloc(((size_t)count + 1) * sizeof *o->files, "pvd");
     for (int k = 0; k < count; k++) o->files[k] = *names[k] ? strdup(names[k]) : NULL;
-    o->count = count;   /* outputs_free frees count names: set only once they exist */
+    o->count = count; /* outputs_free frees count names: set only once they exist */
   }
   free(names);
   free(b);
@@ -287,13 +294,16 @@ static int read_outputs(struct ckpt_file *c, const struct sim *s, struct run_out
   if (nt != 0 && nt != (size_t)o->count)
     return bad_record(c, "out.snapshot_times", err, "%zu times for %d outputs", nt, o->count);
   if (s->out.vtu && nt != (size_t)o->count)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: the run that wrote the checkpoint wrote no "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: the run that wrote the checkpoint wrote no "
                         ".vtu snapshots (output.vtu: false); continue it without them",
                         c->path);
   for (size_t k = 0; k < nt; k++)
     if (!isfinite(o->times[k]) || o->times[k] != o->rows[k * RUN_SUMMARY_COLS + 1])
-      return bad_record(c, "out.snapshot_times", err, "time %zu is %g s, where summary row "
-                        "%zu has t = %g s", k, o->times[k], k, o->rows[k * RUN_SUMMARY_COLS + 1]);
+      return bad_record(c, "out.snapshot_times", err,
+                        "time %zu is %g s, where summary row "
+                        "%zu has t = %g s",
+                        k, o->times[k], k, o->rows[k * RUN_SUMMARY_COLS + 1]);
   return 0;
 }
 
@@ -301,21 +311,21 @@ static int read_measure(struct ckpt_file *c, const struct sim *s, struct run_out
                         struct hv_error *err)
 {
   struct measure_run *mr = &o->mr;
-  int64_t mk = 0;   /* absent in checkpoints before measure.every: the loop finds it */
+  int64_t mk = 0; /* absent in checkpoints before measure.every: the loop finds it */
   if (ckpt_find(c, "measure.next_k") && ckpt_get(c, "measure.next_k", CKPT_I64, 1, &mk, err))
     return -1;
   if (mk < 0 || mk > RESTART_MAX_OUTPUTS)
-    return bad_record(c, "measure.next_k", err, "index of the next measurement time %lld "
-                      "(from 0 to %lld)", (long long)mk, RESTART_MAX_OUTPUTS);
+    return bad_record(c, "measure.next_k", err,
+                      "index of the next measurement time %lld "
+                      "(from 0 to %lld)",
+                      (long long)mk, RESTART_MAX_OUTPUTS);
   o->next_mk = (long)mk;
   double *tv;
   char *b;
   size_t ntv, len;
-  if (ckpt_get(c, "measure.peak_pressure", CKPT_F64, 1, &mr->peak_pressure, err))
-    return -1;
-  if (isnan(mr->peak_pressure) || mr->peak_pressure == HUGE_VAL)   /* -inf: none yet */
-    return bad_record(c, "measure.peak_pressure", err, "peak pressure %g Pa",
-                      mr->peak_pressure);
+  if (ckpt_get(c, "measure.peak_pressure", CKPT_F64, 1, &mr->peak_pressure, err)) return -1;
+  if (isnan(mr->peak_pressure) || mr->peak_pressure == HUGE_VAL) /* -inf: none yet */
+    return bad_record(c, "measure.peak_pressure", err, "peak pressure %g Pa", mr->peak_pressure);
   if (ckpt_get_alloc(c, "measure.time_value", CKPT_F64, (void **)&tv, &ntv, err)) return -1;
   if (ckpt_get_alloc(c, "measure.text", CKPT_BYTES, (void **)&b, &len, err)) {
     free(tv);
@@ -330,8 +340,10 @@ static int read_measure(struct ckpt_file *c, const struct sim *s, struct run_out
   /* times of the outputs so far, in order; texts that measurements.csv can hold */
   for (size_t k = 0; k < n && !rc; k++)
     if (!isfinite(tv[k]) || tv[k] < o->t_start || tv[k] > s->t || (k > 0 && tv[k] < tv[k - 1]))
-      rc = bad_record(c, "measure.time_value", err, "time %zu is %g s, not in order between "
-                      "the start (%g s) and the checkpoint (%g s)", k, tv[k], o->t_start, s->t);
+      rc = bad_record(c, "measure.time_value", err,
+                      "time %zu is %g s, not in order between "
+                      "the start (%g s) and the checkpoint (%g s)",
+                      k, tv[k], o->t_start, s->t);
   for (size_t q = 0; q < len && !rc; q++)
     if (b[q] && (unsigned char)b[q] < 0x20)
       rc = bad_record(c, "measure.text", err, "control character 0x%02x at byte %zu",
@@ -354,8 +366,8 @@ static int check_particles(const struct ckpt_file *c, const struct particles *p,
 {
   for (int i = 0; i < nf; i++) {
     if (!(f[i].flags & PF_STATE) || f[i].type != PF_DOUBLE) continue;
-    const int positive = !strcmp(f[i].name, "m") || !strcmp(f[i].name, "h") ||
-                         !strcmp(f[i].name, "rho");
+    const int positive =
+        !strcmp(f[i].name, "m") || !strcmp(f[i].name, "h") || !strcmp(f[i].name, "rho");
     for (int q = 0; q < f[i].ncomp; q++) {
       const double *v = f[i].comp[q];
       for (size_t k = 0; k < p->n; k++)
@@ -363,8 +375,8 @@ static int check_particles(const struct ckpt_file *c, const struct particles *p,
           char rn[CKPT_NAME_LEN + 1], comp[32] = "";
           snprintf(rn, sizeof rn, "p.%s", f[i].name);
           if (f[i].ncomp > 1) snprintf(comp, sizeof comp, ", component %d", q + 1);
-          return bad_record(c, rn, err, "particle %lld%s: %s = %g %s%s", (long long)p->id[k],
-                            comp, f[i].name, v[k], f[i].unit, positive ? " (must be > 0)" : "");
+          return bad_record(c, rn, err, "particle %lld%s: %s = %g %s%s", (long long)p->id[k], comp,
+                            f[i].name, v[k], f[i].unit, positive ? " (must be > 0)" : "");
         }
     }
   }
@@ -384,7 +396,8 @@ static int restart_same_case(struct ckpt_file *c, const struct sim *s, const cha
   if (strcmp(ver, HVSPH_VERSION))
     hv_warn("%s was written by hvsph %s; this is hvsph %s: where the two compute differently "
             "the continued run matches neither's own run bit for bit (run_segments.csv "
-            "records both)", path, ver, HVSPH_VERSION);
+            "records both)",
+            path, ver, HVSPH_VERSION);
   free(ver);
 
   /* the same case: name, bodies (and their initial counts), materials */
@@ -433,8 +446,10 @@ static int restart_clock(struct ckpt_file *c, struct sim *s, size_t *n, struct h
   /* the clock: a time, a next step and a proposed one that a run reaches */
   if (!isfinite(clock[0]) || clock[0] < 0 || !isfinite(clock[1]) || !(clock[1] > 0) ||
       !isfinite(clock[2]) || clock[2] < 0) {
-    bad_record(c, "clock", err, "t = %g s, dt = %g s, proposed dt = %g s (t finite and "
-               ">= 0, dt finite and > 0)", clock[0], clock[1], clock[2]);
+    bad_record(c, "clock", err,
+               "t = %g s, dt = %g s, proposed dt = %g s (t finite and "
+               ">= 0, dt finite and > 0)",
+               clock[0], clock[1], clock[2]);
     return -1;
   }
   if (ints[0] < 0 || ints[1] < 0) {
@@ -475,16 +490,20 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
   /* the particles: as many as the checkpoint holds (absorbing faces remove some) */
   struct particles *p = &s->p;
   if (p->av && !ckpt_find(c, "p.alpha")) {
-    hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without sph.viscosity.switch, "
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "%s: the run was made without sph.viscosity.switch, "
                  "whose per-particle alpha it does not hold: a run cannot take the switch up "
-                 "when continued (start it again, or continue it without the switch)", path);
+                 "when continued (start it again, or continue it without the switch)",
+                 path);
     return -1;
   }
   if (p->cracks && !ckpt_find(c, "p.crack")) {
-    hv_error_set(err, HV_EXIT_INPUT, "%s: the run was made without fracture.split: crack "
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "%s: the run was made without fracture.split: crack "
                  "or fracture.energy, whose per-particle crack normals it does not hold: a "
                  "run cannot take it up "
-                 "when continued (start it again, or continue it without it)", path);
+                 "when continued (start it again, or continue it without it)",
+                 path);
     return -1;
   }
   /* a checkpoint from before the fracture state was a field (no p.fstate): the state
@@ -510,24 +529,25 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
     if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate"))) continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
-    if (ckpt_get_parts(c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err))
-      return -1;
+    if (ckpt_get_parts(c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err)) return -1;
   }
   for (size_t i = 0; i < n; i++)
     if (p->mat[i] < 0 || p->mat[i] >= s->nmat || p->body[i] < 0 || p->body[i] >= s->nbody) {
-      hv_error_set(err, HV_EXIT_INPUT, "%s: particle %lld has material %d and body %d, "
-                   "outside this case's %d materials and %d bodies", path, (long long)p->id[i],
-                   p->mat[i], p->body[i], s->nmat, s->nbody);
+      hv_error_set(err, HV_EXIT_INPUT,
+                   "%s: particle %lld has material %d and body %d, "
+                   "outside this case's %d materials and %d bodies",
+                   path, (long long)p->id[i], p->mat[i], p->body[i], s->nmat, s->nbody);
       return -1;
     }
   if (check_particles(c, p, f, nf, err)) return -1;
   if (old_states) fracture_states_from_damage(p, s->mat);
-  if (p->solid) {   /* each fracture state one its damage and material allow */
+  if (p->solid) { /* each fracture state one its damage and material allow */
     const size_t k = fracture_check_states(p, s->mat);
     if (k != (size_t)-1) {
-      bad_record(c, "p.fstate", err, "particle %lld: fracture state %d with damage %g, which "
-                 "material '%s' does not allow", (long long)p->id[k], (int)p->fstate[k],
-                 p->damage[k], s->mat[p->mat[k]].name);
+      bad_record(c, "p.fstate", err,
+                 "particle %lld: fracture state %d with damage %g, which "
+                 "material '%s' does not allow",
+                 (long long)p->id[k], (int)p->fstate[k], p->damage[k], s->mat[p->mat[k]].name);
       return -1;
     }
   }
@@ -540,8 +560,10 @@ int restart_read(struct sim *s, struct run_outputs *o, const char *path, struct 
   if (ckpt_open(&c, path, err)) return -1;
   size_t n = 0;
   const int rc = restart_same_case(&c, s, path, err) || restart_clock(&c, s, &n, err) ||
-                 restart_particles(&c, s, n, path, err) || read_outputs(&c, s, o, err) ||
-                 read_measure(&c, s, o, err) ? -1 : 0;
+                         restart_particles(&c, s, n, path, err) || read_outputs(&c, s, o, err) ||
+                         read_measure(&c, s, o, err)
+                     ? -1
+                     : 0;
   ckpt_close(&c);
   return rc;
 }

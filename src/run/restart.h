@@ -27,16 +27,16 @@
 struct run_outputs {
   struct measure_run mr;
   char dir[4000];
-  int count;         /* outputs written (the next snapshot's number) */
-  double *times;     /* [count] time of each .vtu (when output.vtu) */
-  char **files;      /* [count] its file name (NULL without .vtu) */
-  double *rows;      /* [nrows × RUN_SUMMARY_COLS] summary.csv */
+  int count;     /* outputs written (the next snapshot's number) */
+  double *times; /* [count] time of each .vtu (when output.vtu) */
+  char **files;  /* [count] its file name (NULL without .vtu) */
+  double *rows;  /* [nrows × RUN_SUMMARY_COLS] summary.csv */
   int nrows;
-  double t_start;    /* [s] the run's start: output k falls at t_start + k × every */
-  long next_k;       /* index of the next output time */
-  long next_mk;      /* index of the next measurement time (measure.every) */
+  double t_start; /* [s] the run's start: output k falls at t_start + k × every */
+  long next_k;    /* index of the next output time */
+  long next_mk;   /* index of the next measurement time (measure.every) */
   const char *matnames[HV_MAX_MATERIALS];
-  const char *bodynames[64];   /* sim's body[].name */
+  const char *bodynames[64]; /* sim's body[].name */
 };
 
 /* OUTDIR/checkpoint.hvc */

@@ -39,7 +39,7 @@
 #include "setup/setup.h"
 #include "version.h"
 
-static volatile sig_atomic_t interrupted = 0;   /* the signal that ended the run, or 0 */
+static volatile sig_atomic_t interrupted = 0; /* the signal that ended the run, or 0 */
 
 /* The signals that end a run with its state written: Ctrl-C, kill, a closed terminal,
  * and what batch systems send ahead of a time limit (Slurm's --signal, PBS, LSF: USR1,
@@ -72,7 +72,7 @@ static void stop_signals_catch(struct sigaction *old)
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
-  sa.sa_flags = SA_RESTART;   /* a write under way is not cut short by the signal */
+  sa.sa_flags = SA_RESTART; /* a write under way is not cut short by the signal */
   for (int k = 0; k < NSTOP; k++) {
     sigaction(stop_signals[k].sig, NULL, &old[k]);
     if (stop_signals[k].sig == SIGHUP && old[k].sa_handler == SIG_IGN) continue;
@@ -102,10 +102,24 @@ static double wall_time(void) { return omp_get_wtime(); }
 
 /* totals over the particles; absorbed_*: what absorbing faces removed so far, so that
    mass + absorbed_mass etc. are conserved */
-static const char *const summary_cols[RUN_SUMMARY_COLS] = {
-    "step", "time", "dt", "n", "mass", "px", "py", "pz", "e_kin", "e_int", "e_total",
-    "absorbed_n", "absorbed_mass", "absorbed_px", "absorbed_py", "absorbed_pz",
-    "absorbed_e_kin", "absorbed_e_int"};
+static const char *const summary_cols[RUN_SUMMARY_COLS] = {"step",
+                                                           "time",
+                                                           "dt",
+                                                           "n",
+                                                           "mass",
+                                                           "px",
+                                                           "py",
+                                                           "pz",
+                                                           "e_kin",
+                                                           "e_int",
+                                                           "e_total",
+                                                           "absorbed_n",
+                                                           "absorbed_mass",
+                                                           "absorbed_px",
+                                                           "absorbed_py",
+                                                           "absorbed_pz",
+                                                           "absorbed_e_kin",
+                                                           "absorbed_e_int"};
 
 static void outputs_free(struct run_outputs *o)
 {
@@ -121,18 +135,24 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
   char path[4200], name[64];
   struct totals t;
   diag_totals(&s->p, &t);
-  o->rows = hv_realloc(o->rows, (size_t)(o->nrows + 1) * RUN_SUMMARY_COLS * sizeof(double), "summary");
+  o->rows =
+      hv_realloc(o->rows, (size_t)(o->nrows + 1) * RUN_SUMMARY_COLS * sizeof(double), "summary");
   const struct absorbed *ab = &s->bnd.absorbed;
-  double row[RUN_SUMMARY_COLS] = {(double)s->step, s->t, s->dt, (double)s->p.n, t.mass,
-                              t.mom[0], t.mom[1], t.mom[2], t.e_kin, t.e_int, t.e_total,
-                              (double)ab->n, ab->mass, ab->mom[0], ab->mom[1], ab->mom[2],
-                              ab->e_kin, ab->e_int};
+  double row[RUN_SUMMARY_COLS] = {
+      (double)s->step, s->t,       s->dt,      (double)s->p.n, t.mass,    t.mom[0],
+      t.mom[1],        t.mom[2],   t.e_kin,    t.e_int,        t.e_total, (double)ab->n,
+      ab->mass,        ab->mom[0], ab->mom[1], ab->mom[2],     ab->e_kin, ab->e_int};
   memcpy(o->rows + (size_t)o->nrows * RUN_SUMMARY_COLS, row, sizeof row);
   o->nrows++;
-  struct snapshot_meta meta = {.time = s->t, .step = s->step, .version = HVSPH_VERSION,
-                               .case_name = s->case_name, .material_names = o->matnames,
-                               .nmat = s->nmat, .body_names = o->bodynames,
-                               .nbody = s->nbody, .vtu_zlib = s->out.compress};
+  struct snapshot_meta meta = {.time = s->t,
+                               .step = s->step,
+                               .version = HVSPH_VERSION,
+                               .case_name = s->case_name,
+                               .material_names = o->matnames,
+                               .nmat = s->nmat,
+                               .body_names = o->bodynames,
+                               .nbody = s->nbody,
+                               .vtu_zlib = s->out.compress};
   if (s->out.vtu) {
     snprintf(name, sizeof name, "particles_%05d.vtu", o->count);
     snprintf(path, sizeof path, "%s/%s", o->dir, name);
@@ -150,22 +170,24 @@ static int write_outputs(struct sim *s, struct run_outputs *o, struct hv_error *
     if (io_write_particles_csv(path, &s->p, &meta, err)) return -1;
   }
   if (measure_run_output(&o->mr, s, o->count, o->dir, o->matnames, err)) return -1;
-  if (!s->out.vtu) {  /* keep the count and the snapshot numbers in step */
+  if (!s->out.vtu) { /* keep the count and the snapshot numbers in step */
     o->files = hv_realloc(o->files, (size_t)(o->count + 1) * sizeof *o->files, "pvd");
     o->files[o->count] = NULL;
   }
   o->count++;
   char comment[512];
-  snprintf(comment, sizeof comment, "hvsph %s case %s: totals over the particles at each "
-           "output time (SI units)", HVSPH_VERSION, s->case_name);
+  snprintf(comment, sizeof comment,
+           "hvsph %s case %s: totals over the particles at each "
+           "output time (SI units)",
+           HVSPH_VERSION, s->case_name);
   snprintf(path, sizeof path, "%s/summary.csv", o->dir);
   return io_write_table_csv(path, summary_cols, RUN_SUMMARY_COLS, o->rows, o->nrows, comment, err);
 }
 
 void run_format_duration(char *buf, size_t len, double sec)
 {
-  if (!(sec < 59.95)) {   /* what "%.1f" would write as 60.0 is a minute */
-    if (!(sec < 1e12)) {   /* inf, or beyond any clock */
+  if (!(sec < 59.95)) {  /* what "%.1f" would write as 60.0 is a minute */
+    if (!(sec < 1e12)) { /* inf, or beyond any clock */
       snprintf(buf, len, "%.3g s", sec);
       return;
     }
@@ -204,7 +226,8 @@ static void progress(const struct sim *s, double t0, double wall0, int tty, int 
        then dt and n, then what does not fit */
     struct winsize ws;
     const size_t cols = ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 1
-                            ? (size_t)ws.ws_col - 1 : sizeof line - 1;
+                            ? (size_t)ws.ws_col - 1
+                            : sizeof line - 1;
     if (strlen(line) > cols) snprintf(line, sizeof line, "%s%s%s", head, mid, tail);
     if (strlen(line) > cols) snprintf(line, sizeof line, "%s%s", head, tail);
     if (strlen(line) > cols) line[cols] = '\0';
@@ -241,10 +264,12 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
     const double L = s->bnd.hi[d] - s->bnd.lo[d];
     if (s->bnd.kind[d][0] == BND_PERIODIC && L < 4.0 * hmax) {
       char where[256];
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: domain: the periodic length in %c (%g m) is "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: domain: the periodic length in %c (%g m) is "
                           "shorter than two interaction radii (4 h = %g m); make the domain "
-                          "longer or the spacing finer", cfg_where(c, "domain.boundary", where,
-                          sizeof where), "xyz"[d], L, 4.0 * hmax);
+                          "longer or the spacing finer",
+                          cfg_where(c, "domain.boundary", where, sizeof where), "xyz"[d], L,
+                          4.0 * hmax);
     }
   }
   return 0;
@@ -264,9 +289,9 @@ static const char *default_name(const char *path, char *buf, size_t len)
  * (through atomic_file) at every checkpoint and at the end. A restart keeps the rows before
  * it. Provenance only: nothing reads it back but `validate` (the total wall time). */
 struct segment {
-  char *prev;         /* the rows of the earlier segments (with the header), or NULL */
+  char *prev; /* the rows of the earlier segments (with the header), or NULL */
   int index;
-  char started[32];   /* UTC */
+  char started[32]; /* UTC */
   long step0;
   double t0, wall0;
 };
@@ -292,8 +317,9 @@ static void segment_begin(struct segment *g, const char *dir, int restart, const
     }
     fclose(f);
     g->prev[len] = 0;
-    if (len == 0 || g->prev[len - 1] != '\n' || strncmp(g->prev, SEG_HEADER, sizeof SEG_HEADER - 1)) {
-      free(g->prev);   /* not ours or torn: start afresh */
+    if (len == 0 || g->prev[len - 1] != '\n' ||
+        strncmp(g->prev, SEG_HEADER, sizeof SEG_HEADER - 1)) {
+      free(g->prev); /* not ours or torn: start afresh */
       g->prev = NULL;
     } else {
       for (const char *q = g->prev + sizeof SEG_HEADER - 1; *q; q++) g->index += *q == '\n';
@@ -316,9 +342,9 @@ static int segment_write(const struct segment *g, const char *dir, const struct 
   struct atomic_file af;
   if (atomic_file_open(&af, path, err)) return -1;
   if (atomic_file_printf(&af, err, "%s", g->prev ? g->prev : SEG_HEADER) ||
-      atomic_file_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index, HVSPH_VERSION,
-                   omp_get_max_threads(), g->started, g->step0, g->t0, s->step, s->t,
-                   wall_time() - g->wall0, end)) {
+      atomic_file_printf(&af, err, "%d,%s,%d,%s,%ld,%.17g,%ld,%.17g,%.1f,%s\n", g->index,
+                         HVSPH_VERSION, omp_get_max_threads(), g->started, g->step0, g->t0, s->step,
+                         s->t, wall_time() - g->wall0, end)) {
     atomic_file_abort(&af);
     return -1;
   }
@@ -328,8 +354,8 @@ static int segment_write(const struct segment *g, const char *dir, const struct 
 /* Checkpoints: at every output time, every output.checkpoint_wall seconds of wall-clock
  * time, and when the run stops between output times. */
 struct ckpt_clock {
-  double wall;   /* when the last one was written */
-  long step;     /* its step */
+  double wall; /* when the last one was written */
+  long step;   /* its step */
 };
 
 static int checkpoint(struct sim *s, struct run_outputs *o, struct ckpt_clock *cc,
@@ -347,12 +373,12 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
 {
   const int tty = isatty(STDERR_FILENO);
   const double t0 = s->t, wall0 = wall_time(), tend = s->tp.end, every = s->out.every;
-  struct ckpt_clock cc = {wall0, s->step};   /* the state at the start is on disk already */
+  struct ckpt_clock cc = {wall0, s->step}; /* the state at the start is on disk already */
   double last_print = wall0;
   long printed_step = -1;
   /* output k falls at t_start + k × every (the last one at the end time) */
   double next_out = every > 0 ? o->t_start + (double)o->next_k * every : tend;
-  while (every > 0 && next_out <= s->t) {   /* a restart with a shorter output.every */
+  while (every > 0 && next_out <= s->t) { /* a restart with a shorter output.every */
     o->next_k++;
     next_out = o->t_start + (double)o->next_k * every;
   }
@@ -418,15 +444,16 @@ static int run_loop(struct sim *s, struct run_outputs *o, const struct segment *
     }
   }
   if (!quiet && (tty || printed_step != s->step)) progress(s, t0, wall0, tty, 1);
-  int wrote_last = o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * RUN_SUMMARY_COLS] == (double)s->step;
+  int wrote_last =
+      o->nrows > 0 && o->rows[(size_t)(o->nrows - 1) * RUN_SUMMARY_COLS] == (double)s->step;
   /* stopped between output times (interrupted, max_steps): the checkpoint first, with
      the outputs so far, so that a restart numbers its snapshots as an uninterrupted run */
   if (!wrote_last && (checkpoint(s, o, &cc, g, err) || write_outputs(s, o, err))) return -1;
   return 0;
 }
 
-int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict,
-                    int *hits_out, struct hv_error *err)
+int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict, int *hits_out,
+                    struct hv_error *err)
 {
   const int nb = cfg_len(c, "bodies");
   /* the swaps act at once: with a=b and b=a the two exchange, not a to b and back */
@@ -438,8 +465,10 @@ int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int str
     const char *sw = swaps[k], *eq = strchr(sw, '=');
     char old[128], key[64], bodies[1024] = "";
     if (!eq || eq == sw || !eq[1] || (size_t)(eq - sw) >= sizeof old || strchr(eq + 1, '=')) {
-      rc = hv_error_set(err, HV_EXIT_USAGE, "--material '%s': write OLD=NEW, two material "
-                        "names", sw);
+      rc = hv_error_set(err, HV_EXIT_USAGE,
+                        "--material '%s': write OLD=NEW, two material "
+                        "names",
+                        sw);
       break;
     }
     snprintf(old, sizeof old, "%.*s", (int)(eq - sw), sw);
@@ -448,7 +477,7 @@ int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int str
       const char *m;
       snprintf(key, sizeof key, "bodies[%d].material", b);
       if (done[b] || !cfg_has(c, key) || cfg_get_string(c, key, NULL, &m, err)) {
-        hv_error_clear(err);   /* a body without a usable material: its own error later */
+        hv_error_clear(err); /* a body without a usable material: its own error later */
         continue;
       }
       if (strcmp(m, old)) {
@@ -477,9 +506,10 @@ int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int str
     if (rc) break;
     if (hits_out) hits_out[k] += hits;
     if (strict && !hits)
-      rc = hv_error_set(err, HV_EXIT_INPUT, "%s: --material %s: no body of the case has the "
-                        "material '%s' (its bodies have: %s)", cfg_file(c), sw, old,
-                        bodies[0] ? bodies : "none");
+      rc = hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: --material %s: no body of the case has the "
+                        "material '%s' (its bodies have: %s)",
+                        cfg_file(c), sw, old, bodies[0] ? bodies : "none");
   }
   free(scratch);
   free(done);
@@ -502,11 +532,12 @@ int run_check_output_count(const struct sim *s, struct cfg *c, double t_from, in
             every, n, s->tp.end);
     return 0;
   }
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: output.every = %g s with time.end = %g s writes "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: output.every = %g s with time.end = %g s writes "
                       "%.0f outputs (snapshots, summary rows, checkpoints), more than "
                       "%d: was the interval meant in another unit (a bare number is seconds: "
-                      "\"every: 1 us\")? Give --force to write them all", where, every,
-                      s->tp.end, n, RUN_MAX_OUTPUTS);
+                      "\"every: 1 us\")? Give --force to write them all",
+                      where, every, s->tp.end, n, RUN_MAX_OUTPUTS);
 }
 
 /* A restart's folder locked and its checkpoint there, before anything is read: a run
@@ -520,7 +551,8 @@ static int restart_lock(const char *dir, const char *ckpt, int quiet, struct run
       runfolder_lock(lock, dir, "restart", quiet, err))
     return -1;
   if (access(ckpt, R_OK))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: no checkpoint to restart from (%s); runs "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: no checkpoint to restart from (%s); runs "
                         "write one at every output time unless output.checkpoint is false",
                         ckpt, strerror(errno));
   return 0;
@@ -554,10 +586,11 @@ static int open_folder(const struct run_options *ro, struct sim *s, struct cfg *
   char what[1024];
   if (runfolder_earlier_run(o->dir, what, sizeof what) > 0) {
     if (!ro->overwrite)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s holds an earlier run (%s): a new run does "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s holds an earlier run (%s): a new run does "
                           "not write over it. Continue it with 'hvsph restart %s', write "
-                          "elsewhere with -o OUTDIR, or give --overwrite to replace it", o->dir,
-                          what, o->dir);
+                          "elsewhere with -o OUTDIR, or give --overwrite to replace it",
+                          o->dir, what, o->dir);
     const int gone = runfolder_remove_run(o->dir, err);
     if (gone < 0) return -1;
     atomic_file_remove_stale(o->dir);
@@ -575,12 +608,14 @@ static int open_folder(const struct run_options *ro, struct sim *s, struct cfg *
 static int say_end(const struct run_options *ro, const struct sim *s, const struct run_outputs *o)
 {
   if (interrupted) {
-    if (s->step == 0)   /* before the first step: the initial outputs only, no checkpoint */
+    if (s->step == 0) /* before the first step: the initial outputs only, no checkpoint */
       hv_info("interrupted before the first step; %s holds the initial state's outputs, "
-              "no checkpoint (run the case again, with --overwrite)", o->dir);
+              "no checkpoint (run the case again, with --overwrite)",
+              o->dir);
     else
       hv_info("interrupted at t = %g s (step %ld) by %s; the state at that time is written "
-              "to %s%s", s->t, s->step, signal_name(interrupted), o->dir,
+              "to %s%s",
+              s->t, s->step, signal_name(interrupted), o->dir,
               s->out.checkpoint ? " (continue with hvsph restart)" : "");
     return HV_EXIT_INTERRUPTED;
   }
@@ -596,8 +631,9 @@ static void say_start(const struct run_options *ro, const struct sim *s,
 {
   if (ro->restart_dir)
     hv_info("restart of %s from its checkpoint at t = %g s (step %ld, %d outputs written): "
-            "%zu particles, %d thread%s, t_end = %g s", o->dir, s->t, s->step, o->count, s->p.n,
-            omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s", s->tp.end);
+            "%zu particles, %d thread%s, t_end = %g s",
+            o->dir, s->t, s->step, o->count, s->p.n, omp_get_max_threads(),
+            omp_get_max_threads() == 1 ? "" : "s", s->tp.end);
   else
     hv_info("case %s: %zu particles, %d bod%s, %d thread%s, t_end = %g s, output to %s",
             ro->case_path, s->p.n, s->nbody, s->nbody == 1 ? "y" : "ies", omp_get_max_threads(),
@@ -624,7 +660,7 @@ int run_main(const struct run_options *ro)
   struct sigaction old_actions[NSTOP];
   struct runfolder_lock lock;
   runfolder_lock_init(&lock);
-  if (restart) {   /* the case is the run's used_parameters.yaml */
+  if (restart) { /* the case is the run's used_parameters.yaml */
     snprintf(path, sizeof path, "%s/used_parameters.yaml", restart);
     restart_path(restart, ckpt, sizeof ckpt);
     if (restart_lock(restart, ckpt, ro->quiet, &lock, &err)) goto fail;
@@ -637,22 +673,23 @@ int run_main(const struct run_options *ro)
     if (cfg_apply_set(c, ro->sets[i], &err)) goto fail;
   if (!restart && run_apply_swaps(c, ro->swaps, ro->nswaps, !ro->swaps_lenient, NULL, &err))
     goto fail;
-  if (run_setup(&s, c, &err) || measure_run_read(&o.mr, &s, c, &err) ||
-      cfg_check_unused(c, &err))
+  if (run_setup(&s, c, &err) || measure_run_read(&o.mr, &s, c, &err) || cfg_check_unused(c, &err))
     goto fail;
   /* a new run's first rates and time step, before anything is written: a set-up that
      the neighbour grid cannot hold is bad input and leaves the output folder as it was */
   if (!restart && (step_init(&s, &err) || check_plausible_end(&s, c, &err))) goto fail;
 
   char nbuf[256];
-  if (restart) snprintf(o.dir, sizeof o.dir, "%s", restart);
-  else if (ro->outdir) snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);
-  else snprintf(o.dir, sizeof o.dir, "out/%s", cfg_has(c, "name") ? s.case_name
-                : default_name(ro->case_path, nbuf, sizeof nbuf));
+  if (restart)
+    snprintf(o.dir, sizeof o.dir, "%s", restart);
+  else if (ro->outdir)
+    snprintf(o.dir, sizeof o.dir, "%s", ro->outdir);
+  else
+    snprintf(o.dir, sizeof o.dir, "out/%s",
+             cfg_has(c, "name") ? s.case_name : default_name(ro->case_path, nbuf, sizeof nbuf));
   for (int i = 0; i < s.nmat; i++) o.matnames[i] = s.mat[i].name;
   for (int i = 0; i < s.nbody; i++) o.bodynames[i] = s.body[i].name;
-  if (restart ? reopen_folder(ro, &s, c, &o, ckpt, &err)
-              : open_folder(ro, &s, c, &o, &lock, &err))
+  if (restart ? reopen_folder(ro, &s, c, &o, ckpt, &err) : open_folder(ro, &s, c, &o, &lock, &err))
     goto fail;
   /* a restart records its overrides (the file is what the continued run used) */
   if (!restart || ro->nsets > 0) {
@@ -664,20 +701,23 @@ int run_main(const struct run_options *ro)
   if (restart && s.t >= s.tp.end) {
     if (!ro->quiet)
       hv_info("nothing to do: the run reached t_end = %g s (continue it with --set "
-              "time.end=LATER)", s.tp.end);
+              "time.end=LATER)",
+              s.tp.end);
     goto done;
   }
   stop_signals_catch(old_actions);
   caught = 1;
   segment_begin(&seg, o.dir, restart != NULL, &s);
   seg_open = 1;
-  if ((!restart && write_outputs(&s, &o, &err)) ||
-      run_loop(&s, &o, &seg, ro->quiet, &err))
+  if ((!restart && write_outputs(&s, &o, &err)) || run_loop(&s, &o, &seg, ro->quiet, &err))
     goto fail;
   stop_signals_restore(old_actions);
   caught = 0;
-  if (segment_write(&seg, o.dir, &s, interrupted ? "interrupted" : s.t < s.tp.end ?
-                    "stopped (max_steps)" : "done", &err))
+  if (segment_write(&seg, o.dir, &s,
+                    interrupted      ? "interrupted"
+                    : s.t < s.tp.end ? "stopped (max_steps)"
+                                     : "done",
+                    &err))
     goto fail;
   status = say_end(ro, &s, &o);
   goto done;
@@ -685,7 +725,7 @@ fail:
   if (caught) stop_signals_restore(old_actions);
   hv_log(0, "%s", err.msg);
   status = err.code ? err.code : HV_EXIT_RUN;
-  if (seg_open) {   /* the row says how it ended; a second failure here is not reported */
+  if (seg_open) { /* the row says how it ended; a second failure here is not reported */
     struct hv_error e2;
     hv_error_clear(&e2);
     segment_write(&seg, o.dir, &s, "failed", &e2);

@@ -7,20 +7,20 @@
 
 struct run_options {
   const char *case_path;
-  const char *outdir;           /* NULL: out/<case name> */
-  const char *const *sets;      /* --set assignments */
+  const char *outdir;      /* NULL: out/<case name> */
+  const char *const *sets; /* --set assignments */
   int nsets;
-  int threads;                  /* 0: OpenMP default */
+  int threads; /* 0: OpenMP default */
   int quiet;
-  const char *restart_dir;      /* continue the run in this folder from its checkpoint
+  const char *restart_dir;  /* continue the run in this folder from its checkpoint
                                    (case_path and outdir unused) */
-  const char *const *swaps;     /* --material OLD=NEW: bodies of material OLD get NEW */
+  const char *const *swaps; /* --material OLD=NEW: bodies of material OLD get NEW */
   int nswaps;
-  int swaps_lenient;            /* 0: a swap that no body takes is bad input; 1: it is
+  int swaps_lenient; /* 0: a swap that no body takes is bad input; 1: it is
                                    ignored (validate, which checks over all its cases) */
-  int overwrite;                /* a new run replaces an earlier run in its folder (0: it
+  int overwrite;     /* a new run replaces an earlier run in its folder (0: it
                                    refuses the folder, exit 2) */
-  int force;                    /* more than RUN_MAX_OUTPUTS outputs (0: refused, exit 2) */
+  int force;         /* more than RUN_MAX_OUTPUTS outputs (0: refused, exit 2) */
 };
 
 /* The most outputs (snapshots, summary rows, checkpoints) a run writes without --force.
@@ -44,8 +44,8 @@ int run_interrupted(void);
  * one bad input named as the swap. strict: a swap that no body takes is bad input (a
  * misspelt name would otherwise run the case unchanged). hits (or NULL): the bodies that
  * took swap k are added to hits[k]. */
-int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict,
-                    int *hits, struct hv_error *err);
+int run_apply_swaps(struct cfg *c, const char *const *swaps, int nswaps, int strict, int *hits,
+                    struct hv_error *err);
 
 /* A wall-clock duration as the progress line and hvsph check write it: "7.6 s" under a
  * minute, else h:mm:ss ("27:46:40": a run that promises days shows it at a glance, where

@@ -61,8 +61,10 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
                           strerror(errno));
     if (fstat(fd, &a) || !S_ISREG(a.st_mode)) {
       close(fd);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s is not a regular file: remove it (it is "
-                          "hvsph's lock file)", l->path);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s is not a regular file: remove it (it is "
+                          "hvsph's lock file)",
+                          l->path);
     }
     struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = 0, .l_len = 0};
     if (fcntl(fd, F_SETLK, &fl)) {
@@ -71,20 +73,22 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
         char who[512];
         holder_of(fd, who, sizeof who);
         close(fd);
-        return hv_error_set(err, HV_EXIT_INPUT, "%s is in use by another hvsph %s (lock file "
+        return hv_error_set(err, HV_EXIT_INPUT,
+                            "%s is in use by another hvsph %s (lock file "
                             "%s): one process at a time writes a run folder; wait for it to "
                             "end, or stop it (Ctrl-C, or kill PID: it writes its state and "
-                            "a checkpoint), then try again", dir,
-                            who[0] ? who : "process (it is just starting)", l->path);
+                            "a checkpoint), then try again",
+                            dir, who[0] ? who : "process (it is just starting)", l->path);
       }
       /* a file system without record locks: going on unlocked beats refusing to run */
       hv_warn("cannot lock %s (%s): nothing keeps a second hvsph from writing %s at the "
-              "same time", l->path, strerror(e), dir);
+              "same time",
+              l->path, strerror(e), dir);
       l->fd = fd;
       return 0;
     }
     if (stat(l->path, &b) || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
-      close(fd);   /* removed (or replaced) by a holder that just ended: again */
+      close(fd); /* removed (or replaced) by a holder that just ended: again */
       continue;
     }
     char who[512];
@@ -92,7 +96,8 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
     if (who[0] && !quiet)
       hv_info("%s: took over the lock left by hvsph %s, which ended without releasing it "
               "(killed, or its machine went down): the folder holds what it had written by "
-              "then", dir, who);
+              "then",
+              dir, who);
     struct utsname u;
     char started[32];
     const time_t now = time(NULL);
@@ -100,9 +105,11 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
     gmtime_r(&now, &tm);
     strftime(started, sizeof started, "%Y-%m-%dT%H:%M:%SZ", &tm);
     char text[1024];
-    const int n = snprintf(text, sizeof text, "pid: %ld\nhost: %s\nstarted: %s\ncommand: hvsph "
-                           "%s\nversion: %s\n", (long)getpid(),
-                           uname(&u) >= 0 ? u.nodename : "?", started, what, HVSPH_VERSION);
+    const int n =
+        snprintf(text, sizeof text,
+                 "pid: %ld\nhost: %s\nstarted: %s\ncommand: hvsph "
+                 "%s\nversion: %s\n",
+                 (long)getpid(), uname(&u) >= 0 ? u.nodename : "?", started, what, HVSPH_VERSION);
     /* the content only names the holder for others' messages: a failure to write it
        leaves the lock as good */
     if (ftruncate(fd, 0) == 0 && pwrite(fd, text, (size_t)n, 0) != n) {}
@@ -110,14 +117,16 @@ int runfolder_lock(struct runfolder_lock *l, const char *dir, const char *what, 
     l->locked = 1;
     return 0;
   }
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: the lock file %s keeps changing: another hvsph "
-                      "is starting and ending there", dir, l->path);
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: the lock file %s keeps changing: another hvsph "
+                      "is starting and ending there",
+                      dir, l->path);
 }
 
 void runfolder_unlock(struct runfolder_lock *l)
 {
   if (l->fd < 0) return;
-  if (l->locked) unlink(l->path);   /* while still held: see runfolder_lock's retry */
+  if (l->locked) unlink(l->path); /* while still held: see runfolder_lock's retry */
   close(l->fd);
   runfolder_lock_init(l);
 }
@@ -132,9 +141,9 @@ static int numbered(const char *name, const char *prefix, const char *suffix)
   return 1;
 }
 
-static const char *const single_files[] = {"checkpoint.hvc", "summary.csv", "measurements.csv",
-                                           "run.pvd", "run_segments.csv",
-                                           "used_parameters.yaml"};
+static const char *const single_files[] = {"checkpoint.hvc",   "summary.csv",
+                                           "measurements.csv", "run.pvd",
+                                           "run_segments.csv", "used_parameters.yaml"};
 #define NSINGLE ((int)(sizeof single_files / sizeof single_files[0]))
 
 int runfolder_is_run_file(const char *name)
@@ -155,18 +164,20 @@ int runfolder_earlier_run(const char *dir, char *what, size_t len)
   while ((e = readdir(d))) {
     if (!runfolder_is_run_file(e->d_name)) continue;
     total++;
-    if (!strncmp(e->d_name, "particles_", 10)) snaps++;
-    else if (!strncmp(e->d_name, "fragments_", 10)) frags++;
+    if (!strncmp(e->d_name, "particles_", 10))
+      snaps++;
+    else if (!strncmp(e->d_name, "fragments_", 10))
+      frags++;
     for (int k = 0; k < NSINGLE; k++) has[k] |= !strcmp(e->d_name, single_files[k]);
   }
   closedir(d);
-  size_t n = 0;   /* in a fixed order, the checkpoint first */
+  size_t n = 0; /* in a fixed order, the checkpoint first */
   for (int k = 0; k < NSINGLE; k++)
-    if (has[k] && n < len) n += (size_t)snprintf(what + n, len - n, "%s%s", n ? ", " : "",
-                                                 single_files[k]);
+    if (has[k] && n < len)
+      n += (size_t)snprintf(what + n, len - n, "%s%s", n ? ", " : "", single_files[k]);
   if (snaps && n < len)
-    n += (size_t)snprintf(what + n, len - n, "%s%d particle snapshot file%s", n ? ", " : "",
-                          snaps, snaps == 1 ? "" : "s");
+    n += (size_t)snprintf(what + n, len - n, "%s%d particle snapshot file%s", n ? ", " : "", snaps,
+                          snaps == 1 ? "" : "s");
   if (frags && n < len)
     snprintf(what + n, len - n, "%s%d fragment file%s", n ? ", " : "", frags,
              frags == 1 ? "" : "s");
@@ -180,10 +191,13 @@ int runfolder_remove_run(const char *dir, struct hv_error *err)
   /* the checkpoint first: stopped half-way, the folder must not offer a restart of a
      run whose outputs are partly gone */
   snprintf(path, sizeof path, "%s/checkpoint.hvc", dir);
-  if (remove(path) == 0) n++;
+  if (remove(path) == 0)
+    n++;
   else if (errno != ENOENT)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot remove this file of the earlier run "
-                        "(--overwrite): %s", path, strerror(errno));
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: cannot remove this file of the earlier run "
+                        "(--overwrite): %s",
+                        path, strerror(errno));
   DIR *d = opendir(dir);
   if (!d) return n;
   struct dirent *e;
@@ -193,8 +207,10 @@ int runfolder_remove_run(const char *dir, struct hv_error *err)
     if (remove(path) && errno != ENOENT) {
       const int en = errno;
       closedir(d);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: cannot remove this file of the earlier "
-                          "run (--overwrite): %s", path, strerror(en));
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: cannot remove this file of the earlier "
+                          "run (--overwrite): %s",
+                          path, strerror(en));
     }
     n++;
   }

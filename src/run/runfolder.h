@@ -27,8 +27,8 @@
 #define RUNFOLDER_LOCK ".hvsph.lock"
 
 struct runfolder_lock {
-  int fd;            /* -1: not held */
-  int locked;        /* 1: the record lock is held (0: held without, where unsupported) */
+  int fd;     /* -1: not held */
+  int locked; /* 1: the record lock is held (0: held without, where unsupported) */
   char path[4200];
 };
 

@@ -34,8 +34,8 @@
 #include "neighbours/grid.h"
 #include "setup/setup.h"
 
-#define HV_SPEED_OF_LIGHT 299792458.0   /* [m/s] */
-#define BARE_LENGTH_WARN 1.0             /* [m] (read_body) */
+#define HV_SPEED_OF_LIGHT 299792458.0 /* [m/s] */
+#define BARE_LENGTH_WARN  1.0         /* [m] (read_body) */
 
 enum lattice_kind { LATTICE_CUBIC = 0, LATTICE_HCP };
 static const char *const lattice_names[] = {"cubic", "hcp", NULL};
@@ -44,9 +44,9 @@ struct body_spec {
   struct shape shape;
   int mat, lattice;
   double spacing, rho, e, vel[3], vrad;
-  double damage;       /* [-] initial damage, 0 (intact) to 1 (split) */
-  double vol;          /* [m3] exact volume of the simulated part, or -1 */
-  unsigned char fit[3];  /* a box on a cubic lattice with a face on a wall or symmetry
+  double damage;        /* [-] initial damage, 0 (intact) to 1 (split) */
+  double vol;           /* [m3] exact volume of the simulated part, or -1 */
+  unsigned char fit[3]; /* a box on a cubic lattice with a face on a wall or symmetry
                             face of the domain, along that axis: its step is fitted to
                             its length (lattice_points) */
 };
@@ -120,7 +120,7 @@ static size_t lattice_points_scan(const struct body_spec *bs, int half, struct p
   const int ax = cylinder_axis(sh);
   if (ax >= 0 && bs->lattice == LATTICE_CUBIC) anchor[ax] = sh->center[ax] - 0.5 * sh->length;
   if (half) anchor[2] = 0.0;
-  double dlo[3], dhi[3], npts = 1.0;   /* as doubles first: a huge box overflows a long */
+  double dlo[3], dhi[3], npts = 1.0; /* as doubles first: a huge box overflows a long */
   for (int k = 0; k < 3; k++) {
     dlo[k] = floor((sh->min[k] - anchor[k]) / step[k]) - 2.0;
     dhi[k] = ceil((sh->max[k] - anchor[k]) / step[k]) + 1.0;
@@ -156,7 +156,8 @@ static size_t lattice_points_scan(const struct body_spec *bs, int half, struct p
   return count;
 }
 
-static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p, size_t first)
+static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p,
+                             size_t first)
 {
   return lattice_points_scan(bs, half, p, first, NULL);
 }
@@ -169,13 +170,17 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
   snprintf(key, sizeof key, "%s.velocity", path);
   snprintf(key2, sizeof key2, "%s.speed", path);
   if (cfg_has(c, key) && cfg_has(c, key2))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give velocity or speed (with "
-                        "impact_angle), not both", cfg_where(c, key2, where, sizeof where), name);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': give velocity or speed (with "
+                        "impact_angle), not both",
+                        cfg_where(c, key2, where, sizeof where), name);
   snprintf(key, sizeof key, "%s.impact_angle", path);
   if (cfg_has(c, key) && !cfg_has(c, key2))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': impact_angle applies with speed "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': impact_angle applies with speed "
                         "(v = speed (sin a, -cos a, 0)); with velocity, the vector's components "
-                        "give the direction", cfg_where(c, key, where, sizeof where), name);
+                        "give the direction",
+                        cfg_where(c, key, where, sizeof where), name);
   snprintf(key, sizeof key, "%s.velocity", path);
   if (cfg_has(c, key2)) {
     double speed, angle;
@@ -183,7 +188,8 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
     snprintf(key, sizeof key, "%s.impact_angle", path);
     if (cfg_get_quantity(c, key, UNIT_ANGLE, &right, -HUGE_VAL, HUGE_VAL, &angle, err)) return -1;
     if (!(angle > 0.0 && angle <= HV_KERNEL_PI / 2 * (1 + 1e-12)))
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': impact_angle %g deg is outside "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: body '%s': impact_angle %g deg is outside "
                           "(0, 90] deg (90 deg is a normal impact)",
                           cfg_where(c, key, where, sizeof where), name, angle * 180 / HV_KERNEL_PI);
     bs->vel[0] = speed * sin(angle);
@@ -204,7 +210,8 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
       !(speed + fabs(bs->vrad) < HV_SPEED_OF_LIGHT)) {
     const int radial = !(speed < HV_SPEED_OF_LIGHT) ? 0 : 1;
     snprintf(key, sizeof key, "%s.%s", path, radial ? "radial_velocity" : vkey);
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': a speed of %g m/s%s is not "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: body '%s': a speed of %g m/s%s is not "
                         "below the speed of light (%.0f m/s); hvsph's mechanics are "
                         "Newtonian, for impacts up to some tens of km/s",
                         cfg_where(c, key, where, sizeof where), key, name,
@@ -214,17 +221,16 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
   return 0;
 }
 
-static int read_state(struct cfg *c, const char *path, const char *name,
-                      const struct material *m, struct body_spec *bs, struct hv_error *err)
+static int read_state(struct cfg *c, const char *path, const char *name, const struct material *m,
+                      struct body_spec *bs, struct hv_error *err)
 {
   char key[256], key2[256], where[256];
   snprintf(key, sizeof key, "%s.density", path);
   const double *rdef = m->rho0 > 0 ? &m->rho0 : NULL;
   if (cfg_get_quantity(c, key, UNIT_DENSITY, rdef, DBL_MIN, HUGE_VAL, &bs->rho, err)) return -1;
   /* wrong units: a bare density far from any condensed material's (2.78, in g/cm3) */
-  if (m->eos != EOS_IDEAL_GAS &&
-      cfg_check_typical(c, key, UNIT_DENSITY, HV_RHO_CONDENSED_LO, HV_RHO_CONDENSED_HI,
-                        HV_RHO_CONDENSED_WHAT, err))
+  if (m->eos != EOS_IDEAL_GAS && cfg_check_typical(c, key, UNIT_DENSITY, HV_RHO_CONDENSED_LO,
+                                                   HV_RHO_CONDENSED_HI, HV_RHO_CONDENSED_WHAT, err))
     return -1;
   snprintf(key, sizeof key, "%s.pressure", path);
   snprintf(key2, sizeof key2, "%s.energy", path);
@@ -237,9 +243,10 @@ static int read_state(struct cfg *c, const char *path, const char *name,
     const double plo = m->eos == EOS_IDEAL_GAS ? 0.0 : -HUGE_VAL;
     if (cfg_get_quantity(c, key, UNIT_PRESSURE, NULL, plo, HUGE_VAL, &pr, err)) return -1;
     if (eos_energy_from_pressure(m, bs->rho, pr, &bs->e) || !isfinite(bs->e))
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': material '%s' cannot reach "
-                          "p = %g Pa at rho = %g kg/m3", cfg_where(c, key, where, sizeof where),
-                          name, m->name, pr, bs->rho);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: body '%s': material '%s' cannot reach "
+                          "p = %g Pa at rho = %g kg/m3",
+                          cfg_where(c, key, where, sizeof where), name, m->name, pr, bs->rho);
     return 0;
   }
   double zero = 0.0;
@@ -258,10 +265,14 @@ static int bare_length(struct cfg *c, const char *path, const struct shape *sh, 
   for (int k = 0; k < 4; k++) {
     const int vec = k >= 2;
     for (int d = 0; d < (vec ? 3 : 1); d++) {
-      const double val = k == 0 ? sh->radius : k == 1 ? sh->length
-                         : k == 2 ? sh->max[d] : sh->min[d];
-      if (vec) snprintf(key, klen, "%s.shape.%s[%d]", path, names[k], d);
-      else snprintf(key, klen, "%s.shape.%s", path, names[k]);
+      const double val = k == 0   ? sh->radius
+                         : k == 1 ? sh->length
+                         : k == 2 ? sh->max[d]
+                                  : sh->min[d];
+      if (vec)
+        snprintf(key, klen, "%s.shape.%s[%d]", path, names[k], d);
+      else
+        snprintf(key, klen, "%s.shape.%s", path, names[k]);
       if (fabs(val) >= least && (sh->kind == SHAPE_BOX) == vec && cfg_is_bare(c, key)) {
         *v = val;
         return 1;
@@ -284,20 +295,23 @@ static int bare_length_culprit(struct cfg *c, int b, const struct body_spec *bs,
   int found = 0;
   *v = 0.0;
   if (sh->kind != SHAPE_BOX) {
-    for (int which = 0; which < 2; which++) {   /* radius, length */
+    for (int which = 0; which < 2; which++) { /* radius, length */
       double r = sh->radius, len = sh->length;
       const double val = which ? len : r;
       snprintf(k, sizeof k, "bodies[%d].shape.%s", b, which ? "length" : "radius");
       if ((which && sh->kind != SHAPE_CYLINDER) || val == 0.0 || !cfg_is_bare(c, k)) continue;
-      if (which) len *= 1e-3;
-      else r *= 1e-3;
+      if (which)
+        len *= 1e-3;
+      else
+        r *= 1e-3;
       const double vol = sh->kind == SHAPE_SPHERE ? 4.0 / 3.0 * HV_KERNEL_PI * r * r * r
                                                   : HV_KERNEL_PI * r * r * len;
-      double box = 1.0;   /* its bounding box, which lattice_points scans */
+      double box = 1.0; /* its bounding box, which lattice_points scans */
       for (int d = 0; d < 3; d++)
-        box *= sh->kind == SHAPE_SPHERE ? 2.0 * r
-               : len * fabs(sh->axis[d]) +
-                     2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
+        box *= sh->kind == SHAPE_SPHERE
+                   ? 2.0 * r
+                   : len * fabs(sh->axis[d]) +
+                         2.0 * r * sqrt(fmax(0.0, 1.0 - sh->axis[d] * sh->axis[d]));
       if (particles_fit(vol / cell, 1) && box / cell <= lattice_scan_max() &&
           fabs(val) > fabs(*v)) {
         snprintf(key, klen, "%s", k);
@@ -337,10 +351,11 @@ static int bare_length_error(struct cfg *c, int b, const struct body_spec *bs, c
   char key[96], where[256];
   double v;
   if (!bare_length_culprit(c, b, bs, key, sizeof key, &v)) return 0;
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: the bare number %g is read as %g m (a "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: %s: the bare number %g is read as %g m (a "
                       "number without a unit is SI), and body '%s' then %s; was it %g mm? Write "
-                      "the value with its unit", cfg_where(c, key, where, sizeof where), key, v,
-                      v, name, then, v);
+                      "the value with its unit",
+                      cfg_where(c, key, where, sizeof where), key, v, v, name, then, v);
 }
 
 /* "needs about 9e+11 particles, more than this machine's memory holds" */
@@ -380,13 +395,12 @@ static double box_thickness(const struct sim *s, const struct body_spec *bs)
  * up (rounding to the nearest gave §2.4's 1 mm bumper one layer of 7 200 particles
  * where 20 000 were asked). */
 static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key,
-                             struct body_spec *bs, const char *name, double n,
-                             struct hv_error *err)
+                             struct body_spec *bs, const char *name, double n, struct hv_error *err)
 {
   const double d0 = bs->spacing, t = box_thickness(s, bs);
   const int half = s->bnd.half_model;
   double layers = 0.0;
-  if (t > 0) {   /* whole layers, rounded up, then a layer more while short */
+  if (t > 0) { /* whole layers, rounded up, then a layer more while short */
     layers = fmax(1.0, ceil(t / d0 * (1.0 - 1e-9)));
     bs->spacing = t / layers;
     /* a plate or disc far wider than it is thick for its count (a radius in metres
@@ -400,7 +414,8 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
       if (bare_length_error(c, (int)strtol(key + 7, NULL, 10), bs, name,
                             needs_text(then, sizeof then, est), err))
         return -1;
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %.0f particles asked, but its "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: body '%s': %.0f particles asked, but its "
                           "thinnest side, %g mm, in whole layers needs a spacing of at most "
                           "%g mm, which fills its %g m3 with about %.3g particles, more than "
                           "this machine's memory holds; check the shape's size and units",
@@ -411,7 +426,7 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
       layers += 1.0;
       bs->spacing = t / layers;
     }
-  } else {   /* the coarsest spacing that gives n: bracket, then bisect */
+  } else { /* the coarsest spacing that gives n: bracket, then bisect */
     double hi = bs->spacing, lo = hi;
     double cnt = (double)lattice_points(bs, half, NULL, 0);
     for (int it = 0; it < 60 && cnt < n; it++) {
@@ -422,15 +437,17 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
     }
     for (int it = 0; it < 40 && hi > lo * (1.0 + 1e-6); it++) {
       bs->spacing = 0.5 * (lo + hi);
-      if ((double)lattice_points(bs, half, NULL, 0) >= n) lo = bs->spacing;
-      else hi = bs->spacing;
+      if ((double)lattice_points(bs, half, NULL, 0) >= n)
+        lo = bs->spacing;
+      else
+        hi = bs->spacing;
     }
     bs->spacing = lo;
   }
   if (t > 0 && bs->spacing < 0.8 * d0)
     hv_info("body '%s': spacing %.4g mm -> %.4g mm so that its %.4g mm thickness holds %.0f "
-            "whole layer(s) and at least %.0f particles", name, 1e3 * d0, 1e3 * bs->spacing,
-            1e3 * t, layers, n);
+            "whole layer(s) and at least %.0f particles",
+            name, 1e3 * d0, 1e3 * bs->spacing, 1e3 * t, layers, n);
   return 0;
 }
 
@@ -454,19 +471,24 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
   snprintf(key, sizeof key, "%s.spacing", path);
   snprintf(key2, sizeof key2, "%s.particles", path);
   if (cfg_has(c, key) == cfg_has(c, key2))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': give exactly one of 'spacing' and "
-                        "'particles'", cfg_where(c, path, where, sizeof where), name);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': give exactly one of 'spacing' and "
+                        "'particles'",
+                        cfg_where(c, path, where, sizeof where), name);
   if (cfg_has(c, key)) {
-    if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &bs->spacing, err)) return -1;
+    if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &bs->spacing, err))
+      return -1;
     bs->spacing /= cbrt(resolution);
     return 0;
   }
   long np;
   if (cfg_get_int(c, key2, NULL, 1, 2000000000L, &np, err)) return -1;
   if (bs->vol <= 0)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': 'particles' needs a shape of known "
-                        "volume; give 'spacing' instead", cfg_where(c, key2, where, sizeof where), name);
-  double n = (double)np * resolution, v1 = bs->vol / n;   /* volume per particle */
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': 'particles' needs a shape of known "
+                        "volume; give 'spacing' instead",
+                        cfg_where(c, key2, where, sizeof where), name);
+  double n = (double)np * resolution, v1 = bs->vol / n; /* volume per particle */
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
   /* counted only where it could fit (as gas, the least): check_memory refuses the rest
      before anything is allocated, without minutes of counting first */
@@ -474,8 +496,8 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
   return 0;
 }
 
-static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
-                     double resolution, struct hv_error *err)
+static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, double resolution,
+                     struct hv_error *err)
 {
   char key[256], path[64], defname[32];
   const char *name, *mname;
@@ -491,10 +513,11 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
       char where[256], first[256], akey[64];
       snprintf(akey, sizeof akey, "bodies[%d].name", a);
       if (!cfg_has(c, akey)) snprintf(akey, sizeof akey, "bodies[%d]", a);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a second body named '%s' (the first, "
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: a second body named '%s' (the first, "
                           "bodies[%d], at %s); give each body a name of its own",
-                          cfg_where(c, cfg_has(c, key) ? key : path, where, sizeof where),
-                          key, s->body[b].name, a, cfg_where(c, akey, first, sizeof first));
+                          cfg_where(c, cfg_has(c, key) ? key : path, where, sizeof where), key,
+                          s->body[b].name, a, cfg_where(c, akey, first, sizeof first));
     }
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
@@ -510,10 +533,12 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
      Δ. A body the symmetry plane cuts must take the cubic lattice. */
   if (bs->lattice == LATTICE_HCP && s->bnd.half_model && bs->shape.min[2] <= 0.0) {
     char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': lattice hcp cannot be cut by the "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: body '%s': lattice hcp cannot be cut by the "
                         "symmetry plane of a half model (its layer next to z = 0 would meet its "
                         "mirror images 0.82 spacings away, not 1): use lattice: cubic, or a full "
-                        "model", cfg_where(c, key, where, sizeof where), key, name);
+                        "model",
+                        cfg_where(c, key, where, sizeof where), key, name);
   }
   /* A box's lattice starts Δ/2 inside its min face and ends wherever its length
      leaves it — anywhere from 0 to Δ from its max face. Next to a wall or symmetry face
@@ -527,14 +552,13 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   for (int k = 0; k < 3; k++) {
     const double tol = 1e-9 * fmax(1.0, fabs(s->bnd.hi[k] - s->bnd.lo[k]));
     const int kh = s->bnd.kind[k][1], kl = s->bnd.kind[k][0];
-    const int on_hi = (kh == BND_WALL || kh == BND_SYMMETRY) &&
-                      fabs(bs->shape.max[k] - s->bnd.hi[k]) <= tol;
-    const int on_lo = (kl == BND_WALL || kl == BND_SYMMETRY) &&
-                      fabs(bs->shape.min[k] - s->bnd.lo[k]) <= tol;
+    const int on_hi =
+        (kh == BND_WALL || kh == BND_SYMMETRY) && fabs(bs->shape.max[k] - s->bnd.hi[k]) <= tol;
+    const int on_lo =
+        (kl == BND_WALL || kl == BND_SYMMETRY) && fabs(bs->shape.min[k] - s->bnd.lo[k]) <= tol;
     bs->fit[k] = s->bnd.has_box && bs->shape.kind == SHAPE_BOX &&
-                 s->mat[bs->mat].eos == EOS_IDEAL_GAS &&
-                 bs->lattice == LATTICE_CUBIC && (on_hi || on_lo) &&
-                 !(k == 2 && s->bnd.half_model && bs->shape.min[2] > 0.0);
+                 s->mat[bs->mat].eos == EOS_IDEAL_GAS && bs->lattice == LATTICE_CUBIC &&
+                 (on_hi || on_lo) && !(k == 2 && s->bnd.half_model && bs->shape.min[2] > 0.0);
   }
   bs->vol = shape_volume(&bs->shape);
   if (s->bnd.half_model && bs->vol > 0) {
@@ -543,8 +567,7 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   }
   s->body[b].mat = bs->mat;
   if (read_spacing(s, c, path, name, bs, resolution, err) ||
-      read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
-      read_velocity(c, path, name, bs, err))
+      read_state(c, path, name, &s->mat[bs->mat], bs, err) || read_velocity(c, path, name, bs, err))
     return -1;
   /* wrong units that still fit in memory: a body of a condensed material at a real
      density (the range of the density check, so not a case in scaled units like the
@@ -568,7 +591,8 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs,
   if (cfg_get_quantity(c, key, UNIT_NONE, &zero, 0.0, 1.0, &bs->damage, err)) return -1;
   if (bs->damage > 0.0 && s->mat[bs->mat].frac.kind == FRACTURE_NONE) {
     char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': damage = %g needs a material "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: body '%s': damage = %g needs a material "
                         "with fracture (material '%s' has fracture: none)",
                         cfg_where(c, key, where, sizeof where), key, name, bs->damage,
                         s->mat[bs->mat].name);
@@ -597,8 +621,7 @@ static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t f
       rn += r[c] * r[c];
     }
     rn = sqrt(rn);
-    for (int c = 0; c < 3; c++)
-      p->v[c][q] = bs->vel[c] + (rn > 0 ? bs->vrad * r[c] / rn : 0.0);
+    for (int c = 0; c < 3; c++) p->v[c][q] = bs->vel[c] + (rn > 0 ? bs->vrad * r[c] / rn : 0.0);
   }
 }
 
@@ -619,13 +642,15 @@ static int energy_deposit(struct sim *s, struct cfg *c, struct hv_error *err)
     wsum += p->m[i] * kernel_w(KERNEL_CUBIC_SPLINE, sqrt(r2), 0.5 * R);
   }
   if (!(wsum > 0))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: energy_deposit: no particle within radius "
-                        "%g m of the centre", cfg_where(c, "energy_deposit", where, sizeof where), R);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: energy_deposit: no particle within radius "
+                        "%g m of the centre",
+                        cfg_where(c, "energy_deposit", where, sizeof where), R);
   for (size_t i = 0; i < p->n; i++) {
     double r2 = 0.0;
     for (int k = 0; k < 3; k++) r2 += (p->x[k][i] - ctr[k]) * (p->x[k][i] - ctr[k]);
     double w = kernel_w(KERNEL_CUBIC_SPLINE, sqrt(r2), 0.5 * R);
-    p->e[i] += E * w / wsum;   /* m_i e_i gains E m_i w_i / Σ m w */
+    p->e[i] += E * w / wsum; /* m_i e_i gains E m_i w_i / Σ m w */
   }
   return 0;
 }
@@ -641,9 +666,11 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
     const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
     for (int a = 0; a < b; a++)
       if (shape_contains(&bs[a].shape, x))
-        return hv_error_set(err, HV_EXIT_INPUT, "%s: bodies '%s' and '%s' overlap (e.g. at "
-                            "x = (%g, %g, %g) m)", cfg_where(c, key, where, sizeof where),
-                            s->body[a].name, s->body[b].name, x[0], x[1], x[2]);
+        return hv_error_set(err, HV_EXIT_INPUT,
+                            "%s: bodies '%s' and '%s' overlap (e.g. at "
+                            "x = (%g, %g, %g) m)",
+                            cfg_where(c, key, where, sizeof where), s->body[a].name,
+                            s->body[b].name, x[0], x[1], x[2]);
     if (s->bnd.has_box)
       for (int d = 0; d < 3; d++)
         if (x[d] < s->bnd.lo[d] || x[d] > s->bnd.hi[d]) {
@@ -655,10 +682,11 @@ static int check_placement(struct sim *s, struct cfg *c, const struct body_spec 
           if (bare_length(c, key, &bs[b].shape, fmax(0.5 * side, DBL_MIN), lkey, sizeof lkey, &v))
             snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m: was it %g mm?",
                      lkey, v, v, v);
-          return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s' reaches outside the domain "
+          return hv_error_set(err, HV_EXIT_INPUT,
+                              "%s: body '%s' reaches outside the domain "
                               "(%c = %g m, domain %g to %g m)%s",
                               cfg_where(c, key, where, sizeof where), s->body[b].name, "xyz"[d],
-                              x[d], s->bnd.lo[d], s->bnd.hi[d], hint);
+                              x[d], s -> bnd.lo[d], s->bnd.hi[d], hint);
         }
   }
   return 0;
@@ -677,10 +705,12 @@ static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_s
     if (bare_length_error(c, b, bs, s->body[b].name,
                           needs_text(then, sizeof then, (double)(total - s->p.n)), err))
       return -1;
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': %zu particles in all would need about "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': %zu particles in all would need about "
                         "%.1f GiB, more than this machine's %.1f GiB allows; use a coarser "
-                        "spacing or fewer particles", cfg_where(c, key, where, sizeof where),
-                        s->body[b].name, total, need / 1073741824.0, avail / 1073741824.0);
+                        "spacing or fewer particles",
+                        cfg_where(c, key, where, sizeof where), s->body[b].name, total,
+                        need / 1073741824.0, avail / 1073741824.0);
   }
   return 0;
 }
@@ -742,7 +772,7 @@ static int bodies_touch(const struct sim *s, const size_t *first_of, int a, int 
   int meet = 0;
   if (n > 1 && nbr_grid_build(&g, (const double *const *)xs, hs, n,
                               nbr_cell_size(0.5 * reach, 0.5 * reach), msg, sizeof msg))
-    meet = 1;   /* too wide a region for the grid: keep the warning */
+    meet = 1; /* too wide a region for the grid: keep the warning */
   for (size_t cc = 0; n > 1 && cc < g.ncells && !meet; cc++)
     for (uint32_t ii = g.cell_start[cc]; ii < g.cell_start[cc + 1] && !meet; ii++) {
       const uint32_t i = g.order[ii];
@@ -751,9 +781,8 @@ static int bodies_touch(const struct sim *s, const size_t *first_of, int a, int 
         const int32_t nc = g.nbr_list[kk];
         for (uint32_t jj = g.cell_start[nc]; jj < g.cell_start[nc + 1] && !meet; jj++) {
           const uint32_t j = g.order[jj];
-          if ((p->body[id[j]] == a) == ia) continue;   /* a pair of one body */
-          const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j],
-                       dz = xs[2][i] - xs[2][j];
+          if ((p->body[id[j]] == a) == ia) continue; /* a pair of one body */
+          const double dx = xs[0][i] - xs[0][j], dy = xs[1][i] - xs[1][j], dz = xs[2][i] - xs[2][j];
           meet = dx * dx + dy * dy + dz * dz < reach * reach;
         }
       }
@@ -767,8 +796,7 @@ static int bodies_touch(const struct sim *s, const size_t *first_of, int a, int 
 
 /* Whether a's footprint, swept along the bodies' relative mean velocity, passes within
  * reach of a particle of b (1 also when the footprint is too wide for the columns). */
-static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, int b,
-                          double reach)
+static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, int b, double reach)
 {
   const struct particles *p = &s->p;
   const struct body_info *A = &s->body[a], *B = &s->body[b];
@@ -798,8 +826,10 @@ static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, in
     const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
     const double c1 = x[0] * e1[0] + x[1] * e1[1] + x[2] * e1[2];
     const double c2 = x[0] * e2[0] + x[1] * e2[1] + x[2] * e2[2];
-    plo[0] = fmin(plo[0], c1); phi[0] = fmax(phi[0], c1);
-    plo[1] = fmin(plo[1], c2); phi[1] = fmax(phi[1], c2);
+    plo[0] = fmin(plo[0], c1);
+    phi[0] = fmax(phi[0], c1);
+    plo[1] = fmin(plo[1], c2);
+    phi[1] = fmax(phi[1], c2);
   }
   /* columns half the reach wide; a particle of b within reach of a's footprint is at
      most two columns from one of a's (caught), one farther than 1.5 reach is not */
@@ -808,7 +838,7 @@ static int bodies_in_path(const struct sim *s, const size_t *first_of, int a, in
   const long m2 = (long)floor((phi[1] - plo[1]) / col) + 1;
   if ((double)m1 * (double)m2 > MEET_MAX_COLUMNS) return 1;
   double *rear = hv_malloc((size_t)(m1 * m2) * sizeof *rear, "body sweep grid");
-  for (long t = 0; t < m1 * m2; t++) rear[t] = HUGE_VAL;   /* a's rearmost point per column */
+  for (long t = 0; t < m1 * m2; t++) rear[t] = HUGE_VAL; /* a's rearmost point per column */
   for (size_t q = fa; q < fa + na; q++) {
     const double x[3] = {p->x[0][q], p->x[1][q], p->x[2][q]};
     const long i = meet_cell(x[0] * e1[0] + x[1] * e1[1] + x[2] * e1[2], plo[0], col);
@@ -869,11 +899,12 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
     const double f = cbrt(MASS_RATIO_WARN / worst);
     const double unit = pow(10.0, floor(log10(f)) - 1.0);
     const double fdown = floor(f / unit) * unit;
-    hv_warn("body '%s' (particles of %.3g kg) is much heavier than %s; where they meet, the "
-            "light particles are over-compressed by their heavy neighbours and hold the time "
-            "step down (in impacts of a few km/s). A spacing for '%s' at most %.2g times its present one "
-            "brings the ratio below %.0f", s->body[b].name, mb, list,
-            s->body[b].name, fdown, MASS_RATIO_WARN);
+    hv_warn(
+        "body '%s' (particles of %.3g kg) is much heavier than %s; where they meet, the "
+        "light particles are over-compressed by their heavy neighbours and hold the time "
+        "step down (in impacts of a few km/s). A spacing for '%s' at most %.2g times its present one "
+        "brings the ratio below %.0f",
+        s->body[b].name, mb, list, s->body[b].name, fdown, MASS_RATIO_WARN);
   }
 }
 
@@ -884,8 +915,9 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
  * of the rod, 3.0-4.8 % with 1.024-1.119. The warning offers the spacing nearest the
  * body's (within ±10 %, in steps of 0.25 %) whose lattice fills COVER_LO to 1. */
 #define COVER_WARN 1.02
-#define COVER_LO 0.95
-#define COVER_SEARCH_MAX 500000   /* points; larger bodies get no suggestion (up to 80
+#define COVER_LO   0.95
+#define COVER_SEARCH_MAX                                                                           \
+  500000 /* points; larger bodies get no suggestion (up to 80
                                      counts of the lattice) */
 
 static double lattice_cover(const struct body_spec *bs, size_t n)
@@ -910,7 +942,8 @@ static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, 
           t.spacing = bs[b].spacing * (1.0 + sgn * 0.0025 * k);
           const double c = lattice_cover(&t, lattice_points(&t, half, NULL, 0));
           if (c >= COVER_LO && c <= 1.0) {
-            snprintf(fix, sizeof fix, "spacing %.5g mm (its lattice fills %.3f)", 1e3 * t.spacing, c);
+            snprintf(fix, sizeof fix, "spacing %.5g mm (its lattice fills %.3f)", 1e3 * t.spacing,
+                     c);
             found = 1;
           }
         }
@@ -953,15 +986,19 @@ static int read_pieces(struct sim *s, struct cfg *c, int nb, struct hv_error *er
         if (k != b)
           snprintf(names + strlen(names), sizeof names - strlen(names), "%s'%s'",
                    names[0] ? ", " : "", s->body[k].name);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of '%s' %s (the other "
-                          "bodies: %s)", cfg_where(c, key, where, sizeof where), key,
-                          s->body[b].name, name, t == b ? "is the body itself" : "names no body",
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: body '%s': part_of '%s' %s (the other "
+                          "bodies: %s)",
+                          cfg_where(c, key, where, sizeof where), key, s->body[b].name, name,
+                          t == b ? "is the body itself" : "names no body",
                           names[0] ? names : "none");
     }
     if (s->mat[s->body[b].mat].eos == EOS_IDEAL_GAS || s->mat[s->body[t].mat].eos == EOS_IDEAL_GAS)
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of joins solid bodies; "
-                          "'%s' or '%s' is a gas", cfg_where(c, key, where, sizeof where), key,
-                          s->body[b].name, s->body[b].name, s->body[t].name);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: body '%s': part_of joins solid bodies; "
+                          "'%s' or '%s' is a gas",
+                          cfg_where(c, key, where, sizeof where), key, s->body[b].name,
+                          s->body[b].name, s->body[t].name);
     part_of[b] = t;
     any = 1;
   }
@@ -973,8 +1010,10 @@ static int read_pieces(struct sim *s, struct cfg *c, int nb, struct hv_error *er
     }
     if (hops > nb) {
       snprintf(key, sizeof key, "bodies[%d].part_of", b);
-      return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: body '%s': part_of goes round in a "
-                          "circle", cfg_where(c, key, where, sizeof where), key, s->body[b].name);
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: body '%s': part_of goes round in a "
+                          "circle",
+                          cfg_where(c, key, where, sizeof where), key, s->body[b].name);
     }
     s->piece[b] = r;
   }
@@ -1000,16 +1039,20 @@ static int enable_fields(struct sim *s, struct cfg *c, struct hv_error *err)
         (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
       particles_enable_crack(&s->p);
   if (s->sph.summation && s->p.solid)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.density: summation is for cases without "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.density: summation is for cases without "
                         "strength or fracture (a free surface of a solid would lose density); "
-                        "use continuity", cfg_where(c, "sph.density", where, sizeof where));
+                        "use continuity",
+                        cfg_where(c, "sph.density", where, sizeof where));
   if (s->sph.reconstruct && !s->p.solid)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct: it acts on pairs of "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.viscosity.reconstruct: it acts on pairs of "
                         "particles with strength, and no material here has strength or fracture; "
-                        "set it to false", cfg_where(c, "sph.viscosity.reconstruct", where,
-                                                  sizeof where));
+                        "set it to false",
+                        cfg_where(c, "sph.viscosity.reconstruct", where, sizeof where));
   if (s->sph.continuity_mass && s->p.solid)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.continuity: mass is for cases without "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.continuity: mass is for cases without "
                         "strength or fracture (the solid loops use the volume form, which holds "
                         "at interfaces where density jumps a hundredfold); use volume",
                         cfg_where(c, "sph.continuity", where, sizeof where));
@@ -1030,16 +1073,18 @@ static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, 
   double bound = 1.0;
   for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
   const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
-  if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err))
-    return -1;
+  if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) return -1;
   double scan;
   const size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
   if (cnt == SIZE_MAX) {
     char then[160];
-    snprintf(then, sizeof then, "spans %.3g lattice points in its bounding box, more than "
-             "%.3g to scan", scan, lattice_scan_max());
+    snprintf(then, sizeof then,
+             "spans %.3g lattice points in its bounding box, more than "
+             "%.3g to scan",
+             scan, lattice_scan_max());
     if (bare_length_error(c, b, &bs[b], s->body[b].name, then, err)) return -1;
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': its bounding box, %g x %g x %g m, "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': its bounding box, %g x %g x %g m, "
                         "spans %.3g lattice points of %g mm to scan, more than %.3g (64 times the "
                         "particles this machine's memory holds); check the shape's size and units",
                         cfg_where(c, key, where, sizeof where), s->body[b].name,
@@ -1053,12 +1098,15 @@ static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, 
     for (int d = 0; d < 3; d++) ext = fmax(ext, sh->max[d] - sh->min[d]);
     snprintf(skey, sizeof skey, "%s.spacing", key);
     if (cfg_is_bare(c, skey) && bs[b].spacing > ext)
-      snprintf(hint, sizeof hint, "; %s is the bare number %g, read as %g m (a number "
-               "without a unit is SI): was it %g mm?", skey, bs[b].spacing, bs[b].spacing,
-               bs[b].spacing);
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: body '%s': spacing %g m gives no particle inside "
-                        "the shape%s", cfg_where(c, key, where, sizeof where), s->body[b].name,
-                        bs[b].spacing, hint);
+      snprintf(hint, sizeof hint,
+               "; %s is the bare number %g, read as %g m (a number "
+               "without a unit is SI): was it %g mm?",
+               skey, bs[b].spacing, bs[b].spacing, bs[b].spacing);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': spacing %g m gives no particle inside "
+                        "the shape%s",
+                        cfg_where(c, key, where, sizeof where), s->body[b].name, bs[b].spacing,
+                        hint);
   }
   *cnt_out = cnt;
   return 0;
@@ -1112,7 +1160,10 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
       rc = -1;
       break;
     }
-    if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) { rc = -1; break; }
+    if (check_memory(s, c, b, &bs[b], s->p.n + cnt, err)) {
+      rc = -1;
+      break;
+    }
     const size_t first = place_body(s, bs, b, cnt);
     first_of[b] = first;
     rc = check_placement(s, c, bs, b, first, cnt, err);

@@ -11,12 +11,12 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err);
 enum shape_kind { SHAPE_BOX = 0, SHAPE_SPHERE, SHAPE_CYLINDER, SHAPE_KIND_COUNT };
 struct shape {
   enum shape_kind kind;
-  double min[3], max[3];   /* [m] box; bounding box for every shape */
-  double center[3];        /* [m] sphere, cylinder (mid-point of the axis), box centre */
-  double radius;           /* [m] sphere, cylinder */
-  double axis[3];          /* [-] cylinder: unit vector */
-  double length;           /* [m] cylinder */
-  struct shape *minus;     /* shapes subtracted from this one */
+  double min[3], max[3]; /* [m] box; bounding box for every shape */
+  double center[3];      /* [m] sphere, cylinder (mid-point of the axis), box centre */
+  double radius;         /* [m] sphere, cylinder */
+  double axis[3];        /* [-] cylinder: unit vector */
+  double length;         /* [m] cylinder */
+  struct shape *minus;   /* shapes subtracted from this one */
   int nminus;
 };
 int shape_read(struct shape *sh, struct cfg *c, const char *path, struct hv_error *err);

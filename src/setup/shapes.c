@@ -57,7 +57,8 @@ static int read_cylinder(struct shape *sh, struct cfg *c, const char *path, stru
   if (cfg_get_vec3(c, key, UNIT_LENGTH, NULL, sh->center, err)) return -1;
   snprintf(key, sizeof key, "%s.axis", path);
   if (cfg_get_vec3(c, key, UNIT_NONE, xaxis, sh->axis, err)) return -1;
-  double na = sqrt(sh->axis[0] * sh->axis[0] + sh->axis[1] * sh->axis[1] + sh->axis[2] * sh->axis[2]);
+  double na =
+      sqrt(sh->axis[0] * sh->axis[0] + sh->axis[1] * sh->axis[1] + sh->axis[2] * sh->axis[2]);
   if (!(na > 0))
     return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: the axis must not be zero",
                         cfg_where(c, key, where, sizeof where), key);
@@ -83,7 +84,7 @@ int shape_read(struct shape *sh, struct cfg *c, const char *path, struct hv_erro
   snprintf(key, sizeof key, "%s.type", path);
   if (cfg_get_choice(c, key, NULL, shape_names, &kind, err)) return -1;
   sh->kind = (enum shape_kind)kind;
-  int rc = sh->kind == SHAPE_BOX ? read_box(sh, c, path, err)
+  int rc = sh->kind == SHAPE_BOX      ? read_box(sh, c, path, err)
            : sh->kind == SHAPE_SPHERE ? read_sphere(sh, c, path, err)
                                       : read_cylinder(sh, c, path, err);
   if (rc) return -1;
@@ -91,9 +92,10 @@ int shape_read(struct shape *sh, struct cfg *c, const char *path, struct hv_erro
   int nm = cfg_len(c, key);
   if (cfg_has(c, key) && nm <= 0) {
     char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: expected a list of one or more shapes "
-                        "(minus: [{type: ...}, ...])", cfg_where(c, key, where, sizeof where),
-                        key);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: expected a list of one or more shapes "
+                        "(minus: [{type: ...}, ...])",
+                        cfg_where(c, key, where, sizeof where), key);
   }
   if (nm > 0) {
     sh->minus = hv_calloc((size_t)nm, sizeof *sh->minus, "shape");
@@ -128,8 +130,8 @@ static int contains_primitive(const struct shape *sh, const double x[3])
   double r[3] = {x[0] - sh->center[0], x[1] - sh->center[1], x[2] - sh->center[2]};
   switch (sh->kind) {
   case SHAPE_BOX:
-    return x[0] >= sh->min[0] && x[0] < sh->max[0] && x[1] >= sh->min[1] &&
-           x[1] < sh->max[1] && x[2] >= sh->min[2] && x[2] < sh->max[2];
+    return x[0] >= sh->min[0] && x[0] < sh->max[0] && x[1] >= sh->min[1] && x[1] < sh->max[1] &&
+           x[2] >= sh->min[2] && x[2] < sh->max[2];
   case SHAPE_SPHERE: return r[0] * r[0] + r[1] * r[1] + r[2] * r[2] < sh->radius * sh->radius;
   case SHAPE_CYLINDER: {
     double t;
@@ -190,7 +192,7 @@ double shape_volume(const struct shape *sh)
     int inside = in_box && sh->kind == SHAPE_BOX;
     if (in_box && sh->kind == SHAPE_CYLINDER && m->kind == SHAPE_CYLINDER &&
         fabs(sh->axis[0] * m->axis[0] + sh->axis[1] * m->axis[1] + sh->axis[2] * m->axis[2]) >
-            1 - 1e-12) {   /* parallel: inside when its centre's offset and extent fit */
+            1 - 1e-12) { /* parallel: inside when its centre's offset and extent fit */
       double tm;
       const double off = sqrt(fmax(axis_coords(sh, m->center, &tm), 0.0));
       const double tol = 1e-12 * (sh->radius + sh->length);

@@ -34,13 +34,12 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
       cfg_get_quantity(c, "sph.density_diffusion", UNIT_NONE, &zero, 0.0, 1.0,
                        &sp->density_diffusion, err) ||
       cfg_get_bool(c, "sph.skip_resting", &yes, &sp->skip_resting, err) ||
-      cfg_get_quantity(c, "sph.rest_tolerance", UNIT_NONE, &rest_tol, 0.0, 1e-6,
-                       &sp->rest_tol, err) ||
+      cfg_get_quantity(c, "sph.rest_tolerance", UNIT_NONE, &rest_tol, 0.0, 1e-6, &sp->rest_tol,
+                       err) ||
       cfg_get_choice(c, "sph.viscosity.switch", "none", switches, &sw, err) ||
       cfg_get_quantity(c, "sph.viscosity.alpha_min", UNIT_NONE, &zero, 0.0, 10.0, &sp->av_min,
                        err) ||
-      cfg_get_quantity(c, "sph.viscosity.decay", UNIT_NONE, &decay, 1e-3, 1.0, &sp->av_decay,
-                       err))
+      cfg_get_quantity(c, "sph.viscosity.decay", UNIT_NONE, &decay, 1e-3, 1.0, &sp->av_decay, err))
     return -1;
   sp->av_switch = sw;
   sp->kernel = (enum kernel_kind)k;
@@ -48,16 +47,19 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   sp->continuity_mass = form;
   char where[256];
   if (sp->av_switch && !(sp->alpha > 0.0))
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.switch: cullen-dehnen varies "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.viscosity.switch: cullen-dehnen varies "
                         "each particle's alpha up to sph.viscosity.alpha, which is 0 here",
                         cfg_where(c, "sph.viscosity.switch", where, sizeof where));
   if (sp->av_switch && sp->av_min > sp->alpha)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.alpha_min (%g) exceeds "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.viscosity.alpha_min (%g) exceeds "
                         "sph.viscosity.alpha (%g), the switch's largest alpha",
-                        cfg_where(c, "sph.viscosity.alpha_min", where, sizeof where),
-                        sp->av_min, sp->alpha);
+                        cfg_where(c, "sph.viscosity.alpha_min", where, sizeof where), sp->av_min,
+                        sp->alpha);
   if (sp->reconstruct_contact && !sp->reconstruct)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: sph.viscosity.reconstruct_contact: it extends "
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.viscosity.reconstruct_contact: it extends "
                         "the reconstruction to pairs of different bodies, and needs "
                         "sph.viscosity.reconstruct: true",
                         cfg_where(c, "sph.viscosity.reconstruct_contact", where, sizeof where));
@@ -82,15 +84,20 @@ static int read_time(struct time_params *tp, struct cfg *c, struct hv_error *err
   double cfl = 0.3, cfla = 0.25, zero = 0.0, dtmin = 1e-30, growth = 1.2;
   long maxs = 0;
   return cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &tp->end, err) ||
-         cfg_get_quantity(c, "time.cfl", UNIT_NONE, &cfl, 1e-3, 1.0, &tp->cfl, err) ||
-         cfg_get_quantity(c, "time.cfl_acceleration", UNIT_NONE, &cfla, 1e-3, 1.0,
-                          &tp->cfl_acc, err) ||
-         cfg_get_quantity(c, "time.dt_init", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_init, err) ||
-         cfg_get_quantity(c, "time.dt_max", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_max, err) ||
-         cfg_get_quantity(c, "time.dt_min", UNIT_TIME, &dtmin, 0.0, HUGE_VAL, &tp->dt_min, err) ||
-         cfg_get_quantity(c, "time.growth", UNIT_NONE, &growth, 1.0, 10.0, &tp->growth, err) ||
-         cfg_get_int(c, "time.max_steps", &maxs, 0, 1000000000L, &tp->max_steps, err)
-             ? -1 : 0;
+                 cfg_get_quantity(c, "time.cfl", UNIT_NONE, &cfl, 1e-3, 1.0, &tp->cfl, err) ||
+                 cfg_get_quantity(c, "time.cfl_acceleration", UNIT_NONE, &cfla, 1e-3, 1.0,
+                                  &tp->cfl_acc, err) ||
+                 cfg_get_quantity(c, "time.dt_init", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_init,
+                                  err) ||
+                 cfg_get_quantity(c, "time.dt_max", UNIT_TIME, &zero, 0.0, HUGE_VAL, &tp->dt_max,
+                                  err) ||
+                 cfg_get_quantity(c, "time.dt_min", UNIT_TIME, &dtmin, 0.0, HUGE_VAL, &tp->dt_min,
+                                  err) ||
+                 cfg_get_quantity(c, "time.growth", UNIT_NONE, &growth, 1.0, 10.0, &tp->growth,
+                                  err) ||
+                 cfg_get_int(c, "time.max_steps", &maxs, 0, 1000000000L, &tp->max_steps, err)
+             ? -1
+             : 0;
 }
 
 static int read_output(struct output_params *op, struct cfg *c, struct hv_error *err)
@@ -100,14 +107,15 @@ static int read_output(struct output_params *op, struct cfg *c, struct hv_error 
   long every = 100;
   double ten_min = 600.0;
   return cfg_get_quantity(c, "output.every", UNIT_TIME, &zero, 0.0, HUGE_VAL, &op->every, err) ||
-         cfg_get_bool(c, "output.checkpoint", &yes, &op->checkpoint, err) ||
-         cfg_get_quantity(c, "output.checkpoint_wall", UNIT_TIME, &ten_min, 0.0, HUGE_VAL,
-                          &op->checkpoint_wall, err) ||
-         cfg_get_bool(c, "output.vtu", &yes, &op->vtu, err) ||
-         cfg_get_bool(c, "output.csv", &no, &op->csv, err) ||
-         cfg_get_bool(c, "output.compress", &no, &op->compress, err) ||
-         cfg_get_int(c, "output.log_every", &every, 1, 1000000000L, &op->log_every, err)
-             ? -1 : 0;
+                 cfg_get_bool(c, "output.checkpoint", &yes, &op->checkpoint, err) ||
+                 cfg_get_quantity(c, "output.checkpoint_wall", UNIT_TIME, &ten_min, 0.0, HUGE_VAL,
+                                  &op->checkpoint_wall, err) ||
+                 cfg_get_bool(c, "output.vtu", &yes, &op->vtu, err) ||
+                 cfg_get_bool(c, "output.csv", &no, &op->csv, err) ||
+                 cfg_get_bool(c, "output.compress", &no, &op->compress, err) ||
+                 cfg_get_int(c, "output.log_every", &every, 1, 1000000000L, &op->log_every, err)
+             ? -1
+             : 0;
 }
 
 static int read_materials(struct sim *s, struct cfg *c, struct hv_error *err)
@@ -115,11 +123,13 @@ static int read_materials(struct sim *s, struct cfg *c, struct hv_error *err)
   const char *const *names;
   char where[256], path[256];
   s->nmat = 0;
-  if (!cfg_has(c, "materials")) return 0;   /* bodies may name library materials only */
+  if (!cfg_has(c, "materials")) return 0; /* bodies may name library materials only */
   int n = cfg_keys(c, "materials", &names);
   if (n < 0)
-    return hv_error_set(err, HV_EXIT_INPUT, "%s: 'materials' must map material names to "
-                        "their parameters", cfg_where(c, "materials", where, sizeof where));
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: 'materials' must map material names to "
+                        "their parameters",
+                        cfg_where(c, "materials", where, sizeof where));
   if (n > HV_MAX_MATERIALS)
     return hv_error_set(err, HV_EXIT_INPUT, "%s: at most %d materials",
                         cfg_where(c, "materials", where, sizeof where), HV_MAX_MATERIALS);
@@ -150,16 +160,20 @@ static int check_name(struct cfg *c, const char *name, struct hv_error *err)
   if (n > 0 && n <= CASE_NAME_MAX && bad == n) return 0;
   char where[256], what[64];
   const unsigned char ch = bad < n ? (unsigned char)name[bad] : 0;
-  if (n == 0) snprintf(what, sizeof what, "it is empty");
-  else if (n > CASE_NAME_MAX) snprintf(what, sizeof what, "%zu characters", n);
+  if (n == 0)
+    snprintf(what, sizeof what, "it is empty");
+  else if (n > CASE_NAME_MAX)
+    snprintf(what, sizeof what, "%zu characters", n);
   else if (ch >= ' ' && ch < 0x7f)
     snprintf(what, sizeof what, "'%c' at character %zu", ch, bad + 1);
-  else snprintf(what, sizeof what, "byte 0x%02x at character %zu", ch, bad + 1);
-  char shown[64];   /* control characters as '?': the message stays one line */
+  else
+    snprintf(what, sizeof what, "byte 0x%02x at character %zu", ch, bad + 1);
+  char shown[64]; /* control characters as '?': the message stays one line */
   snprintf(shown, sizeof shown, "%.60s%s", name, n > 60 ? "..." : "");
   for (char *q = shown; *q; q++)
     if ((unsigned char)*q < ' ' || *q == 0x7f) *q = '?';
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: name: '%s' is not a plain file name (%s): "
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: name: '%s' is not a plain file name (%s): "
                       "the name is the output folder's (out/<name>); write it with ASCII "
                       "letters, digits and . _ - +, starting with a letter, digit or _, at "
                       "most %d characters (e.g. \"whipple-shield_2\")",

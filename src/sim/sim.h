@@ -10,22 +10,22 @@
 #include "sph/sph.h"
 
 struct time_params {
-  double end;          /* [s] end time */
-  double cfl;          /* [-] Courant number on h / vsig */
-  double cfl_acc;      /* [-] factor on sqrt(h/|a|) */
-  double dt_init;      /* [s] first step (0: from the CFL condition) */
-  double dt_max;       /* [s] largest step (0: no limit) */
-  double dt_min;       /* [s] a step below this ends the run as failed */
-  double growth;       /* [-] largest ratio between consecutive steps */
-  long max_steps;      /* 0: none */
+  double end;     /* [s] end time */
+  double cfl;     /* [-] Courant number on h / vsig */
+  double cfl_acc; /* [-] factor on sqrt(h/|a|) */
+  double dt_init; /* [s] first step (0: from the CFL condition) */
+  double dt_max;  /* [s] largest step (0: no limit) */
+  double dt_min;  /* [s] a step below this ends the run as failed */
+  double growth;  /* [-] largest ratio between consecutive steps */
+  long max_steps; /* 0: none */
 };
 
 struct output_params {
-  double every;        /* [s] interval between snapshots (0: only start and end) */
-  int vtu, csv;        /* which particle files */
-  int compress;        /* zlib-compressed VTU arrays */
-  long log_every;      /* steps between log lines when not on a terminal */
-  int checkpoint;      /* write OUTDIR/checkpoint.hvc (restart) */
+  double every;           /* [s] interval between snapshots (0: only start and end) */
+  int vtu, csv;           /* which particle files */
+  int compress;           /* zlib-compressed VTU arrays */
+  long log_every;         /* steps between log lines when not on a terminal */
+  int checkpoint;         /* write OUTDIR/checkpoint.hvc (restart) */
   double checkpoint_wall; /* [s] of wall-clock time between checkpoints besides those at
                              output times (0: only at output times and at the end) */
 };
@@ -34,9 +34,9 @@ struct body_info {
   char name[64];
   int mat;
   size_t count;
-  double spacing;        /* [m] lattice spacing */
-  double lo[3], hi[3];   /* [m] initial extent of the material (particle centres ± Δ/2) */
-  double rho;            /* [kg/m3] initial density */
+  double spacing;      /* [m] lattice spacing */
+  double lo[3], hi[3]; /* [m] initial extent of the material (particle centres ± Δ/2) */
+  double rho;          /* [kg/m3] initial density */
 };
 
 struct sim {
@@ -56,12 +56,12 @@ struct sim {
   struct boundary bnd;
   struct nbr_grid grid;
   struct sph_cache cache;
-  int reorder_every;   /* steps between reorderings of the particles by cell */
-  double t;            /* [s] */
-  double dt;           /* [s] next step (may be shortened to hit an output time) */
-  double dt_prop;      /* [s] the step the stability limits proposed last */
+  int reorder_every; /* steps between reorderings of the particles by cell */
+  double t;          /* [s] */
+  double dt;         /* [s] next step (may be shortened to hit an output time) */
+  double dt_prop;    /* [s] the step the stability limits proposed last */
   enum dt_limit { DT_CFL = 0, DT_ACCELERATION, DT_GROWTH, DT_MAX, DT_INIT } dt_limit;
-                       /* which limit set dt_prop */
+  /* which limit set dt_prop */
   int64_t dt_limit_id; /* id of the particle whose CFL or acceleration limit it was */
   int dt_limit_body;   /* and its body */
   long step;

@@ -63,15 +63,27 @@ static inline void sph_correct_gradient(double L[9], const double A[9])
 
 /* Accumulates one neighbour into the switch's sums: w = Vⱼ f (∇ᵢWᵢⱼ = f (xᵢ − xⱼ)),
  * d = xᵢ − xⱼ, u = vⱼ − vᵢ. */
-static inline void avsw_add(double L[9], double A[9], double w, double dx, double dy,
-                            double dz, double ux, double uy, double uz)
+static inline void avsw_add(double L[9], double A[9], double w, double dx, double dy, double dz,
+                            double ux, double uy, double uz)
 {
-  L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
-  L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
-  L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
-  A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
-  A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
-  A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
+  L[0] += w * ux * dx;
+  L[1] += w * ux * dy;
+  L[2] += w * ux * dz;
+  L[3] += w * uy * dx;
+  L[4] += w * uy * dy;
+  L[5] += w * uy * dz;
+  L[6] += w * uz * dx;
+  L[7] += w * uz * dy;
+  L[8] += w * uz * dz;
+  A[0] -= w * dx * dx;
+  A[1] -= w * dx * dy;
+  A[2] -= w * dx * dz;
+  A[3] -= w * dy * dx;
+  A[4] -= w * dy * dy;
+  A[5] -= w * dy * dz;
+  A[6] -= w * dz * dx;
+  A[7] -= w * dz * dy;
+  A[8] -= w * dz * dz;
 }
 
 /* The limiter ξ of a velocity gradient G (row-major, G[3a+b] = ∂v_a/∂x_b). */
@@ -88,8 +100,8 @@ static inline double avsw_xi(const double G[9])
 /* The new αᵢ from the raw sums L, A of particle i (A is consumed), its last αᵢ and
  * divergence, its h and sound speed c, and the step dt; writes the new divergence. */
 static inline double avsw_update(const struct sph_params *sp, double L[9], const double A[9],
-                                 double alpha_old, double divv_old, double h, double c,
-                                 double dt, double *divv_new)
+                                 double alpha_old, double divv_old, double h, double c, double dt,
+                                 double *divv_new)
 {
   sph_correct_gradient(L, A);
   const double d = L[0] + L[4] + L[8];

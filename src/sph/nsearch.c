@@ -11,7 +11,6 @@
 #include <immintrin.h>
 #endif
 
-
 static void nsearch_free_arrays(struct nsearch *cd)
 {
   free(cd->x);
@@ -79,7 +78,7 @@ static void nsearch_gather_slots(struct nsearch *cd, const struct nbr_grid *g, s
 }
 
 void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c,
-                        const struct particles *p)
+                    const struct particles *p)
 {
   const int32_t *nb = g->nbr_list + g->nbr_start[c];
   const uint32_t nnb = g->nbr_start[c + 1] - g->nbr_start[c];
@@ -118,8 +117,7 @@ void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c,
 /* Selects the candidates within reach of particle i (r < h_i + h_j, j != i): whole
  * cells out of reach are skipped, then a vectorisable distance test and a
  * compaction. Order: cells, then particles, as gathered. */
-size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, double zi,
-                          double hi)
+size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, double zi, double hi)
 {
   const double *restrict x = cd->x, *restrict y = cd->y, *restrict z = cd->z, *restrict h = cd->h;
   const uint32_t *restrict jj = cd->j;
@@ -136,10 +134,19 @@ size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, doub
   for (size_t c = 0; c < cd->ncell; c++) {
     const double *lo = cd->lo + 3 * c, cell = cd->cellw, reach = hi + cd->hc[c];
     double d2 = 0.0, t;
-    t = lo[0] - xi; if (t > 0) d2 += t * t; t = xi - lo[0] - cell; if (t > 0) d2 += t * t;
-    t = lo[1] - yi; if (t > 0) d2 += t * t; t = yi - lo[1] - cell; if (t > 0) d2 += t * t;
-    t = lo[2] - zi; if (t > 0) d2 += t * t; t = zi - lo[2] - cell; if (t > 0) d2 += t * t;
-    if (d2 >= reach * reach * (1.0 + 1e-12)) continue;  /* margin for rounding of the corner */
+    t = lo[0] - xi;
+    if (t > 0) d2 += t * t;
+    t = xi - lo[0] - cell;
+    if (t > 0) d2 += t * t;
+    t = lo[1] - yi;
+    if (t > 0) d2 += t * t;
+    t = yi - lo[1] - cell;
+    if (t > 0) d2 += t * t;
+    t = lo[2] - zi;
+    if (t > 0) d2 += t * t;
+    t = zi - lo[2] - cell;
+    if (t > 0) d2 += t * t;
+    if (d2 >= reach * reach * (1.0 + 1e-12)) continue; /* margin for rounding of the corner */
     const size_t q0 = cd->off[c], q1 = cd->off[c + 1];
 #if defined(__AVX512F__)
     /* 16 candidates at a time: the same distance test in two 8-lane halves (the same
@@ -156,8 +163,8 @@ size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, doub
         const __m512d dy = _mm512_sub_pd(vy, _mm512_maskz_loadu_pd(lm, y + b));
         const __m512d dz = _mm512_sub_pd(vz, _mm512_maskz_loadu_pd(lm, z + b));
         const __m512d sh = _mm512_add_pd(vh, _mm512_maskz_loadu_pd(lm, h + b));
-        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)),
-                                          _mm512_mul_pd(dz, dz));
+        const __m512d r2 = _mm512_add_pd(
+            _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
         const __m512d dd = _mm512_sub_pd(r2, _mm512_mul_pd(sh, sh));
         half[u] = _mm512_mask_cmp_pd_mask(lm, dd, zero, _CMP_LT_OQ);
       }
@@ -221,7 +228,8 @@ void sph_cache_free(struct sph_cache *c)
 size_t sph_cache_bytes(const struct sph_cache *c)
 {
   return c->cap * sizeof *c->mask + c->ccap * (sizeof *c->cell_off + sizeof *c->cell_words) +
-         c->gcap * 9 * sizeof *c->gradv + c->partner_cap * (SPH_PARTNER_LEN * sizeof *c->partner + sizeof *c->partner_tag) +
+         c->gcap * 9 * sizeof *c->gradv +
+         c->partner_cap * (SPH_PARTNER_LEN * sizeof *c->partner + sizeof *c->partner_tag) +
          c->rcap * 2;
 }
 
@@ -231,8 +239,8 @@ void cache_layout(struct sph_cache *cache, const struct nbr_grid *g)
   if (g->ncells + 1 > cache->ccap) {
     cache->ccap = g->ncells + g->ncells / 4 + 64;
     cache->cell_off = hv_realloc(cache->cell_off, cache->ccap * sizeof *cache->cell_off, "cache");
-    cache->cell_words = hv_realloc(cache->cell_words, cache->ccap * sizeof *cache->cell_words,
-                                   "cache");
+    cache->cell_words =
+        hv_realloc(cache->cell_words, cache->ccap * sizeof *cache->cell_words, "cache");
   }
 #pragma omp parallel for schedule(static)
   for (size_t c = 0; c < g->ncells; c++) {
@@ -254,8 +262,8 @@ void cache_layout(struct sph_cache *cache, const struct nbr_grid *g)
   }
 }
 
-void cache_store(const struct sph_cache *cache, size_t c, uint32_t slot,
-                        const uint32_t *sel, size_t nsel)
+void cache_store(const struct sph_cache *cache, size_t c, uint32_t slot, const uint32_t *sel,
+                 size_t nsel)
 {
   const uint32_t w = cache->cell_words[c];
   uint64_t *row = cache->mask + cache->cell_off[c] + (size_t)slot * w;
@@ -279,13 +287,12 @@ size_t cache_load(const struct sph_cache *cache, size_t c, uint32_t slot, uint32
   return k;
 }
 
-
 size_t nsearch_neighbours(struct nsearch *cd, int *gathered, const struct nbr_grid *g, size_t c,
-                       uint32_t ii, const struct particles *p, const struct sph_cache *load,
-                       const struct sph_cache *store)
+                          uint32_t ii, const struct particles *p, const struct sph_cache *load,
+                          const struct sph_cache *store)
 {
   const uint32_t slot = ii - g->cell_start[c], i = g->order[ii];
-  if (load && load->valid) {   /* the stored selection needs only the candidates' slots */
+  if (load && load->valid) { /* the stored selection needs only the candidates' slots */
     if (!*gathered) {
       nsearch_gather_slots(cd, g, c);
       *gathered = 1;

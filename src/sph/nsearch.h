@@ -18,21 +18,22 @@
 struct nsearch {
   size_t cap, n;
   double *x, *y, *z, *h;
-  uint32_t *j;        /* particle slot of each candidate */
-  uint32_t *sel;      /* candidates selected for the current particle */
-  double *d;          /* r² − (h_i + h_j)² of the current particle (< 0: within reach);
+  uint32_t *j;   /* particle slot of each candidate */
+  uint32_t *sel; /* candidates selected for the current particle */
+  double *d;     /* r² − (h_i + h_j)² of the current particle (< 0: within reach);
                          the portable selection loop only (NULL with AVX-512) */
   /* the neighbour cells: candidate ranges, box corners [m] and largest h [m] */
   size_t ncell, ccap;
-  double cellw;       /* [m] cell edge */
-  uint32_t *off;      /* [ncell+1] */
-  double *lo;         /* [3*ncell] */
-  double *hc;         /* [ncell] */
+  double cellw;  /* [m] cell edge */
+  uint32_t *off; /* [ncell+1] */
+  double *lo;    /* [3*ncell] */
+  double *hc;    /* [ncell] */
 };
 
 void nsearch_free(struct nsearch *cd);
 /* Copies the candidates of cell c. */
-void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c, const struct particles *p);
+void nsearch_gather(struct nsearch *cd, const struct nbr_grid *g, size_t c,
+                    const struct particles *p);
 /* Selects into cd->sel the candidates within reach of particle i; returns the count. */
 size_t nsearch_select(struct nsearch *cd, uint32_t i, double xi, double yi, double zi, double hi);
 /* Whether nsearch_select would select anything for the real at slot i of cell c: the same
@@ -43,8 +44,8 @@ int nsearch_any(const struct nbr_grid *g, size_t c, const struct particles *p, u
  * when it holds this grid's neighbours, else selected (and kept in `store` if given).
  * Returns the count. */
 size_t nsearch_neighbours(struct nsearch *cd, int *gathered, const struct nbr_grid *g, size_t c,
-                       uint32_t ii, const struct particles *p, const struct sph_cache *load,
-                       const struct sph_cache *store);
+                          uint32_t ii, const struct particles *p, const struct sph_cache *load,
+                          const struct sph_cache *store);
 
 /* Sizes the cache rows for grid g. */
 void cache_layout(struct sph_cache *cache, const struct nbr_grid *g);

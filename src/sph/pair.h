@@ -62,8 +62,7 @@ static inline double pair_viscosity(const struct pair_visc *pv, size_t i, size_t
   double mu = hij * vdx / (q->r2 + pv->eps * hij * hij);
   if (-mu > *mumax) *mumax = -mu;
   if (Gi)
-    mu = hij * sph_recon_approach(vdx, Gi, Gj, q->dx, q->dy, q->dz) /
-         (q->r2 + pv->eps * hij * hij);
+    mu = hij * sph_recon_approach(vdx, Gi, Gj, q->dx, q->dy, q->dz) / (q->r2 + pv->eps * hij * hij);
   if (pv->av) {
     const double aij = 0.5 * (pv->av[i] + pv->av[j]);
     if (aij > *amax) *amax = aij;

@@ -36,8 +36,7 @@ void partner_reserve(struct sph_cache *cache, size_t nt, double **rec, int32_t *
 
 /* Packs every slot's partner record and its tag, piece × 2 + 1 when R ≠ 0. */
 void partner_pack(const struct particles *p, const struct sph_params *sp,
-                  const struct material *mat, double *restrict rec,
-                  int32_t *restrict tag)
+                  const struct material *mat, double *restrict rec, int32_t *restrict tag)
 {
   const size_t nt = p->n + p->n_ghost;
 #pragma omp parallel for schedule(static)
@@ -55,7 +54,7 @@ void partner_pack(const struct particles *p, const struct sph_params *sp,
     double Sj[6], pj = p->p[j];
     for (int t = 0; t < 6; t++) Sj[t] = p->S[t][j];
     if (fracture_no_tension(&mat[p->mat[j]].frac, p->fstate[j]))
-      pj = fracture_effective(p->p[j], Sj, Sj);   /* split without tension: σ' (fracture.h) */
+      pj = fracture_effective(p->p[j], Sj, Sj); /* split without tension: σ' (fracture.h) */
     w[PR_P] = pj * rj2;
     for (int t = 0; t < 6; t++) w[PR_S + t] = Sj[t] * rj2;
     w[PR_RHO] = p->rho[j];

@@ -13,17 +13,19 @@
  * operations, so the same bits) and ρ; a third line with the artificial stress R, read
  * only when a pair has one (the tag's bit 0). Kept in the cache between steps. */
 enum {
-  PR_X = 0, PR_H = 3, PR_V = 4, PR_M = 7, PR_P = 8, PR_S = 9, PR_RHO = 15,
-  PR_AS = 16,   /* the artificial stress R, 6 doubles and 2 of padding */
+  PR_X = 0,
+  PR_H = 3,
+  PR_V = 4,
+  PR_M = 7,
+  PR_P = 8,
+  PR_S = 9,
+  PR_RHO = 15,
+  PR_AS = 16, /* the artificial stress R, 6 doubles and 2 of padding */
   PR_LEN = SPH_PARTNER_LEN
 };
 
-
 /* The piece of body b (bodies[i].part_of; every body its own without a table). */
-static inline int32_t sph_piece_of(const int32_t *piece, int32_t b)
-{
-  return piece ? piece[b] : b;
-}
+static inline int32_t sph_piece_of(const int32_t *piece, int32_t b) { return piece ? piece[b] : b; }
 
 /* The partner records and tags for nt slots: the cache's, grown when short, or (a
  * call without a cache) allocated for the caller to free. */

@@ -14,8 +14,8 @@
 #ifndef HV_SPH_RECON_H
 #define HV_SPH_RECON_H
 
-static inline double sph_recon_approach(double vdx, const double *Gi, const double *Gj,
-                                        double dx, double dy, double dz)
+static inline double sph_recon_approach(double vdx, const double *Gi, const double *Gj, double dx,
+                                        double dy, double dz)
 {
   const double r[3] = {dx, dy, dz};
   double gi = 0.0, gj = 0.0;

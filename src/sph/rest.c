@@ -38,15 +38,13 @@ static void rest_mark(const struct nbr_grid *g, struct sph_cache *cache, int bit
 #pragma omp parallel for schedule(static)
   for (size_t c = 0; c < g->ncells; c++) {
     int r = bit == 0 || (rest[c] & 1);
-    for (uint32_t k = g->nbr_start[c]; r && k < g->nbr_start[c + 1]; k++)
-      r = quiet[g->nbr_list[k]];
+    for (uint32_t k = g->nbr_start[c]; r && k < g->nbr_start[c + 1]; k++) r = quiet[g->nbr_list[k]];
     rest[c] = (uint8_t)(bit == 0 ? r : (rest[c] & 1) | (r << 1));
   }
 }
 
 /* The first pass's quiet cells: v = 0 and S = 0 at the step's start. */
-void rest_mark_first(const struct particles *p, const struct nbr_grid *g,
-                     struct sph_cache *cache)
+void rest_mark_first(const struct particles *p, const struct nbr_grid *g, struct sph_cache *cache)
 {
   const double *vx = p->v[0], *vy = p->v[1], *vz = p->v[2];
   rest_alloc(cache, g->ncells);
@@ -64,8 +62,7 @@ void rest_mark_first(const struct particles *p, const struct nbr_grid *g,
 }
 
 /* What the first pass would write for the reals of a resting cell c. */
-void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c,
-                      double *gradv)
+void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c, double *gradv)
 {
   for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
     const uint32_t i = g->order[ii];
@@ -80,8 +77,8 @@ void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c,
 
 /* The second pass's quiet cells, from the mid-step state in the partner records
  * (v, p/ρ², S/ρ², and R through the tag) and p itself. */
-void rest_mark_second(const struct particles *p, const struct nbr_grid *g,
-                      struct sph_cache *cache, const double *rec, const int32_t *tag)
+void rest_mark_second(const struct particles *p, const struct nbr_grid *g, struct sph_cache *cache,
+                      const double *rec, const int32_t *tag)
 {
 #pragma omp parallel for schedule(static)
   for (size_t c = 0; c < g->ncells; c++) {
@@ -108,8 +105,7 @@ long rest_write_second(struct particles *p, const struct nbr_grid *g, size_t c,
     const uint32_t i = g->order[ii];
     if (i >= p->n) continue;
     p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
-    p->vsig[i] = sph_signal_speed(nsearch_any(g, c, p, i), p->cs[i], sp->alpha, sp->beta, 0.0,
-                                  0.0);
+    p->vsig[i] = sph_signal_speed(nsearch_any(g, c, p, i), p->cs[i], sp->alpha, sp->beta, 0.0, 0.0);
     rested++;
   }
   return rested;

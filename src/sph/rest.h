@@ -7,14 +7,13 @@
 #include "sph/sph.h"
 
 /* The first pass's resting cells: marks cache->rest bit 0. */
-void rest_mark_first(const struct particles *p, const struct nbr_grid *g,
-                     struct sph_cache *cache);
+void rest_mark_first(const struct particles *p, const struct nbr_grid *g, struct sph_cache *cache);
 /* Writes what the first pass would write for the reals of a resting cell c. */
 void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c, double *gradv);
 /* The second pass's resting cells, from the partner records (partner.h) and p: marks
  * cache->rest bit 1. */
-void rest_mark_second(const struct particles *p, const struct nbr_grid *g,
-                      struct sph_cache *cache, const double *rec, const int32_t *tag);
+void rest_mark_second(const struct particles *p, const struct nbr_grid *g, struct sph_cache *cache,
+                      const double *rec, const int32_t *tag);
 /* Writes what the second pass would write for the reals of a resting cell c; returns
  * their number. */
 long rest_write_second(struct particles *p, const struct nbr_grid *g, size_t c,

@@ -15,9 +15,8 @@
 #include "sph/nsearch.h"
 #include "sph/pair.h"
 
-void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache,
-                      const struct material *mat, double dt)
+void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                      struct sph_cache *cache, const struct material *mat, double dt)
 {
   if (p->solid) {
     sph_density_rate_solid(p, g, sp, cache, mat, dt);
@@ -31,13 +30,13 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
   double *drho = p->drho, *vol = p->vol;
   const enum kernel_kind kk = sp->kernel;
   const int summation = sp->summation, massform = sp->continuity_mass && !summation;
-  if (!massform) {   /* the volume form's weights (the mass form weighs by mⱼ) */
+  if (!massform) { /* the volume form's weights (the mass form weighs by mⱼ) */
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < nall; i++) vol[i] = p->m[i] / rho[i];
   }
   const double *m = p->m;
-  double *rhow = p->rho;   /* summation: written for i only; neighbours read vol */
-  const int sw = p->av;   /* the viscosity switch (avswitch.h) */
+  double *rhow = p->rho; /* summation: written for i only; neighbours read vol */
+  const int sw = p->av;  /* the viscosity switch (avswitch.h) */
 
 #pragma omp parallel
   {
@@ -54,18 +53,19 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g,
         double sum = 0.0, rsum = 0.0, Lsw[9] = {0}, Asw[9] = {0};
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t q = cd.sel[k], j = cd.j[q];
-          const struct pair pq = pair_geometry(kk, xi, yi, zi, hi, cd.x[q], cd.y[q], cd.z[q], cd.h[q]);
+          const struct pair pq =
+              pair_geometry(kk, xi, yi, zi, hi, cd.x[q], cd.y[q], cd.z[q], cd.h[q]);
           const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
           const double vdx = (vxi - vx[j]) * dx + (vyi - vy[j]) * dy + (vzi - vz[j]) * dz;
           sum += (massform ? m[j] : vol[j]) * vdx * f;
           if (summation) rsum += m[j] * kernel_w(kk, pq.r, pq.hij);
-          if (sw)   /* with Vⱼ = mⱼ/ρⱼ (vol: before a summation writes ρ) */
-            avsw_add(Lsw, Asw, (massform ? m[j] / rho[j] : vol[j]) * f, dx, dy, dz,
-                     vx[j] - vxi, vy[j] - vyi, vz[j] - vzi);
+          if (sw) /* with Vⱼ = mⱼ/ρⱼ (vol: before a summation writes ρ) */
+            avsw_add(Lsw, Asw, (massform ? m[j] / rho[j] : vol[j]) * f, dx, dy, dz, vx[j] - vxi,
+                     vy[j] - vyi, vz[j] - vzi);
         }
         if (sw)
-          p->alpha[i] = avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt,
-                                    &p->divv[i]);
+          p->alpha[i] =
+              avsw_update(sp, Lsw, Asw, p->alpha[i], p->divv[i], hi, p->cs[i], dt, &p->divv[i]);
         if (summation) {
           const double rs = rsum + m[i] * kernel_w(kk, 0.0, hi);
           drho[i] = rs * sum;
@@ -98,7 +98,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
   double *ax = p->a[0], *ay = p->a[1], *az = p->a[2], *de = p->de, *vsig = p->vsig;
   const enum kernel_kind kk = sp->kernel;
   const double alpha = sp->alpha, beta = sp->beta;
-  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
+  const double *av = p->av ? p->alpha : NULL; /* the switch: αᵢ of every slot */
   const struct pair_visc pv = pair_visc_params(sp, av);
 
 #pragma omp parallel
@@ -115,7 +115,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
         const double Pi = pr2[i], ci = cs[i], rhoi = rho[i];
         double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
-        double amax = av ? av[i] : alpha;   /* the largest pair α (time step) */
+        double amax = av ? av[i] : alpha; /* the largest pair α (time step) */
         for (size_t k = 0; k < nsel; k++) {
           const uint32_t j = cd.j[cd.sel[k]];
           const struct pair pq = pair_geometry(kk, xi, yi, zi, hi, x[j], y[j], z[j], h[j]);
@@ -136,7 +136,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
         /* with the switch the α c part takes the largest pair α, and the β μ part stays
            whole: it follows the approach speed, which the step must resolve whatever α
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
-        vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax,   /* amax = α without it */
+        vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax, /* amax = α without it */
                                    sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
       }
     }
@@ -151,7 +151,8 @@ int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, si
       if (g->order[ii] != i) continue;
       struct nsearch cd = {0};
       nsearch_gather(&cd, g, c, p);
-      int count = (int)nsearch_select(&cd, (uint32_t)i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
+      int count =
+          (int)nsearch_select(&cd, (uint32_t)i, p->x[0][i], p->x[1][i], p->x[2][i], p->h[i]);
       nsearch_free(&cd);
       return count;
     }

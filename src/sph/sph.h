@@ -43,25 +43,25 @@ struct sph_params {
   int reconstruct;     /* solids: the viscosity of a pair of one body, both with
                           strength, sees the velocity difference reconstructed linearly
                           to the pair's midpoint (slope-limited); see sph_forces_solid */
-  int reconstruct_contact; /* with reconstruct: pairs of different pieces (contact)
+  int reconstruct_contact;  /* with reconstruct: pairs of different pieces (contact)
                           too, each particle reconstructed by its own piece's gradient */
   double density_diffusion; /* solids: δ of the continuity rate's density diffusion
                           (Molteni & Colagrossi 2009), δ cᵢ Σⱼ hᵢⱼ Vⱼ ψᵢⱼ·∇ᵢWᵢⱼ,
                           ψᵢⱼ = 2(ρⱼ − ρᵢ)(xⱼ − xᵢ)/rᵢⱼ², over the pairs of one piece
                           and one condensed material, both at ρ ≥ ρ₀/2; 0: off */
-  const int32_t *piece; /* solids: piece[b] is the body that body b is part of
+  const int32_t *piece;     /* solids: piece[b] is the body that body b is part of
                           (bodies[i].part_of); pairs of one piece interact as within
                           one body (stress, tension, velocity gradient), pairs of
                           different pieces as contact. NULL: every body its own piece */
-  int summation;       /* gas-only cases: density by summation at mid-step, ρᵢ =
+  int summation;            /* gas-only cases: density by summation at mid-step, ρᵢ =
                           Σⱼ mⱼ W(rᵢⱼ, hᵢⱼ) (self included), instead of integrating
                           the continuity equation; see sph_density_rate */
-  int skip_resting;    /* solids: a cell whose neighbour cells hold only particles at
+  int skip_resting;         /* solids: a cell whose neighbour cells hold only particles at
                           rest and free of stress (v = 0, p = 0, S = 0, R = 0, exactly)
                           is not computed: its rates are exactly zero, so the results
                           are the same bits (rest.c); not with the switch, whose
                           αᵢ decays at rest */
-  double rest_tol;     /* solids: a particle of a condensed material (ρ₀, K₀ > 0)
+  double rest_tol;          /* solids: a particle of a condensed material (ρ₀, K₀ > 0)
                           whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
                           their scales (c = √(K₀/ρ₀), c², ρ₀, K₀) at the end of a step
                           is set exactly at rest (step.c, clamp_to_rest); 0: never */
@@ -70,34 +70,34 @@ struct sph_params {
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
  * bit per candidate (a particle of a neighbour cell) for every particle — about 50
  * bytes per particle instead of 4 bytes per neighbour. */
-enum { SPH_PARTNER_LEN = 24 };   /* doubles in a partner record of the solid force pass */
+enum { SPH_PARTNER_LEN = 24 }; /* doubles in a partner record of the solid force pass */
 
 struct sph_cache {
-  uint64_t *mask;        /* rows of bits */
-  size_t cap;            /* words allocated */
-  size_t *cell_off;      /* [ncells+1] first word of each cell's rows */
-  uint32_t *cell_words;  /* [ncells] words per row in each cell */
+  uint64_t *mask;       /* rows of bits */
+  size_t cap;           /* words allocated */
+  size_t *cell_off;     /* [ncells+1] first word of each cell's rows */
+  uint32_t *cell_words; /* [ncells] words per row in each cell */
   size_t ccap;
-  int valid;             /* filled for the current grid */
+  int valid; /* filled for the current grid */
   /* sph.viscosity.reconstruct: velocity gradient Gᵢ[a][b] = ∂v_a/∂x_b of every slot
      (reals from the first pass, 0 without strength; ghosts from
      boundary_refresh_gradv), 9 per slot, row-major */
   double *gradv;
-  size_t gcap;           /* slots allocated */
-  int gradv_valid;       /* filled in this step's first pass, ghosts included */
+  size_t gcap;     /* slots allocated */
+  int gradv_valid; /* filled in this step's first pass, ghosts included */
   /* the solid force pass's partner records (sph_forces_solid), kept between steps:
      allocating and freeing them every step made glibc move its mmap threshold up and
      the heap grow by their size at every step (hvsph bench --solid with the
      reconstruction: peak RSS 2 705 bytes per particle after 10 steps, 988 with a fixed
      threshold) */
-  double *partner;       /* SPH_PARTNER_LEN doubles per slot (partner.h, PR_*) */
-  int32_t *partner_tag;  /* per slot: piece × 2, + 1 when its artificial stress R ≠ 0 */
-  size_t partner_cap;    /* slots allocated */
+  double *partner;      /* SPH_PARTNER_LEN doubles per slot (partner.h, PR_*) */
+  int32_t *partner_tag; /* per slot: piece × 2, + 1 when its artificial stress R ≠ 0 */
+  size_t partner_cap;   /* slots allocated */
   /* sph.skip_resting: per cell, whether it holds only particles at rest (quiet) and
      whether the first pass skipped it (rest: every neighbour cell quiet) */
   uint8_t *quiet, *rest;
-  size_t rcap;           /* cells allocated */
-  long rested;           /* reals the last second pass skipped */
+  size_t rcap; /* cells allocated */
+  long rested; /* reals the last second pass skipped */
 };
 
 /* The signal speed of a real after the force pass: cᵢ + 1.2 (α cᵢ + β μ_max), with α
@@ -123,9 +123,8 @@ size_t sph_cache_bytes(const struct sph_cache *c);
  * particle and from it (strength.h) the mid-step deviatoric stress S (written to S),
  * the end-of-step stress S1, the plastic strain, and the deviatoric heating rate
  * S:ε̇/ρ (written to de; 0 for the others). */
-void sph_density_rate(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache,
-                      const struct material *mat, double dt);
+void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                      struct sph_cache *cache, const struct material *mat, double dt);
 /* Second pass: a, de (added to what the first pass wrote) and the signal speed
  * vsig for the reals, from x, v, m, rho, p, cs, h (and S, R, body with solids);
  * uses the cache when it is valid for this grid (else searches). */
@@ -139,9 +138,8 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, struct sph_cache *cache,
                             const struct material *mat, double dt);
-void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache,
-                      const struct material *mat);
+void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                      struct sph_cache *cache, const struct material *mat);
 /* Neighbour count of particle i (diagnostics, tests). */
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
 

@@ -56,10 +56,9 @@ static void update_stress(struct particles *p, size_t i, const struct material *
   double S0[6], dS[6], Sm[6], S1[6];
   for (int k = 0; k < 6; k++) S0[k] = p->S[k][i];
   const double G = m->str.G;
-  const double Y = fracture_yield(&m->frac, p->fstate[i],
-                                  strength_yield(&m->str, p->eps_p[i],
-                                                 strength_equivalent_rate(L), p->e[i]),
-                                  p->p[i]);
+  const double Y = fracture_yield(
+      &m->frac, p->fstate[i],
+      strength_yield(&m->str, p->eps_p[i], strength_equivalent_rate(L), p->e[i]), p->p[i]);
   strength_rate(G, S0, L, dS);
   for (int k = 0; k < 6; k++) {
     Sm[k] = S0[k] + 0.5 * dt * dS[k];
@@ -74,7 +73,8 @@ static void update_stress(struct particles *p, size_t i, const struct material *
      density and energy, as step.c finds it after this pass — the same operations, the
      same bits), so the heating takes S':ε̇ (and the pressure force's pdV work p').
      Sm itself is kept. (If the EOS fails here, update_eos reports it.) */
-  if (p->cracks && fracture_opening(&m->frac, p->fstate[i])) {   /* the crack turns with the material */
+  if (p->cracks &&
+      fracture_opening(&m->frac, p->fstate[i])) { /* the crack turns with the material */
     double n[3] = {p->crack[0][i], p->crack[1][i], p->crack[2][i]};
     fracture_crack_rotate(n, L, dt);
     for (int k = 0; k < 3; k++) p->crack[k][i] = n[k];
@@ -105,7 +105,7 @@ struct density_pass {
   struct particles *p;
   const struct sph_params *sp;
   const struct material *mat;
-  double *gradv;   /* sph.viscosity.reconstruct: L of every real (else NULL) */
+  double *gradv; /* sph.viscosity.reconstruct: L of every real (else NULL) */
   double dt;
 };
 
@@ -114,11 +114,11 @@ struct density_i {
   double x, y, z, h, vx, vy, vz;
   const struct material *m;
   int32_t piece;
-  int cond;     /* a condensed material (any EOS but the ideal gas) */
-  int strong;   /* carries a deviatoric stress: sums L (and A with corr) */
-  int corr;     /* sums the correction matrix A */
-  int sw;       /* the viscosity switch's gradient, every neighbour */
-  int dd;       /* density diffusion, with neighbours at ρ ≥ dd_rho */
+  int cond;   /* a condensed material (any EOS but the ideal gas) */
+  int strong; /* carries a deviatoric stress: sums L (and A with corr) */
+  int corr;   /* sums the correction matrix A */
+  int sw;     /* the viscosity switch's gradient, every neighbour */
+  int dd;     /* density diffusion, with neighbours at ρ ≥ dd_rho */
   double dd_rho;
 };
 
@@ -170,8 +170,8 @@ static inline void density_pair_sums(const struct density_pass *dp, const struct
   double sum = 0.0, ddiff = 0.0;
   for (size_t k = 0; k < nsel; k++) {
     const uint32_t q = ns->sel[k], j = ns->j[q];
-    const struct pair pq = pair_geometry(kk, I->x, I->y, I->z, I->h, ns->x[q], ns->y[q],
-                                         ns->z[q], ns->h[q]);
+    const struct pair pq =
+        pair_geometry(kk, I->x, I->y, I->z, I->h, ns->x[q], ns->y[q], ns->z[q], ns->h[q]);
     const double dx = pq.dx, dy = pq.dy, dz = pq.dz, f = pq.f;
     const double ux = vx[j] - I->vx, uy = vy[j] - I->vy, uz = vz[j] - I->vz;
     const double w = m[j] / rho[j] * f, udx = ux * dx + uy * dy + uz * dz;
@@ -189,13 +189,25 @@ static inline void density_pair_sums(const struct density_pass *dp, const struct
     if (I->sw) avsw_add(s->Lsw, s->Asw, w, dx, dy, dz, ux, uy, uz);
     if (I->strong && bj == I->piece) {
       double *L = s->L, *A = s->A;
-      L[0] += w * ux * dx; L[1] += w * ux * dy; L[2] += w * ux * dz;
-      L[3] += w * uy * dx; L[4] += w * uy * dy; L[5] += w * uy * dz;
-      L[6] += w * uz * dx; L[7] += w * uz * dy; L[8] += w * uz * dz;
+      L[0] += w * ux * dx;
+      L[1] += w * ux * dy;
+      L[2] += w * ux * dz;
+      L[3] += w * uy * dx;
+      L[4] += w * uy * dy;
+      L[5] += w * uy * dz;
+      L[6] += w * uz * dx;
+      L[7] += w * uz * dy;
+      L[8] += w * uz * dz;
       if (I->corr) { /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
-        A[0] -= w * dx * dx; A[1] -= w * dx * dy; A[2] -= w * dx * dz;
-        A[3] -= w * dy * dx; A[4] -= w * dy * dy; A[5] -= w * dy * dz;
-        A[6] -= w * dz * dx; A[7] -= w * dz * dy; A[8] -= w * dz * dz;
+        A[0] -= w * dx * dx;
+        A[1] -= w * dx * dy;
+        A[2] -= w * dx * dz;
+        A[3] -= w * dy * dx;
+        A[4] -= w * dy * dy;
+        A[5] -= w * dy * dz;
+        A[6] -= w * dz * dx;
+        A[7] -= w * dz * dy;
+        A[8] -= w * dz * dz;
       }
     }
   }
@@ -207,8 +219,7 @@ static inline void density_pair_sums(const struct density_pass *dp, const struct
  * reconstruction also its stored gradient (0 without strength: no reconstruction for
  * its pairs). */
 static inline void density_gradient(const struct density_pass *dp, uint32_t i,
-                                    const struct density_i *I, int recon,
-                                    struct density_sums *s)
+                                    const struct density_i *I, int recon, struct density_sums *s)
 {
   double *L = s->L;
   if (dp->gradv) {
@@ -216,7 +227,7 @@ static inline void density_gradient(const struct density_pass *dp, uint32_t i,
     for (int t = 0; t < 9; t++) Gi[t] = recon ? L[t] : 0.0;
     if (recon) {
       sph_correct_gradient(Gi, s->A);
-      if (dp->sp->grad_correction)   /* the stress uses the same corrected gradient */
+      if (dp->sp->grad_correction) /* the stress uses the same corrected gradient */
         for (int t = 0; t < 9; t++) L[t] = Gi[t];
     } else if (I->strong && dp->sp->grad_correction) {
       sph_correct_gradient(L, s->A);
@@ -227,14 +238,20 @@ static inline void density_gradient(const struct density_pass *dp, uint32_t i,
 }
 
 /* The first pass for real i with its nsel neighbours in ns. */
-static inline void density_rate_particle(const struct density_pass *dp,
-                                         const struct nsearch *ns, size_t nsel, uint32_t i)
+static inline void density_rate_particle(const struct density_pass *dp, const struct nsearch *ns,
+                                         size_t nsel, uint32_t i)
 {
   struct particles *p = dp->p;
   const struct sph_params *sp = dp->sp;
   const struct material *mi = &dp->mat[p->mat[i]];
-  struct density_i I = {.x = p->x[0][i], .y = p->x[1][i], .z = p->x[2][i], .h = p->h[i],
-                        .vx = p->v[0][i], .vy = p->v[1][i], .vz = p->v[2][i], .m = mi};
+  struct density_i I = {.x = p->x[0][i],
+                        .y = p->x[1][i],
+                        .z = p->x[2][i],
+                        .h = p->h[i],
+                        .vx = p->v[0][i],
+                        .vy = p->v[1][i],
+                        .vz = p->v[2][i],
+                        .m = mi};
   I.strong = has_strength(mi, p->fstate[i]);
   /* the reconstruction's gradient: intact strength particles only (split ones with
      friction keep the standard viscosity, as without it) */
@@ -253,8 +270,8 @@ static inline void density_rate_particle(const struct density_pass *dp,
   density_pair_sums(dp, ns, nsel, i, &I, &s);
   p->drho[i] = p->rho[i] * s.sum + (I.dd ? sp->density_diffusion * p->cs[i] * s.ddiff : 0.0);
   if (I.sw)
-    p->alpha[i] = avsw_update(sp, s.Lsw, s.Asw, p->alpha[i], p->divv[i], I.h, p->cs[i],
-                              dp->dt, &p->divv[i]);
+    p->alpha[i] =
+        avsw_update(sp, s.Lsw, s.Asw, p->alpha[i], p->divv[i], I.h, p->cs[i], dp->dt, &p->divv[i]);
   density_gradient(dp, i, &I, recon, &s);
   if (I.strong) {
     update_stress(p, i, mi, s.L, dp->dt);
@@ -293,7 +310,7 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
     struct nsearch ns = {0};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
-      if (skip && cache->rest[c]) {   /* at rest: what the pass would write */
+      if (skip && cache->rest[c]) { /* at rest: what the pass would write */
         rest_write_first(p, g, c, dp.gradv);
         continue;
       }
@@ -324,8 +341,8 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
     sig[1] -= p->p[i];
     sig[2] -= p->p[i];
     const struct material *mi = &mat[p->mat[i]];
-    if (eps > 0 && has_strength(mi, p->fstate[i]) && !fracture_no_tension(&mi->frac, p->fstate[i]) &&
-        sym3_max_bound(sig) > 0.0) {
+    if (eps > 0 && has_strength(mi, p->fstate[i]) &&
+        !fracture_no_tension(&mi->frac, p->fstate[i]) && sym3_max_bound(sig) > 0.0) {
       double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);
       const double r2 = p->rho[i] * p->rho[i];
@@ -344,15 +361,15 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
 struct force_pass {
   struct particles *p;
   const struct material *mat;
-  const int32_t *piece;    /* sph_params.piece */
-  const double *rec;       /* partner records */
-  const int32_t *tag;      /* partner tags */
-  const double *gradv;     /* sph.viscosity.reconstruct's gradients, else NULL */
+  const int32_t *piece; /* sph_params.piece */
+  const double *rec;    /* partner records */
+  const int32_t *tag;   /* partner tags */
+  const double *gradv;  /* sph.viscosity.reconstruct's gradients, else NULL */
   struct pair_visc pv;
   enum kernel_kind kk;
-  int use_as;              /* artificial stress */
-  int recon_contact;       /* the reconstruction for pairs of two pieces too */
-  double as_n, inv_w_dp;   /* its exponent n, and 1/(W(Δp, h)·h³) with Δp = h/η */
+  int use_as;            /* artificial stress */
+  int recon_contact;     /* the reconstruction for pairs of two pieces too */
+  double as_n, inv_w_dp; /* its exponent n, and 1/(W(Δp, h)·h³) with Δp = h/η */
 };
 
 /* Particle i's side of the force pass, the same for all its pairs: p/ρ² and S/ρ² from
@@ -367,10 +384,10 @@ struct force_i {
  * artificial stress), its deviatoric part explicit. Returns the artificial stress's
  * work per unit mⱼ. */
 static inline double pair_stress(const struct force_pass *fp, const struct force_i *I,
-                                 const double *wj, int32_t tj, const struct pair *q,
-                                 double dvx, double dvy, double dvz, double visc, double acc[3])
+                                 const double *wj, int32_t tj, const struct pair *q, double dvx,
+                                 double dvy, double dvz, double visc, double acc[3])
 {
-  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz;   /* ∇ᵢWᵢⱼ */
+  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz; /* ∇ᵢWᵢⱼ */
   double T[6], eas = 0.0;
   for (int t = 0; t < 6; t++) T[t] = I->S[t] + wj[PR_S + t];
   if (fp->use_as && (I->R_any | (tj & 1))) {
@@ -395,12 +412,11 @@ static inline double pair_stress(const struct force_pass *fp, const struct force
 
 /* The pair force of i and its partner j (record wj, tag tj) per unit mⱼ, into acc, with
  * the contact rules; returns i's energy rate per unit mⱼ. */
-static inline double pair_force(const struct force_pass *fp, const struct force_i *I,
-                                uint32_t j, const double *wj, int32_t tj,
-                                const struct pair *q, double dvx, double dvy, double dvz,
-                                double vdx, double visc, double acc[3])
+static inline double pair_force(const struct force_pass *fp, const struct force_i *I, uint32_t j,
+                                const double *wj, int32_t tj, const struct pair *q, double dvx,
+                                double dvy, double dvz, double vdx, double visc, double acc[3])
 {
-  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz;   /* ∇ᵢWᵢⱼ */
+  const double gx = q->f * q->dx, gy = q->f * q->dy, gz = q->f * q->dz; /* ∇ᵢWᵢⱼ */
   double P, Pme, vw = 0.5, eas = 0.0;
   if ((tj >> 1) == I->piece) {
     eas = pair_stress(fp, I, wj, tj, q, dvx, dvy, dvz, visc, acc);
@@ -438,9 +454,17 @@ static inline void forces_particle(const struct force_pass *fp, const struct nse
 {
   struct particles *p = fp->p;
   const double *wi = fp->rec + PR_LEN * (size_t)i, *cs = p->cs, *gradv = fp->gradv;
-  struct force_i I = {.x = p->x[0][i], .y = p->x[1][i], .z = p->x[2][i], .h = p->h[i],
-                      .vx = p->v[0][i], .vy = p->v[1][i], .vz = p->v[2][i], .c = cs[i],
-                      .rho = p->rho[i], .pr = p->p[i], .P = wi[PR_P]};
+  struct force_i I = {.x = p->x[0][i],
+                      .y = p->x[1][i],
+                      .z = p->x[2][i],
+                      .h = p->h[i],
+                      .vx = p->v[0][i],
+                      .vy = p->v[1][i],
+                      .vz = p->v[2][i],
+                      .c = cs[i],
+                      .rho = p->rho[i],
+                      .pr = p->p[i],
+                      .P = wi[PR_P]};
   I.Pic = I.P > 0 ? I.P : 0.0;
   for (int k = 0; k < 6; k++) {
     I.S[k] = wi[PR_S + k];
@@ -450,19 +474,19 @@ static inline void forces_particle(const struct force_pass *fp, const struct nse
   I.piece = sph_piece_of(fp->piece, p->body[i]);
   I.gas = fp->mat[p->mat[i]].eos == EOS_IDEAL_GAS;
   double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0;
-  double amax = fp->pv.av ? fp->pv.av[i] : fp->pv.alpha;   /* the largest pair α (time step) */
+  double amax = fp->pv.av ? fp->pv.av[i] : fp->pv.alpha; /* the largest pair α (time step) */
   for (size_t k = 0; k < nsel; k++) {
     const uint32_t j = ns->j[ns->sel[k]];
     const double *wj = fp->rec + PR_LEN * (size_t)j;
     const int32_t tj = fp->tag[j];
-    const struct pair pq = pair_geometry(fp->kk, I.x, I.y, I.z, I.h, wj[PR_X], wj[PR_X + 1],
-                                         wj[PR_X + 2], wj[PR_H]);
+    const struct pair pq =
+        pair_geometry(fp->kk, I.x, I.y, I.z, I.h, wj[PR_X], wj[PR_X + 1], wj[PR_X + 2], wj[PR_H]);
     const double dvx = I.vx - wj[PR_V], dvy = I.vy - wj[PR_V + 1], dvz = I.vz - wj[PR_V + 2];
     const double vdx = dvx * pq.dx + dvy * pq.dy + dvz * pq.dz;
     const int recon = gradv && ((tj >> 1) == I.piece || fp->recon_contact);
-    const double visc = pair_viscosity(&fp->pv, i, j, &pq, vdx, recon ? gradv + 9 * (size_t)i : NULL,
-                                       recon ? gradv + 9 * (size_t)j : NULL, I.c, cs[j], I.rho,
-                                       wj[PR_RHO], &mumax, &amax);
+    const double visc = pair_viscosity(
+        &fp->pv, i, j, &pq, vdx, recon ? gradv + 9 * (size_t)i : NULL,
+        recon ? gradv + 9 * (size_t)j : NULL, I.c, cs[j], I.rho, wj[PR_RHO], &mumax, &amax);
     double acc[3];
     const double e = pair_force(fp, &I, j, wj, tj, &pq, dvx, dvy, dvz, vdx, visc, acc);
     const double mj = wj[PR_M];
@@ -478,24 +502,32 @@ static inline void forces_particle(const struct force_pass *fp, const struct nse
   /* with the switch the α c part takes the largest pair α, and the β μ part stays whole:
      it follows the approach speed, which the step must resolve whatever α (Noh's first
      step, every α still 0, crossed particles with it scaled too) */
-  p->vsig[i] = sph_signal_speed(nsel > 0, I.c, amax, fp->pv.beta, mumax,   /* amax = α without it */
+  p->vsig[i] = sph_signal_speed(nsel > 0, I.c, amax, fp->pv.beta, mumax, /* amax = α without it */
                                 sqrt(I.vx * I.vx + I.vy * I.vy + I.vz * I.vz));
 }
 
-void sph_forces_solid(struct particles *p, const struct nbr_grid *g,
-                      const struct sph_params *sp, struct sph_cache *cache,
-                      const struct material *mat)
+void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
+                      struct sph_cache *cache, const struct material *mat)
 {
   const size_t nt = p->n + p->n_ghost;
   double *rec;
   int32_t *tag;
   partner_reserve(cache, nt, &rec, &tag);
   partner_pack(p, sp, mat, rec, tag);
-  const double *av = p->av ? p->alpha : NULL;   /* the switch: αᵢ of every slot */
-  const struct force_pass fp = {
-      p, mat, sp->piece, rec, tag, sp->reconstruct && cache && cache->gradv_valid ? cache->gradv : NULL,
-      pair_visc_params(sp, av), sp->kernel, sp->as_eps > 0, sp->reconstruct_contact, sp->as_n,
-      1.0 / kernel_w_h3(sp->kernel, 1.0 / sp->eta)};
+  const double *av = p->av ? p->alpha : NULL; /* the switch: αᵢ of every slot */
+  const struct force_pass fp = {p,
+                                mat,
+                                sp->piece,
+                                rec,
+                                tag,
+                                sp->reconstruct && cache && cache->gradv_valid ? cache->gradv
+                                                                               : NULL,
+                                pair_visc_params(sp, av),
+                                sp->kernel,
+                                sp->as_eps > 0,
+                                sp->reconstruct_contact,
+                                sp->as_n,
+                                1.0 / kernel_w_h3(sp->kernel, 1.0 / sp->eta)};
   /* sph.skip_resting (rest.c): the mid-step state of the cells the first pass
      skipped */
   const int skip = sp->skip_resting && cache && cache->valid && !av;

@@ -34,8 +34,10 @@ static int jc_read_keys(struct cfg *c, const char *sp, struct material *m, struc
   struct strength_params *s = &m->str;
   const double inf = HUGE_VAL, zero = 0.0, one = 1.0, rate0 = 1.0, tref = 293.15;
   char ky[320], ka[320];
-  if (material_not_used_here(c, sp, "hardening", "hardening applies to model: linear only "
-                             "(Johnson-Cook hardens through B and N)", err))
+  if (material_not_used_here(c, sp, "hardening",
+                             "hardening applies to model: linear only "
+                             "(Johnson-Cook hardens through B and N)",
+                             err))
     return -1;
   material_key(ky, sizeof ky, sp, "yield");
   material_key(ka, sizeof ka, sp, "A");
@@ -58,8 +60,7 @@ static int jc_read_keys(struct cfg *c, const char *sp, struct material *m, struc
   if (!(s->T_melt > s->T_ref)) {
     char k[320];
     return material_key_error(c, material_key(k, sizeof k, sp, "T_melt"), err,
-                              "T_melt = %.9g K must be above T_ref = %.9g K", s->T_melt,
-                              s->T_ref);
+                              "T_melt = %.9g K must be above T_ref = %.9g K", s->T_melt, s->T_ref);
   }
   s->Y0 = s->jc_A;
   return 0;

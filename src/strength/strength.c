@@ -56,7 +56,7 @@ double strength_yield(const struct strength_params *sp, double eps_p, double rat
 
 double strength_return(double G, double Y, double S[6])
 {
-  const double q = sqrt(3.0 * sym3_j2(S));  /* von Mises equivalent stress */
+  const double q = sqrt(3.0 * sym3_j2(S)); /* von Mises equivalent stress */
   if (q <= Y || q == 0.0) return 0.0;
   const double f = Y / q;
   for (int k = 0; k < 6; k++) S[k] *= f;

@@ -11,7 +11,9 @@ void sym3_from_eigen(const double Q[9], const double d[3], double b[6]);
 /* Full 3×3 (row-major) from 6 components. */
 static inline void sym3_full(const double a[6], double m[9])
 {
-  m[0] = a[0]; m[4] = a[1]; m[8] = a[2];
+  m[0] = a[0];
+  m[4] = a[1];
+  m[8] = a[2];
   m[1] = m[3] = a[3];
   m[5] = m[7] = a[4];
   m[2] = m[6] = a[5];
@@ -37,8 +39,7 @@ static inline double sym3_max_bound(const double a[6])
 /* Second invariant of a deviator: J2 = ½ S:S. */
 static inline double sym3_j2(const double s[6])
 {
-  return 0.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) + s[3] * s[3] + s[4] * s[4] +
-         s[5] * s[5];
+  return 0.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) + s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
 }
 
 #endif

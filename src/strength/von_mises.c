@@ -8,8 +8,7 @@
 #include "material/material_read.h"
 #include "strength/strength.h"
 
-static double constant_yield(const struct strength_params *s, double eps_p, double rate,
-                             double e)
+static double constant_yield(const struct strength_params *s, double eps_p, double rate, double e)
 {
   (void)eps_p;
   (void)rate;
@@ -17,8 +16,7 @@ static double constant_yield(const struct strength_params *s, double eps_p, doub
   return s->Y0;
 }
 
-static double linear_yield(const struct strength_params *s, double eps_p, double rate,
-                           double e)
+static double linear_yield(const struct strength_params *s, double eps_p, double rate, double e)
 {
   (void)rate;
   (void)e;
@@ -31,15 +29,13 @@ static double y0_max(const struct strength_params *s) { return s->Y0; }
 static int constant_read_keys(struct cfg *c, const char *sp, struct material *m,
                               struct hv_error *err)
 {
-  if (material_not_used_here(c, sp, "hardening", "hardening applies to model: linear only",
-                             err) ||
+  if (material_not_used_here(c, sp, "hardening", "hardening applies to model: linear only", err) ||
       material_get_q(c, sp, "yield", UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &m->str.Y0, err))
     return -1;
   return 0;
 }
 
-static int linear_read_keys(struct cfg *c, const char *sp, struct material *m,
-                            struct hv_error *err)
+static int linear_read_keys(struct cfg *c, const char *sp, struct material *m, struct hv_error *err)
 {
   const double zero = 0.0;
   if (material_get_q(c, sp, "yield", UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &m->str.Y0, err) ||

@@ -24,9 +24,9 @@
 #include "sim/sim.h"
 #include "testlib.h"
 
-#define BALANCE_TOL 1e-13
+#define BALANCE_TOL  1e-13
 #define MOMENTUM_TOL 1e-12
-#define ENERGY_TOL 2e-4   /* measured 5.23e-5 (was 1e-3) */
+#define ENERGY_TOL   2e-4 /* measured 5.23e-5 (was 1e-3) */
 
 static const char *case_text =
     "domain: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0.1],\n"
@@ -49,19 +49,20 @@ int main(void)
   diag_totals(&s.p, &t0);
   const size_t n0 = s.p.n;
   int rc = 0;
-  while (s.t < 50e-6 && !rc) rc = step_advance(&s, &err);   /* 100 mm at 2 km/s */
+  while (s.t < 50e-6 && !rc) rc = step_advance(&s, &err); /* 100 mm at 2 km/s */
   CHECK(rc == 0, "ran to t = %g s in %ld steps: %s", s.t, s.step, err.msg);
   diag_totals(&s.p, &t1);
   const struct absorbed *a = &s.bnd.absorbed;
   CHECK(a->n > 0 && s.p.n > 0, "absorbed %ld of %zu particles, %zu left", a->n, n0, s.p.n);
-  CHECK(s.p.n + (size_t)a->n == n0, "n + absorbed_n = initial n (%zu + %ld = %zu)", s.p.n, a->n, n0);
+  CHECK(s.p.n + (size_t)a->n == n0, "n + absorbed_n = initial n (%zu + %ld = %zu)", s.p.n, a->n,
+        n0);
   CHECK_CLOSE(t1.mass + a->mass, t0.mass, BALANCE_TOL * t0.mass, "mass + absorbed mass");
   CHECK_CLOSE(t1.mom[0] + a->mom[0], t0.mom[0], MOMENTUM_TOL * t0.mom[0], "x-momentum + absorbed");
   for (int k = 0; k < 3; k++) {
     const double pk = t1.mom[k] + a->mom[k];
     printf("  %c-momentum: remaining %.4g + absorbed %.4g - initial %.4g = %.3e of |p_x0|\n",
            'x' + k, t1.mom[k], a->mom[k], t0.mom[k], (pk - t0.mom[k]) / fabs(t0.mom[0]));
-    if (k > 0) {   /* x: CHECK_CLOSE above */
+    if (k > 0) { /* x: CHECK_CLOSE above */
       CHECK(fabs(pk - t0.mom[k]) <= MOMENTUM_TOL * fabs(t0.mom[k]),
             "%c-momentum + absorbed = initial within %.0e", 'x' + k, MOMENTUM_TOL);
       CHECK(a->mom[k] * t0.mom[k] > 0.1 * t0.mom[k] * t0.mom[k],

@@ -111,8 +111,8 @@ static void test_plate_at_rest(void)
   double vgas = 0.0, rgas = 0.0, vplate = 0.0, xv = 0.0;
   size_t nplate = 0;
   for (size_t i = 0; i < s.p.n; i++) {
-    const double v = sqrt(s.p.v[0][i] * s.p.v[0][i] + s.p.v[1][i] * s.p.v[1][i] +
-                          s.p.v[2][i] * s.p.v[2][i]);
+    const double v =
+        sqrt(s.p.v[0][i] * s.p.v[0][i] + s.p.v[1][i] * s.p.v[1][i] + s.p.v[2][i] * s.p.v[2][i]);
     if (s.p.body[i] == 1) {
       if (v > vgas) xv = s.p.x[0][i];
       vgas = fmax(vgas, v);
@@ -125,16 +125,20 @@ static void test_plate_at_rest(void)
   vplate /= (double)nplate;
   const double expect = -p1 * s.t / (rho0 * 1.5e-3);
   printf("gas p = %.4g Pa; after %.3g s: gas |v| <= %.3g m/s (at x = %.2f mm), rho/rho1 <= "
-         "%.4f; plate vx %.4g m/s (p t / (rho0 L) = %.4g)\n", p1, s.t, vgas, 1e3 * xv, rgas,
-         vplate, expect);
+         "%.4f; plate vx %.4g m/s (p t / (rho0 L) = %.4g)\n",
+         p1, s.t, vgas, 1e3 * xv, rgas, vplate, expect);
   CHECK(rgas < 1.01, "the gas next to the plate is not compressed: rho/rho1 <= %.4f", rgas);
   /* what is left is a sound pulse from the start (5 m/s; with (p̂ᵢ + p̂ⱼ)/(ρᵢρⱼ), 16 m/s,
      which ran into the gas at the sound speed without growing: 17.8 m/s at 11.8 mm by
      40 us) */
-  CHECK(vgas < 0.1 * cs1, "the gas is not blown off the plate: |v| <= %.3g m/s, below "
-        "0.1 c = %.3g m/s", vgas, 0.1 * cs1);
-  CHECK(fabs(vplate / expect - 1.0) < 0.3, "the plate is pushed back at %.3g m/s, p t/(rho0 L) "
-        "= %.3g m/s within 30 %%", vplate, expect);
+  CHECK(vgas < 0.1 * cs1,
+        "the gas is not blown off the plate: |v| <= %.3g m/s, below "
+        "0.1 c = %.3g m/s",
+        vgas, 0.1 * cs1);
+  CHECK(fabs(vplate / expect - 1.0) < 0.3,
+        "the plate is pushed back at %.3g m/s, p t/(rho0 L) "
+        "= %.3g m/s within 30 %%",
+        vplate, expect);
   sim_free(&s);
   cfg_free(c);
 }
@@ -166,11 +170,14 @@ static void test_plate_in_plane(void)
     }
   }
   printf("compressed plate: its pressure up to %.3g MPa (sigma_xx there %.3g MPa); gas |v| <= "
-         "%.3g m/s\n", pmax / 1e6, sxx / 1e6, vgas);
+         "%.3g m/s\n",
+         pmax / 1e6, sxx / 1e6, vgas);
   CHECK(pmax > 10e6, "the plate stays compressed in its plane: p up to %.3g MPa (> 10 MPa)",
         pmax / 1e6);
-  CHECK(vgas < 0.1 * cs1, "the gas is not pushed by the plate's in-plane pressure: |v| <= %.3g "
-        "m/s, below 0.1 c = %.3g m/s", vgas, 0.1 * cs1);
+  CHECK(vgas < 0.1 * cs1,
+        "the gas is not pushed by the plate's in-plane pressure: |v| <= %.3g "
+        "m/s, below 0.1 c = %.3g m/s",
+        vgas, 0.1 * cs1);
   sim_free(&s);
   cfg_free(c);
 }
@@ -227,17 +234,19 @@ static void test_through_spray(void)
   double rmax = 0.0, x = 0.0;
   while (ok && s.t < s.tp.end * (1 - 1e-12)) {
     ok = !step_advance(&s, &err);
-    for (size_t i = 0; i < s.p.n; i++)   /* steps reorder the particles */
+    for (size_t i = 0; i < s.p.n; i++) /* steps reorder the particles */
       if (s.p.body[i] == 0) bit = i;
     rmax = fmax(rmax, s.p.rho[bit] / rho0);
     x = s.p.x[0][bit];
   }
   CHECK(ok, "the bit crosses the spray (%s)", ok ? "ok" : err.msg);
-  printf("bit through spray: rho/rho0 up to %.4f, at x = %.2f mm after %.3g s\n", rmax,
-         1e3 * x, s.t);
+  printf("bit through spray: rho/rho0 up to %.4f, at x = %.2f mm after %.3g s\n", rmax, 1e3 * x,
+         s.t);
   CHECK(x > 10e-3, "the bit is through the spray's first 10 mm: x = %.2f mm", 1e3 * x);
-  CHECK(rmax < SPRAY_RHO_MAX, "the bit's density stays below %.2f rho0 among the spray: "
-        "up to %.4f", SPRAY_RHO_MAX, rmax);
+  CHECK(rmax < SPRAY_RHO_MAX,
+        "the bit's density stays below %.2f rho0 among the spray: "
+        "up to %.4f",
+        SPRAY_RHO_MAX, rmax);
   sim_free(&s);
   cfg_free(c);
 }
@@ -268,7 +277,7 @@ int main(void)
   while (ok && s.t < s.tp.end * (1 - 1e-12)) {
     ok = !step_advance(&s, &err);
     steps++;
-    for (size_t i = 0; i < s.p.n; i++)   /* the arrays are reordered as particles move */
+    for (size_t i = 0; i < s.p.n; i++) /* the arrays are reordered as particles move */
       if (s.p.body[i] == 0) bit = i;
     dev = fmax(dev, fabs(s.p.rho[bit] / rho0 - 1.0));
     xmax = fmax(xmax, s.p.x[0][bit]);
@@ -280,11 +289,13 @@ int main(void)
          steps, 1e3 * s.p.x[0][bit], s.p.v[0][bit], dev, s.p.e[bit], s.p.p[bit], t0.e_total,
          t1.e_total);
   CHECK(xmax > 10e-3, "it flew into the gas: x = %.2f mm", 1e3 * xmax);
-  CHECK(dev < 1e-12, "its density stays at rho0 = %.0f kg/m3 (largest relative change %.3g)",
-        rho0, dev);
+  CHECK(dev < 1e-12, "its density stays at rho0 = %.0f kg/m3 (largest relative change %.3g)", rho0,
+        dev);
   CHECK(s.p.v[0][bit] < 4000.0 - 1.0, "the gas slows it: vx = %.1f m/s", s.p.v[0][bit]);
-  CHECK(s.p.e[bit] == 0.0, "the drag's heat goes to the gas: the particle's e = %.3g J/kg "
-        "(it took half, 3.2e5 J/kg, before 001e252)", s.p.e[bit]);
+  CHECK(s.p.e[bit] == 0.0,
+        "the drag's heat goes to the gas: the particle's e = %.3g J/kg "
+        "(it took half, 3.2e5 J/kg, before 001e252)",
+        s.p.e[bit]);
   /* measured -6.77e-10 (was 1e-3) */
   CHECK(fabs(t1.e_total / t0.e_total - 1.0) < 1e-8, "total energy within 1e-8: %.3g",
         t1.e_total / t0.e_total - 1.0);

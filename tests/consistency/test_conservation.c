@@ -42,10 +42,11 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define NSTEPS 100
-#define MOMENTUM_MAX 1e-12
-#define ENERGY_DRIFT_MAX 2e-4   /* measured 6.89e-5, 6.81e-5, 6.58e-5 (was 1e-3) */
-#define SUM_RHO_TOL 3e-3   /* measured 8.1e-4 (cubic spline, η = 1.2, cubic lattice); a missing
+#define NSTEPS           100
+#define MOMENTUM_MAX     1e-12
+#define ENERGY_DRIFT_MAX 2e-4 /* measured 6.89e-5, 6.81e-5, 6.58e-5 (was 1e-3) */
+#define SUM_RHO_TOL                                                                                \
+  3e-3 /* measured 8.1e-4 (cubic spline, η = 1.2, cubic lattice); a missing
                               self term would give +0.18, the wrong h several % */
 
 /* 16 x 16 x 8 + 12 x 12 x 6 lattice points in a unit box */
@@ -61,7 +62,7 @@ static const char *case_text =
     "     pressure: 1.0, shape: {type: box, min: [0, 0, 0.5], max: [1, 1, 1]}}\n"
     "time: {end: 1e30}\n"
     "output: {vtu: false}\n"
-    "sph: {viscosity: {alpha: 1.0, beta: 2.0}, density: ";   /* + "continuity}" etc. */
+    "sph: {viscosity: {alpha: 1.0, beta: 2.0}, density: "; /* + "continuity}" etc. */
 
 /* The two-slab box with sph.density (and whatever follows it) = `density`, set up
  * through the library, with random velocities of up to 0.3 c per component
@@ -93,7 +94,7 @@ static void run_case(const char *density)
         16 * 16 * 8 + 12 * 12 * 6);
   struct conserve_result r;
   conserve_steps(&s, NSTEPS, MOMENTUM_MAX, ENERGY_DRIFT_MAX, &r);
-  if (!r.ok) {   /* the failed step is reported; the checks below would only repeat it */
+  if (!r.ok) { /* the failed step is reported; the checks below would only repeat it */
     sim_free(&s);
     cfg_free(c);
     return;
@@ -150,7 +151,7 @@ static void summation_recovers_density(void)
  * (ρ_sum(x + δv) − ρ_sum(x − δv)) / 2δ to MASS_RATE_TOL of the largest rate; the
  * volume form ρᵢ Σⱼ (mⱼ/ρⱼ) vᵢⱼ·∇Wᵢⱼ does not (printed, and asserted to differ by
  * more than VOLUME_DIFF_MIN across the slabs' density jump). */
-#define MASS_RATE_TOL 1e-6   /* measured ~1e-9 (δ = 1e-6 of the sound crossing) */
+#define MASS_RATE_TOL   1e-6 /* measured ~1e-9 (δ = 1e-6 of the sound crossing) */
 #define VOLUME_DIFF_MIN 1e-2
 static void mass_form_is_summation_rate(void)
 {
@@ -160,7 +161,7 @@ static void mass_form_is_summation_rate(void)
   struct sim s;
   if (box_setup("continuity, continuity: mass", &s, &c)) return;
   struct particles *p = &s.p;
-  int ok = !step_init(&s, &err);   /* ghosts (with their sources' v) and the grid */
+  int ok = !step_init(&s, &err); /* ghosts (with their sources' v) and the grid */
   CHECK(ok, "step_init (%s)", ok ? "ok" : err.msg);
   if (!ok) return;
   const size_t n = p->n, nall = p->n + p->n_ghost;
@@ -195,12 +196,14 @@ static void mass_form_is_summation_rate(void)
     if (fabs(rate_v[i] - sp_[i]) > diff_v) diff_v = fabs(rate_v[i] - sp_[i]);
   }
   printf("== continuity forms against d/dt of the summed density (h fixed): largest rate "
-         "%.4e; mass form off by %.3e, volume form by %.3e (relative)\n", big, err_m / big,
-         diff_v / big);
+         "%.4e; mass form off by %.3e, volume form by %.3e (relative)\n",
+         big, err_m / big, diff_v / big);
   CHECK(big > 0 && err_m <= MASS_RATE_TOL * big, "mass form = d(rho_sum)/dt: %.3e <= %.0e",
         err_m / big, MASS_RATE_TOL);
-  CHECK(diff_v >= VOLUME_DIFF_MIN * big, "the volume form differs across the density jump: "
-        "%.3e >= %.0e", diff_v / big, VOLUME_DIFF_MIN);
+  CHECK(diff_v >= VOLUME_DIFF_MIN * big,
+        "the volume form differs across the density jump: "
+        "%.3e >= %.0e",
+        diff_v / big, VOLUME_DIFF_MIN);
   free(rate_m);
   free(rate_v);
   free(rho0);

@@ -31,30 +31,31 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define RATIO_TOL 0.10   /* measured 0.966; an error of a factor 2 in the term
+#define RATIO_TOL                                                                                  \
+  0.10 /* measured 0.966; an error of a factor 2 in the term
                             (h for 2h, or the pair counted once) fails */
-#define PI 3.14159265358979323846
-#define AMP 1e-3
-#define LAMBDA 4e-3      /* [m] */
-#define X0 0.0
-#define DELTA 0.1
+#define PI     3.14159265358979323846
+#define AMP    1e-3
+#define LAMBDA 4e-3 /* [m] */
+#define X0     0.0
+#define DELTA  0.1
 
-#define CASE_FMT \
-    "name: density-diffusion\n" \
-    "domain: {min: [-10 mm, -10 mm, -10 mm], max: [18 mm, 13 mm, 13 mm]}\n" \
-    "materials: {al: {library: al-alloy}}\n" \
-    "bodies:\n%s" \
-    "time: {end: 1e30, dt_init: 1e-10, dt_max: 1e-10}\n" \
-    "output: {vtu: false}\n" \
-    "sph: {density_diffusion: %g, skip_resting: false}\n"
-#define ONE_BODY \
-    "  - {name: block, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [0, 0, 0], max: [8 mm, 3 mm, 3 mm]}}\n"
-#define TWO_BODIES \
-    "  - {name: left, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [0, 0, 0], max: [4 mm, 3 mm, 3 mm]}}\n" \
-    "  - {name: right, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [4 mm, 0, 0], max: [8 mm, 3 mm, 3 mm]}}\n"
+#define CASE_FMT                                                                                   \
+  "name: density-diffusion\n"                                                                      \
+  "domain: {min: [-10 mm, -10 mm, -10 mm], max: [18 mm, 13 mm, 13 mm]}\n"                          \
+  "materials: {al: {library: al-alloy}}\n"                                                         \
+  "bodies:\n%s"                                                                                    \
+  "time: {end: 1e30, dt_init: 1e-10, dt_max: 1e-10}\n"                                             \
+  "output: {vtu: false}\n"                                                                         \
+  "sph: {density_diffusion: %g, skip_resting: false}\n"
+#define ONE_BODY                                                                                   \
+  "  - {name: block, material: al, spacing: 0.25 mm,\n"                                            \
+  "     shape: {type: box, min: [0, 0, 0], max: [8 mm, 3 mm, 3 mm]}}\n"
+#define TWO_BODIES                                                                                 \
+  "  - {name: left, material: al, spacing: 0.25 mm,\n"                                             \
+  "     shape: {type: box, min: [0, 0, 0], max: [4 mm, 3 mm, 3 mm]}}\n"                            \
+  "  - {name: right, material: al, spacing: 0.25 mm,\n"                                            \
+  "     shape: {type: box, min: [4 mm, 0, 0], max: [8 mm, 3 mm, 3 mm]}}\n"
 
 enum field { SINE, UNIFORM, CUT, EXPANDED };
 
@@ -129,19 +130,24 @@ int main(void)
     }
     const double ratio = sxx > 0 ? sxy / sxx : 0.0;
     printf("sine: %ld particles inside, diffusion rate / -delta h c k^2 rho0 A sin kx = %.4f "
-           "(largest expected rate %.4e kg/m3/s)\n", cnt, ratio, smax);
+           "(largest expected rate %.4e kg/m3/s)\n",
+           cnt, ratio, smax);
     CHECK(cnt > 100, "particles inside: %ld", cnt);
-    CHECK(fabs(ratio - 1.0) <= RATIO_TOL, "the diffusion is the Laplacian's within %.0f %% "
-          "(ratio %.4f)", 100 * RATIO_TOL, ratio);
+    CHECK(fabs(ratio - 1.0) <= RATIO_TOL,
+          "the diffusion is the Laplacian's within %.0f %% "
+          "(ratio %.4f)",
+          100 * RATIO_TOL, ratio);
 
     /* no diffusion at all, anywhere in the block: a uniform density; two pieces of
        different densities in contact (nothing across the cut, each half uniform); one
        body whose right half is expanded to 0.01 ρ₀ (nothing with expanded material, the
        dense half uniform) */
-    static const struct { enum field f; const char *what; } none[] = {
-        {UNIFORM, "a uniform density"},
-        {CUT, "two pieces of different densities (across the cut)"},
-        {EXPANDED, "a body half expanded to 0.01 rho0 (with expanded material)"}};
+    static const struct {
+      enum field f;
+      const char *what;
+    } none[] = {{UNIFORM, "a uniform density"},
+                {CUT, "two pieces of different densities (across the cut)"},
+                {EXPANDED, "a body half expanded to 0.01 rho0 (with expanded material)"}};
     for (size_t t = 0; t < sizeof none / sizeof none[0]; t++) {
       if (one_step(0.0, none[t].f, dc0, h, cs, x, y, z, &n2, &rho0) ||
           one_step(DELTA, none[t].f, dc1, h, cs, x, y, z, &n2, &rho0))

@@ -76,7 +76,7 @@ static long compare(const char *d1, const char *d2, const char *name, int thread
   join(p1, sizeof p1, d1, name);
   join(p2, sizeof p2, d2, name);
   size_t n1 = 0, n2 = 0;
-  if (!strcmp(name, "run_segments.csv")) return 0;   /* threads and wall time: provenance */
+  if (!strcmp(name, "run_segments.csv")) return 0; /* threads and wall time: provenance */
   char *a = test_slurp(p1, &n1), *b = test_slurp(p2, &n2);
   long result = -1;
   if (a && b) {
@@ -87,10 +87,11 @@ static long compare(const char *d1, const char *d2, const char *name, int thread
     size_t k = 0;
     while (k < n1 && k < n2 && a[k] == b[k]) k++;
     int same = n1 == n2 && k == n1;
-    if (same) result = (long)n1;
+    if (same)
+      result = (long)n1;
     else
-      CHECK(0, "%s: 1 thread and %d threads differ at byte %zu (sizes %zu and %zu)", name,
-            threads, k, n1, n2);
+      CHECK(0, "%s: 1 thread and %d threads differ at byte %zu (sizes %zu and %zu)", name, threads,
+            k, n1, n2);
   } else {
     CHECK(0, "%s: missing in %s", name, a ? d2 : d1);
   }
@@ -102,8 +103,9 @@ static long compare(const char *d1, const char *d2, const char *name, int thread
 static int run_case(const char *casefile, const char *dir, int threads, int argc, char **argv)
 {
   char cmd[9000], out[8192];
-  size_t len = (size_t)snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --threads %d --quiet",
-                                dir, test_bin(), casefile, dir, threads);
+  size_t len =
+      (size_t)snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --threads %d --quiet",
+                       dir, test_bin(), casefile, dir, threads);
   for (int a = 1; a < argc && len < sizeof cmd; a++)
     len += (size_t)snprintf(cmd + len, sizeof cmd - len, " '%s'", argv[a]);
   if (len >= sizeof cmd) return -1;
@@ -158,11 +160,11 @@ static void check_motion(const char *dir)
       if (sqrt(dv2) > dvmax) dvmax = sqrt(dv2);
     }
     printf("  snapshots at t = %g s and %g s: largest displacement %.4g m, largest velocity "
-           "change %.4g m/s\n", ta, tb, dxmax, dvmax);
+           "change %.4g m/s\n",
+           ta, tb, dxmax, dvmax);
     CHECK(missing == 0, "every id 0..%zu is in both snapshots (%zu missing)", a.n - 1, missing);
     CHECK(ta == 0.0 && fabs(tb - 0.02) < 1e-12, "snapshot times 0 and 0.02 s (%g, %g)", ta, tb);
-    CHECK(dxmax > 2e-3, "particles moved: largest displacement %.4g m > 2 mm (0.4 spacing)",
-          dxmax);
+    CHECK(dxmax > 2e-3, "particles moved: largest displacement %.4g m > 2 mm (0.4 spacing)", dxmax);
     CHECK(dvmax > 0.1, "velocities changed: largest change %.4g m/s > 0.1 m/s", dvmax);
     free(ia);
     free(ib);
@@ -200,9 +202,11 @@ int main(int argc, char **argv)
     seg += !strcmp(names[i], "run_segments.csv");
   }
   CHECK(n == 2 * NSNAP + 5 && nvtu == NSNAP && ncsv == NSNAP && pvd && summary && used && ckpt &&
-        seg && !ntmp, "1-thread run wrote %d files: %d .vtu, %d particle .csv (want %d each), "
+            seg && !ntmp,
+        "1-thread run wrote %d files: %d .vtu, %d particle .csv (want %d each), "
         "run.pvd, summary.csv, used_parameters.yaml, checkpoint.hvc, run_segments.csv, %d "
-        "temporary", n, nvtu, ncsv, NSNAP, ntmp);
+        "temporary",
+        n, nvtu, ncsv, NSNAP, ntmp);
 
   for (int k = 1; k < nt; k++) {
     char **other = NULL;
@@ -215,11 +219,15 @@ int main(int argc, char **argv)
     int files = 0, bad = 0;
     for (int i = 0; i < n; i++) {
       long b = compare(dir[0], dir[k], names[i], threads[k]);
-      if (b < 0) bad++;
-      else total += b, files++;
+      if (b < 0)
+        bad++;
+      else
+        total += b, files++;
     }
-    CHECK(bad == 0, "--threads %d: %d files (%ld bytes) bitwise identical to --threads 1, "
-          "%d differ", threads[k], files, total, bad);
+    CHECK(bad == 0,
+          "--threads %d: %d files (%ld bytes) bitwise identical to --threads 1, "
+          "%d differ",
+          threads[k], files, total, bad);
     for (int i = 0; i < m; i++) free(other[i]);
     free(other);
   }

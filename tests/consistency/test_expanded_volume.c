@@ -27,21 +27,21 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define A_RATE 1e5      /* [1/s] */
-#define TOL_REF 0.05    /* the cubic spline's lattice sum: 0.98-1.00 */
-#define TOL_CAP 0.10    /* twice the reference; without the cap 20 times */
-#define XC 3e-3         /* [m] the block's centre */
+#define A_RATE  1e5  /* [1/s] */
+#define TOL_REF 0.05 /* the cubic spline's lattice sum: 0.98-1.00 */
+#define TOL_CAP 0.10 /* twice the reference; without the cap 20 times */
+#define XC      3e-3 /* [m] the block's centre */
 
-#define CASE_TEXT \
-    "name: expanded-volume\n" \
-    "domain: {min: [-10 mm, -10 mm, -10 mm], max: [16 mm, 16 mm, 16 mm]}\n" \
-    "materials: {al: {library: al-alloy}}\n" \
-    "bodies:\n" \
-    "  - {name: block, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [0, 0, 0], max: [6 mm, 6 mm, 6 mm]}}\n" \
-    "time: {end: 1e30, dt_init: 1e-10, dt_max: 1e-10}\n" \
-    "output: {vtu: false}\n" \
-    "sph: {skip_resting: false}\n"
+#define CASE_TEXT                                                                                  \
+  "name: expanded-volume\n"                                                                        \
+  "domain: {min: [-10 mm, -10 mm, -10 mm], max: [16 mm, 16 mm, 16 mm]}\n"                          \
+  "materials: {al: {library: al-alloy}}\n"                                                         \
+  "bodies:\n"                                                                                      \
+  "  - {name: block, material: al, spacing: 0.25 mm,\n"                                            \
+  "     shape: {type: box, min: [0, 0, 0], max: [6 mm, 6 mm, 6 mm]}}\n"                            \
+  "time: {end: 1e30, dt_init: 1e-10, dt_max: 1e-10}\n"                                             \
+  "output: {vtu: false}\n"                                                                         \
+  "sph: {skip_resting: false}\n"
 
 /* One step with every density f ρ₀; returns the mean D = (dρ/dt)/ρ over the middle
  * particles (NAN on failure), *worst the largest relative miss of ρⁿ exp(Δt Dρ/ρⁿ). */

@@ -53,8 +53,8 @@ int main(void)
     }
     const double half = 0.5 * L[k] / n[k];
     CHECK(fabs(lo - half) < 1e-12 * 1e-3 && fabs(L[k] - hi - half) < 1e-12 * 1e-3,
-          "axis %d: first and last layers half a step (%.4f mm) inside the walls: %.4f, %.4f mm",
-          k, 1e3 * half, 1e3 * lo, 1e3 * (L[k] - hi));
+          "axis %d: first and last layers half a step (%.4f mm) inside the walls: %.4f, %.4f mm", k,
+          1e3 * half, 1e3 * lo, 1e3 * (L[k] - hi));
   }
   int ok = !step_init(&s, &err);
   while (ok && s.t < s.tp.end * (1 - 1e-12)) ok = !step_advance(&s, &err);

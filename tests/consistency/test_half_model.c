@@ -32,7 +32,7 @@
 #include "sim/sim.h"
 #include "testlib.h"
 
-#define NSTEPS 60
+#define NSTEPS   60
 #define HALF_TOL 1e-10
 
 static const char *full_case =
@@ -52,7 +52,7 @@ static const char *half_case =
     "time: {end: 1}\n";
 
 struct body_sums {
-  double px, py, ekin, eint;  /* per body 0/1 */
+  double px, py, ekin, eint; /* per body 0/1 */
 };
 
 static int run(const char *yaml, double dt_fixed, struct body_sums out[2], size_t *n)
@@ -64,7 +64,7 @@ static int run(const char *yaml, double dt_fixed, struct body_sums out[2], size_
   memset(&s, 0, sizeof s);
   int rc = !c || run_setup(&s, c, &err) || step_init(&s, &err);
   for (int k = 0; k < NSTEPS && !rc; k++) {
-    s.dt = dt_fixed;   /* the same steps in both runs */
+    s.dt = dt_fixed; /* the same steps in both runs */
     rc = step_advance(&s, &err);
   }
   if (rc) printf("  run failed: %s\n", err.msg);
@@ -86,8 +86,8 @@ static int run(const char *yaml, double dt_fixed, struct body_sums out[2], size_
 static void compare_k(const char *what, double full, double part, double k, double scale)
 {
   const double d = fabs(full - k * part) / scale;
-  CHECK(d < HALF_TOL, "%s: full %.10g, %g x part %.10g (relative difference %.2e)", what, full,
-        k, k * part, d);
+  CHECK(d < HALF_TOL, "%s: full %.10g, %g x part %.10g (relative difference %.2e)", what, full, k,
+        k * part, d);
 }
 
 static void compare(const char *what, double full, double half, double scale)
@@ -101,25 +101,29 @@ static void compare(const char *what, double full, double half, double scale)
 static void quarter_case(char *buf, size_t len, int along_y, int quarter)
 {
   const char *lo = quarter ? "0" : "-2 mm", *plo = quarter ? "0" : "-6 mm";
-  const char *dom = !quarter ? ""
+  const char *dom = !quarter  ? ""
                     : along_y ? "domain: {min: [0, -10 mm, 0], max: [10 mm, 10 mm, 10 mm], "
                                 "half_model: true, boundary: {x_min: wall}}\n"
                               : "domain: {min: [-10 mm, 0, 0], max: [10 mm, 10 mm, 10 mm], "
                                 "half_model: true, boundary: {y_min: wall}}\n";
   if (along_y)
-    snprintf(buf, len, "%sbodies:\n"
+    snprintf(buf, len,
+             "%sbodies:\n"
              "  - {name: ball, material: al-alloy, spacing: 0.5 mm, velocity: [0, 800, 0],\n"
              "     shape: {type: box, min: [%s, -4.25 mm, -2 mm], max: [2 mm, -0.25 mm, 2 mm]}}\n"
              "  - {name: plate, material: al-alloy, spacing: 0.5 mm,\n"
              "     shape: {type: box, min: [%s, 0, -6 mm], max: [6 mm, 2 mm, 6 mm]}}\n"
-             "time: {end: 1}\n", dom, lo, plo);
+             "time: {end: 1}\n",
+             dom, lo, plo);
   else
-    snprintf(buf, len, "%sbodies:\n"
+    snprintf(buf, len,
+             "%sbodies:\n"
              "  - {name: ball, material: al-alloy, spacing: 0.5 mm, velocity: [800, 0, 0],\n"
              "     shape: {type: box, min: [-4.25 mm, %s, -2 mm], max: [-0.25 mm, 2 mm, 2 mm]}}\n"
              "  - {name: plate, material: al-alloy, spacing: 0.5 mm,\n"
              "     shape: {type: box, min: [0, %s, -6 mm], max: [2 mm, 6 mm, 6 mm]}}\n"
-             "time: {end: 1}\n", dom, lo, plo);
+             "time: {end: 1}\n",
+             dom, lo, plo);
 }
 
 static void test_quarter(void)
@@ -127,7 +131,7 @@ static void test_quarter(void)
   const double dt = 2e-9;
   for (int along_y = 0; along_y < 2; along_y++) {
     char full[1024], quarter[1024];
-    struct body_sums f[2] = {0}, q[2] = {0};   /* read below even when a run failed */
+    struct body_sums f[2] = {0}, q[2] = {0}; /* read below even when a run failed */
     size_t nf = 0, nq = 0;
     quarter_case(full, sizeof full, along_y, 0);
     quarter_case(quarter, sizeof quarter, along_y, 1);
@@ -152,7 +156,7 @@ int main(void)
 {
   struct body_sums f[2] = {0}, h[2] = {0};
   size_t nf = 0, nh = 0;
-  const double dt = 2e-9;   /* [s] below the CFL step of 0.5 mm aluminium (~1e-8 s) */
+  const double dt = 2e-9; /* [s] below the CFL step of 0.5 mm aluminium (~1e-8 s) */
   CHECK(run(full_case, dt, f, &nf) == 0, "full model ran %d steps", NSTEPS);
   CHECK(run(half_case, dt, h, &nh) == 0, "half model ran %d steps", NSTEPS);
   CHECK(nf == 2 * nh, "particles: full %zu = 2 x half %zu", nf, nh);

@@ -130,8 +130,8 @@ static int vtu_complete(const char *path, double *t, long *step, long *np)
       blocks++;
     }
     ok = pos == end && blocks == narrays && narrays > 0;
-    printf("  %s: %zu bytes, %d appended blocks for %d arrays, %s\n", path, len, blocks,
-           narrays, ok ? "complete" : "INCOMPLETE");
+    printf("  %s: %zu bytes, %d appended blocks for %d arrays, %s\n", path, len, blocks, narrays,
+           ok ? "complete" : "INCOMPLETE");
   }
   free(b);
   return ok;
@@ -145,8 +145,10 @@ static void locked_out(const char *casefile, pid_t pid)
   snprintf(want, sizeof want, "process %ld on ", (long)pid);
   for (int k = 0; k < 2; k++) {
     char args[8800];
-    if (k == 0) snprintf(args, sizeof args, "restart '%s' --quiet", dir);
-    else snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
+    if (k == 0)
+      snprintf(args, sizeof args, "restart '%s' --quiet", dir);
+    else
+      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
     snprintf(cmd, sizeof cmd, "'%s' %s", test_bin(), args);
     const int rc = test_run(cmd, out, sizeof out);
     CHECK(rc == 2 && strstr(out, "is in use by another hvsph") && strstr(out, want),
@@ -168,7 +170,7 @@ static void stopped_by(const char *casefile, int sig, const char *name)
   pid_t pid = fork();
   if (pid == 0) {
     if (!freopen(log, "w", stderr) || !freopen("/dev/null", "w", stdout)) _exit(99);
-    signal(sig, SIG_DFL);   /* hvsph keeps an ignored SIGHUP ignored (nohup) */
+    signal(sig, SIG_DFL); /* hvsph keeps an ignored SIGHUP ignored (nohup) */
     execl(test_bin(), "hvsph", "run", casefile, "-o", sdir, "--set", "time.end=1000", "--set",
           "output.every=1000", "--set", "output.checkpoint_wall=0", (char *)NULL);
     _exit(98);
@@ -196,13 +198,15 @@ static void stopped_by(const char *casefile, int sig, const char *name)
   CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130 && text && strstr(text, want),
         "%s ends the run with exit status 130 (got %s %d) and the log says '%s': %.200s", name,
         WIFEXITED(status) ? "exit" : "signal",
-        WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1,
+        WIFEXITED(status)     ? WEXITSTATUS(status)
+        : WIFSIGNALED(status) ? WTERMSIG(status)
+                              : -1,
         want, text && strstr(text, "interrupted") ? strstr(text, "interrupted") : "");
   free(text);
   long step = -1;
   double t = -1, tfirst = -1;
   char keep[sizeof dir];
-  memcpy(keep, dir, sizeof dir);   /* summary_last reads dir's */
+  memcpy(keep, dir, sizeof dir); /* summary_last reads dir's */
   snprintf(dir, sizeof dir, "%s/sig_%s", test_tmpdir(), name);
   const int rows = summary_last(&step, &t, &tfirst);
   memcpy(dir, keep, sizeof dir);
@@ -212,8 +216,8 @@ static void stopped_by(const char *casefile, int sig, const char *name)
   snprintf(want, sizeof want, "(step %ld,", step);
   CHECK(rows >= 2 && step > 0 && rc == 0 && strstr(out, "from its checkpoint at t = ") &&
             strstr(out, want),
-        "%s: the checkpoint at step %ld continues (hvsph restart, 3 steps: exit %d): %.300s",
-        name, step, rc, out);
+        "%s: the checkpoint at step %ld continues (hvsph restart, 3 steps: exit %d): %.300s", name,
+        step, rc, out);
 }
 
 /* hvsph on a pseudo-terminal 80 columns wide, interrupted after its first status
@@ -226,8 +230,8 @@ static void on_terminal(const char *casefile)
   int fd = -1;
   pid_t pid = forkpty(&fd, NULL, NULL, &ws);
   if (pid == 0) {
-    execl(test_bin(), "hvsph", "run", casefile, "-o", tdir, "--overwrite", "--set",
-          "time.end=1000", "--set", "output.every=1000", (char *)NULL);
+    execl(test_bin(), "hvsph", "run", casefile, "-o", tdir, "--overwrite", "--set", "time.end=1000",
+          "--set", "output.every=1000", (char *)NULL);
     _exit(98);
   }
   CHECK(pid > 0, "started hvsph on a terminal (pid %ld)", (long)pid);
@@ -240,8 +244,10 @@ static void on_terminal(const char *casefile)
     struct pollfd pf = {.fd = fd, .events = POLLIN};
     if (poll(&pf, 1, 50) > 0) {
       const ssize_t k = read(fd, out + len, cap - len);
-      if (k > 0) len += (size_t)k;
-      else if (k == 0 || errno != EINTR) break;   /* EIO: the terminal's other side closed */
+      if (k > 0)
+        len += (size_t)k;
+      else if (k == 0 || errno != EINTR)
+        break; /* EIO: the terminal's other side closed */
       if (len == cap) out = realloc(out, (cap *= 2) + 1);
     }
     out[len] = 0;
@@ -262,7 +268,9 @@ static void on_terminal(const char *casefile)
   CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130,
         "on a terminal: exit status 130 after SIGINT (got %s %d)",
         WIFEXITED(status) ? "exit" : "signal",
-        WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1);
+        WIFEXITED(status)     ? WEXITSTATUS(status)
+        : WIFSIGNALED(status) ? WTERMSIG(status)
+                              : -1);
   /* the pieces between carriage returns and newlines, as the terminal's rows start */
   int nstatus = 0, widest = 0, remaining = 0, msg_at_start = 0;
   for (char *p = out; *p;) {
@@ -271,7 +279,7 @@ static void on_terminal(const char *casefile)
     if (!strncmp(p, "step ", 5)) {
       nstatus++;
       int w = (int)n;
-      while (w > 0 && p[w - 1] == ' ') w--;   /* blanks over a longer previous line count */
+      while (w > 0 && p[w - 1] == ' ') w--; /* blanks over a longer previous line count */
       if ((int)n > widest) widest = (int)n;
       const char save = p[w];
       p[w] = '\0';
@@ -283,11 +291,14 @@ static void on_terminal(const char *casefile)
     if (*p) p++;
   }
   printf("  on a terminal 80 columns wide: %d status line writes, the widest %d columns, %d "
-         "showing the time remaining\n", nstatus, widest, remaining);
-  CHECK(nstatus > 0 && widest <= 79, "on a terminal 80 columns wide the status line fits (%d "
-        "writes, widest %d columns <= 79)", nstatus, widest);
-  CHECK(nstatus > 0 && remaining == nstatus, "and shows the time remaining (%d of %d)",
-        remaining, nstatus);
+         "showing the time remaining\n",
+         nstatus, widest, remaining);
+  CHECK(nstatus > 0 && widest <= 79,
+        "on a terminal 80 columns wide the status line fits (%d "
+        "writes, widest %d columns <= 79)",
+        nstatus, widest);
+  CHECK(nstatus > 0 && remaining == nstatus, "and shows the time remaining (%d of %d)", remaining,
+        nstatus);
   CHECK(msg_at_start, "'hvsph: interrupted at t = ...' begins a line of its own");
   free(out);
 }
@@ -343,13 +354,17 @@ int main(void)
     waitpid(pid, &status, 0);
   }
   CHECK(done && lag < 20, "hvsph ended %.2f s after SIGINT (< 20 s)", lag);
-  CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130,
-        "exit status 130 (got %s %d)", WIFEXITED(status) ? "exit" : "signal",
-        WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? WTERMSIG(status) : -1);
+  CHECK(done && WIFEXITED(status) && WEXITSTATUS(status) == 130, "exit status 130 (got %s %d)",
+        WIFEXITED(status) ? "exit" : "signal",
+        WIFEXITED(status)     ? WEXITSTATUS(status)
+        : WIFSIGNALED(status) ? WTERMSIG(status)
+                              : -1);
   char *log = test_slurp(logfile, NULL);
   CHECK(log && strstr(log, "interrupted at t = "), "the log says 'interrupted at t = ...'");
-  if (log) printf("  log: %.*s\n", (int)strcspn(strstr(log, "interrupted") ? strstr(log, "interrupted") : log, "\n"),
-                  strstr(log, "interrupted") ? strstr(log, "interrupted") : log);
+  if (log)
+    printf("  log: %.*s\n",
+           (int)strcspn(strstr(log, "interrupted") ? strstr(log, "interrupted") : log, "\n"),
+           strstr(log, "interrupted") ? strstr(log, "interrupted") : log);
   free(log);
 
   /* summary.csv */
@@ -358,8 +373,10 @@ int main(void)
   int rows = summary_last(&step, &t, &tfirst);
   printf("  summary.csv: %d rows, last at step %ld, t = %.17g s\n", rows, step, t);
   CHECK(rows >= 2, "summary.csv is complete with %d rows (>= 2)", rows);
-  CHECK(t > 0 && t < 1000 && tfirst == 0.0, "its last row is the interrupted state: 0 < t = %g s "
-        "< 1000 s", t);
+  CHECK(t > 0 && t < 1000 && tfirst == 0.0,
+        "its last row is the interrupted state: 0 < t = %g s "
+        "< 1000 s",
+        t);
 
   /* the folder: snapshots, no temporary files */
   DIR *d = opendir(dir);
@@ -368,7 +385,8 @@ int main(void)
   while (d && (e = readdir(d))) {
     int k;
     char ext[8];
-    if (strstr(e->d_name, ".tmp.")) ntmp++;
+    if (strstr(e->d_name, ".tmp."))
+      ntmp++;
     else if (sscanf(e->d_name, "particles_%5d.%3s", &k, ext) == 2)
       nvtu += !strcmp(ext, "vtu"), ncsv += !strcmp(ext, "csv");
   }
@@ -412,8 +430,10 @@ int main(void)
   struct hv_error err;
   double ct = -1;
   int cok = !io_read_particles_csv(in_dir(name), &p, &ct, &err);
-  CHECK(cok && p.n == NPART && ct == t, "last .csv reads back: %zu particles at t = %.17g s "
-        "(want %d at %.17g)%s%s", p.n, ct, NPART, t, cok ? "" : ": ", cok ? "" : err.msg);
+  CHECK(cok && p.n == NPART && ct == t,
+        "last .csv reads back: %zu particles at t = %.17g s "
+        "(want %d at %.17g)%s%s",
+        p.n, ct, NPART, t, cok ? "" : ": ", cok ? "" : err.msg);
   particles_free(&p);
   static const int sigs[] = {SIGTERM, SIGHUP, SIGUSR1, SIGUSR2, SIGXCPU};
   static const char *const names[] = {"SIGTERM", "SIGHUP", "SIGUSR1", "SIGUSR2", "SIGXCPU"};

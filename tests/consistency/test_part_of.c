@@ -35,9 +35,9 @@
 #include "testlib.h"
 #include <omp.h>
 
-#define T_END 3e-6
-#define R_RING 7.5e-3
-#define JOIN_TOL 1e-10   /* measured -4.29e-14, +4.44e-16, -2.76e-14: round-off (was 1e-6) */
+#define T_END     3e-6
+#define R_RING    7.5e-3
+#define JOIN_TOL  1e-10 /* measured -4.29e-14, +4.44e-16, -2.76e-14: round-off (was 1e-6) */
 #define APART_MIN 0.1
 
 static const char *head =
@@ -51,17 +51,16 @@ static const char *head =
 static const char *one =
     "  - {name: plate, material: st, spacing: 0.5 mm,\n"
     "     shape: {type: box, min: [0, -10 mm, -10 mm], max: [1 mm, 10 mm, 10 mm]}}\n";
-static const char *two_a =   /* + the ring's part_of + two_b */
+static const char *two_a = /* + the ring's part_of + two_b */
     "  - {name: disc, material: st, spacing: 0.5 mm,\n"
     "     shape: {type: box, min: [0, -5 mm, -5 mm], max: [1 mm, 5 mm, 5 mm]}}\n"
     "  - {name: ring, material: st, spacing: 0.5 mm";
 static const char *two_b =
     ",\n     shape: {type: box, min: [0, -10 mm, -10 mm], max: [1 mm, 10 mm, 10 mm],\n"
     "             minus: [{type: box, min: [0, -5 mm, -5 mm], max: [1 mm, 5 mm, 5 mm]}]}}\n";
-static const char *tail =
-    "sph: {viscosity: {alpha: 1.0, beta: 2.0}}\n"
-    "time: {end: 1e30}\n"
-    "output: {vtu: false}\n";
+static const char *tail = "sph: {viscosity: {alpha: 1.0, beta: 2.0}}\n"
+                          "time: {end: 1e30}\n"
+                          "output: {vtu: false}\n";
 
 /* Runs one version; *pring: the ring's x-momentum, *defl: the centre's deflection,
  * *step: the jump in x-displacement across the seam along y (|z| < Δ: the mean
@@ -78,7 +77,7 @@ static int run(const char *plate, const char *label, double *pring, double *defl
   if (sim_from_text(text, "part_of.yaml", &s, &c)) return -1;
   const int32_t sphere = 0;
   const size_t n = s.p.n;
-  double *xs = calloc(n, sizeof *xs);   /* initial x by id */
+  double *xs = calloc(n, sizeof *xs); /* initial x by id */
   double x0 = 0.0;
   long n0 = 0;
   for (size_t i = 0; i < n; i++) {
@@ -116,8 +115,8 @@ static int run(const char *plate, const char *label, double *pring, double *defl
   *defl = (nc ? xc / (double)nc : 0.0) - (n0 ? x0 / (double)n0 : 0.0);
   *step = (nin ? din / (double)nin : 0.0) - (nout ? dout / (double)nout : 0.0);
   printf("%-7s n = %zu, t = %.3e s: ring x-momentum %.6e kg m/s, centre deflection %.6e m, "
-         "displacement step across the seam %.6e m (%ld + %ld particles)\n", label, n, s.t,
-         *pring, *defl, *step, nin, nout);
+         "displacement step across the seam %.6e m (%ld + %ld particles)\n",
+         label, n, s.t, *pring, *defl, *step, nin, nout);
   free(xs);
   sim_free(&s);
   cfg_free(c);
@@ -134,15 +133,24 @@ int main(void)
   if (run(one, "one", &p1, &d1, &s1) || run(joined, "joined", &pj, &dj, &sj) ||
       run(apart, "apart", &pa, &da, &sa))
     return test_finish();
-  CHECK(p1 != 0 && d1 > 0 && s1 != 0, "the impact moves the ring (%.3e kg m/s), the centre "
-        "(%.3e m) and shears the plate at r = 5 mm (%.3e m)", p1, d1, s1);
-  CHECK(fabs(pj / p1 - 1) < JOIN_TOL, "joined: ring momentum %.9e within %g of one body's %.9e "
-        "(%+.2e)", pj, JOIN_TOL, p1, pj / p1 - 1);
-  CHECK(fabs(dj / d1 - 1) < JOIN_TOL, "joined: centre deflection %.9e within %g of one body's "
-        "%.9e (%+.2e)", dj, JOIN_TOL, d1, dj / d1 - 1);
-  CHECK(fabs(sj / s1 - 1) < JOIN_TOL, "joined: displacement step at the seam %.9e within %g of "
-        "one body's %.9e (%+.2e)", sj, JOIN_TOL, s1, sj / s1 - 1);
-  CHECK(fabs(pa / p1 - 1) > APART_MIN, "apart: the ring's momentum differs from one body's by "
+  CHECK(p1 != 0 && d1 > 0 && s1 != 0,
+        "the impact moves the ring (%.3e kg m/s), the centre "
+        "(%.3e m) and shears the plate at r = 5 mm (%.3e m)",
+        p1, d1, s1);
+  CHECK(fabs(pj / p1 - 1) < JOIN_TOL,
+        "joined: ring momentum %.9e within %g of one body's %.9e "
+        "(%+.2e)",
+        pj, JOIN_TOL, p1, pj / p1 - 1);
+  CHECK(fabs(dj / d1 - 1) < JOIN_TOL,
+        "joined: centre deflection %.9e within %g of one body's "
+        "%.9e (%+.2e)",
+        dj, JOIN_TOL, d1, dj / d1 - 1);
+  CHECK(fabs(sj / s1 - 1) < JOIN_TOL,
+        "joined: displacement step at the seam %.9e within %g of "
+        "one body's %.9e (%+.2e)",
+        sj, JOIN_TOL, s1, sj / s1 - 1);
+  CHECK(fabs(pa / p1 - 1) > APART_MIN,
+        "apart: the ring's momentum differs from one body's by "
         "%+.0f %% (more than %.0f %%: the seam matters here, so the joined checks can fail)",
         100 * (pa / p1 - 1), 100 * APART_MIN);
   return test_finish();

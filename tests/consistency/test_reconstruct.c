@@ -44,34 +44,36 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define RATIO_MAX 1e-3  /* measured 1.9e-5; with the uncorrected gradient (the lattice sum
+#define RATIO_MAX                                                                                  \
+  1e-3                /* measured 1.9e-5; with the uncorrected gradient (the lattice sum
                            of a cubic lattice at η = 1.2 is about 0.98, not 1) 1.8e-2 */
-#define KINK_MIN 0.25   /* measured 0.34; 0 if every approaching pair lost its viscosity */
-#define EDOT 1e4        /* [1/s] */
-#define C 2e-3          /* [m] centre of the block */
+#define KINK_MIN 0.25 /* measured 0.34; 0 if every approaching pair lost its viscosity */
+#define EDOT     1e4  /* [1/s] */
+#define C        2e-3 /* [m] centre of the block */
 
-#define RATIO_CUT_MAX 1e-3  /* measured 1.9e-5 */
-#define CUT_MIN 0.1     /* measured 0.304: the contact pairs' share of the heating there */
-#define JUMP_MIN 0.95   /* measured 0.9956: the predictor's half step has already bent the
+#define RATIO_CUT_MAX 1e-3 /* measured 1.9e-5 */
+#define CUT_MIN       0.1  /* measured 0.304: the contact pairs' share of the heating there */
+#define JUMP_MIN                                                                                   \
+  0.95          /* measured 0.9956: the predictor's half step has already bent the
                            velocity near the cut; 0 if the jump lost its viscosity */
-#define V0 10.0         /* [m/s] each body's speed towards the cut in the jump */
+#define V0 10.0 /* [m/s] each body's speed towards the cut in the jump */
 
-#define CASE_FMT \
-    "name: reconstruct\n" \
-    "domain: {min: [-10 mm, -10 mm, -10 mm], max: [14 mm, 14 mm, 14 mm]}\n" \
-    "materials: {al: {library: al-alloy}}\n" \
-    "bodies:\n%s" \
-    "time: {end: 1e30, dt_init: 1e-9, dt_max: 1e-9}\n" \
-    "output: {vtu: false}\n" \
-    "sph: {viscosity: {alpha: %g, beta: %g, reconstruct: %s, reconstruct_contact: %s}}\n"
-#define ONE_BODY \
-    "  - {name: block, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [0, 0, 0], max: [4 mm, 4 mm, 4 mm]}}\n"
-#define TWO_BODIES \
-    "  - {name: left, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [0, 0, 0], max: [2 mm, 4 mm, 4 mm]}}\n" \
-    "  - {name: right, material: al, spacing: 0.25 mm,\n" \
-    "     shape: {type: box, min: [2 mm, 0, 0], max: [4 mm, 4 mm, 4 mm]}}\n"
+#define CASE_FMT                                                                                   \
+  "name: reconstruct\n"                                                                            \
+  "domain: {min: [-10 mm, -10 mm, -10 mm], max: [14 mm, 14 mm, 14 mm]}\n"                          \
+  "materials: {al: {library: al-alloy}}\n"                                                         \
+  "bodies:\n%s"                                                                                    \
+  "time: {end: 1e30, dt_init: 1e-9, dt_max: 1e-9}\n"                                               \
+  "output: {vtu: false}\n"                                                                         \
+  "sph: {viscosity: {alpha: %g, beta: %g, reconstruct: %s, reconstruct_contact: %s}}\n"
+#define ONE_BODY                                                                                   \
+  "  - {name: block, material: al, spacing: 0.25 mm,\n"                                            \
+  "     shape: {type: box, min: [0, 0, 0], max: [4 mm, 4 mm, 4 mm]}}\n"
+#define TWO_BODIES                                                                                 \
+  "  - {name: left, material: al, spacing: 0.25 mm,\n"                                             \
+  "     shape: {type: box, min: [0, 0, 0], max: [2 mm, 4 mm, 4 mm]}}\n"                            \
+  "  - {name: right, material: al, spacing: 0.25 mm,\n"                                            \
+  "     shape: {type: box, min: [2 mm, 0, 0], max: [4 mm, 4 mm, 4 mm]}}\n"
 
 enum field { UNIFORM, KINK, JUMP };
 
@@ -125,7 +127,8 @@ int main(void)
   size_t n = 0;
   for (int kink = 0; kink < 2; kink++) {
     if (one_step(0, 0, 0, (enum field)kink, 0, d0, x, y, z, &n) ||
-        one_step(1, 2, 0, (enum field)kink, 0, ds, x, y, z, &n) || one_step(1, 2, 1, (enum field)kink, 0, dr, x, y, z, &n))
+        one_step(1, 2, 0, (enum field)kink, 0, ds, x, y, z, &n) ||
+        one_step(1, 2, 1, (enum field)kink, 0, dr, x, y, z, &n))
       break;
     CHECK(n > 0 && n <= NMAX, "particles: %zu", n);
     double hs = 0.0, hr = 0.0;
@@ -133,11 +136,9 @@ int main(void)
     for (size_t i = 0; i < n; i++) {
       int in;
       if (!kink) {
-        in = x[i] > 1e-3 && x[i] < 3e-3 && y[i] > 1e-3 && y[i] < 3e-3 && z[i] > 1e-3 &&
-             z[i] < 3e-3;
+        in = x[i] > 1e-3 && x[i] < 3e-3 && y[i] > 1e-3 && y[i] < 3e-3 && z[i] > 1e-3 && z[i] < 3e-3;
       } else {
-        in = fabs(x[i] - C) < 0.3e-3 && y[i] > 1e-3 && y[i] < 3e-3 && z[i] > 1e-3 &&
-             z[i] < 3e-3;
+        in = fabs(x[i] - C) < 0.3e-3 && y[i] > 1e-3 && y[i] < 3e-3 && z[i] > 1e-3 && z[i] < 3e-3;
       }
       if (!in) continue;
       hs += ds[i] - d0[i];
@@ -147,20 +148,25 @@ int main(void)
     hs /= (double)cnt;
     hr /= (double)cnt;
     printf("%s: %ld particles; viscous heating rate standard %.6e W/kg, reconstructed %.6e "
-           "W/kg (ratio %.3e)\n", kink ? "kink, within 0.3 mm of it" : "uniform compression, "
-           "interior", cnt, hs, hr, hr / hs);
+           "W/kg (ratio %.3e)\n",
+           kink ? "kink, within 0.3 mm of it"
+                : "uniform compression, "
+                  "interior",
+           cnt, hs, hr, hr / hs);
     if (!kink) {
       CHECK(hs > 0, "the standard viscosity heats the uniform compression (%.3e W/kg)", hs);
       CHECK(fabs(hr) <= RATIO_MAX * hs, "reconstructed heating %.3e <= %.0e of the standard's",
             fabs(hr) / hs, RATIO_MAX);
     } else {
-      CHECK(hs > 0 && hr >= KINK_MIN * hs, "at the kink the reconstruction keeps %.3f of the "
-            "standard heating (>= %.2f)", hr / hs, KINK_MIN);
+      CHECK(hs > 0 && hr >= KINK_MIN * hs,
+            "at the kink the reconstruction keeps %.3f of the "
+            "standard heating (>= %.2f)",
+            hr / hs, KINK_MIN);
     }
   }
   /* the block cut in two: the contact pairs across the cut */
   double *dc = calloc(NMAX, sizeof *dc);
-  for (int f = UNIFORM; f <= JUMP; f += JUMP - UNIFORM) {   /* the kink is the one-body loop's */
+  for (int f = UNIFORM; f <= JUMP; f += JUMP - UNIFORM) { /* the kink is the one-body loop's */
     const enum field fl = (enum field)f;
     if (one_step(0, 0, 0, fl, 1, d0, x, y, z, &n) || one_step(1, 2, 0, fl, 1, ds, x, y, z, &n) ||
         one_step(1, 2, 1, fl, 1, dr, x, y, z, &n) || one_step(1, 2, 2, fl, 1, dc, x, y, z, &n))
@@ -177,18 +183,24 @@ int main(void)
     }
     printf("two bodies, %s, within 0.3 mm of the cut: %ld particles; viscous heating rate "
            "standard %.6e, reconstructed %.6e (ratio %.3e), with reconstruct_contact %.6e "
-           "(ratio %.3e) W/kg\n", f == UNIFORM ? "uniform compression" : "closing at a jump",
-           cnt, hs / cnt, hr / cnt, hr / hs, hc / cnt, hc / hs);
+           "(ratio %.3e) W/kg\n",
+           f == UNIFORM ? "uniform compression" : "closing at a jump", cnt, hs / cnt, hr / cnt,
+           hr / hs, hc / cnt, hc / hs);
     CHECK(cnt > 0 && hs > 0, "the standard viscosity heats the cut (%ld particles)", cnt);
     if (f == UNIFORM) {
-      CHECK(hr >= CUT_MIN * hs, "without reconstruct_contact the contact pairs keep their "
-            "viscosity: %.3f of the standard heating (>= %.2f)", hr / hs, CUT_MIN);
-      CHECK(fabs(hc) <= RATIO_CUT_MAX * hs, "with reconstruct_contact the smooth compression "
-            "across the cut is not heated: %.3e of the standard (<= %.0e)", fabs(hc) / hs,
-            RATIO_CUT_MAX);
+      CHECK(hr >= CUT_MIN * hs,
+            "without reconstruct_contact the contact pairs keep their "
+            "viscosity: %.3f of the standard heating (>= %.2f)",
+            hr / hs, CUT_MIN);
+      CHECK(fabs(hc) <= RATIO_CUT_MAX * hs,
+            "with reconstruct_contact the smooth compression "
+            "across the cut is not heated: %.3e of the standard (<= %.0e)",
+            fabs(hc) / hs, RATIO_CUT_MAX);
     } else {
-      CHECK(hc >= JUMP_MIN * hs, "with reconstruct_contact a jump between bodies keeps its "
-            "viscosity: %.4f of the standard heating (>= %.2f)", hc / hs, JUMP_MIN);
+      CHECK(hc >= JUMP_MIN * hs,
+            "with reconstruct_contact a jump between bodies keeps its "
+            "viscosity: %.4f of the standard heating (>= %.2f)",
+            hc / hs, JUMP_MIN);
     }
   }
   free(dc);

@@ -28,11 +28,11 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define T_END 1e-6
-#define FAR_MM 14.0        /* 5.75 mm of the wave plus 8.25 mm: see above */
-#define NEAR_MM 4.0
+#define T_END        1e-6
+#define FAR_MM       14.0 /* 5.75 mm of the wave plus 8.25 mm: see above */
+#define NEAR_MM      4.0
 #define NOT_REST_MAX 0.1   /* of the far particles exactly at rest without the tolerance */
-#define VEL_REL 1e-12      /* measured 7e-14 */
+#define VEL_REL      1e-12 /* measured 7e-14 */
 
 static const char *const CASE =
     "name: rest-snap\n"
@@ -105,14 +105,22 @@ int main(void)
          "the tolerance, %zu without; behind the wave largest |v| %.4g m/s, largest "
          "difference %.3g m/s; skipped at the last step %ld / %ld\n",
          a.step, a.t, FAR_MM, far, rest_a, rest_b, vmax, dv, a.cache.rested, b.cache.rested);
-  CHECK(far >= 500 && rest_a == far, "beyond the wave's reach every particle exactly at rest "
-        "(%zu of %zu)", rest_a, far);
-  CHECK(rest_b <= NOT_REST_MAX * far, "without the tolerance the stencil's precursor reaches "
-        "them: %zu of %zu exactly at rest (at most %.2f)", rest_b, far, NOT_REST_MAX);
-  CHECK(vmax > 10.0 && dv <= VEL_REL * vmax, "behind the wave the velocities agree: %.3g of "
-        "%.4g m/s (at most %.0e of it)", dv, vmax, VEL_REL);
-  CHECK(a.cache.rested > b.cache.rested, "more particles skipped with the tolerance (%ld "
-        "against %ld)", a.cache.rested, b.cache.rested);
+  CHECK(far >= 500 && rest_a == far,
+        "beyond the wave's reach every particle exactly at rest "
+        "(%zu of %zu)",
+        rest_a, far);
+  CHECK(rest_b <= NOT_REST_MAX * far,
+        "without the tolerance the stencil's precursor reaches "
+        "them: %zu of %zu exactly at rest (at most %.2f)",
+        rest_b, far, NOT_REST_MAX);
+  CHECK(vmax > 10.0 && dv <= VEL_REL * vmax,
+        "behind the wave the velocities agree: %.3g of "
+        "%.4g m/s (at most %.0e of it)",
+        dv, vmax, VEL_REL);
+  CHECK(a.cache.rested > b.cache.rested,
+        "more particles skipped with the tolerance (%ld "
+        "against %ld)",
+        a.cache.rested, b.cache.rested);
   sim_free(&a);
   sim_free(&b);
   cfg_free(ca);

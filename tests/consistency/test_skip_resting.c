@@ -29,8 +29,8 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define STEPS 240            /* to 0.87 µs: the debris strikes the backwall */
-#define SKIP_FIRST_MIN 0.5   /* measured 0.90 at the first step */
+#define STEPS          240 /* to 0.87 µs: the debris strikes the backwall */
+#define SKIP_FIRST_MIN 0.5 /* measured 0.90 at the first step */
 
 /* %s: skip_resting; %s: the viscosity switch */
 static const char *const CASE =
@@ -56,8 +56,7 @@ static const char *const CASE =
 static int setup(struct sim *s, struct cfg **c, int skip, int sw)
 {
   char text[4096];
-  snprintf(text, sizeof text, CASE, skip ? "true" : "false",
-           sw ? ", switch: cullen-dehnen" : "");
+  snprintf(text, sizeof text, CASE, skip ? "true" : "false", sw ? ", switch: cullen-dehnen" : "");
   return sim_from_text(text, "skip-resting.yaml", s, c);
 }
 
@@ -99,8 +98,8 @@ static size_t compare(struct sim *a, struct sim *b, long step)
     for (int k = 0; k < fa[f].ncomp; k++) {
       const size_t d = differ(&fa[f], &fb[f], k, a->p.n);
       if (d && !total)
-        CHECK(0, "step %ld: field %s[%d] differs at %zu of %zu particles", step, fa[f].name, k,
-              d, a->p.n);
+        CHECK(0, "step %ld: field %s[%d] differs at %zu of %zu particles", step, fa[f].name, k, d,
+              a->p.n);
       total += d;
     }
   if (!total && !(a->dt == b->dt && a->t == b->t)) {
@@ -141,23 +140,27 @@ int main(void)
          steps, a.t, a.p.n, first, last, wmin, skipped);
   CHECK(steps == STEPS && bad == 0, "%d steps with the same bits (%ld equal, %zu values differ)",
         STEPS, steps - (bad != 0), bad);
-  CHECK(first >= SKIP_FIRST_MIN, "first step: %.3f of the particles skipped, at least %.2f",
-        first, SKIP_FIRST_MIN);
-  double vbw = 0.0;   /* the debris has reached the backwall (body 2) */
+  CHECK(first >= SKIP_FIRST_MIN, "first step: %.3f of the particles skipped, at least %.2f", first,
+        SKIP_FIRST_MIN);
+  double vbw = 0.0; /* the debris has reached the backwall (body 2) */
   for (size_t i = 0; i < a.p.n; i++)
     if (a.p.body[i] == 2) {
-      const double v = sqrt(a.p.v[0][i] * a.p.v[0][i] + a.p.v[1][i] * a.p.v[1][i] +
-                            a.p.v[2][i] * a.p.v[2][i]);
+      const double v =
+          sqrt(a.p.v[0][i] * a.p.v[0][i] + a.p.v[1][i] * a.p.v[1][i] + a.p.v[2][i] * a.p.v[2][i]);
       if (v > vbw) vbw = v;
     }
-  CHECK(vbw > 10.0, "the debris has struck the backwall: its fastest particle at %.4g m/s "
-        "(> 10 m/s)", vbw);
-  size_t nlone = 0;   /* the lone particle (body 3): skipped, with no signal speed */
+  CHECK(vbw > 10.0,
+        "the debris has struck the backwall: its fastest particle at %.4g m/s "
+        "(> 10 m/s)",
+        vbw);
+  size_t nlone = 0; /* the lone particle (body 3): skipped, with no signal speed */
   for (size_t i = 0; i < a.p.n; i++)
     if (a.p.body[i] == 3) {
       nlone++;
-      CHECK(a.p.vsig[i] == 0.0 && a.p.cs[i] > 0.0, "the lone particle: signal speed %g m/s "
-            "(0: no neighbour), sound speed %g m/s", a.p.vsig[i], a.p.cs[i]);
+      CHECK(a.p.vsig[i] == 0.0 && a.p.cs[i] > 0.0,
+            "the lone particle: signal speed %g m/s "
+            "(0: no neighbour), sound speed %g m/s",
+            a.p.vsig[i], a.p.cs[i]);
     }
   CHECK(nlone == 1, "one lone particle (%zu)", nlone);
   CHECK(last < first, "fewer skipped at the last step (%.3f) than at the first (%.3f)", last,

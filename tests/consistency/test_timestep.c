@@ -41,26 +41,26 @@
 
 #define NSTEPS 3
 
-#define CASE_FMT                                                                          \
-  "name: timestep\n"                                                                        \
-  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                         \
-  "bodies:\n"                                                                               \
-  "  - {name: block, material: gas, spacing: 0.125, density: 1.0, pressure: 1.0,\n"         \
-  "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"                              \
-  "  - {name: lone, material: gas, spacing: 0.125, density: 1.0, pressure: 1000.0,\n"       \
-  "     velocity: [0.5, 0, 0],\n"                                                           \
-  "     shape: {type: box, min: [%g, 0.4375, 0.4375], max: [%g, 0.5625, 0.5625]}}\n"        \
+#define CASE_FMT                                                                                   \
+  "name: timestep\n"                                                                               \
+  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                               \
+  "bodies:\n"                                                                                      \
+  "  - {name: block, material: gas, spacing: 0.125, density: 1.0, pressure: 1.0,\n"                \
+  "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"                                     \
+  "  - {name: lone, material: gas, spacing: 0.125, density: 1.0, pressure: 1000.0,\n"              \
+  "     velocity: [0.5, 0, 0],\n"                                                                  \
+  "     shape: {type: box, min: [%g, 0.4375, 0.4375], max: [%g, 0.5625, 0.5625]}}\n"               \
   "time: {end: 1e30}\n"
 
 /* The same with an elastic-plastic solid (the solid force pass, sph_solid.c): al-alloy
  * at rest, the lone particle of it moving at 0.5 m/s far away. */
-#define SOLID_FMT                                                                         \
-  "name: timestep-solid\n"                                                                  \
-  "bodies:\n"                                                                               \
-  "  - {name: block, material: al-alloy, spacing: 0.125,\n"                                 \
-  "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"                              \
-  "  - {name: lone, material: al-alloy, spacing: 0.125, velocity: [0.5, 0, 0],\n"           \
-  "     shape: {type: box, min: [%g, 0.4375, 0.4375], max: [%g, 0.5625, 0.5625]}}\n"        \
+#define SOLID_FMT                                                                                  \
+  "name: timestep-solid\n"                                                                         \
+  "bodies:\n"                                                                                      \
+  "  - {name: block, material: al-alloy, spacing: 0.125,\n"                                        \
+  "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"                                     \
+  "  - {name: lone, material: al-alloy, spacing: 0.125, velocity: [0.5, 0, 0],\n"                  \
+  "     shape: {type: box, min: [%g, 0.4375, 0.4375], max: [%g, 0.5625, 0.5625]}}\n"               \
   "time: {end: 1e30}\n"
 
 /* The snapshots' `dt` field: every particle's own limit is positive and finite, none is
@@ -87,8 +87,10 @@ static int dt_field_bad(const struct sim *s)
 static double run(int solid, double x0, int *limit_body, double *c_lone)
 {
   char text[1024];
-  if (solid) snprintf(text, sizeof text, SOLID_FMT, x0, x0 + 0.125);
-  else snprintf(text, sizeof text, CASE_FMT, x0, x0 + 0.125);
+  if (solid)
+    snprintf(text, sizeof text, SOLID_FMT, x0, x0 + 0.125);
+  else
+    snprintf(text, sizeof text, CASE_FMT, x0, x0 + 0.125);
   struct sim s;
   struct cfg *c;
   struct hv_error err = {0};
@@ -97,8 +99,10 @@ static double run(int solid, double x0, int *limit_body, double *c_lone)
   int ok = !step_init(&s, &err);
   for (int k = 0; k < NSTEPS && ok; k++) ok = !step_advance(&s, &err);
   CHECK(ok, "x0 = %g: %d steps (%s)", x0, NSTEPS, ok ? "ok" : err.msg);
-  CHECK(ok && !dt_field_bad(&s), "x0 = %g: each particle's dt is its own limit, the smallest "
-        "the step (%.6g s)", x0, s.dt);
+  CHECK(ok && !dt_field_bad(&s),
+        "x0 = %g: each particle's dt is its own limit, the smallest "
+        "the step (%.6g s)",
+        x0, s.dt);
   double vsig = NAN;
   for (size_t i = 0; i < s.p.n; i++)
     if (s.p.body[i] == 1) {
@@ -107,21 +111,23 @@ static double run(int solid, double x0, int *limit_body, double *c_lone)
     }
   *limit_body = s.dt_limit_body;
   printf("%s, x0 = %g: lone particle vsig = %.6g m/s (c = %.4g m/s); step %.4g s set by body %d "
-         "(%s)\n", solid ? "solid" : "gas", x0, vsig, *c_lone, s.dt, s.dt_limit_body, step_limit_name(s.dt_limit));
+         "(%s)\n",
+         solid ? "solid" : "gas", x0, vsig, *c_lone, s.dt, s.dt_limit_body,
+         step_limit_name(s.dt_limit));
   sim_free(&s);
   cfg_free(c);
   return vsig;
 }
 
 /* Part 4: the gas block at Mach 50 against the wall at x = 2 (see the header). */
-#define WALL_CASE                                                                         \
-  "name: timestep-wall\n"                                                                 \
-  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                      \
-  "domain: {min: [0, 0, 0], max: [2, 1, 1],\n"                                            \
-  "         boundary: {x_min: open, x_max: wall, y: periodic, z: periodic}}\n"           \
-  "bodies:\n"                                                                             \
-  "  - {name: block, material: gas, spacing: 0.125, density: 1.0, pressure: 0.714285714,\n" \
-  "     velocity: [50, 0, 0], shape: {type: box, min: [0.25, 0, 0], max: [1, 1, 1]}}\n"   \
+#define WALL_CASE                                                                                  \
+  "name: timestep-wall\n"                                                                          \
+  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                               \
+  "domain: {min: [0, 0, 0], max: [2, 1, 1],\n"                                                     \
+  "         boundary: {x_min: open, x_max: wall, y: periodic, z: periodic}}\n"                     \
+  "bodies:\n"                                                                                      \
+  "  - {name: block, material: gas, spacing: 0.125, density: 1.0, pressure: 0.714285714,\n"        \
+  "     velocity: [50, 0, 0], shape: {type: box, min: [0.25, 0, 0], max: [1, 1, 1]}}\n"            \
   "time: {end: 1e30}\n"
 
 static void wall_approach(void)
@@ -163,20 +169,24 @@ static void wall_approach(void)
     }
     double vmax = -HUGE_VAL;
     for (size_t i = 0; i < n; i++) vmax = fmax(vmax, s.p.v[0][i]);
-    if (reached && vmax < 0.0) break;   /* everything rebounds */
+    if (reached && vmax < 0.0) break; /* everything rebounds */
   }
   CHECK(ok, "wall: %d steps (%s)", steps, ok ? "ok" : err.msg);
-  CHECK(dt_bad == 0, "wall: each particle's dt is its own limit, the smallest the step, at "
-        "every step (%d of %d steps wrong)", dt_bad, steps);
+  CHECK(dt_bad == 0,
+        "wall: each particle's dt is its own limit, the smallest the step, at "
+        "every step (%d of %d steps wrong)",
+        dt_bad, steps);
   diag_totals(&s.p, &t);
   const double de = fabs(t.e_total - t0.e_total) / t0.e_total;
   printf("wall: %d steps to t = %.4g s; the largest move towards the wall %.4g of "
-         "max(d - h, C h); total energy %.6g -> %.6g J (%.2e)\n", steps, s.t, worst,
-         t0.e_total, t.e_total, de);
+         "max(d - h, C h); total energy %.6g -> %.6g J (%.2e)\n",
+         steps, s.t, worst, t0.e_total, t.e_total, de);
   CHECK(reached, "wall: the block reached the wall");
   /* 1 % slack: the velocity at the step's end is not the one the step was chosen with */
-  CHECK(worst <= 1.01, "wall: no particle moved more than max(d - h, C_CFL h) towards the "
-        "wall in one step (worst %.4g of it)", worst);
+  CHECK(worst <= 1.01,
+        "wall: no particle moved more than max(d - h, C_CFL h) towards the "
+        "wall in one step (worst %.4g of it)",
+        worst);
   /* measured 7.48e-4 (was 1e-2) */
   CHECK(de < 2e-3, "wall: total energy kept within 2e-3 (%.2e)", de);
   free(d0);
@@ -193,13 +203,13 @@ static void wall_approach(void)
  * = 0.1375 m, v = +1 m/s after the step. Before the step's start velocity was mirrored
  * with it (boundary.c), the corrector took v⁰ + Δt a = −1 m/s back into the face, and
  * the particle ended the step at 0.0625 m, where it began. */
-#define CROSS_CASE                                                                        \
-  "name: timestep-cross\n"                                                               \
-  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                     \
-  "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x_min: wall, x_max: open, y: open, z: open}}\n" \
-  "sph: {viscosity: {beta: 0}}\n"                                                        \
-  "bodies:\n"                                                                            \
-  "  - {name: lone, material: gas, spacing: 0.125, density: 1.0, pressure: 0,\n"          \
+#define CROSS_CASE                                                                                           \
+  "name: timestep-cross\n"                                                                                   \
+  "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"                                                         \
+  "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x_min: wall, x_max: open, y: open, z: open}}\n"       \
+  "sph: {viscosity: {beta: 0}}\n"                                                                            \
+  "bodies:\n"                                                                                                \
+  "  - {name: lone, material: gas, spacing: 0.125, density: 1.0, pressure: 0,\n"                             \
   "     velocity: [-1, 0, 0], shape: {type: box, min: [0, 0.4375, 0.4375], max: [0.125, 0.5625, 0.5625]}}\n" \
   "time: {end: 1e30, dt_init: 0.2}\n"
 
@@ -214,8 +224,8 @@ static void predictor_crossing(void)
   int ok = !step_init(&s, &err) && !step_advance(&s, &err);
   CHECK(ok, "cross: one step (%s)", ok ? "ok" : err.msg);
   if (ok && s.p.n == 1) {
-    printf("cross: after one step of %.4g s: x = %.17g m, v = %.17g m/s, a = %.3g m/s2\n",
-           s.t, s.p.x[0][0], s.p.v[0][0], s.p.a[0][0]);
+    printf("cross: after one step of %.4g s: x = %.17g m, v = %.17g m/s, a = %.3g m/s2\n", s.t,
+           s.p.x[0][0], s.p.v[0][0], s.p.a[0][0]);
     CHECK(s.t == 0.2, "cross: the step is time.dt_init (t = %.17g s)", s.t);
     CHECK(s.p.a[0][0] == 0.0, "cross: no force on the cold particle (a = %g)", s.p.a[0][0]);
     CHECK(fabs(s.p.x[0][0] - 0.1375) < 1e-12, "cross: reflected to x = 0.1375 m (%.17g)",

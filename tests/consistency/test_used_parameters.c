@@ -42,7 +42,7 @@ static char *normalised(const char *path)
     size_t n = strlen(line);
     if (mark) {
       char *d = strstr(mark, "default");
-      if (d && d[7] == '\0') {   /* "  # m, default" -> "  # m", "  # default" -> "" */
+      if (d && d[7] == '\0') { /* "  # m, default" -> "  # m", "  # default" -> "" */
         n = (size_t)(d - line);
         while (n > 0 && (line[n - 1] == ' ' || line[n - 1] == ',' || line[n - 1] == '#')) n--;
       }
@@ -92,13 +92,14 @@ static void restart_every(const char *casefile, const char *dir, const char *eve
 {
   char cmd[9000], out[8192];
   int rc = -1;
-  if ((size_t)snprintf(cmd, sizeof cmd, "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
+  if ((size_t)snprintf(cmd, sizeof cmd,
+                       "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
                        "time.end=0.01 && '%s' restart '%s' --quiet --set time.end=0.04 --set "
-                       "output.every=%s)", dir, test_bin(), casefile, dir, test_bin(), dir,
-                       every) < sizeof cmd)
+                       "output.every=%s)",
+                       dir, test_bin(), casefile, dir, test_bin(), dir, every) < sizeof cmd)
     rc = test_run(cmd, out, sizeof out);
-  CHECK(rc == 0, "run to 0.01 s, restart to 0.04 s with output.every = %s s (exit %d)%s%s",
-        every, rc, rc ? ": " : "", rc ? out : "");
+  CHECK(rc == 0, "run to 0.01 s, restart to 0.04 s with output.every = %s s (exit %d)%s%s", every,
+        rc, rc ? ": " : "", rc ? out : "");
   double t[64];
   const int n = summary_times(dir, t, 64);
   int same = n == nwant;
@@ -106,8 +107,10 @@ static void restart_every(const char *casefile, const char *dir, const char *eve
   printf("  output.every = %s s at the restart: outputs at", every);
   for (int k = 0; k < n; k++) printf(" %g", t[k]);
   printf(" s\n");
-  CHECK(same, "output.every = %s s at the restart: %d outputs, at the multiples of the "
-        "interval in force (want %d)", every, n, nwant);
+  CHECK(same,
+        "output.every = %s s at the restart: %d outputs, at the multiples of the "
+        "interval in force (want %d)",
+        every, n, nwant);
 }
 
 /* The same for measure.every: measurements (the gas shock in 'right') every 0.002 s to
@@ -116,14 +119,17 @@ static void restart_measure_every(const char *casefile, const char *dir)
 {
   char cmd[9000], out[8192], path[4400];
   int rc = -1;
-  if ((size_t)snprintf(cmd, sizeof cmd, "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
+  if ((size_t)snprintf(cmd, sizeof cmd,
+                       "(rm -rf '%s' && '%s' run '%s' -o '%s' --quiet --set "
                        "time.end=0.01 --set measure.gas=right --set measure.every=0.002 && '%s' "
-                       "restart '%s' --quiet --set time.end=0.03 --set measure.every=0.004)", dir,
-                       test_bin(), casefile, dir, test_bin(), dir) < sizeof cmd)
+                       "restart '%s' --quiet --set time.end=0.03 --set measure.every=0.004)",
+                       dir, test_bin(), casefile, dir, test_bin(), dir) < sizeof cmd)
     rc = test_run(cmd, out, sizeof out);
-  CHECK(rc == 0, "run to 0.01 s with measure.every = 0.002 s, restart to 0.03 s with 0.004 s "
-        "(exit %d)%s%s", rc, rc ? ": " : "", rc ? out : "");
-  static const double want[] = {0,     0.002, 0.004, 0.005, 0.006, 0.008, 0.01,  0.012,
+  CHECK(rc == 0,
+        "run to 0.01 s with measure.every = 0.002 s, restart to 0.03 s with 0.004 s "
+        "(exit %d)%s%s",
+        rc, rc ? ": " : "", rc ? out : "");
+  static const double want[] = {0,     0.002, 0.004, 0.005, 0.006, 0.008, 0.01, 0.012,
                                 0.015, 0.016, 0.02,  0.024, 0.025, 0.028, 0.03};
   const int nwant = (int)(sizeof want / sizeof want[0]);
   double t[64];
@@ -140,8 +146,10 @@ static void restart_measure_every(const char *casefile, const char *dir)
   printf("  measure.every = 0.004 s at the restart: measurements at");
   for (int k = 0; k < n; k++) printf(" %g", t[k]);
   printf(" s\n");
-  CHECK(same, "measure.every = 0.004 s at the restart: %d measurement times, the multiples of "
-        "the interval in force and the output times (want %d)", n, nwant);
+  CHECK(same,
+        "measure.every = 0.004 s at the restart: %d measurement times, the multiples of "
+        "the interval in force and the output times (want %d)",
+        n, nwant);
 }
 
 int main(void)
@@ -157,20 +165,22 @@ int main(void)
   CHECK(rc == 0, "tiny.yaml runs (exit %d)%s%s", rc, rc ? ": " : "", rc ? out : "");
   if (rc) return test_finish();
   rc = run(used1, d2, out, sizeof out);
-  CHECK(rc == 0, "its used_parameters.yaml runs as a case file (exit %d)%s%s", rc,
-        rc ? ": " : "", rc ? out : "");
+  CHECK(rc == 0, "its used_parameters.yaml runs as a case file (exit %d)%s%s", rc, rc ? ": " : "",
+        rc ? out : "");
   if (rc) return test_finish();
 
-  static const char *const files[] = {"summary.csv", "run.pvd", "particles_00000.vtu",
-                                      "particles_00000.csv", "particles_00004.vtu",
-                                      "particles_00004.csv"};
+  static const char *const files[] = {"summary.csv",         "run.pvd",
+                                      "particles_00000.vtu", "particles_00000.csv",
+                                      "particles_00004.vtu", "particles_00004.csv"};
   for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
     char p1[4400], p2[4400];
     size_t n1 = 0, n2 = 0;
     char *a = test_slurp(join(p1, sizeof p1, d1, files[k]), &n1);
     char *b = test_slurp(join(p2, sizeof p2, d2, files[k]), &n2);
-    CHECK(a && b && n1 == n2 && !memcmp(a, b, n1), "%s: the rerun wrote the same %zu bytes "
-          "(%zu)", files[k], n1, n2);
+    CHECK(a && b && n1 == n2 && !memcmp(a, b, n1),
+          "%s: the rerun wrote the same %zu bytes "
+          "(%zu)",
+          files[k], n1, n2);
     free(a);
     free(b);
   }
@@ -190,12 +200,11 @@ int main(void)
 
   char d3[4200];
   static const double longer[] = {0, 0.005, 0.01, 0.02, 0.03, 0.04};
-  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-longer"), "0.01", longer,
-                6);
-  static const double shorter[] = {0,      0.005,  0.01,  0.0125, 0.015, 0.0175, 0.02,
-                                   0.0225, 0.025, 0.0275, 0.03,  0.0325, 0.035, 0.0375, 0.04};
-  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-shorter"), "0.0025",
-                shorter, 15);
+  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-longer"), "0.01", longer, 6);
+  static const double shorter[] = {0,     0.005,  0.01, 0.0125, 0.015, 0.0175, 0.02, 0.0225,
+                                   0.025, 0.0275, 0.03, 0.0325, 0.035, 0.0375, 0.04};
+  restart_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-shorter"), "0.0025", shorter,
+                15);
   restart_measure_every(casefile, join(d3, sizeof d3, test_tmpdir(), "restart-measure"));
   return test_finish();
 }

@@ -35,8 +35,8 @@ static double momentum_scale(const struct particles *p)
 {
   double s = 0.0;
   for (size_t i = 0; i < p->n; i++)
-    s += p->m[i] * sqrt(p->v[0][i] * p->v[0][i] + p->v[1][i] * p->v[1][i] +
-                        p->v[2][i] * p->v[2][i]);
+    s +=
+        p->m[i] * sqrt(p->v[0][i] * p->v[0][i] + p->v[1][i] * p->v[1][i] + p->v[2][i] * p->v[2][i]);
   return s;
 }
 
@@ -88,8 +88,9 @@ void conserve_steps(struct sim *s, int nsteps, double momentum_max, double energ
     masses_same &= !memcmp(m0, m1, n0 * sizeof *m0);
     if (k % 10 == 0)
       printf("step %3d  t = %.6e s  dt = %.3e s  |dp|/sum m|v| = %.3e  (E - E0)/E0 = %+.3e  "
-             "E_kin/E_kin0 = %.4f  E_int = %.4e J\n", k, s->t, s->dt, dp,
-             (t->e_total - t0->e_total) / t0->e_total, t->e_kin / t0->e_kin, t->e_int);
+             "E_kin/E_kin0 = %.4f  E_int = %.4e J\n",
+             k, s->t, s->dt, dp, (t->e_total - t0->e_total) / t0->e_total, t->e_kin / t0->e_kin,
+             t->e_int);
   }
   CHECK(ok, "%d steps run (%s)", nsteps, ok ? "ok" : err.msg);
   CHECK(count_same, "particle count stays %zu", n0);
@@ -97,10 +98,12 @@ void conserve_steps(struct sim *s, int nsteps, double momentum_max, double energ
   CHECK(mass_id_same, "total mass summed in id order is bitwise the initial %.17g kg", mass0_id);
   CHECK(mass_diag_same, "total mass from diag_totals is bitwise the initial %.17g kg (last %.17g)",
         t0->mass, t->mass);
-  CHECK(worst_dp < momentum_max, "momentum: max |dp| / sum m|v| = %.3e (step %ld) < %.0e",
-        worst_dp, worst_dp_step, momentum_max);
-  CHECK(worst_de < energy_max, "energy: max |E - E0| / E0 = %.3e < %.0e (reported; "
-        "the scheme is not exactly energy conserving)", worst_de, energy_max);
+  CHECK(worst_dp < momentum_max, "momentum: max |dp| / sum m|v| = %.3e (step %ld) < %.0e", worst_dp,
+        worst_dp_step, momentum_max);
+  CHECK(worst_de < energy_max,
+        "energy: max |E - E0| / E0 = %.3e < %.0e (reported; "
+        "the scheme is not exactly energy conserving)",
+        worst_de, energy_max);
   r->ok = ok;
   free(m0);
   free(m1);

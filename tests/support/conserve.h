@@ -18,8 +18,8 @@
 double conserve_uniform(uint64_t *state);
 
 struct conserve_result {
-  int ok;                  /* every step ran */
-  struct totals t0, t;     /* before the first step and after the last */
+  int ok;              /* every step ran */
+  struct totals t0, t; /* before the first step and after the last */
 };
 
 /* step_init, then nsteps × step_advance on s, with the checks above as CHECKs (their

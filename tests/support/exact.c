@@ -41,8 +41,7 @@ void exact_riemann_star(struct gas_state L, struct gas_state R, double g, double
 }
 
 /* Toro §4.5: sampling. */
-void exact_riemann(struct gas_state L, struct gas_state R, double g, double S,
-                   struct gas_state *o)
+void exact_riemann(struct gas_state L, struct gas_state R, double g, double S, struct gas_state *o)
 {
   double ps, us;
   exact_riemann_star(L, R, g, &ps, &us);
@@ -51,12 +50,16 @@ void exact_riemann(struct gas_state L, struct gas_state R, double g, double S,
     double cL = sqrt(g * L.p / L.rho);
     if (ps > L.p) {
       double SL = L.u - cL * sqrt((g + 1.0) / (2.0 * g) * ps / L.p + (g - 1.0) / (2.0 * g));
-      if (S <= SL) *o = L;
-      else *o = (struct gas_state){L.rho * (ps / L.p + gm) / (gm * ps / L.p + 1.0), us, ps};
+      if (S <= SL)
+        *o = L;
+      else
+        *o = (struct gas_state){L.rho * (ps / L.p + gm) / (gm * ps / L.p + 1.0), us, ps};
     } else {
       double SH = L.u - cL, cs = cL * pow(ps / L.p, (g - 1.0) / (2.0 * g)), ST = us - cs;
-      if (S <= SH) *o = L;
-      else if (S > ST) *o = (struct gas_state){L.rho * pow(ps / L.p, 1.0 / g), us, ps};
+      if (S <= SH)
+        *o = L;
+      else if (S > ST)
+        *o = (struct gas_state){L.rho * pow(ps / L.p, 1.0 / g), us, ps};
       else {
         double f = 2.0 / (g + 1.0) + gm / cL * (L.u - S);
         double c = f * cL;
@@ -69,12 +72,16 @@ void exact_riemann(struct gas_state L, struct gas_state R, double g, double S,
     double cR = sqrt(g * R.p / R.rho);
     if (ps > R.p) {
       double SR = R.u + cR * sqrt((g + 1.0) / (2.0 * g) * ps / R.p + (g - 1.0) / (2.0 * g));
-      if (S >= SR) *o = R;
-      else *o = (struct gas_state){R.rho * (ps / R.p + gm) / (gm * ps / R.p + 1.0), us, ps};
+      if (S >= SR)
+        *o = R;
+      else
+        *o = (struct gas_state){R.rho * (ps / R.p + gm) / (gm * ps / R.p + 1.0), us, ps};
     } else {
       double SH = R.u + cR, cs = cR * pow(ps / R.p, (g - 1.0) / (2.0 * g)), ST = us + cs;
-      if (S >= SH) *o = R;
-      else if (S < ST) *o = (struct gas_state){R.rho * pow(ps / R.p, 1.0 / g), us, ps};
+      if (S >= SH)
+        *o = R;
+      else if (S < ST)
+        *o = (struct gas_state){R.rho * pow(ps / R.p, 1.0 / g), us, ps};
       else {
         double f = 2.0 / (g + 1.0) - gm / cR * (R.u - S);
         double c = f * cR;
@@ -88,7 +95,7 @@ void exact_riemann(struct gas_state L, struct gas_state R, double g, double S,
 
 double exact_noh_density(double r, double t, double g, double rho0)
 {
-  double rs = 0.5 * (g - 1.0) * t;   /* shock speed (γ−1)/2 for unit inflow: 1/3 at γ = 5/3 */
+  double rs = 0.5 * (g - 1.0) * t; /* shock speed (γ−1)/2 for unit inflow: 1/3 at γ = 5/3 */
   if (r < rs) return rho0 * pow((g + 1.0) / (g - 1.0), 3.0);
   return rho0 * (1.0 + t / r) * (1.0 + t / r);
 }
@@ -145,7 +152,7 @@ void exact_sedov_solve(double g, struct sedov_solution *s)
     s->G[k] = y[1];
     s->Z[k] = y[2];
   }
-  s->lam[0] = 0.0;   /* the centre: G → 0, V → δ/γ, G·Z·λ² (the pressure) finite */
+  s->lam[0] = 0.0; /* the centre: G → 0, V → δ/γ, G·Z·λ² (the pressure) finite */
   s->V[0] = delta / g;
   s->G[0] = 0.0;
   s->Z[0] = s->Z[1];
@@ -154,8 +161,8 @@ void exact_sedov_solve(double g, struct sedov_solution *s)
   for (int k = 1; k < N; k++) {
     double f0 = s->G[k - 1] * (0.5 * s->V[k - 1] * s->V[k - 1] + s->Z[k - 1] / (g * (g - 1.0))) *
                 pow(s->lam[k - 1], 4.0);
-    double f1 = s->G[k] * (0.5 * s->V[k] * s->V[k] + s->Z[k] / (g * (g - 1.0))) *
-                pow(s->lam[k], 4.0);
+    double f1 =
+        s->G[k] * (0.5 * s->V[k] * s->V[k] + s->Z[k] / (g * (g - 1.0))) * pow(s->lam[k], 4.0);
     I += 0.5 * (f0 + f1) * (s->lam[k] - s->lam[k - 1]);
   }
   s->xi0 = pow(4.0 * 3.14159265358979323846 * I, -0.2);
@@ -173,8 +180,10 @@ void exact_sedov(const struct sedov_solution *s, double E, double rho0, double t
   int lo = 0, hi = EXACT_SEDOV_N - 1;
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;
-    if (s->lam[mid] <= lam) lo = mid;
-    else hi = mid;
+    if (s->lam[mid] <= lam)
+      lo = mid;
+    else
+      hi = mid;
   }
   double w = (lam - s->lam[lo]) / (s->lam[hi] - s->lam[lo]);
   double G = s->G[lo] + w * (s->G[hi] - s->G[lo]), V = s->V[lo] + w * (s->V[hi] - s->V[lo]);

@@ -16,7 +16,7 @@
 #define HV_EXACT_H
 
 struct gas_state {
-  double rho, u, p;   /* density, velocity (radial for Noh/Sedov), pressure */
+  double rho, u, p; /* density, velocity (radial for Noh/Sedov), pressure */
 };
 
 /* Solution at ξ = x/t of the Riemann problem L | R (interface at x = 0). */
@@ -39,8 +39,8 @@ double exact_sedov_radius(double xi0, double E, double rho0, double t);
 #define EXACT_SEDOV_N 4001
 struct sedov_solution {
   double gamma;
-  double xi0;                       /* r_s = xi0 (E t²/ρ₀)^(1/5) */
-  double lam[EXACT_SEDOV_N];        /* λ, increasing, lam[N-1] = 1 */
+  double xi0;                /* r_s = xi0 (E t²/ρ₀)^(1/5) */
+  double lam[EXACT_SEDOV_N]; /* λ, increasing, lam[N-1] = 1 */
   double G[EXACT_SEDOV_N], V[EXACT_SEDOV_N], Z[EXACT_SEDOV_N];
 };
 /* Integrates the similarity ODEs for gamma (1 < γ ≤ 3) and finds ξ₀. */

@@ -53,10 +53,11 @@ int verif_run_as(const char *name, const char *dirname, int argc, char **argv, d
 {
   static char cmd[16384], out[65536];
   const char *more = getenv("HVSPH_CASE_ARGS");
-  snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s/%s' --overwrite "
+  snprintf(cmd, sizeof cmd,
+           "'%s' run '%s/examples/verification/%s.yaml' -o '%s/%s' --overwrite "
            "--quiet "
-           "--threads %d", test_bin(), test_source_dir(), name, test_tmpdir(), dirname,
-           verif_threads());
+           "--threads %d",
+           test_bin(), test_source_dir(), name, test_tmpdir(), dirname, verif_threads());
   for (int i = 1; i < argc; i++) append_quoted(cmd, sizeof cmd, argv[i]);
   if (more && *more) {
     size_t k = strlen(cmd);

@@ -34,10 +34,12 @@ int sc_run(const char *example, const char *outname, const char *extra, double *
   char cmd[8192];
   static char out[65536];
   const char *more = getenv("HVSPH_CASE_ARGS");
-  snprintf(cmd, sizeof cmd, "'%s' run '%s/examples/verification/%s.yaml' -o '%s' --overwrite "
+  snprintf(cmd, sizeof cmd,
+           "'%s' run '%s/examples/verification/%s.yaml' -o '%s' --overwrite "
            "--quiet "
-           "--threads %d %s %s", test_bin(), test_source_dir(), example, sc_outdir(outname),
-           sc_threads(), extra ? extra : "", more ? more : "");
+           "--threads %d %s %s",
+           test_bin(), test_source_dir(), example, sc_outdir(outname), sc_threads(),
+           extra ? extra : "", more ? more : "");
   printf("running: %s\n", cmd);
   fflush(stdout);
   struct timespec t0, t1;
@@ -119,8 +121,10 @@ int sc_layers(const struct particles *p, const unsigned char *sel, int dim, doub
     int a = 0, b = nl - 1; /* last layer with lo <= x */
     while (a < b) {
       int mid = (a + b + 1) / 2;
-      if (lo[mid] <= p->x[dim][i]) a = mid;
-      else b = mid - 1;
+      if (lo[mid] <= p->x[dim][i])
+        a = mid;
+      else
+        b = mid - 1;
     }
     layer_of_id[p->id[i]] = a;
   }
@@ -129,8 +133,8 @@ int sc_layers(const struct particles *p, const unsigned char *sel, int dim, doub
   return nl;
 }
 
-void sc_layer_mean(const struct particles *p, const double *f, const int *layer_of_id,
-                   size_t nid, int nlayer, double *out)
+void sc_layer_mean(const struct particles *p, const double *f, const int *layer_of_id, size_t nid,
+                   int nlayer, double *out)
 {
   long *cnt = calloc((size_t)nlayer + 1, sizeof *cnt);
   if (!cnt) abort();
@@ -169,7 +173,7 @@ double sc_plateau(const double *X, const double *f, int n, double front, double 
   double s = 0.0;
   int c = 0;
   for (int l = 0; l < n; l++) {
-    const double q = X[l] / front;   /* 0 at the contact, 1 at the front */
+    const double q = X[l] / front; /* 0 at the contact, 1 at the front */
     if (q > lo && q < hi) {
       s += f[l];
       c++;
@@ -190,13 +194,15 @@ double sc_mg_pressure(double rho0, double c0, double n, double Gamma, double rho
 void sc_mg_hugoniot(double rho0, double c0, double n, double Gamma, double up, double *rho1,
                     double *Us, double *p1)
 {
-  double a = rho0 * (1.0 + 1e-9), b = 4.0 * rho0;   /* residual < 0 at a, > 0 at b */
+  double a = rho0 * (1.0 + 1e-9), b = 4.0 * rho0; /* residual < 0 at a, > 0 at b */
   for (int k = 0; k < 200; k++) {
     const double r = 0.5 * (a + b);
-    const double p = rho0 * up * up * r / (r - rho0);   /* the jump conditions' p₁(ρ₁) */
+    const double p = rho0 * up * up * r / (r - rho0); /* the jump conditions' p₁(ρ₁) */
     const double E = 0.5 * p * (1.0 / rho0 - 1.0 / r);
-    if (sc_mg_pressure(rho0, c0, n, Gamma, r, E) - p > 0) b = r;
-    else a = r;
+    if (sc_mg_pressure(rho0, c0, n, Gamma, r, E) - p > 0)
+      b = r;
+    else
+      a = r;
   }
   *rho1 = 0.5 * (a + b);
   *Us = up * *rho1 / (*rho1 - rho0);

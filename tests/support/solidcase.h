@@ -59,8 +59,8 @@ int sc_layers(const struct particles *p, const unsigned char *sel, int dim, doub
 
 /* Mean over each layer of a per-slot field f (f[slot]) at a later snapshot p:
  * out[l] for l < nlayer (NAN for an empty layer). */
-void sc_layer_mean(const struct particles *p, const double *f, const int *layer_of_id,
-                   size_t nid, int nlayer, double *out);
+void sc_layer_mean(const struct particles *p, const double *f, const int *layer_of_id, size_t nid,
+                   int nlayer, double *out);
 
 /* The position where the profile v(X) (layers in order, X increasing) first crosses
  * `level`, scanning from the last layer towards the first when from_end is 1 (from the

@@ -21,12 +21,13 @@ void test_check(int ok, const char *file, int line, const char *fmt, ...)
 int test_pending(int ok);
 void test_check_pending(const char *file, int line, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-#define CHECK(cond, ...) (test_pending(!!(cond)), test_check_pending(__FILE__, __LINE__, __VA_ARGS__))
-#define CHECK_CLOSE(a, b, tol, what)                                                  \
-  do {                                                                                \
-    double a_ = (a), b_ = (b), t_ = (tol);                                             \
-    test_check(a_ - b_ <= t_ && b_ - a_ <= t_, __FILE__, __LINE__,                     \
-               "%s: %.10g vs %.10g (tolerance %.3g)", (what), a_, b_, t_);             \
+#define CHECK(cond, ...)                                                                           \
+  (test_pending(!!(cond)), test_check_pending(__FILE__, __LINE__, __VA_ARGS__))
+#define CHECK_CLOSE(a, b, tol, what)                                                               \
+  do {                                                                                             \
+    double a_ = (a), b_ = (b), t_ = (tol);                                                         \
+    test_check(a_ - b_ <= t_ && b_ - a_ <= t_, __FILE__, __LINE__,                                 \
+               "%s: %.10g vs %.10g (tolerance %.3g)", (what), a_, b_, t_);                         \
   } while (0)
 
 int test_finish(void);

@@ -21,32 +21,32 @@ static void diag3(double a, double b, double c, double G[9])
 
 int main(void)
 {
-  const double k = 1e4;   /* [1/s] */
+  const double k = 1e4; /* [1/s] */
   double G[9];
 
   /* ξ = (2d)²/((2d)² + S:S), S the trace-free symmetric part of G */
   diag3(-k, -k, -k, G);
   CHECK_CLOSE(avsw_xi(G), 1.0, 1e-15, "isotropic compression: xi = 1");
-  diag3(-k, 0, 0, G);   /* plane shock: d = −k, S:S = 2k²/3 → 4/(4 + 2/3) = 6/7 */
+  diag3(-k, 0, 0, G); /* plane shock: d = −k, S:S = 2k²/3 → 4/(4 + 2/3) = 6/7 */
   CHECK_CLOSE(avsw_xi(G), 6.0 / 7.0, 1e-15, "plane compression: xi = 6/7");
-  diag3(-k, k / 2, k / 2, G);   /* volume-keeping stagnation flow: d = 0 */
-  CHECK(avsw_xi(G) == 0.0, "axisymmetric stagnation flow (div v = 0): xi = 0 (got %g)",
-        avsw_xi(G));
+  diag3(-k, k / 2, k / 2, G); /* volume-keeping stagnation flow: d = 0 */
+  CHECK(avsw_xi(G) == 0.0, "axisymmetric stagnation flow (div v = 0): xi = 0 (got %g)", avsw_xi(G));
   diag3(0, 0, 0, G);
-  G[1] = k;   /* simple shear: ∂vx/∂y = k */
+  G[1] = k; /* simple shear: ∂vx/∂y = k */
   CHECK(avsw_xi(G) == 0.0, "simple shear: xi = 0 (got %g)", avsw_xi(G));
-  diag3(-0.01 * k, -0.01 * k, -0.01 * k, G);   /* 1 % compression in a strong shear */
+  diag3(-0.01 * k, -0.01 * k, -0.01 * k, G); /* 1 % compression in a strong shear */
   G[1] = k;
   /* d = −0.03k, S:S = 2 (k/2)² (the diagonal is isotropic): ξ = 0.0036/(0.0036 + 0.5) */
-  CHECK_CLOSE(avsw_xi(G), 0.0036 / 0.5036, 1e-15, "weak compression in a strong shear: xi = 0.0071");
+  CHECK_CLOSE(avsw_xi(G), 0.0036 / 0.5036, 1e-15,
+              "weak compression in a strong shear: xi = 0.0071");
 
   struct sph_params sp = {.alpha = 1.0, .beta = 2.0, .av_min = 0.0, .av_decay = 0.05};
   const double h = 1e-3, c = 5000.0, dt = 1e-8, H = 2.0 * h;
-  const double I[9] = {-1, 0, 0, 0, -1, 0, 0, 0, -1};   /* A = −I: L = −G gives G (A⁻¹) */
+  const double I[9] = {-1, 0, 0, 0, -1, 0, 0, 0, -1}; /* A = −I: L = −G gives G (A⁻¹) */
   double L[9], dnew;
 
   /* steady compression (d' = d): no rise, however strong */
-  diag3(k, k, k, L);   /* L = −G for G = −k I: d = −3k */
+  diag3(k, k, k, L); /* L = −G for G = −k I: d = −3k */
   double a = avsw_update(&sp, L, I, 0.0, -3.0 * k, h, c, dt, &dnew);
   CHECK(a == 0.0, "steady isotropic compression: alpha stays 0 (got %g)", a);
   CHECK_CLOSE(dnew, -3.0 * k, 1e-9 * k, "the divergence is stored (-3k)");
@@ -55,7 +55,8 @@ int main(void)
   diag3(k, k, k, L);
   a = avsw_update(&sp, L, I, 0.0, 0.0, h, c, dt, &dnew);
   const double A = 3.0 * k / dt, want = H * H * A / (H * H * A + c * c);
-  CHECK(fabs(a - want) <= 1e-12, "growing compression: alpha = alpha_loc = %.6f (got %.6f)", want, a);
+  CHECK(fabs(a - want) <= 1e-12, "growing compression: alpha = alpha_loc = %.6f (got %.6f)", want,
+        a);
   /* expanding: no rise */
   diag3(-k, -k, -k, L);
   a = avsw_update(&sp, L, I, 0.0, 0.0, h, c, dt, &dnew);
@@ -65,8 +66,8 @@ int main(void)
   diag3(0, 0, 0, L);
   const double tau = H / (2.0 * sp.av_decay * c), big = 50.0 * dt;
   a = avsw_update(&sp, L, I, 0.8, 0.0, h, c, big, &dnew);
-  CHECK(fabs(a - 0.8 * exp(-big / tau)) <= 1e-14, "decay: 0.8 exp(-dt/tau), tau = %.3e s (got %.6f)",
-        tau, a);
+  CHECK(fabs(a - 0.8 * exp(-big / tau)) <= 1e-14,
+        "decay: 0.8 exp(-dt/tau), tau = %.3e s (got %.6f)", tau, a);
   /* the floor and the ceiling */
   sp.av_min = 0.1;
   a = avsw_update(&sp, L, I, 0.05, 0.0, h, c, big, &dnew);

@@ -26,26 +26,26 @@
 /* A 1 mm aluminium sphere at 5 km/s on a 2.52 mm backwall of two 1.26 mm layers, whose
  * perforation is measured: about 400 particles. */
 static const char *const impact_lines[] = {
-    "name: impact",                                                           /* 1 */
-    "domain:",                                                                /* 2 */
-    "  min: [-3 mm, -6 mm, -6 mm]",                                           /* 3 */
-    "  max: [4 mm, 6 mm, 6 mm]",                                              /* 4 */
-    "bodies:",                                                                /* 5 */
-    "  - name: projectile",                                                   /* 6 */
-    "    material: al-alloy",                                                 /* 7 */
-    "    shape: {type: sphere, center: [-1.5 mm, 0, 0], radius: 1 mm}",       /* 8 */
-    "    spacing: 0.25 mm",                                                   /* 9 */
-    "    velocity: [5 km/s, 0, 0]",                                           /* 10 */
-    "  - name: backwall",                                                     /* 11 */
-    "    material: al-alloy",                                                 /* 12 */
+    "name: impact",                                                               /* 1 */
+    "domain:",                                                                    /* 2 */
+    "  min: [-3 mm, -6 mm, -6 mm]",                                               /* 3 */
+    "  max: [4 mm, 6 mm, 6 mm]",                                                  /* 4 */
+    "bodies:",                                                                    /* 5 */
+    "  - name: projectile",                                                       /* 6 */
+    "    material: al-alloy",                                                     /* 7 */
+    "    shape: {type: sphere, center: [-1.5 mm, 0, 0], radius: 1 mm}",           /* 8 */
+    "    spacing: 0.25 mm",                                                       /* 9 */
+    "    velocity: [5 km/s, 0, 0]",                                               /* 10 */
+    "  - name: backwall",                                                         /* 11 */
+    "    material: al-alloy",                                                     /* 12 */
     "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [2.52 mm, 5 mm, 5 mm]}", /* 13 */
-    "    spacing: 1.26 mm",                                                   /* 14 */
-    "time:",                                                                  /* 15 */
-    "  end: 2 us",                                                            /* 16 */
-    "output:",                                                                /* 17 */
-    "  every: 1 us",                                                          /* 18 */
-    "measure:",                                                               /* 19 */
-    "  backwall: backwall",                                                   /* 20 */
+    "    spacing: 1.26 mm",                                                       /* 14 */
+    "time:",                                                                      /* 15 */
+    "  end: 2 us",                                                                /* 16 */
+    "output:",                                                                    /* 17 */
+    "  every: 1 us",                                                              /* 18 */
+    "measure:",                                                                   /* 19 */
+    "  backwall: backwall",                                                       /* 20 */
 };
 #define NLINES ((int)(sizeof impact_lines / sizeof impact_lines[0]))
 
@@ -55,7 +55,8 @@ static const char *variant(int line, const char *repl)
   static char text[8192];
   size_t k = 0;
   for (int i = 1; i <= NLINES; i++)
-    k += (size_t)snprintf(text + k, sizeof text - k, "%s\n", i == line ? repl : impact_lines[i - 1]);
+    k +=
+        (size_t)snprintf(text + k, sizeof text - k, "%s\n", i == line ? repl : impact_lines[i - 1]);
   return text;
 }
 
@@ -145,10 +146,10 @@ static void test_wrong_units(void)
                   variant(8, "    shape: {type: sphere, center: [-1.5 mm, 0, 0], radius: 1.5}"));
   int rc = hvsph("check radius.yaml");
   CHECK(rc == 2, "a bare radius of 1.5 (m) at 0.25 mm: exit %d (want 2)", rc);
-  check_error("bare radius", (const char *const[]){"radius.yaml:8: bodies[0].shape.radius: ",
-                                                   "the bare number 1.5 is read as 1.5 m",
-                                                   "more than this machine's memory holds",
-                                                   "was it 1.5 mm?", NULL});
+  check_error("bare radius",
+              (const char *const[]){
+                  "radius.yaml:8: bodies[0].shape.radius: ", "the bare number 1.5 is read as 1.5 m",
+                  "more than this machine's memory holds", "was it 1.5 mm?", NULL});
   /* the same through run: exit 2, the earlier run's file untouched */
   char cmd[4400];
   snprintf(cmd, sizeof cmd, "mkdir -p '%s/old' && printf 'earlier\\n' > '%s/old/summary.csv'",
@@ -165,7 +166,8 @@ static void test_wrong_units(void)
      density (it then reaches out of the domain of millimetres: refused after) */
   rc = hvsph("check radius.yaml --set 'bodies[0].spacing=0.3 m'");
   CHECK(has("warning: radius.yaml:8: bodies[0].shape.radius: body 'projectile': the bare "
-            "number 1.5 is read as 1.5 m") && has("was it 1.5 mm?"),
+            "number 1.5 is read as 1.5 m") &&
+            has("was it 1.5 mm?"),
         "a bare metre-sized solid is warned of (exit %d): %s", rc, out);
   /* a bare spacing wider than the body: no particle, and the unit meant */
   rc = hvsph("check impact.yaml --set bodies[0].spacing=0.25");
@@ -178,9 +180,9 @@ static void test_wrong_units(void)
   test_write_file("end.yaml", variant(16, "  end: 20"));
   rc = hvsph("check end.yaml");
   CHECK(rc == 2, "a bare time.end of 20 (s): exit %d (want 2)", rc);
-  check_error("bare end", (const char *const[]){"end.yaml:16: time.end: ",
-                                                "the bare number 20 is read as 20 s",
-                                                "was it 20 us?", NULL});
+  check_error("bare end",
+              (const char *const[]){"end.yaml:16: time.end: ", "the bare number 20 is read as 20 s",
+                                    "was it 20 us?", NULL});
   rc = hvsph("run end.yaml -o old --quiet");
   CHECK(rc == 2 && has("was it 20 us?"), "run refuses it too (exit %d)", rc);
   prev = test_slurp(p, NULL);
@@ -199,11 +201,12 @@ static void test_wrong_units(void)
   rc = hvsph("check impact.yaml --set time.dt_min=1e-6");
   CHECK(rc == 2, "time.dt_min above the first step: exit %d (want 2)", rc);
   check_error("dt_min", (const char *const[]){"--set: time.dt_min: 1e-06 s is not below the "
-                                              "first stable step", "would stop as failed",
-                                              NULL});
+                                              "first stable step",
+                                              "would stop as failed", NULL});
   rc = hvsph("check impact.yaml --set time.dt_init=1e-6");
   CHECK(rc == 0 && has("warning: --set: time.dt_init = 1e-06 s is 2.5e+02 times the first "
-                       "stable step"), "a large dt_init is warned of (exit %d): %s", rc, out);
+                       "stable step"),
+        "a large dt_init is warned of (exit %d): %s", rc, out);
   rc = hvsph("check impact.yaml --set time.dt_max=1e-16 --set time.end=2e-6");
   CHECK(rc == 0 && has("warning: --set: time.dt_max = 1e-16 s, below the first stable step") &&
             !has("time.end: the bare number"),
@@ -229,16 +232,17 @@ static void test_refused(void)
   test_write_file("dup.yaml", variant(11, "  - name: projectile"));
   rc = hvsph("check dup.yaml");
   CHECK(rc == 2, "duplicate names: exit %d (want 2)", rc);
-  check_error("dup", (const char *const[]){"dup.yaml:11: bodies[1].name: ",
-                                           "a second body named 'projectile'",
-                                           "bodies[0], at dup.yaml:6", NULL});
+  check_error("dup", (const char *const[]){
+                         "dup.yaml:11: bodies[1].name: ", "a second body named 'projectile'",
+                         "bodies[0], at dup.yaml:6", NULL});
   /* the speed of light and beyond, at set-up: an earlier run's checkpoint and summary
      are left as they were (1e300 m/s failed only at step 0, after the checkpoint had
      been removed) */
   char cmd[4400], p[4400];
-  snprintf(cmd, sizeof cmd, "mkdir -p '%s/fast' && printf 'ckpt\\n' > '%s/fast/checkpoint.hvc'"
-           " && printf 'earlier\\n' > '%s/fast/summary.csv'", test_tmpdir(), test_tmpdir(),
-           test_tmpdir());
+  snprintf(cmd, sizeof cmd,
+           "mkdir -p '%s/fast' && printf 'ckpt\\n' > '%s/fast/checkpoint.hvc'"
+           " && printf 'earlier\\n' > '%s/fast/summary.csv'",
+           test_tmpdir(), test_tmpdir(), test_tmpdir());
   test_run(cmd, NULL, 0);
   static const struct {
     const char *line, *key, *speed;
@@ -271,8 +275,8 @@ static void test_progress(void)
   static const struct {
     double s;
     const char *want;
-  } cases[] = {{7.6, "7.6 s"}, {59.94, "59.9 s"}, {60.0, "0:01:00"}, {3725.0, "1:02:05"},
-               {100000.0, "27:46:40"}, {3 * 86400.0 + 1, "72:00:01 (3 days)"},
+  } cases[] = {{7.6, "7.6 s"},      {59.94, "59.9 s"},      {60.0, "0:01:00"},
+               {3725.0, "1:02:05"}, {100000.0, "27:46:40"}, {3 * 86400.0 + 1, "72:00:01 (3 days)"},
                {INFINITY, "inf s"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char buf[64];
@@ -282,9 +286,11 @@ static void test_progress(void)
   }
   /* 1000 s of a gas lattice at steps of 0.4 ms: hours left after three steps */
   char cmd[4400];
-  snprintf(cmd, sizeof cmd, "run '%s/examples/verification/tiny.yaml' -o progress --overwrite --threads 1 "
+  snprintf(cmd, sizeof cmd,
+           "run '%s/examples/verification/tiny.yaml' -o progress --overwrite --threads 1 "
            "--set 'time.end=1000 s' --set time.max_steps=3 --set output.log_every=1 "
-           "--set output.every=0", test_source_dir());
+           "--set output.every=0",
+           test_source_dir());
   const int rc = hvsph(cmd);
   const char *r = strstr(out, "remaining ");
   int h = -1, m = -1, sec = -1;

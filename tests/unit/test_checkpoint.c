@@ -132,8 +132,8 @@ static void test_run_records(void)
   char casefile[4200];
   snprintf(casefile, sizeof casefile, "%s/ck.yaml", test_tmpdir());
   write_bytes(casefile, (const unsigned char *)run_case, strlen(run_case));
-  snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --quiet 2>&1", base,
-           test_bin(), casefile, base);
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --quiet 2>&1", base, test_bin(),
+           casefile, base);
   int rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 0, "the run writes its checkpoint (exit %d): %s", rc, out);
   char pvd[4400], sum[4400];
@@ -235,24 +235,28 @@ int main(void)
   CHECK(ckpt_get(&c, "text", CKPT_BYTES, 5, text, &err) == 0 && !strcmp(text, "hello"),
         "bytes read back: '%s'", text);
   CHECK(ckpt_get(&c, "i32", CKPT_I32, 3, i32, &err) == 0 && i32[0] == -7 && i32[1] == 0 &&
-        i32[2] == 2147483647, "int32 read back");
-  CHECK(ckpt_get(&c, "i64", CKPT_I64, 2, i64, &err) == 0 && i64[0] == -9000000000LL &&
-        i64[1] == 42, "int64 read back");
-  CHECK(ckpt_get_parts(&c, "vec", CKPT_F64, 2, parts, 2, &err) == 0 && a[0] == 1.5 &&
-        a[1] == 0.0 && signbit(a[1]) && isnan(b[0]) && b[1] == 1e-300,
+            i32[2] == 2147483647,
+        "int32 read back");
+  CHECK(ckpt_get(&c, "i64", CKPT_I64, 2, i64, &err) == 0 && i64[0] == -9000000000LL && i64[1] == 42,
+        "int64 read back");
+  CHECK(ckpt_get_parts(&c, "vec", CKPT_F64, 2, parts, 2, &err) == 0 && a[0] == 1.5 && a[1] == 0.0 &&
+            signbit(a[1]) && isnan(b[0]) && b[1] == 1e-300,
         "two parts read back bit for bit (-0, NaN, 1e-300)");
   CHECK(ckpt_get(&c, "big", CKPT_F64, NBIG, big2, &err) == 0 &&
-        !memcmp(big, big2, NBIG * sizeof *big), "10^6 doubles read back bit for bit");
+            !memcmp(big, big2, NBIG * sizeof *big),
+        "10^6 doubles read back bit for bit");
   void *e;
   size_t n;
   CHECK(ckpt_get_alloc(&c, "empty", CKPT_F64, &e, &n, &err) == 0 && n == 0, "empty record");
   free(e);
   char *s;
   CHECK(ckpt_get_alloc(&c, "text", CKPT_BYTES, (void **)&s, &n, &err) == 0 && n == 5 &&
-        !strcmp(s, "hello"), "bytes allocated and NUL-terminated");
+            !strcmp(s, "hello"),
+        "bytes allocated and NUL-terminated");
   free(s);
   CHECK(ckpt_get(&c, "i32", CKPT_I64, 3, i64, &err) != 0 && strstr(err.msg, "'i32'") &&
-        strstr(err.msg, "int32") && strstr(err.msg, path), "wrong type refused: %s", err.msg);
+            strstr(err.msg, "int32") && strstr(err.msg, path),
+        "wrong type refused: %s", err.msg);
   CHECK(ckpt_get(&c, "i32", CKPT_I32, 2, i32, &err) != 0 && strstr(err.msg, "3 elements"),
         "wrong length refused: %s", err.msg);
   CHECK(ckpt_get(&c, "nothere", CKPT_I32, 1, i32, &err) != 0 && strstr(err.msg, "'nothere'"),
@@ -285,14 +289,14 @@ int main(void)
   for (int k = 0; k < 2; k++) {
     unsigned char *r2 = malloc(len);
     memcpy(r2, raw, len);
-    if (k == 0) {   /* the byte-order mark reversed */
+    if (k == 0) { /* the byte-order mark reversed */
       for (int q = 0; q < 2; q++) {
         unsigned char t = r2[12 + q];
         r2[12 + q] = r2[15 - q];
         r2[15 - q] = t;
       }
     } else {
-      r2[8] = 2;   /* format version 2 */
+      r2[8] = 2; /* format version 2 */
     }
     uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), r2, (uInt)(len - 4));
     memcpy(r2 + len - 4, &crc, 4);
@@ -306,7 +310,7 @@ int main(void)
   {
     unsigned char *r2 = malloc(len);
     memcpy(r2, raw, len);
-    for (int f = 8; f < 16; f += 4)   /* the version and the byte-order mark */
+    for (int f = 8; f < 16; f += 4) /* the version and the byte-order mark */
       for (int q = 0; q < 2; q++) {
         unsigned char t = r2[f + q];
         r2[f + q] = r2[f + 3 - q];
@@ -321,7 +325,8 @@ int main(void)
   /* a file that is not a checkpoint at all (long enough, no header) */
   {
     unsigned char junk[400];
-    for (size_t q = 0; q < sizeof junk; q++) junk[q] = (unsigned char)("id,x,y,z\n1,0,0,0\n"[q % 17]);
+    for (size_t q = 0; q < sizeof junk; q++)
+      junk[q] = (unsigned char)("id,x,y,z\n1,0,0,0\n"[q % 17]);
     write_bytes(tmp, junk, sizeof junk);
     refused(tmp, "no HVSPHCKP header", "a text file");
   }
@@ -334,7 +339,7 @@ int main(void)
   free(big);
   free(big2);
 
-  alarm(900);   /* the restarts below end within 25 s each; this is the backstop */
+  alarm(900); /* the restarts below end within 25 s each; this is the backstop */
   test_run_records();
   alarm(0);
   return test_finish();

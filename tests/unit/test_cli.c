@@ -57,9 +57,9 @@ static const char *base_lines[] = {
     "  every: 0.005",                                                 /* 20 */
     "  csv: true",                                                    /* 21 */
 };
-#define NBASE ((int)(sizeof base_lines / sizeof base_lines[0]))
+#define NBASE          ((int)(sizeof base_lines / sizeof base_lines[0]))
 #define SUMMARY_FIELDS 18 /* step ... e_total, then the absorbed_* tallies */
-#define PREVIOUS "# an earlier run\nstep,time\n0,0\n"
+#define PREVIOUS       "# an earlier run\nstep,time\n0,0\n"
 
 static char text[16384];
 
@@ -130,7 +130,7 @@ static const char *prepare_outdir(const char *name)
 /* Runs hvsph with stdout discarded; *err gets stderr. Returns the exit status. */
 static int hvsph(const char *args, char *err, size_t len)
 {
-  char cmd[13400];   /* the binary's path (4 kB) and args (9 kB) */
+  char cmd[13400]; /* the binary's path (4 kB) and args (9 kB) */
   snprintf(cmd, sizeof cmd, "{ '%s' %s 2>&1 >/dev/null; }", test_bin(), args);
   return test_run(cmd, err, len);
 }
@@ -148,12 +148,14 @@ static pid_t hold_lock(const char *dir)
     struct hv_error err;
     const char ok = runfolder_lock(&l, dir, "run", 1, &err) == 0 ? 'y' : 'n';
     if (write(fds[1], &ok, 1) != 1) _exit(1);
-    for (;;) pause();   /* killed by the test, the lock file left behind */
+    for (;;) pause(); /* killed by the test, the lock file left behind */
   }
   close(fds[1]);
   char ok = 0;
-  CHECK(child > 0 && read(fds[0], &ok, 1) == 1 && ok == 'y', "a child process (%ld) took the "
-        "lock of %s", (long)child, dir);
+  CHECK(child > 0 && read(fds[0], &ok, 1) == 1 && ok == 'y',
+        "a child process (%ld) took the "
+        "lock of %s",
+        (long)child, dir);
   close(fds[0]);
   return child;
 }
@@ -193,7 +195,8 @@ static void check_message(const char *what, const char *out, const char *const *
 }
 
 /* An input error: exit 2, the message, and the output folder untouched. */
-static void bad_input(const char *name, const char *yaml, const char *extra, const char *const *want)
+static void bad_input(const char *name, const char *yaml, const char *extra,
+                      const char *const *want)
 {
   char file[64], out[16384], args[9000], names[512];
   snprintf(file, sizeof file, "%s.yaml", name);
@@ -208,8 +211,7 @@ static void bad_input(const char *name, const char *yaml, const char *extra, con
   snprintf(sp, sizeof sp, "%s/summary.csv", dir);
   char *prev = test_slurp(sp, NULL);
   CHECK(n == 1 && ntmp == 0 && prev && !strcmp(prev, PREVIOUS),
-        "%s: output folder untouched: only the earlier summary.csv, intact (has:%s)", name,
-        names);
+        "%s: output folder untouched: only the earlier summary.csv, intact (has:%s)", name, names);
   free(prev);
 }
 
@@ -232,8 +234,7 @@ static int summary_rows(const char *dir)
     for (char *c = line; *c; c++) fields += *c == ',';
     if (!header) {
       static const char cols[] = "step,time,dt,n,mass,px,py,pz,e_kin,e_int,e_total";
-      ok = !strncmp(line, cols, sizeof cols - 1) &&
-           fields == SUMMARY_FIELDS;
+      ok = !strncmp(line, cols, sizeof cols - 1) && fields == SUMMARY_FIELDS;
       header = 1;
       continue;
     }
@@ -265,8 +266,10 @@ static void failed_run(const char *name, const char *extra, const char *const *w
   count_entries(dir, &ntmp, names, sizeof names);
   CHECK(ntmp == 0, "%s: no temporary files left (folder has:%s)", name, names);
   int rows = summary_rows(dir);
-  CHECK(rows == 1, "%s: summary.csv is the new run's, complete, with its %d row(s) (want 1: "
-        "the initial state)", name, rows);
+  CHECK(rows == 1,
+        "%s: summary.csv is the new run's, complete, with its %d row(s) (want 1: "
+        "the initial state)",
+        name, rows);
 }
 
 static void test_commands(void)
@@ -305,8 +308,10 @@ static void test_commands(void)
   snprintf(version, sizeof version, "%s", HVSPH_VERSION);
   char want_line[300];
   snprintf(want_line, sizeof want_line, "hvsph %s\n", HVSPH_VERSION);
-  CHECK(rc == 0 && !strcmp(out, want_line), "--version exits 0 (%d) and prints one line '%.*s': "
-        "'%s'", rc, (int)strlen(want_line) - 1, want_line, out);
+  CHECK(rc == 0 && !strcmp(out, want_line),
+        "--version exits 0 (%d) and prints one line '%.*s': "
+        "'%s'",
+        rc, (int)strlen(want_line) - 1, want_line, out);
   unsigned major, minor, patch;
   char after[8] = "";
   CHECK(sscanf(HVSPH_RELEASE, "%u.%u.%u%1s", &major, &minor, &patch, after) == 3 &&
@@ -324,12 +329,14 @@ static void test_commands(void)
 
   /* render's errors read as every command's: one "hvsph: error: " line (they read
    * "hvsph render: " before 48553fe, 2026-12-07) */
-  snprintf(args0, sizeof args0, "render '%s' -o '%s'", path_of("missing.vtu"), path_of("missing.png"));
+  snprintf(args0, sizeof args0, "render '%s' -o '%s'", path_of("missing.vtu"),
+           path_of("missing.png"));
   rc = hvsph(args0, out, sizeof out);
   CHECK(rc == 2 && !strncmp(out, "hvsph: error: cannot open '", 27) &&
             strchr(out, '\n') == out + strlen(out) - 1,
         "render of a missing snapshot: exit %d (want 2), one line 'hvsph: error: cannot open "
-        "...': %.200s", rc, out);
+        "...': %.200s",
+        rc, out);
 
   /* the version is the one written into the outputs */
   const char *casefile = test_write_file("base.yaml", variant(0, ""));
@@ -350,9 +357,9 @@ static void test_commands(void)
   /* every file of the run carries the version near its start: a "#" comment of the CSV
    * tables, the XML comment of the VTU and PVD, the checkpoint's version record */
   {
-    static const char *const with_version[] = {"summary.csv", "particles_00000.vtu", "run.pvd",
-                                               "particles_00000.csv", "used_parameters.yaml",
-                                               "run_segments.csv", "checkpoint.hvc"};
+    static const char *const with_version[] = {
+        "summary.csv",          "particles_00000.vtu", "run.pvd",       "particles_00000.csv",
+        "used_parameters.yaml", "run_segments.csv",    "checkpoint.hvc"};
     for (size_t k = 0; k < sizeof with_version / sizeof *with_version; k++) {
       char fp[4400];
       snprintf(fp, sizeof fp, "%s/%s", dir, with_version[k]);
@@ -362,8 +369,7 @@ static void test_commands(void)
       int found = 0;
       for (size_t i = 0; ftext && i + vl <= head && !found; i++)
         found = !memcmp(ftext + i, HVSPH_VERSION, vl);
-      CHECK(found, "%s carries the version '%s' in its first 4 kB", with_version[k],
-            HVSPH_VERSION);
+      CHECK(found, "%s carries the version '%s' in its first 4 kB", with_version[k], HVSPH_VERSION);
       free(ftext);
     }
   }
@@ -373,35 +379,43 @@ static void test_commands(void)
   if (!lim) lim = strstr(out, "[dt: acceleration sqrt(h/|a|), particle ");
   CHECK(lim && strstr(lim, " in 'slab']"), "log lines name the step's limit and particle: %.*s",
         lim ? (int)strcspn(lim, "\n") : 4, lim ? lim : "none");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite "
            "--set time.dt_max=1e-5 --set output.log_every=1",
            casefile, path_of("dtmax"));
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"), "with a small time.dt_max the lines say "
-        "'[dt: time.dt_max]' (exit %d)", rc);
+  CHECK(rc == 0 && strstr(out, "[dt: time.dt_max]"),
+        "with a small time.dt_max the lines say "
+        "'[dt: time.dt_max]' (exit %d)",
+        rc);
 
   /* bodies of very different particle masses are warned about, once per heavy body, with
      the remedy; the threshold is 30 (docs/case-files.md): 64- and 34-fold warn, 16-fold
      does not */
   {
     char two[16384];
-    snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
-                                                 "max: [0.05, 0.05, 0.05]}"));
+    snprintf(two, sizeof two, "%s",
+             variant(11, "    shape: {type: box, min: [0, 0, 0], "
+                         "max: [0.05, 0.05, 0.05]}"));
     char *t = strstr(two, "time:\n");
     static const char *const spacing[] = {"1.5625 mm", "1.9 mm", "2.5 mm"};
     static const char *const fold[] = {"'fine' (64.0-fold", "'fine' (34.3-fold", NULL};
     for (int k = 0; k < 3 && t; k++) {
       char body[512], whole[16384], name[32];
-      snprintf(body, sizeof body, "  - name: fine\n    material: gas\n    shape: {type: box, "
+      snprintf(body, sizeof body,
+               "  - name: fine\n    material: gas\n    shape: {type: box, "
                "min: [0.05, 0, 0], max: [0.1, 0.05, 0.05]}\n    spacing: %s\n    density: "
-               "1.0\n    pressure: 1.0\n", spacing[k]);
+               "1.0\n    pressure: 1.0\n",
+               spacing[k]);
       snprintf(whole, sizeof whole, "%.*s%s%s", (int)(t - two), two, body, t);
       snprintf(name, sizeof name, "two_%d", k);
       char file[40];
       snprintf(file, sizeof file, "%s.yaml", name);
       const char *f = test_write_file(file, whole);
-      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
-               "--set time.end=0", f, path_of(name));
+      snprintf(args, sizeof args,
+               "run '%s' -o '%s' --overwrite "
+               "--set time.end=0",
+               f, path_of(name));
       rc = hvsph(args, out, sizeof out);
       const char *w = strstr(out, "warning: body 'slab' (particles of ");
       /* the remedy: (30/64)^(1/3) = 0.7768, (30/34.3)^(1/3) = 0.9563 of the slab's
@@ -410,12 +424,15 @@ static void test_commands(void)
                                            "A spacing for 'slab' at most 0.95 times", NULL};
       if (fold[k])
         CHECK(rc == 0 && w && strstr(w, fold[k]) && strstr(w, remedy[k]) &&
-              !strstr(w + 1, "warning: body"), "spacing 6.25 against %s: one warning naming "
-              "both bodies, %s) (exit %d): %.*s", spacing[k], fold[k], rc,
-              w ? (int)strcspn(w, "\n") : 4, w ? w : "none");
+                  !strstr(w + 1, "warning: body"),
+              "spacing 6.25 against %s: one warning naming "
+              "both bodies, %s) (exit %d): %.*s",
+              spacing[k], fold[k], rc, w ? (int)strcspn(w, "\n") : 4, w ? w : "none");
       else
-        CHECK(rc == 0 && !strstr(out, "warning: body"), "spacing 6.25 against %s (16-fold): no "
-              "warning (exit %d)", spacing[k], rc);
+        CHECK(rc == 0 && !strstr(out, "warning: body"),
+              "spacing 6.25 against %s (16-fold): no "
+              "warning (exit %d)",
+              spacing[k], rc);
     }
   }
 
@@ -428,15 +445,17 @@ static void test_commands(void)
     for (int k = 0; k < 4; k++) {
       char name[16];
       snprintf(name, sizeof name, "inert_%d", k);
-      char rm[4200];   /* a fresh folder: an earlier test run's snapshots warn too */
+      char rm[4200]; /* a fresh folder: an earlier test run's snapshots warn too */
       snprintf(rm, sizeof rm, "rm -rf '%s'", path_of(name));
       test_run(rm, NULL, 0);
-      snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --set %s", f,
-               path_of(name), sets[k]);
+      snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --set %s", f, path_of(name),
+               sets[k]);
       rc = hvsph(args, out, sizeof out);
       char msg[160];
-      snprintf(msg, sizeof msg, "warning: --set: %.*s has no effect without "
-               "sph.viscosity.switch: cullen-dehnen", (int)strcspn(sets[k], "="), sets[k]);
+      snprintf(msg, sizeof msg,
+               "warning: --set: %.*s has no effect without "
+               "sph.viscosity.switch: cullen-dehnen",
+               (int)strcspn(sets[k], "="), sets[k]);
       const char *w = strstr(out, "warning: ");
       CHECK(rc == 0 && (k < 2 ? w && strstr(out, msg) && !strstr(w + 1, "warning: ") : !w),
             "--set %s without the switch: %s (exit %d): %.*s", sets[k],
@@ -447,7 +466,8 @@ static void test_commands(void)
 
   /* bench --set: its case changed like a run's, a bad key is bad input (exit 2) */
   rc = hvsph("bench --particles 512 --steps 1 --threads 1 --solid --set "
-             "sph.viscosity.reconstruct=true", out, sizeof out);
+             "sph.viscosity.reconstruct=true",
+             out, sizeof out);
   CHECK(rc == 0 && strstr(out, "override: sph.viscosity.reconstruct = true"),
         "bench --solid --set sph.viscosity.reconstruct=true runs (exit %d)", rc);
   rc = hvsph("bench --particles 512 --steps 1 --set sph.viscosity.alpa=1", out, sizeof out);
@@ -460,7 +480,8 @@ static void test_commands(void)
      is bad input naming the case file and the bodies' materials (a typo would otherwise
      run the case unchanged); so is a NEW that neither the case nor the library has; no '='
      is a usage error */
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite "
            "--set time.end=0 --material gas=nitrogen",
            casefile, path_of("swap"));
   rc = hvsph(args, out, sizeof out);
@@ -469,45 +490,55 @@ static void test_commands(void)
   CHECK(rc == 0 && u && strstr(u, "material: \"nitrogen\"") && !strstr(u, "material: \"gas\""),
         "run --material gas=nitrogen runs the slab as nitrogen (exit %d)", rc);
   free(u);
-  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gsa=nitrogen",
-           casefile, path_of("swap2"));
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gsa=nitrogen", casefile,
+           path_of("swap2"));
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2 && strstr(out, "base.yaml: --material gsa=nitrogen: no body of the case has "
-        "the material 'gsa' (its bodies have: gas)"), "--material with a name no body has: "
-        "exit %d (want 2): %.*s", rc, (int)strcspn(out, "\n"), out);
-  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogne",
-           casefile, path_of("swap3"));
+                               "the material 'gsa' (its bodies have: gas)"),
+        "--material with a name no body has: "
+        "exit %d (want 2): %.*s",
+        rc, (int)strcspn(out, "\n"), out);
+  snprintf(args, sizeof args, "run '%s' -o '%s' --set time.end=0 --material gas=nitrogne", casefile,
+           path_of("swap3"));
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 2 &&
-            strstr(out, "error: --material gas=nitrogne: ") &&
+  CHECK(rc == 2 && strstr(out, "error: --material gas=nitrogne: ") &&
             strstr(out, "base.yaml:10: bodies[0].material: unknown material 'nitrogne' (the "
                         "case defines: gas; the library ") &&
             !strstr(out, "override: bodies[0]"),
         "--material to an unknown material: exit %d (want 2), named as the swap and the "
-        "body's key, nothing applied: %s", rc, out);
-  {   /* the swaps act at once: a=b and b=a exchange the two bodies' materials */
+        "body's key, nothing applied: %s",
+        rc, out);
+  { /* the swaps act at once: a=b and b=a exchange the two bodies' materials */
     char two[16384];
-    snprintf(two, sizeof two, "%s", variant(11, "    shape: {type: box, min: [0, 0, 0], "
-                                                "max: [0.05, 0.05, 0.05]}"));
+    snprintf(two, sizeof two, "%s",
+             variant(11, "    shape: {type: box, min: [0, 0, 0], "
+                         "max: [0.05, 0.05, 0.05]}"));
     char *t = strstr(two, "time:\n"), *g = strstr(two, "  gas: {");
     char whole[16400];
-    snprintf(whole, sizeof whole, "%.*s  gas2: {eos: ideal-gas, gamma: 1.6667}\n%.*s  - name: "
+    snprintf(whole, sizeof whole,
+             "%.*s  gas2: {eos: ideal-gas, gamma: 1.6667}\n%.*s  - name: "
              "right\n    material: gas2\n    shape: {type: box, min: [0.05, 0, 0], max: [0.1, "
              "0.05, 0.05]}\n    spacing: 6.25 mm\n    density: 1.0\n    pressure: 1.0\n%s",
              g ? (int)(g - two) : 0, two, g && t ? (int)(t - g) : 0, g ? g : "", t ? t : "");
     const char *f = test_write_file("swap2.yaml", whole);
-    snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --set time.end=0 --material gas=gas2 "
-             "--material gas2=gas", f, path_of("swapx"));
+    snprintf(args, sizeof args,
+             "run '%s' -o '%s' --overwrite --set time.end=0 --material gas=gas2 "
+             "--material gas2=gas",
+             f, path_of("swapx"));
     rc = hvsph(args, out, sizeof out);
     CHECK(rc == 0 && strstr(out, "override: bodies[0].material = gas2") &&
-          strstr(out, "override: bodies[1].material = gas") &&
-          !strstr(out, "bodies[0].material = gas\n"), "--material gas=gas2 --material gas2=gas "
-          "exchanges the two bodies' materials (exit %d): %s", rc, out);
+              strstr(out, "override: bodies[1].material = gas") &&
+              !strstr(out, "bodies[0].material = gas\n"),
+          "--material gas=gas2 --material gas2=gas "
+          "exchanges the two bodies' materials (exit %d): %s",
+          rc, out);
   }
   snprintf(args, sizeof args, "run '%s' -o '%s' --material gas", casefile, path_of("swap4"));
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 1 && strstr(out, "--material 'gas': write OLD=NEW"), "--material without '=': "
-        "exit %d (want 1): %s", rc, out);
+  CHECK(rc == 1 && strstr(out, "--material 'gas': write OLD=NEW"),
+        "--material without '=': "
+        "exit %d (want 1): %s",
+        rc, out);
 
   static const struct {
     const char *args, *what;
@@ -537,21 +568,22 @@ static void test_bad_input(void)
                                   "letters, digits and . _ - +", NULL});
   bad_input("name_dash", variant(1, "name: -rf"), NULL,
             (const char *const[]){"name_dash.yaml:1: name: '-rf'", "'-' at character 1", NULL});
-  bad_input("name_blank", variant(1, "name: \"my case\""), NULL,
-            (const char *const[]){"name_blank.yaml:1: name: 'my case'", "' ' at character 3",
-                                  NULL});
+  bad_input(
+      "name_blank", variant(1, "name: \"my case\""), NULL,
+      (const char *const[]){"name_blank.yaml:1: name: 'my case'", "' ' at character 3", NULL});
   bad_input("name_dot", variant(1, "name: \"..\""), NULL,
             (const char *const[]){"name_dot.yaml:1: name: '..'", NULL});
-  bad_input("name_control", variant(1, "name: \"a\\tb\""), NULL,
-            (const char *const[]){"name_control.yaml:1: name: 'a?b'",
-                                  "byte 0x09 at character 2", NULL});
+  bad_input(
+      "name_control", variant(1, "name: \"a\\tb\""), NULL,
+      (const char *const[]){"name_control.yaml:1: name: 'a?b'", "byte 0x09 at character 2", NULL});
   bad_input("name_set", variant(0, ""), "--set name=a/b",
             (const char *const[]){"--set: name: 'a/b'", "'/' at character 2", NULL});
   /* no bound on the outputs: 0.01 s every 1 ns is 10^7 snapshots (without --force) */
   bad_input("many_outputs", variant(20, "  every: 1e-9"), NULL,
             (const char *const[]){"many_outputs.yaml:20: output.every = 1e-09 s",
                                   "outputs (snapshots, summary rows, checkpoints), more than "
-                                  "10000", "--force", NULL});
+                                  "10000",
+                                  "--force", NULL});
 
   /* malformed YAML: line and column of the fault */
   bad_input("malformed", variant(7, "  boundary: {x: wall, y: periodic, z: periodic}}"), NULL,
@@ -560,13 +592,13 @@ static void test_bad_input(void)
             (const char *const[]){"indent.yaml:19:", "YAML syntax error", "indentation", NULL});
   /* values */
   bad_input("neg_density", variant(13, "    density: -5"), NULL,
-            (const char *const[]){"neg_density.yaml:13: bodies[0].density: ", "-5",
-                                  "out of range", NULL});
+            (const char *const[]){"neg_density.yaml:13: bodies[0].density: ", "-5", "out of range",
+                                  NULL});
   /* wrong units: a condensed body's density in g/cm3 written bare (SI, so 2.7 kg/m3) */
   bad_input("bare_density", variant(13, "    density: 2.7"), "--set bodies[0].material=al-alloy",
             (const char *const[]){"bare_density.yaml:13: bodies[0].density: ",
-                                  "the bare number 2.7 is read as 2.7 kg/m3",
-                                  "was it 2.7 g/cm3?", NULL});
+                                  "the bare number 2.7 is read as 2.7 kg/m3", "was it 2.7 g/cm3?",
+                                  NULL});
   bad_input("kg_velocity", variant(15, "    velocity: [5 kg, 0, 0]"), NULL,
             (const char *const[]){"kg_velocity.yaml:15: bodies[0].velocity[0]: ",
                                   "unit 'kg' is a mass, expected a velocity", NULL});
@@ -579,61 +611,70 @@ static void test_bad_input(void)
   bad_input("unknown_key", variant(18, "  end: 0.01\n  clf: 0.3"), NULL,
             (const char *const[]){"unknown_key.yaml:19: ", "unknown key 'time.clf'",
                                   "did you mean 'cfl'?", NULL});
-  bad_input("unknown_body_key", variant(16, "    radial_velocty: 0.2"), NULL,
-            (const char *const[]){"unknown_body_key.yaml:16: ",
-                                  "unknown key 'bodies[0].radial_velocty'",
-                                  "did you mean 'radial_velocity'?", NULL});
-  bad_input("missing_key", variant(18, ""), NULL,
-            (const char *const[]){"missing_key.yaml:17: ", "missing required key 'time.end'",
-                                  NULL});
+  bad_input(
+      "unknown_body_key", variant(16, "    radial_velocty: 0.2"), NULL,
+      (const char *const[]){"unknown_body_key.yaml:16: ", "unknown key 'bodies[0].radial_velocty'",
+                            "did you mean 'radial_velocity'?", NULL});
+  bad_input(
+      "missing_key", variant(18, ""), NULL,
+      (const char *const[]){"missing_key.yaml:17: ", "missing required key 'time.end'", NULL});
   /* materials */
   bad_input("unknown_material", variant(10, "    material: air"), NULL,
             (const char *const[]){"unknown_material.yaml:10: bodies[0].material: ",
                                   "unknown material 'air'", "the case defines: gas", NULL});
   bad_input("unknown_eos", variant(3, "  gas: {eos: ideal-gass, gamma: 1.4}"), NULL,
-            (const char *const[]){"unknown_eos.yaml:3: materials.gas.eos: ",
-                                  "'ideal-gass' is not one of", NULL});
+            (const char *const[]){
+                "unknown_eos.yaml:3: materials.gas.eos: ", "'ideal-gass' is not one of", NULL});
   bad_input("unknown_library", variant(3, "  gas: {library: unobtainium}"), NULL,
             (const char *const[]){"unknown_library.yaml:3: ", "materials.gas.library",
                                   "unobtainium", NULL});
   /* summation density with strength: refused, naming the key */
-  bad_input("summation_solid",
-            variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"),
+  bad_input("summation_solid", variant(3, "  gas: {library: al-alloy}\nsph: {density: summation}"),
             "--set bodies[0].density=2780",
             (const char *const[]){"summation_solid.yaml:4: sph.density: ",
                                   "summation is for cases without strength", NULL});
-  bad_input("reconstruct_gas", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
-                                      "{reconstruct: true}}"), NULL,
+  bad_input("reconstruct_gas",
+            variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                       "{reconstruct: true}}"),
+            NULL,
             (const char *const[]){"reconstruct_gas.yaml:4: sph.viscosity.reconstruct: ",
                                   "acts on pairs of particles with strength", NULL});
   /* the viscosity switch: a maximum alpha of 0, a floor above it, an unknown switch */
-  bad_input("switch_alpha0", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
-                                    "{switch: cullen-dehnen, alpha: 0}}"), NULL,
-            (const char *const[]){"switch_alpha0.yaml:4: sph.viscosity.switch: ",
-                                  "which is 0 here", NULL});
-  bad_input("switch_floor", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
-                                   "{switch: cullen-dehnen, alpha_min: 1.5}}"), NULL,
+  bad_input("switch_alpha0",
+            variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                       "{switch: cullen-dehnen, alpha: 0}}"),
+            NULL,
+            (const char *const[]){"switch_alpha0.yaml:4: sph.viscosity.switch: ", "which is 0 here",
+                                  NULL});
+  bad_input("switch_floor",
+            variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                       "{switch: cullen-dehnen, alpha_min: 1.5}}"),
+            NULL,
             (const char *const[]){"switch_floor.yaml:4: sph.viscosity.alpha_min (1.5) ",
                                   "exceeds sph.viscosity.alpha (1)", NULL});
-  bad_input("switch_name", variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
-                                  "{switch: balsara}}"), NULL,
-            (const char *const[]){"switch_name.yaml:4: sph.viscosity.switch: ",
-                                  "'balsara' is not one of", NULL});
-  bad_input("mass_form_solid",
-            variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"),
+  bad_input("switch_name",
+            variant(3, "  gas: {eos: ideal-gas, gamma: 1.4}\nsph: {viscosity: "
+                       "{switch: balsara}}"),
+            NULL,
+            (const char *const[]){
+                "switch_name.yaml:4: sph.viscosity.switch: ", "'balsara' is not one of", NULL});
+  bad_input("mass_form_solid", variant(3, "  gas: {library: al-alloy}\nsph: {continuity: mass}"),
             "--set bodies[0].density=2780",
             (const char *const[]){"mass_form_solid.yaml:4: sph.continuity: ",
                                   "mass is for cases without strength", NULL});
   bad_input("recon_contact_alone",
             variant(3, "  gas: {library: al-alloy}\nsph: {viscosity: {reconstruct_contact: true}}"),
-            NULL, (const char *const[]){"recon_contact_alone.yaml:4: "
-                                        "sph.viscosity.reconstruct_contact: ",
-                                        "needs sph.viscosity.reconstruct: true", NULL});
+            NULL,
+            (const char *const[]){"recon_contact_alone.yaml:4: "
+                                  "sph.viscosity.reconstruct_contact: ",
+                                  "needs sph.viscosity.reconstruct: true", NULL});
   /* a periodic domain far longer than the neighbour grid can hold (1e308 m: its ghosts
      span it), found when the first grid is built: bad input naming the domain */
   bad_input("periodic_huge", variant(5, "  min: [0, 0, -1e308]"), NULL,
-            (const char *const[]){"periodic_huge.yaml:4: domain: ", "do not fit the neighbour "
-                                  "grid", "span 1e+308 m in direction z", NULL});
+            (const char *const[]){"periodic_huge.yaml:4: domain: ",
+                                  "do not fit the neighbour "
+                                  "grid",
+                                  "span 1e+308 m in direction z", NULL});
   /* --set */
   const char *base = variant(0, "");
   bad_input("set_syntax", base, "--set 'time..end=1'",
@@ -666,8 +707,10 @@ static void test_outdir(void)
   snprintf(args, sizeof args, "run '%s' -o '%s/sub' --quiet", casefile, file);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2, "output folder below a regular file: exit status %d (want 2)", rc);
-  snprintf(want, sizeof want, "cannot create folder '%s/sub' (at '%s'): exists and is not a "
-           "folder", file, file);
+  snprintf(want, sizeof want,
+           "cannot create folder '%s/sub' (at '%s'): exists and is not a "
+           "folder",
+           file, file);
   check_message("outdir below a file", out, (const char *const[]){want, NULL});
   char *f = test_slurp(file, NULL);
   CHECK(f && !strcmp(f, "not a folder\n"), "the regular file is untouched");
@@ -690,8 +733,9 @@ static void test_late_input_error(void)
   snprintf(args, sizeof args, "run '%s' -o '%s' --quiet --set sph.eta=3", casefile, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2, "periodic box shorter than two interaction radii: exit status %d (want 2)", rc);
-  check_message("periodic_short", out,
-                (const char *const[]){"base.yaml:7: domain: the periodic length in y (0.05 m)", NULL});
+  check_message(
+      "periodic_short", out,
+      (const char *const[]){"base.yaml:7: domain: the periodic length in y (0.05 m)", NULL});
   int ntmp;
   count_entries(dir, &ntmp, names, sizeof names);
   char sp[4400];
@@ -742,7 +786,8 @@ static void test_mass_ratio_warning(void)
       {"a rod aimed at the coarse block", "0", "2 km/s, 0, 0", "", "", 1},
       {"a rod aimed at a fine core through the coarse block", "0", "2 km/s, 0, 0", hole, core, 0},
       {"a rod flying past the block's face", "0", "0, 2 km/s, 0", "", "", 0},
-      {"a rod aimed beside the block (at y = 15 mm, 5 mm outside it)", "15 mm", "2 km/s, 0, 0", "", "", 0},
+      {"a rod aimed beside the block (at y = 15 mm, 5 mm outside it)", "15 mm", "2 km/s, 0, 0", "",
+       "", 0},
   };
   char yaml[4096], name[64], args[4400], out[16384];
   for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) {
@@ -752,9 +797,10 @@ static void test_mass_ratio_warning(void)
     snprintf(args, sizeof args, "run '%s' -o '%s/meet_%zu' --overwrite", file, test_tmpdir(), k);
     const int st = hvsph(args, out, sizeof out);
     const int warned = strstr(out, "much heavier than 'rod'") != NULL;
-    CHECK(st == 0 && warned == v[k].warn, "%s: exit %d, the rod %s named in a mass-ratio warning "
-          "(expected %s): %s", v[k].what, st, warned ? "is" : "is not", v[k].warn ? "named" : "not",
-          out);
+    CHECK(st == 0 && warned == v[k].warn,
+          "%s: exit %d, the rod %s named in a mass-ratio warning "
+          "(expected %s): %s",
+          v[k].what, st, warned ? "is" : "is not", v[k].warn ? "named" : "not", out);
   }
   /* a 0.25 mm disc set in a 1 mm ring at rest: they touch at the seam */
   static const char *const seam =
@@ -777,7 +823,8 @@ static void test_mass_ratio_warning(void)
   const int st = hvsph(args, out, sizeof out);
   CHECK(st == 0 && strstr(out, "'ring'") && strstr(out, "much heavier than 'disc'"),
         "a light disc in a heavy ring at rest (a seam): the ring's warning names the disc "
-        "(exit %d): %s", st, out);
+        "(exit %d): %s",
+        st, out);
 
   /* just above the threshold (a rod of 18.25 g/cm3 on a 0.242 mm lattice, 30.1 times
      lighter than the block's particles) the offered spacing factor, cbrt(30/30.1) =
@@ -809,7 +856,8 @@ static void test_mass_ratio_warning(void)
             sscanf(f, "A spacing for 'block' at most %lf times", &factor) == 1 && ratio > 30.0 &&
             ratio < 30.3 && factor < 1.0 && ratio * factor * factor * factor < 30.0,
         "a mass ratio just above 30 (read %.4g): the offered spacing factor %.4g brings it "
-        "below 30 (exit %d): %s", ratio, factor, st2, out);
+        "below 30 (exit %d): %s",
+        ratio, factor, st2, out);
 }
 
 /* A body whose lattice cells fill more than 1.02 of its exact volume is named in a
@@ -842,8 +890,8 @@ static void test_lattice_cover_warning(void)
     if (k == 0) {
       CHECK(st == 0 && w && strstr(w, "its 72 lattice cells of 0.45 mm fill 1.044 times") &&
                 strstr(w, "4.2 % lighter"),
-            "a 0.45 mm lattice filling 1.044 of the rod: warned with its numbers (exit %d): %s",
-            st, out);
+            "a 0.45 mm lattice filling 1.044 of the rod: warned with its numbers (exit %d): %s", st,
+            out);
       const char *f = w ? strstr(w, "Nearest fit: spacing ") : NULL;
       double sp = 0.0;
       CHECK(f && sscanf(f, "Nearest fit: spacing %lf mm", &sp) == 1 && sp > 0.405 && sp < 0.495,
@@ -907,34 +955,44 @@ static void test_validate(void)
   /* a --set that the cases do not take: bad input (exit 2), reported once by the first
      case's run; the later case is not run, the earlier tables are kept */
   const char *dir = prepare_valdir("val_badset");
-  snprintf(args, sizeof args, "validate --only wp1 bumper-1 --cases '%s' --threads 1 --set "
-           "time.ennd=1 -o '%s'", cases, dir);
+  snprintf(args, sizeof args,
+           "validate --only wp1 bumper-1 --cases '%s' --threads 1 --set "
+           "time.ennd=1 -o '%s'",
+           cases, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 2, "validate --set with an unknown key: exit status %d (want 2)", rc);
   check_message("validate --set time.ennd", out,
                 (const char *const[]){"unknown key 'time.ennd'", NULL});
   CHECK(tables_kept(dir), "validate with bad input: the earlier validation.md and "
-        "validation.csv are kept");
+                          "validation.csv are kept");
   int ntmp, n = count_entries(dir, &ntmp, NULL, 0);
-  CHECK(ntmp == 0 && n == 2, "validate with bad input: nothing else in the folder (%d "
-        "entries, %d temporary)", n, ntmp);
+  CHECK(ntmp == 0 && n == 2,
+        "validate with bad input: nothing else in the folder (%d "
+        "entries, %d temporary)",
+        n, ntmp);
 
   /* a case file missing from --cases: bad input too */
   dir = prepare_valdir("val_nocase");
-  snprintf(args, sizeof args, "validate --only wp1 --cases '%s/none' --threads 1 -o '%s'",
-           cases, dir);
+  snprintf(args, sizeof args, "validate --only wp1 --cases '%s/none' --threads 1 -o '%s'", cases,
+           dir);
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 2 && tables_kept(dir), "validate with a missing case file: exit status %d "
-        "(want 2), the earlier tables kept", rc);
+  CHECK(rc == 2 && tables_kept(dir),
+        "validate with a missing case file: exit status %d "
+        "(want 2), the earlier tables kept",
+        rc);
   check_message("validate, missing case file", out,
                 (const char *const[]){"cannot open case file", "none/wp1.yaml", NULL});
   /* ... also with --material, whose swaps are checked on the case files first: the
      missing file named, not a swap that no body took */
-  snprintf(args, sizeof args, "validate --only wp1 --cases '%s/none' --threads 1 --material "
-           "gas=nitrogen -o '%s'", cases, dir);
+  snprintf(args, sizeof args,
+           "validate --only wp1 --cases '%s/none' --threads 1 --material "
+           "gas=nitrogen -o '%s'",
+           cases, dir);
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 2 && tables_kept(dir), "validate --material with a missing case file: exit "
-        "status %d (want 2), the earlier tables kept", rc);
+  CHECK(rc == 2 && tables_kept(dir),
+        "validate --material with a missing case file: exit "
+        "status %d (want 2), the earlier tables kept",
+        rc);
   check_message("validate --material, missing case file", out,
                 (const char *const[]){"cannot open case file", "none/wp1.yaml", NULL});
 
@@ -956,15 +1014,21 @@ static void test_validate(void)
   rc = hvsph(args, out, sizeof out);
   kill(holder, SIGKILL);
   waitpid(holder, NULL, 0);
-  CHECK(rc == 2 && tables_kept(dir), "validate into a DIR in use: exit %d (want 2), the tables "
-        "kept", rc);
+  CHECK(rc == 2 && tables_kept(dir),
+        "validate into a DIR in use: exit %d (want 2), the tables "
+        "kept",
+        rc);
   check_message("validate, DIR in use", out, (const char *const[]){"is in use by another", NULL});
 
   /* --only without a name, --scale inf: usage errors (not every case, not a scale no run
      takes); --no-run keeps a regression from running anything */
-  static const char *const usage[] = {"--only", "--only --threads 1", "--scale inf --only wp1",
-                                      "--scale 0 --only wp1", "--scale -2 --only wp1",
-                                      "--threads 2x --only wp1", "--threads 5000 --only wp1"};
+  static const char *const usage[] = {"--only",
+                                      "--only --threads 1",
+                                      "--scale inf --only wp1",
+                                      "--scale 0 --only wp1",
+                                      "--scale -2 --only wp1",
+                                      "--threads 2x --only wp1",
+                                      "--threads 5000 --only wp1"};
   for (int k = 0; k < 7; k++) {
     snprintf(args, sizeof args, "validate --no-run %s -o '%s'", usage[k], path_of("val_usage"));
     rc = hvsph(args, out, sizeof out);
@@ -984,7 +1048,8 @@ static void test_validate(void)
   rc = hvsph(args, out, sizeof out);
   snprintf(p, sizeof p, "%s/validation.csv", dir);
   char *vcsv = test_slurp(p, NULL);
-  CHECK(vcsv && !strncmp(vcsv, "# hvsph " HVSPH_VERSION ": ", strlen("# hvsph " HVSPH_VERSION ": ")),
+  CHECK(vcsv &&
+            !strncmp(vcsv, "# hvsph " HVSPH_VERSION ": ", strlen("# hvsph " HVSPH_VERSION ": ")),
         "validation.csv starts with a comment line giving the version: %.80s", vcsv ? vcsv : "");
   free(vcsv);
   snprintf(p, sizeof p, "%s/validation.md", dir);
@@ -993,8 +1058,10 @@ static void test_validate(void)
   int nerr;
   error_line(out, &nerr);
   CHECK(rc == 0 && nerr == 0 && strstr(out, "wp1: no radiograph") && md &&
-        strstr(md, "| wp1 | hole_diameter (bumper) |"), "validate --no-run with an unreadable "
-        "snapshot: a warning, the tables written (exit %d): %s", rc, out);
+            strstr(md, "| wp1 | hole_diameter (bumper) |"),
+        "validate --no-run with an unreadable "
+        "snapshot: a warning, the tables written (exit %d): %s",
+        rc, out);
   CHECK(md && strstr(md, "| bumper-1 | -1 | (earlier run) | not run |"),
         "validate --no-run: a case with no run in the folder is 'not run'");
   free(md);
@@ -1024,18 +1091,21 @@ static void test_measure(void)
   snprintf(args, sizeof args, "measure '%s' --quiet", dir);
   rc = hvsph(args, out, sizeof out);
   char *m1 = test_slurp(mp, NULL);
-  CHECK(rc == 0 && m0 && m1 && !strcmp(m0, m1), "hvsph measure rewrites measurements.csv with "
-        "the run's own rows (exit %d): %s", rc, out);
-  {   /* measure takes the folder's lock, as a run that rewrites measurements.csv does */
+  CHECK(rc == 0 && m0 && m1 && !strcmp(m0, m1),
+        "hvsph measure rewrites measurements.csv with "
+        "the run's own rows (exit %d): %s",
+        rc, out);
+  { /* measure takes the folder's lock, as a run that rewrites measurements.csv does */
     const pid_t holder = hold_lock(dir);
     rc = hvsph(args, out, sizeof out);
     kill(holder, SIGKILL);
     waitpid(holder, NULL, 0);
     char *m2 = test_slurp(mp, NULL), want[64];
     snprintf(want, sizeof want, "is in use by another hvsph process %ld ", (long)holder);
-    CHECK(rc == 2 && strstr(out, want) && m2 && m0 && !strcmp(m0, m2), "measure of a folder in "
-          "use: exit %d (want 2), naming the process, measurements.csv unchanged: %.200s", rc,
-          out);
+    CHECK(rc == 2 && strstr(out, want) && m2 && m0 && !strcmp(m0, m2),
+          "measure of a folder in "
+          "use: exit %d (want 2), naming the process, measurements.csv unchanged: %.200s",
+          rc, out);
     free(m2);
   }
   free(m1);
@@ -1090,13 +1160,16 @@ static void test_not_regular(void)
   const char *dir = fresh_path("notreg");
   const struct {
     const char *path, *what;
-  } cases[] = {{fifo, "is a FIFO"}, {"/dev/zero", "is a character device"},
+  } cases[] = {{fifo, "is a FIFO"},
+               {"/dev/zero", "is a character device"},
                {test_tmpdir(), "is a directory"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char full[13400];
     /* 4 GiB of address space: a regression that reads /dev/zero fails, not the machine */
-    snprintf(full, sizeof full, "{ ulimit -v 4194304; timeout -k 5 20 '%s' run '%s' -o '%s' "
-             "--quiet 2>&1 >/dev/null; }", test_bin(), cases[k].path, dir);
+    snprintf(full, sizeof full,
+             "{ ulimit -v 4194304; timeout -k 5 20 '%s' run '%s' -o '%s' "
+             "--quiet 2>&1 >/dev/null; }",
+             test_bin(), cases[k].path, dir);
     const int rc = test_run(full, out, sizeof out);
     CHECK(rc == 2, "case file %s: exit status %d (want 2; 124 or 137: it hung)", cases[k].path, rc);
     snprintf(want, sizeof want, "case file '%s' %s", cases[k].path, cases[k].what);
@@ -1139,11 +1212,15 @@ static void test_not_regular(void)
   char ck[4400], full[13400];
   snprintf(ck, sizeof ck, "%s/checkpoint.hvc", rdir);
   CHECK(remove(ck) == 0 && mkfifo(ck, 0600) == 0, "checkpoint.hvc replaced by a FIFO");
-  snprintf(full, sizeof full, "{ timeout -k 5 20 '%s' restart '%s' --set time.end=0.02 --quiet "
-           "2>&1 >/dev/null; }", test_bin(), rdir);
+  snprintf(full, sizeof full,
+           "{ timeout -k 5 20 '%s' restart '%s' --set time.end=0.02 --quiet "
+           "2>&1 >/dev/null; }",
+           test_bin(), rdir);
   rc = test_run(full, out, sizeof out);
-  CHECK(rc == 2, "restart from a FIFO checkpoint: exit status %d (want 2; 124 or 137: it "
-        "hung)", rc);
+  CHECK(rc == 2,
+        "restart from a FIFO checkpoint: exit status %d (want 2; 124 or 137: it "
+        "hung)",
+        rc);
   snprintf(want, sizeof want, "checkpoint '%s' is a FIFO", ck);
   check_message("FIFO checkpoint", out, (const char *const[]){want, NULL});
 
@@ -1156,13 +1233,16 @@ static void test_not_regular(void)
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "the run for the FIFO run_segments.csv (exit %d): %s", rc, out);
   CHECK(remove(seg) == 0 && mkfifo(seg, 0600) == 0, "run_segments.csv replaced by a FIFO");
-  snprintf(full, sizeof full, "{ timeout -k 5 20 '%s' restart '%s' --set time.end=0.03 --quiet "
-           "2>&1 >/dev/null; }", test_bin(), rdir);
+  snprintf(full, sizeof full,
+           "{ timeout -k 5 20 '%s' restart '%s' --set time.end=0.03 --quiet "
+           "2>&1 >/dev/null; }",
+           test_bin(), rdir);
   rc = test_run(full, out, sizeof out);
   struct stat sst;
   CHECK(rc == 0 && stat(seg, &sst) == 0 && S_ISREG(sst.st_mode),
         "restart with a FIFO run_segments.csv: exit status %d (want 0; 124 or 137: it hung), "
-        "the file regular again", rc);
+        "the file regular again",
+        rc);
 
   /* a FIFO as the snapshot hvsph render reads */
   const char *sfifo = fresh_path("fifo.vtu");
@@ -1226,7 +1306,8 @@ static void test_measure_missing(void)
   CHECK(rc == 0 && strstr(out, want) && rows0 > 3 && rows1 > 1 && rows1 < rows0 &&
             (rows0 - 1) % 3 == 0 && rows1 - 1 == (rows0 - 1) / 3 * 2,
         "--skip-missing: exit %d, the warning names it, 2 of 3 outputs' rows (%d rows of %d, "
-        "headers included): %s", rc, rows1, rows0, out);
+        "headers included): %s",
+        rc, rows1, rows0, out);
   free(m0);
   /* summary.csv a FIFO (it blocked the open): not read, with a warning naming it; the
      outputs are then the numbers up to the last snapshot, and the gap is found */
@@ -1235,9 +1316,12 @@ static void test_measure_missing(void)
   snprintf(args, sizeof args, "timeout -k 5 20 '%s' measure '%s' --quiet 2>&1", test_bin(), dir);
   rc = test_run(args, out, sizeof out);
   snprintf(want, sizeof want, "'%s' is a FIFO", sp);
-  CHECK(rc == 2 && strstr(out, want) && strstr(out, "particles_00001.csv is missing (1 of the "
-        "run's 3 outputs has no snapshot)"), "measure with summary.csv a FIFO: exit %d (want "
-        "2; 124 or 137: it hung), the FIFO and the gap named: %s", rc, out);
+  CHECK(rc == 2 && strstr(out, want) &&
+            strstr(out, "particles_00001.csv is missing (1 of the "
+                        "run's 3 outputs has no snapshot)"),
+        "measure with summary.csv a FIFO: exit %d (want "
+        "2; 124 or 137: it hung), the FIFO and the gap named: %s",
+        rc, out);
 }
 
 /* A snapshot that reads but cannot be measured is bad input of that file: an aluminium
@@ -1251,7 +1335,8 @@ static void test_measure_damaged(void)
       test_write_file("measured_solid.yaml", variant(21, "  csv: true\nmeasure: {plates: [slab], "
                                                          "fragments: true}"));
   const char *dir = path_of("measured_solid");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite "
            "--quiet --set bodies[0].material=al-alloy "
            "--set bodies[0].density=2780 --set time.end=2e-6 --set output.every=1e-6",
            casefile, dir);
@@ -1285,20 +1370,26 @@ static void test_scaled_units_restart(void)
   char out[16384], args[9000];
   const char *casefile = test_write_file("scaled.yaml", variant(13, "    density: 1 kg/m3"));
   const char *dir = path_of("scaled"), *dir2 = path_of("scaled_again");
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite "
            "--quiet --set bodies[0].material=rubber-ring "
-           "--set bodies[0].pressure=0 --set time.max_steps=3", casefile, dir);
+           "--set bodies[0].pressure=0 --set time.max_steps=3",
+           casefile, dir);
   int rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: the run (exit %d): %s", rc, out);
   snprintf(args, sizeof args, "restart '%s' --quiet --set time.max_steps=6", dir);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: hvsph restart takes used_parameters.yaml (exit %d): %s", rc, out);
-  snprintf(args, sizeof args, "run '%s/used_parameters.yaml' -o '%s' --overwrite --quiet "
-           "--set time.max_steps=2", dir, dir2);
+  snprintf(args, sizeof args,
+           "run '%s/used_parameters.yaml' -o '%s' --overwrite --quiet "
+           "--set time.max_steps=2",
+           dir, dir2);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0, "scaled units: used_parameters.yaml runs as a case (exit %d): %s", rc, out);
-  snprintf(args, sizeof args, "restart '%s' --quiet --set time.max_steps=7 "
-           "--set materials.rubber-ring.c0=2", dir);
+  snprintf(args, sizeof args,
+           "restart '%s' --quiet --set time.max_steps=7 "
+           "--set materials.rubber-ring.c0=2",
+           dir);
   rc = hvsph(args, out, sizeof out);
   check_message("scaled units: a bare --set on restart", out,
                 (const char *const[]){"--set: materials.rubber-ring.c0: the bare number 2", NULL});
@@ -1332,8 +1423,10 @@ static void test_run_folders(void)
   size_t cklen = 0, splen = 0;
   char *ck0 = test_slurp(ck, &cklen), *sp0 = test_slurp(sp, &splen);
   int ntmp, n0 = count_entries(dir, &ntmp, NULL, 0);
-  CHECK(ck0 && cklen > 0 && access(lockf, F_OK) != 0, "it wrote a checkpoint (%zu bytes) and "
-        "left no lock file", cklen);
+  CHECK(ck0 && cklen > 0 && access(lockf, F_OK) != 0,
+        "it wrote a checkpoint (%zu bytes) and "
+        "left no lock file",
+        cklen);
 
   /* again, as the "quick check" (time.end = 0) and as a whole run: refused */
   static const char *const again[] = {"--set time.end=0", ""};
@@ -1344,9 +1437,9 @@ static void test_run_folders(void)
           k ? "" : " with time.end=0", rc);
     char w0[4500];
     snprintf(w0, sizeof w0, "%s holds an earlier run (checkpoint.hvc, summary.csv", dir);
-    check_message("earlier run", out, (const char *const[]){w0, "6 particle snapshot files",
-                                                              "hvsph restart", "--overwrite",
-                                                              NULL});
+    check_message("earlier run", out,
+                  (const char *const[]){w0, "6 particle snapshot files", "hvsph restart",
+                                        "--overwrite", NULL});
     size_t l1 = 0, l2 = 0;
     char *ck1 = test_slurp(ck, &l1), *sp1 = test_slurp(sp, &l2);
     CHECK(ck1 && l1 == cklen && !memcmp(ck0, ck1, cklen) && sp1 && l2 == splen &&
@@ -1357,8 +1450,10 @@ static void test_run_folders(void)
   }
   snprintf(args, sizeof args, "restart '%s' --set time.end=0.015 --quiet", dir);
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 0 && summary_rows(dir) == 4, "... and the run continues from it (exit %d, %d "
-        "summary rows)", rc, summary_rows(dir));
+  CHECK(rc == 0 && summary_rows(dir) == 4,
+        "... and the run continues from it (exit %d, %d "
+        "summary rows)",
+        rc, summary_rows(dir));
 
   /* --overwrite: the earlier run's files go (its later snapshot and checkpoint: this one
      writes neither), the user's notes stay */
@@ -1368,7 +1463,8 @@ static void test_run_folders(void)
             access(snap2, F_OK) != 0 && access(ck, F_OK) != 0 && access(notes, F_OK) == 0 &&
             summary_rows(dir) == 1,
         "--overwrite replaces it: exit %d, the earlier snapshots and checkpoint removed, "
-        "notes.txt kept, summary.csv the new run's: %.300s", rc, out);
+        "notes.txt kept, summary.csv the new run's: %.300s",
+        rc, out);
 
   /* a process holding the folder's lock */
   const pid_t child = hold_lock(dir);
@@ -1376,14 +1472,15 @@ static void test_run_folders(void)
   snprintf(pid, sizeof pid, "hvsph process %ld on ", (long)child);
   n0 = count_entries(dir, &ntmp, NULL, 0);
   for (int k = 0; k < 2; k++) {
-    if (k == 0) snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
-    else snprintf(args, sizeof args, "restart '%s'", dir);
+    if (k == 0)
+      snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet", casefile, dir);
+    else
+      snprintf(args, sizeof args, "restart '%s'", dir);
     rc = hvsph(args, out, sizeof out);
     CHECK(rc == 2, "%s of a folder in use: exit %d (want 2)", k ? "restart" : "run --overwrite",
           rc);
     check_message(k ? "restart, folder in use" : "run, folder in use", out,
-                  (const char *const[]){"is in use by another", pid, "(hvsph run, started ",
-                                        NULL});
+                  (const char *const[]){"is in use by another", pid, "(hvsph run, started ", NULL});
     CHECK(count_entries(dir, &ntmp, NULL, 0) == n0 && access(lockf, F_OK) == 0,
           "... nothing changed in the folder (%d entries, the lock file still there)", n0);
   }
@@ -1400,7 +1497,8 @@ static void test_run_folders(void)
   snprintf(want, sizeof want, "took over the lock left by hvsph process %ld ", (long)child);
   CHECK(rc == 0 && strstr(out, want) && access(lockf, F_OK) != 0,
         "a lock left by a killed process is taken over with a note (exit %d), and removed at "
-        "the end: %.300s", rc, out);
+        "the end: %.300s",
+        rc, out);
 
   /* a lock file that is a symbolic link is not followed (the holder truncates it) */
   const char *victim = test_write_file("victim.txt", "not hvsph's\n");
@@ -1415,8 +1513,10 @@ static void test_run_folders(void)
   unlink(lockf);
 
   /* --force lets a case write more than 10000 outputs (here stopped after 2 steps) */
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --force --set output.every=1e-9 "
-           "--set time.max_steps=2", casefile, dir);
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite --force --set output.every=1e-9 "
+           "--set time.max_steps=2",
+           casefile, dir);
   rc = hvsph(args, out, sizeof out);
   CHECK(rc == 0 && strstr(out, "warning: --set: output.every = 1e-09 s writes ") &&
             strstr(out, "(--force)"),
@@ -1441,11 +1541,13 @@ static void test_every_warning(void)
         out);
   /* with its unit it is meant (a --set time.end shorter than it, for a quick look) */
   casefile = test_write_file("every_unit.yaml", variant(20, "  every: 5 s"));
-  snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite "
-           "--quiet", casefile, path_of("every_unit"));
+  snprintf(args, sizeof args,
+           "run '%s' -o '%s' --overwrite "
+           "--quiet",
+           casefile, path_of("every_unit"));
   rc = hvsph(args, out, sizeof out);
-  CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 5 s: no warning (exit %d): %s",
-        rc, out);
+  CHECK(rc == 0 && !strstr(out, "output.every"), "output.every 5 s: no warning (exit %d): %s", rc,
+        out);
 }
 
 int main(void)
@@ -1469,10 +1571,9 @@ int main(void)
   test_scaled_units_restart();
   test_every_warning();
   test_run_folders();
-  failed_run("negative_density",
-             "--set time.end=10 --set time.dt_init=10 --set output.every=0",
+  failed_run("negative_density", "--set time.end=10 --set time.dt_init=10 --set output.every=0",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'",
-                                    "field rho: ", "not a positive finite density", NULL});
+                                   "field rho: ", "not a positive finite density", NULL});
   failed_run("not_finite", "--set bodies[0].pressure=1e306",
              (const char *const[]){"t = 0 s", "particle ", "body 'slab'", "nan", NULL});
   /* an energy the EOS takes but whose pressure overflows (Γρe > DBL_MAX): the message
@@ -1481,8 +1582,10 @@ int main(void)
     char out[16384], args[9000];
     const char *casefile = test_write_file("eos_inf.yaml", variant(14, "    energy: 1e305"));
     const char *dir = prepare_outdir("eos_not_finite");
-    snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set bodies[0].density=2780 "
-             "--set bodies[0].material=al-alloy", casefile, dir);
+    snprintf(args, sizeof args,
+             "run '%s' -o '%s' --overwrite --quiet --set bodies[0].density=2780 "
+             "--set bodies[0].material=al-alloy",
+             casefile, dir);
     const int rc = hvsph(args, out, sizeof out);
     CHECK(rc == 3, "eos_not_finite: exit status %d (want 3)", rc);
     check_message("eos_not_finite", out,

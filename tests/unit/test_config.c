@@ -253,14 +253,16 @@ static void test_missing_near_miss(void)
   if (!c) return;
   double v;
   int rc = cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
-  check_msg(rc, &err, "case.yaml:4: missing required key 'time.end': this line has 'ennd' "
+  check_msg(rc, &err,
+            "case.yaml:4: missing required key 'time.end': this line has 'ennd' "
             "instead; did you mean 'end'?");
   cfg_free(c);
   c = cfg_load_string("time: {ennd: 0.02}\n", "case.yaml", &err);
   CHECK(c != NULL, "loads");
   if (!c) return;
   rc = cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &v, &err);
-  check_msg(rc, &err, "case.yaml:1: missing required key 'time.end': this line has 'ennd' "
+  check_msg(rc, &err,
+            "case.yaml:1: missing required key 'time.end': this line has 'ennd' "
             "instead; did you mean 'end'?");
   cfg_free(c);
   /* far from it (three edits): the plain message at the mapping's line */
@@ -280,7 +282,8 @@ static void test_missing_near_miss(void)
   long n;
   cfg_get_int(c, "b.particle", NULL, 0, 10, &n, &err);
   rc = cfg_get_int(c, "b.particles", NULL, 0, 10, &n, &err);
-  check_msg(rc, &err, "case.yaml:1: missing required key 'b.particles': this line has "
+  check_msg(rc, &err,
+            "case.yaml:1: missing required key 'b.particles': this line has "
             "'particles2' instead; did you mean 'particles'?");
   cfg_free(c);
 }
@@ -376,8 +379,8 @@ static void test_alias_limits(void)
   int k = snprintf(y, sizeof y, "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n");
   for (int i = 1; i <= 9; i++)
     k += snprintf(y + k, sizeof y - (size_t)k,
-                  "a%d: &a%d [*a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d]\n", i,
-                  i, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1);
+                  "a%d: &a%d [*a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d, *a%d]\n", i, i,
+                  i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1, i - 1);
   c = cfg_load_string(y, "case.yaml", &err);
   CHECK(c == NULL && err.code == HV_EXIT_INPUT &&
             !strncmp(err.msg, "case.yaml:6: alias '*a4'", 24) && strstr(err.msg, "aliases"),
@@ -605,8 +608,8 @@ static void test_write_used(void)
 static void test_typical(void)
 {
   struct hv_error err = {0};
-  struct cfg *c = cfg_load_string("a: 2.78\nb: 2.78 kg/m3\nc: 0\nd: 2780\ne: 1e9\n",
-                                  "case.yaml", &err);
+  struct cfg *c =
+      cfg_load_string("a: 2.78\nb: 2.78 kg/m3\nc: 0\nd: 2780\ne: 1e9\n", "case.yaml", &err);
   CHECK(c != NULL, "typical: the document loads");
   if (!c) return;
   const char *w = "densities of condensed materials";
@@ -615,7 +618,7 @@ static void test_typical(void)
             strstr(err.msg, "case.yaml:1: a: the bare number 2.78 is read as 2.78 kg/m3") &&
             strstr(err.msg, "was it 2.78 g/cm3?"),
         "typical: a bare 2.78 is refused: %s", err.msg);
-  rc = cfg_check_typical(c, "e", UNIT_DENSITY, 50.0, 1e5, w, &err);   /* no unit fits */
+  rc = cfg_check_typical(c, "e", UNIT_DENSITY, 50.0, 1e5, w, &err); /* no unit fits */
   CHECK(rc == -1 && strstr(err.msg, "case.yaml:5: e:") && !strstr(err.msg, "was it"),
         "typical: a bare 1e9 is refused without a guess: %s", err.msg);
   CHECK(!cfg_check_typical(c, "b", UNIT_DENSITY, 50.0, 1e5, w, &err) &&

@@ -210,8 +210,10 @@ static const char *docs_dir(void)
 {
   static char dir[4200];
   const char *d = getenv("HVSPH_DOCS_DIR");
-  if (d && *d) snprintf(dir, sizeof dir, "%s", d);
-  else snprintf(dir, sizeof dir, "%s/docs", test_source_dir());
+  if (d && *d)
+    snprintf(dir, sizeof dir, "%s", d);
+  else
+    snprintf(dir, sizeof dir, "%s/docs", test_source_dir());
   return dir;
 }
 
@@ -228,7 +230,7 @@ static char *read_doc(const char *name)
  * heading (of any level) the table stands under. */
 struct doc_key {
   char heading[128], key[128];
-  const char *row;   /* the whole row, for the keys below it that it names */
+  const char *row; /* the whole row, for the keys below it that it names */
 };
 struct doc_keys {
   struct doc_key *k;
@@ -321,8 +323,8 @@ static int first_len(const char *s) { return (int)line_len(s); }
 
 struct key_check {
   const struct doc_keys *doc;
-  struct text seen;      /* "heading|rel" checked */
-  struct text missing;   /* the message */
+  struct text seen;    /* "heading|rel" checked */
+  struct text missing; /* the message */
   int nkeys, nmissing;
 };
 
@@ -344,7 +346,7 @@ static void check_key(struct cfg *c, const char *path, const char *casename, str
   }
   const char *heading[2] = {NULL, NULL};
   char eos_heading[160] = "", rel[512] = "";
-  int from = 1;   /* the first part of rel */
+  int from = 1; /* the first part of rel */
   if (np == 1) {
     heading[0] = "Top level";
     from = 0;
@@ -364,7 +366,7 @@ static void check_key(struct cfg *c, const char *path, const char *casename, str
       from = 2;
     }
   } else if (!strcmp(parts[0], "bodies") && np >= 3 && !strcmp(parts[1], "shape")) {
-    heading[0] = "shapes";   /* the shape's own key, in a `minus` shape too */
+    heading[0] = "shapes"; /* the shape's own key, in a `minus` shape too */
     from = np - 1;
   } else {
     heading[0] = parts[0];
@@ -378,19 +380,24 @@ static void check_key(struct cfg *c, const char *path, const char *casename, str
     snprintf(id, sizeof id, "Top level|%s", parts[0]);
     if (set_add(&k->seen, id)) {
       k->nmissing++;
-      text_add(&k->missing, "\n      `%s` (in used_parameters.yaml of %s): no row `%s` in the "
-               "table of \"## Top level\"", parts[0], casename, parts[0]);
+      text_add(&k->missing,
+               "\n      `%s` (in used_parameters.yaml of %s): no row `%s` in the "
+               "table of \"## Top level\"",
+               parts[0], casename, parts[0]);
     }
   }
   char id[800];
   snprintf(id, sizeof id, "%s|%s", heading[1] ? heading[1] : heading[0], rel);
   if (!set_add(&k->seen, id)) return;
   k->nkeys++;
-  if (doc_documents(k->doc, heading[0], rel) || (heading[1] && doc_documents(k->doc, heading[1], rel)))
+  if (doc_documents(k->doc, heading[0], rel) ||
+      (heading[1] && doc_documents(k->doc, heading[1], rel)))
     return;
   k->nmissing++;
-  text_add(&k->missing, "\n      `%s` (in used_parameters.yaml of %s): no row `%s` in the table "
-           "of \"%s\"%s%s%s", shown, casename, rel, heading[0], heading[1] ? " or of \"" : "",
+  text_add(&k->missing,
+           "\n      `%s` (in used_parameters.yaml of %s): no row `%s` in the table "
+           "of \"%s\"%s%s%s",
+           shown, casename, rel, heading[0], heading[1] ? " or of \"" : "",
            heading[1] ? heading[1] : "", heading[1] ? "\"" : "");
 }
 
@@ -405,7 +412,7 @@ static void visit_key(struct cfg *c, const char *path, const char *casename, str
   int n = cfg_len(c, path);
   char item[1200];
   snprintf(item, sizeof item, "%s[0]", path);
-  if (n > 0 && cfg_is_map(c, item)) {   /* a list of mappings: bodies, minus */
+  if (n > 0 && cfg_is_map(c, item)) { /* a list of mappings: bodies, minus */
     for (int i = 0; i < n; i++) {
       snprintf(item, sizeof item, "%s[%d]", path, i);
       walk_keys(c, item, casename, k);
@@ -483,26 +490,32 @@ static const char *write_library_case(void)
   CHECK(rc == 0, "hvsph materials lists the library (exit %d)", rc);
   test_write_file("library_eos.txt", "rho_count 2 e_count 2\n1000 2000\n0 1e6\n0 4e8\n0 8e8\n");
   struct text yaml = {0};
-  text_add(&yaml, "name: library\n"
-           "materials:\n"
-           "  table: {eos: table, file: library_eos.txt, rho0: 1000}\n"
-           "  crack: {library: al-alloy, fracture: {model: tresca, sigma_c: -0.3 GPa, split: crack,\n"
-           "                                        crack_eps_f: {d1: 0.1, d2: 0.2, d3: -1.5}}}\n"
-           "  cumulative: {library: steel-target, fracture: {model: cumulative, sigma_c: -1 GPa,\n"
-           "                                                 eps_f: 0.5, tau: 1 us}}\n"
-           "bodies:\n");
+  text_add(
+      &yaml,
+      "name: library\n"
+      "materials:\n"
+      "  table: {eos: table, file: library_eos.txt, rho0: 1000}\n"
+      "  crack: {library: al-alloy, fracture: {model: tresca, sigma_c: -0.3 GPa, split: crack,\n"
+      "                                        crack_eps_f: {d1: 0.1, d2: 0.2, d3: -1.5}}}\n"
+      "  cumulative: {library: steel-target, fracture: {model: cumulative, sigma_c: -1 GPa,\n"
+      "                                                 eps_f: 0.5, tau: 1 us}}\n"
+      "bodies:\n");
   int n = 0;
   for (const char *p = out; *p; p = next_line(p)) {
     if (p[0] == '#' || !strncmp(p, "name ", 5) || p[0] == ' ' || p[0] == '\n') continue;
-    text_add(&yaml, "  - material: %.*s\n    shape: {type: box, min: [%d mm, 0, 0], max: [%d mm, "
-             "1 mm, 1 mm]}\n    spacing: 0.5 mm\n", (int)strcspn(p, " \n"), p, 2 * n, 2 * n + 1);
+    text_add(&yaml,
+             "  - material: %.*s\n    shape: {type: box, min: [%d mm, 0, 0], max: [%d mm, "
+             "1 mm, 1 mm]}\n    spacing: 0.5 mm\n",
+             (int)strcspn(p, " \n"), p, 2 * n, 2 * n + 1);
     n++;
   }
   CHECK(n >= 10, "a case with a cube of each of the library's %d materials", n);
   static const char *const more[] = {"table", "crack", "cumulative"};
   for (int k = 0; k < 3; k++, n++)
-    text_add(&yaml, "  - material: %s\n    shape: {type: box, min: [%d mm, 0, 0], max: [%d mm, "
-             "1 mm, 1 mm]}\n    spacing: 0.5 mm\n", more[k], 2 * n, 2 * n + 1);
+    text_add(&yaml,
+             "  - material: %s\n    shape: {type: box, min: [%d mm, 0, 0], max: [%d mm, "
+             "1 mm, 1 mm]}\n    spacing: 0.5 mm\n",
+             more[k], 2 * n, 2 * n + 1);
   text_add(&yaml, "time: {end: 0}\n");
   const char *path = test_write_file("library.yaml", text_str(&yaml));
   text_free(&yaml);
@@ -538,10 +551,11 @@ static int set_up_examples(struct example *ex, int max)
                first_len(out), out);
     }
   }
-  CHECK(n >= 20 && nfailed == 0, "the %d cases (examples/verification, examples/paper at "
+  CHECK(n >= 20 && nfailed == 0,
+        "the %d cases (examples/verification, examples/paper at "
         "resolution 0.01, examples/getting-started, a case of materials) set up with "
-        "time.end=0%s%s", n,
-        nfailed ? "; failed:" : "", text_str(&failed));
+        "time.end=0%s%s",
+        n, nfailed ? "; failed:" : "", text_str(&failed));
   text_free(&failed);
   text_free(&cmd);
   return n;
@@ -555,11 +569,13 @@ static void test_case_keys(const struct example *ex, int n)
   doc_keys_parse(md, &doc);
   /* the page's tables are where the test looks for them */
   static const char *const tables[] = {"Top level", "materials", "EOS `ideal-gas`", "strength",
-                                       "fracture", "bodies", "shapes", "domain", "sph", "time",
-                                       "output", "measure"};
+                                       "fracture",  "bodies",    "shapes",          "domain",
+                                       "sph",       "time",      "output",          "measure"};
   for (size_t t = 0; t < sizeof tables / sizeof tables[0]; t++)
-    CHECK(doc_heading_keys(&doc, tables[t]) > 0, "docs/case-files.md has a table of keys under "
-          "the heading \"%s\"", tables[t]);
+    CHECK(doc_heading_keys(&doc, tables[t]) > 0,
+          "docs/case-files.md has a table of keys under "
+          "the heading \"%s\"",
+          tables[t]);
 
   struct key_check k = {.doc = &doc};
   int read = 0;
@@ -575,10 +591,14 @@ static void test_case_keys(const struct example *ex, int n)
     walk_keys(c, "", casename, &k);
     cfg_free(c);
   }
-  CHECK(read == n && k.nkeys > 100, "used_parameters.yaml of %d of %d cases read: %d keys "
-        "(distinct by table)", read, n, k.nkeys);
-  CHECK(k.nmissing == 0, "docs/case-files.md documents every key the cases read "
-        "(%d keys); %d missing:%s", k.nkeys, k.nmissing, text_str(&k.missing));
+  CHECK(read == n && k.nkeys > 100,
+        "used_parameters.yaml of %d of %d cases read: %d keys "
+        "(distinct by table)",
+        read, n, k.nkeys);
+  CHECK(k.nmissing == 0,
+        "docs/case-files.md documents every key the cases read "
+        "(%d keys); %d missing:%s",
+        k.nkeys, k.nmissing, text_str(&k.missing));
   text_free(&k.seen);
   text_free(&k.missing);
   free(doc.k);
@@ -587,8 +607,8 @@ static void test_case_keys(const struct example *ex, int n)
 
 /* -------------------------------------------------------- 2. command-line options */
 
-static const char *const commands[] = {"run", "restart", "bench", "materials", "render",
-                                       "measure", "validate"};
+static const char *const commands[] = {"run",    "restart", "bench",   "materials",
+                                       "render", "measure", "validate"};
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 
 /* Adds to set every long option ("--set", "--no-mirror") in s[0, len). */
@@ -614,7 +634,8 @@ static void usage_block(const char *s, const char *cmd, size_t indent, struct te
   size_t cl = strlen(cmd);
   for (const char *p = s; *p; p = next_line(p)) {
     if (strspn(p, " ") != indent || strncmp(p + indent, "hvsph ", 6) ||
-        strncmp(p + indent + 6, cmd, cl) || (p[indent + 6 + cl] != ' ' && p[indent + 6 + cl] != '\n'))
+        strncmp(p + indent + 6, cmd, cl) ||
+        (p[indent + 6 + cl] != ' ' && p[indent + 6 + cl] != '\n'))
       continue;
     const char *q = next_line(p);
     while (*q && strspn(q, " ") > indent && line_len(q) > strspn(q, " ")) q = next_line(q);
@@ -626,13 +647,13 @@ static void usage_block(const char *s, const char *cmd, size_t indent, struct te
 static const struct {
   const char *cmd, *base;
 } cli_base[] = {
-    {"run", "run @/none.yaml"},                                   /* 2: no case file */
-    {"restart", "restart @/none"},                                /* 2: no run there */
-    {"bench", "bench --particles 512 --steps 1 --threads 1"},     /* 0 */
-    {"materials", "materials"},                                   /* 0 */
-    {"render", "render @/none.csv -o @/none.png"},                /* 2: no snapshot */
-    {"measure", "measure @/none"},                                /* 2: no run there */
-    {"validate", "validate --only wp1 --cases @/none -o @/validate"},   /* 2: no case file */
+    {"run", "run @/none.yaml"},                                       /* 2: no case file */
+    {"restart", "restart @/none"},                                    /* 2: no run there */
+    {"bench", "bench --particles 512 --steps 1 --threads 1"},         /* 0 */
+    {"materials", "materials"},                                       /* 0 */
+    {"render", "render @/none.csv -o @/none.png"},                    /* 2: no snapshot */
+    {"measure", "measure @/none"},                                    /* 2: no run there */
+    {"validate", "validate --only wp1 --cases @/none -o @/validate"}, /* 2: no case file */
 };
 
 /* A value for each option that takes one (the option is tried alone when it is not
@@ -640,20 +661,32 @@ static const struct {
 static const struct {
   const char *cmd, *args;
 } cli_sample[] = {
-    {"run", "--output @/out"},           {"run", "--set time.end=0"},
-    {"run", "--material gas=nitrogen"},  {"run", "--threads 1"},
-    {"restart", "--set time.end=0"},     {"restart", "--threads 1"},
-    {"bench", "--particles 512"},        {"bench", "--steps 1"},
-    {"bench", "--threads 1"},            {"bench", "--set sph.eta=1.2"},
-    {"render", "--output @/none.png"},   {"render", "--mode particles"},
-    {"render", "--axis y"},              {"render", "--color density"},
-    {"render", "--colour density"},      {"render", "--size 400x300"},
-    {"render", "--box 0,1mm,0,1mm,0,1mm"}, {"render", "--mu 0.05"},
+    {"run", "--output @/out"},
+    {"run", "--set time.end=0"},
+    {"run", "--material gas=nitrogen"},
+    {"run", "--threads 1"},
+    {"restart", "--set time.end=0"},
+    {"restart", "--threads 1"},
+    {"bench", "--particles 512"},
+    {"bench", "--steps 1"},
+    {"bench", "--threads 1"},
+    {"bench", "--set sph.eta=1.2"},
+    {"render", "--output @/none.png"},
+    {"render", "--mode particles"},
+    {"render", "--axis y"},
+    {"render", "--color density"},
+    {"render", "--colour density"},
+    {"render", "--size 400x300"},
+    {"render", "--box 0,1mm,0,1mm,0,1mm"},
+    {"render", "--mu 0.05"},
     {"render", "--range 1,2 --mode particles --color density"},
     {"measure", "--case @/none.yaml"},
-    {"validate", "--scale 0.01"},        {"validate", "--only wp1"},
-    {"validate", "--output @/validate"}, {"validate", "--threads 1"},
-    {"validate", "--cases @/none"},      {"validate", "--set time.end=0"},
+    {"validate", "--scale 0.01"},
+    {"validate", "--only wp1"},
+    {"validate", "--output @/validate"},
+    {"validate", "--threads 1"},
+    {"validate", "--cases @/none"},
+    {"validate", "--set time.end=0"},
     {"validate", "--material gas=nitrogen"},
 };
 
@@ -661,8 +694,10 @@ static const struct {
 static void expand(const char *s, struct text *out)
 {
   for (; *s; s++) {
-    if (*s == '@') text_add(out, "'%s'", test_tmpdir());
-    else text_add(out, "%c", *s);
+    if (*s == '@')
+      text_add(out, "'%s'", test_tmpdir());
+    else
+      text_add(out, "%c", *s);
   }
 }
 
@@ -729,9 +764,10 @@ static void test_cli_options(void)
       for (const char *p = sec; p < sec + slen; p = next_line(p)) {
         const char *cell;
         size_t clen;
-        if (is_fence(p)) fenced = !fenced;
+        if (is_fence(p))
+          fenced = !fenced;
         else if (fenced && has_word(p, line_len(p), title)) {
-          const char *at = strstr(p, title);   /* "build/hvsph run ...": from the command on */
+          const char *at = strstr(p, title); /* "build/hvsph run ...": from the command on */
           if (at && at < p + line_len(p)) collect_options(at, line_len(at), &listed);
         } else if (!fenced && !md_cell(p, 0, &cell, &clen))
           collect_options(cell, clen, &listed);
@@ -746,8 +782,10 @@ static void test_cli_options(void)
       nhelp++;
       if (!set_has(&listed, opt) && !set_has(&anywhere, opt)) {
         nmissing++;
-        text_add(&missing, "\n      hvsph %s %s (its help shows it; not in the synopsis line "
-                 "nor in a section \"## hvsph %s\")", cmd, opt, cmd);
+        text_add(&missing,
+                 "\n      hvsph %s %s (its help shows it; not in the synopsis line "
+                 "nor in a section \"## hvsph %s\")",
+                 cmd, opt, cmd);
       }
     }
     /* docs -> the command takes it */
@@ -771,10 +809,14 @@ static void test_cli_options(void)
     text_free(&listed);
     text_free(&anywhere);
   }
-  CHECK(nhelp > 20 && nmissing == 0, "docs/cli.md has every option the commands' help shows "
-        "(%d); %d missing:%s", nhelp, nmissing, text_str(&missing));
-  CHECK(nlisted > 20 && nrefused == 0, "every option docs/cli.md gives a command (%d) is taken by "
-        "it; %d refused:%s", nlisted, nrefused, text_str(&refused));
+  CHECK(nhelp > 20 && nmissing == 0,
+        "docs/cli.md has every option the commands' help shows "
+        "(%d); %d missing:%s",
+        nhelp, nmissing, text_str(&missing));
+  CHECK(nlisted > 20 && nrefused == 0,
+        "every option docs/cli.md gives a command (%d) is taken by "
+        "it; %d refused:%s",
+        nlisted, nrefused, text_str(&refused));
   text_free(&missing);
   text_free(&refused);
   free(synopsis);
@@ -826,8 +868,10 @@ static void test_summary_columns(const struct example *sod)
     struct text missing = {0};
     int nmissing = 0;
     const int n = names_in_code(sec, slen, header, ",", &missing, &nmissing);
-    CHECK(n >= 11 && nmissing == 0, "docs/output-files.md, section summary.csv, has every "
-          "column of summary.csv (%d); %d missing:%s", n, nmissing, text_str(&missing));
+    CHECK(n >= 11 && nmissing == 0,
+          "docs/output-files.md, section summary.csv, has every "
+          "column of summary.csv (%d); %d missing:%s",
+          n, nmissing, text_str(&missing));
     text_free(&missing);
   }
   free(header);
@@ -882,11 +926,11 @@ static void test_particle_columns(void)
       continue;
     }
     struct text names = {0}, missing = {0};
-    if (f == 0) {   /* the header line */
+    if (f == 0) { /* the header line */
       char *header = csv_header(text);
       text_add(&names, "%s", header ? header : "");
       free(header);
-    } else {        /* Name="..." of each DataArray, before the appended data */
+    } else { /* Name="..." of each DataArray, before the appended data */
       const char *end = strstr(text, "<AppendedData");
       for (const char *p = strstr(text, "Name=\""); p && (!end || p < end);
            p = strstr(p + 1, "Name=\"")) {
@@ -902,9 +946,10 @@ static void test_particle_columns(void)
     }
     int nmissing = 0;
     const int n = names.s ? names_in_code(sec, slen, names.s, ",\n", &missing, &nmissing) : 0;
-    CHECK(n >= (f ? 17 : 28) && nmissing == 0, "docs/output-files.md, section %s, has every "
-          "%s of %s (%d); %d missing:%s", sections[f], f ? "array" : "column", file, n,
-          nmissing, text_str(&missing));
+    CHECK(n >= (f ? 17 : 28) && nmissing == 0,
+          "docs/output-files.md, section %s, has every "
+          "%s of %s (%d); %d missing:%s",
+          sections[f], f ? "array" : "column", file, n, nmissing, text_str(&missing));
     text_free(&names);
     text_free(&missing);
     free(text);
@@ -916,13 +961,13 @@ static void test_particle_columns(void)
  * `time:`) sets up: an example a reader copies must run. */
 static void test_example_blocks(void)
 {
-  static const char *const pages[] = {"../README.md", "case-files.md", "units.md",
+  static const char *const pages[] = {"../README.md",    "case-files.md", "units.md",
                                       "verification.md", "validation.md", "models.md"};
   struct text failed = {0};
   int nblocks = 0, nfailed = 0;
   for (size_t k = 0; k < sizeof pages / sizeof pages[0]; k++) {
     char *md = NULL;
-    if (!strncmp(pages[k], "../", 3)) {   /* the README of this source tree */
+    if (!strncmp(pages[k], "../", 3)) { /* the README of this source tree */
       char path[4400];
       snprintf(path, sizeof path, "%s/%s", test_source_dir(), pages[k] + 3);
       md = test_slurp(path, NULL);
@@ -943,14 +988,14 @@ static void test_example_blocks(void)
         snprintf(name, sizeof name, "example_%d.yaml", nblocks);
         const char *path = test_write_file(name, b);
         snprintf(dir, sizeof dir, "%.4000s/runs/example_%d", test_tmpdir(), nblocks);
-        snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set time.end=0",
-                 path, dir);
+        snprintf(args, sizeof args, "run '%s' -o '%s' --overwrite --quiet --set time.end=0", path,
+                 dir);
         const int rc = hvsph(args, out, sizeof out);
         nblocks++;
         if (rc != 0) {
           nfailed++;
-          text_add(&failed, "\n      %s:%d: exit %d: %.*s", pages[k], start, rc,
-                   first_len(out), out);
+          text_add(&failed, "\n      %s:%d: exit %d: %.*s", pages[k], start, rc, first_len(out),
+                   out);
         }
       }
       text_free(&block);
@@ -958,8 +1003,10 @@ static void test_example_blocks(void)
     }
     free(md);
   }
-  CHECK(nblocks >= 6 && nfailed == 0, "the %d complete example cases of README.md and docs/ "
-        "set up with time.end=0%s%s", nblocks, nfailed ? "; failed:" : "", text_str(&failed));
+  CHECK(nblocks >= 6 && nfailed == 0,
+        "the %d complete example cases of README.md and docs/ "
+        "set up with time.end=0%s%s",
+        nblocks, nfailed ? "; failed:" : "", text_str(&failed));
   text_free(&failed);
 }
 
@@ -979,12 +1026,16 @@ static int parse_number(const char *s, size_t len, size_t *used, double *v, int 
   char buf[64];
   size_t i = 0, k = 0;
   while (i < len && s[i] == ' ') i++;
-  if (i < len && s[i] == '+') i++;
-  else if (i + 2 < len && !strncmp(s + i, "\xe2\x88\x92", 3)) buf[k++] = '-', i += 3;
-  else if (i < len && s[i] == '-') buf[k++] = '-', i++;
+  if (i < len && s[i] == '+')
+    i++;
+  else if (i + 2 < len && !strncmp(s + i, "\xe2\x88\x92", 3))
+    buf[k++] = '-', i += 3;
+  else if (i < len && s[i] == '-')
+    buf[k++] = '-', i++;
   const size_t d0 = i;
   int dot = -1;
-  while (i < len && k < sizeof buf - 1 && ((s[i] >= '0' && s[i] <= '9') || (s[i] == '.' && dot < 0))) {
+  while (i < len && k < sizeof buf - 1 &&
+         ((s[i] >= '0' && s[i] <= '9') || (s[i] == '.' && dot < 0))) {
     if (s[i] == '.') dot = (int)(i - d0);
     buf[k++] = s[i++];
   }
@@ -1054,7 +1105,7 @@ static void test_readme_validation(void)
   const char *rs = md_section(readme, "Validation", &rlen);
   const char *ss = md_section(val, "Status", &slen);
   CHECK(rs != NULL && ss != NULL, "README.md has a section \"Validation\" and "
-        "docs/validation.md one \"Status\"");
+                                  "docs/validation.md one \"Status\"");
   if (!rs || !ss) {
     free(readme);
     free(val);
@@ -1085,7 +1136,7 @@ static void test_readme_validation(void)
     size_t n;
     if (md_cell(p, 2, &c, &n)) continue;
     trim(&c, &n);
-    while (n) {   /* the parts of "a (e) / b (e)" */
+    while (n) { /* the parts of "a (e) / b (e)" */
       const char *sl = NULL;
       for (size_t i = 0; i + 3 <= n && !sl; i++)
         if (!strncmp(c + i, " / ", 3)) sl = c + i;
@@ -1104,17 +1155,20 @@ static void test_readme_validation(void)
       c = sl + 3;
     }
   }
-  CHECK(nvals >= 20 && !bad.n, "the %d values of README's validation table are the Status "
-        "table's of docs/validation.md (value and error at README's digits)%s%s", nvals,
-        bad.n ? "; not found there:" : "", text_str(&bad));
+  CHECK(nvals >= 20 && !bad.n,
+        "the %d values of README's validation table are the Status "
+        "table's of docs/validation.md (value and error at README's digits)%s%s",
+        nvals, bad.n ? "; not found there:" : "", text_str(&bad));
   text_free(&bad);
   /* the mean hole errors, hvsph's and KERNEL's */
   const double sh = number_after(ss, slen, "mean absolute error is ");
   const double sk = number_after(ss, slen, "% against KERNEL's ");
   const double rh = number_after(rs, rlen, "mean hole error is ");
   const double rk = number_after(rs, rlen, "%, KERNEL's ");
-  CHECK(!isnan(sh) && !isnan(sk) && sh == rh && sk == rk, "README's mean hole errors (%g %%, "
-        "KERNEL %g %%) are the Status's (%g %%, %g %%)", rh, rk, sh, sk);
+  CHECK(!isnan(sh) && !isnan(sk) && sh == rh && sk == rk,
+        "README's mean hole errors (%g %%, "
+        "KERNEL %g %%) are the Status's (%g %%, %g %%)",
+        rh, rk, sh, sk);
   free(readme);
   free(val);
 }
@@ -1127,7 +1181,7 @@ static void doc_quantities(const char *sec, size_t slen, struct text *q)
     size_t nl, ul;
     if (md_cell(p, 0, &names, &nl) || md_cell(p, 1, &unit, &ul)) continue;
     trim(&unit, &ul);
-    if (ul == strlen("–") && !strncmp(unit, "–", ul)) ul = 0;   /* – : no unit */
+    if (ul == strlen("–") && !strncmp(unit, "–", ul)) ul = 0; /* – : no unit */
     for (const char *a = memchr(names, '`', nl); a && a < names + nl;) {
       const char *e = memchr(a + 1, '`', (size_t)(names + nl - a - 1));
       if (!e) break;
@@ -1208,10 +1262,11 @@ static void test_measurement_quantities(const struct example *ex, int n)
     free(header);
     free(csv);
   }
-  CHECK(files >= 3 && nq > 30 && nmissing + nbad == 0, "docs/measurements.md, section "
+  CHECK(files >= 3 && nq > 30 && nmissing + nbad == 0,
+        "docs/measurements.md, section "
         "measurements.csv, has every quantity (with its unit) of the paper cases' "
-        "measurements.csv (%d files, %d quantities); %d missing:%s", files, nq, nmissing,
-        text_str(&missing));
+        "measurements.csv (%d files, %d quantities); %d missing:%s",
+        files, nq, nmissing, text_str(&missing));
   text_free(&doc);
   text_free(&seen);
   text_free(&missing);

@@ -123,8 +123,10 @@ static void test_mg_hand_point(void)
   struct eos_state st;
   int rc = eos_evaluate(m, 1.2 * 7810.0, 1e6, &st);
   const double p = 61892701570.380090490500747, c = 6936.1763570102413300977595;
-  CHECK(rc == 0 && fabs(st.p - p) <= 1e-12 * p, "steel-target p(1.2 rho0, 1 MJ/kg) = %.17g Pa, "
-        "hand %.17g (rel %.2g, threshold 1e-12)", st.p, p, fabs(st.p - p) / p);
+  CHECK(rc == 0 && fabs(st.p - p) <= 1e-12 * p,
+        "steel-target p(1.2 rho0, 1 MJ/kg) = %.17g Pa, "
+        "hand %.17g (rel %.2g, threshold 1e-12)",
+        st.p, p, fabs(st.p - p) / p);
   CHECK(fabs(st.cs - c) <= 1e-12 * c, "steel-target c = %.17g m/s, hand %.17g", st.cs, c);
   CHECK(fabs(eos_mg_cold_pressure(&m->eosp.mg, 9372.0) - 52984905586.076656892) <= 1e-12 * 5.3e10,
         "p_c hand value");
@@ -175,7 +177,8 @@ static void test_sound_speed_consistency(void)
       }
   }
   printf("  sound speed vs numerical dp: %d states, worst relative difference %.2g (threshold "
-         "1e-5)\n", n, worst);
+         "1e-5)\n",
+         n, worst);
 }
 
 /* c² > 0 (a finite c ≥ floor > 0) over 0.5–3 ρ₀ and 0–20 MJ/kg for every library solid;
@@ -202,8 +205,8 @@ static void test_sound_speed_positive(void)
           bad, total);
     CHECK(floored_in_compression == 0, "%s: no floored sound speed for rho >= rho0 (%d)", m->name,
           floored_in_compression);
-    printf("  %-20s c > 0 on %d states; floor active on %d (all with rho < rho0)\n", m->name,
-           total, floored);
+    printf("  %-20s c > 0 on %d states; floor active on %d (all with rho < rho0)\n", m->name, total,
+           floored);
   }
 }
 
@@ -218,12 +221,14 @@ static void test_tillotson_reference(void)
     /* threshold |p| <= 1e-9 Pa; c = √(A/ρ₀) there to 1e-12 */
     CHECK(fabs(st.p) <= 1e-9, "%s: p(rho0, 0) = %g", m->name, st.p);
     const double c0 = sqrt(m->eosp.til.A / m->rho0);
-    CHECK(fabs(st.cs - c0) <= 1e-12 * c0, "%s: c(rho0, 0) = %.15g, sqrt(A/rho0) = %.15g",
-          m->name, st.cs, c0);
+    CHECK(fabs(st.cs - c0) <= 1e-12 * c0, "%s: c(rho0, 0) = %.15g, sqrt(A/rho0) = %.15g", m->name,
+          st.cs, c0);
     /* compressed, cold: p = Aμ + Bμ² exactly */
     const double mu = 0.1, pc = m->eosp.til.A * mu + m->eosp.til.B * mu * mu;
-    CHECK(fabs(pressure(m, 1.1 * m->rho0, 0.0) - pc) <= 1e-12 * pc, "%s: p(1.1 rho0, 0) = A mu + "
-          "B mu^2", m->name);
+    CHECK(fabs(pressure(m, 1.1 * m->rho0, 0.0) - pc) <= 1e-12 * pc,
+          "%s: p(1.1 rho0, 0) = A mu + "
+          "B mu^2",
+          m->name);
   }
 }
 
@@ -254,8 +259,10 @@ static void test_tillotson_continuity(void)
     for (int j = 0; j < 3; j++) {
       const double pm = pressure(m, t->rho0 * (1 - 1e-12), es[j]);
       const double pp = pressure(m, t->rho0 * (1 + 1e-12), es[j]);
-      CHECK(fabs(pp - pm) <= 1e-9 * fabs(pp), "%s: continuous across rho0 at e = %g (%.15g, "
-            "%.15g)", m->name, es[j], pm, pp);
+      CHECK(fabs(pp - pm) <= 1e-9 * fabs(pp),
+            "%s: continuous across rho0 at e = %g (%.15g, "
+            "%.15g)",
+            m->name, es[j], pm, pp);
     }
   }
   printf("  Tillotson: worst relative jump at E_iv/E_cv %.2g (threshold 1e-9)\n", worst);
@@ -274,8 +281,10 @@ static void test_tillotson_hybrid(void)
   const double Pe = t->a * rho * Em +
                     (t->b * rho * Em / w + t->A * mu * exp(-t->beta * z)) * exp(-t->alpha * z * z);
   const double want = 0.75 * Pe + 0.25 * Pc;
-  CHECK(fabs(pressure(m, rho, Em) - want) <= 1e-12 * fabs(want), "hybrid p = %.15g, formula "
-        "%.15g", pressure(m, rho, Em), want);
+  CHECK(fabs(pressure(m, rho, Em) - want) <= 1e-12 * fabs(want),
+        "hybrid p = %.15g, formula "
+        "%.15g",
+        pressure(m, rho, Em), want);
   CHECK(pc != pe, "branches differ at rho = 0.7 rho0 (%.6g, %.6g)", pc, pe);
 }
 
@@ -307,7 +316,8 @@ static const char *write_table(const char *name, int N, int M, int cubic, int wi
   size_t cap = 64 + 40 * (size_t)(N + M + 2 * N * M), k = 0;
   char *s = malloc(cap);
   k += (size_t)snprintf(s + k, cap - k, "# analytic test table\nrho_count %d e_count %d\n", N, M);
-  for (int i = 0; i < N; i++) k += (size_t)snprintf(s + k, cap - k, "%.17g ", 500.0 + 1500.0 * i / (N - 1));
+  for (int i = 0; i < N; i++)
+    k += (size_t)snprintf(s + k, cap - k, "%.17g ", 500.0 + 1500.0 * i / (N - 1));
   k += (size_t)snprintf(s + k, cap - k, "\n");
   for (int j = 0; j < M; j++) k += (size_t)snprintf(s + k, cap - k, "%.17g ", 1e6 * j / (M - 1));
   k += (size_t)snprintf(s + k, cap - k, "\n");
@@ -392,16 +402,17 @@ static void test_table_interpolation(void)
     const double err_abs = fabs(s2.p - tab_f(rho, en, 1));
     if (err_abs > emax) emax = err_abs;
   }
-  CHECK(emax <= bound * (1 + 1e-9), "bilinear error %.4g Pa within the bound %.4g Pa", emax,
-        bound);
+  CHECK(emax <= bound * (1 + 1e-9), "bilinear error %.4g Pa within the bound %.4g Pa", emax, bound);
   CHECK(emax >= 0.05 * bound, "the test table is not trivially exact (error %.3g, bound %.3g)",
         emax, bound);
   printf("  table: bilinear error %.4g Pa, bound dr^2/8 max|p_rr| = %.4g Pa\n", emax, bound);
   /* c rows: interpolated (at a node: exact) */
   struct eos_state s3;
   eos_evaluate(&m, 500.0, 1e6, &s3);
-  CHECK(fabs(s3.cs - sqrt(tab_gamma * (tab_gamma - 1) * 1e6 + 1.0)) <= 1e-9, "c from the c rows "
-        "at a node (%.12g)", s3.cs);
+  CHECK(fabs(s3.cs - sqrt(tab_gamma * (tab_gamma - 1) * 1e6 + 1.0)) <= 1e-9,
+        "c from the c rows "
+        "at a node (%.12g)",
+        s3.cs);
   material_free(&m);
 }
 
@@ -425,8 +436,10 @@ static void test_table_errors(void)
        "axis.txt:2: expected 3 rho values, found 2 (the file ends)"},
       {"axis_e.txt", "rho_count 2 e_count 2\n1 2\n0\n",
        "axis_e.txt:3: expected 2 e values, found 1 (the file ends)"},
-      {"header.txt", "# no header\nrho 3 e 2\n", "header.txt:2: expected the header 'rho_count N e_count M'"},
-      {"count.txt", "rho_count 1 e_count 2\n", "count.txt:1: rho_count must be an integer >= 2 (got 1)"},
+      {"header.txt", "# no header\nrho 3 e 2\n",
+       "header.txt:2: expected the header 'rho_count N e_count M'"},
+      {"count.txt", "rho_count 1 e_count 2\n",
+       "count.txt:1: rho_count must be an integer >= 2 (got 1)"},
       {"extra.txt", "rho_count 2 e_count 2\n1 2\n0 1\n1 2\n3 4\n5 6\n7 8\n9 9\n",
        "extra.txt:8: unexpected values after the 2 sound-speed rows"},
       {"cneg.txt", "rho_count 2 e_count 2\n1 2\n0 1\n1 2\n3 4\n5 6\n7 -8\n",
@@ -458,11 +471,14 @@ static void test_table_errors(void)
   const char *ok = test_write_file("ok.txt", "# header\n\nrho_count 2 e_count 2  # sizes\n1\n2\n"
                                              "0 1\n\n1 2  # row 1\n3 4\n");
   rc = eos_table_load(ok, &t, &err);
-  CHECK(rc == 0 && t.nrho == 2 && t.ne == 2 && t.p[3] == 4.0 && !t.cs, "comments and blank "
-        "lines (%s)", rc ? err.msg : "ok");
+  CHECK(rc == 0 && t.nrho == 2 && t.ne == 2 && t.p[3] == 4.0 && !t.cs,
+        "comments and blank "
+        "lines (%s)",
+        rc ? err.msg : "ok");
   if (!rc) eos_table_free(&t);
   /* the example of docs/models.md */
-  const char *doc = test_write_file("doc.txt",
+  const char *doc = test_write_file(
+      "doc.txt",
       "# comments start with '#' and run to the end of the line; blank lines are ignored\n"
       "rho_count 3 e_count 4          # header: N, M >= 2\n"
       "2000 2700 3500                 # N densities [kg/m3], > 0, strictly increasing\n"
@@ -535,7 +551,8 @@ static void test_table_file(void)
           "     shape: {type: box, min: [0, 0, 0], max: [0.1, 0.05, 0.05]},\n"
           "     spacing: 6.25 mm, density: 1000, energy: 5e5}\n"
           "time: {end: 1e-5}\n"
-          "output: {every: 5e-6}\n", f);
+          "output: {every: 5e-6}\n",
+          f);
     fclose(f);
   }
   snprintf(cmd, sizeof cmd, "cd '%s' && '%s' run case.yaml -o out/tab -q 2>&1", dir, test_bin());
@@ -548,8 +565,8 @@ static void test_table_file(void)
   snprintf(want, sizeof want, "%s/num/T2/wide.txt", real ? real : dir);
   free(real);
   used_value(text, "    file:", rec, sizeof rec);
-  CHECK(!strcmp(rec, want), "used_parameters.yaml records the resolved path '%s' (got '%s')",
-        want, rec);
+  CHECK(!strcmp(rec, want), "used_parameters.yaml records the resolved path '%s' (got '%s')", want,
+        rec);
   char crc[16];
   snprintf(crc, sizeof crc, "%08lx",
            crc32(crc32(0L, Z_NULL, 0), (const Bytef *)table, (uInt)strlen(table)) & 0xffffffffUL);
@@ -562,8 +579,10 @@ static void test_table_file(void)
            test_bin(), dir);
   rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 0, "restart from /: exit %d (%s)", rc, out);
-  snprintf(cmd, sizeof cmd, "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun -q "
-           "2>&1", dir, test_bin());
+  snprintf(cmd, sizeof cmd,
+           "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun -q "
+           "2>&1",
+           dir, test_bin());
   rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 0, "rerun of used_parameters.yaml from the run folder: exit %d (%s)", rc, out);
 
@@ -581,19 +600,26 @@ static void test_table_file(void)
            test_bin(), dir);
   rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 2 && strstr(out, want) && strstr(out, "file_crc32") && strstr(out, crc) &&
-        one_error(out), "restart with the table changed: exit %d (want 2), one line "
-        "naming the table and its recorded CRC: %s", rc, out);
+            one_error(out),
+        "restart with the table changed: exit %d (want 2), one line "
+        "naming the table and its recorded CRC: %s",
+        rc, out);
   char *after = test_slurp(sum, NULL);
   CHECK(before && after && !strcmp(before, after), "the run's summary.csv is untouched");
   free(before);
   free(after);
-  snprintf(cmd, sizeof cmd, "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun2 -q "
-           "2>&1", dir, test_bin());
+  snprintf(cmd, sizeof cmd,
+           "cd '%s/out/tab' && '%s' run used_parameters.yaml -o ../rerun2 -q "
+           "2>&1",
+           dir, test_bin());
   rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 2 && strstr(out, want) && strstr(out, "used_parameters.yaml:") &&
-        strstr(out, "file_crc32"), "rerun with the table changed: exit %d (want 2): %s", rc, out);
-  snprintf(cmd, sizeof cmd, "cd '%s' && '%s' run case.yaml --set materials.w.file_crc32=1234 "
-           "-o out/bad -q 2>&1", dir, test_bin());
+            strstr(out, "file_crc32"),
+        "rerun with the table changed: exit %d (want 2): %s", rc, out);
+  snprintf(cmd, sizeof cmd,
+           "cd '%s' && '%s' run case.yaml --set materials.w.file_crc32=1234 "
+           "-o out/bad -q 2>&1",
+           dir, test_bin());
   rc = test_run(cmd, out, sizeof out);
   CHECK(rc == 2 && strstr(out, "materials.w.file_crc32") && strstr(out, "'1234' is not a CRC-32"),
         "a malformed file_crc32: exit %d (want 2): %s", rc, out);
@@ -603,8 +629,9 @@ static void test_table_file(void)
   struct hv_error err = {0};
   rc = eos_table_load(path, &t, &err);
   char *bytes = test_slurp(path, NULL);
-  CHECK(rc == 0 && bytes && t.crc32 == (crc32(crc32(0L, Z_NULL, 0), (const Bytef *)bytes,
-                                                (uInt)strlen(bytes)) & 0xffffffffUL),
+  CHECK(rc == 0 && bytes &&
+            t.crc32 == (crc32(crc32(0L, Z_NULL, 0), (const Bytef *)bytes, (uInt)strlen(bytes)) &
+                        0xffffffffUL),
         "eos_table_load's crc32 is zlib's of the file (%s)", rc ? err.msg : "ok");
   free(bytes);
   if (!rc) eos_table_free(&t);
@@ -615,8 +642,8 @@ static void test_table_file(void)
   alarm(30);
   rc = eos_table_load(path, &t, &err);
   alarm(0);
-  CHECK(rc == -1 && err.code == HV_EXIT_INPUT && strstr(err.msg, path) &&
-        strstr(err.msg, "FIFO"), "a FIFO as the table refused: '%s'", err.msg);
+  CHECK(rc == -1 && err.code == HV_EXIT_INPUT && strstr(err.msg, path) && strstr(err.msg, "FIFO"),
+        "a FIFO as the table refused: '%s'", err.msg);
   rc = eos_table_load("/dev/zero", &t, &err);
   CHECK(rc == -1 && strstr(err.msg, "'/dev/zero' is a character device"),
         "/dev/zero as the table refused: '%s'", err.msg);
@@ -657,7 +684,8 @@ static void test_low_density(void)
     const int rc = eos_evaluate(&mg_all[7], 1e-310, 0.0, &st);
     CHECK(rc == 0 && st.p == -1.0 && st.cs == 1.0,
           "rubber (Gamma = 0): p(1e-310) = %.17g, want c0^2 (rho - rho0) = -1; c = %g, want "
-          "c0 = 1", st.p, st.cs);
+          "c0 = 1",
+          st.p, st.cs);
   }
   for (int k = 0; k < 2; k++) {
     const struct material *m = &till_all[k];
@@ -668,15 +696,18 @@ static void test_low_density(void)
       for (int j = 0; j < 2; j++) {
         const double e = j ? -1e3 : 0.0;
         const double p = pressure(m, rhos[i], e);
-        CHECK(fabs(p - want) <= 1e-12 * fabs(want), "%s: cold p(%g kg/m3, %g J/kg) = %.15g, "
-              "limit B - A = %.15g", m->name, rhos[i], e, p, want);
+        CHECK(fabs(p - want) <= 1e-12 * fabs(want),
+              "%s: cold p(%g kg/m3, %g J/kg) = %.15g, "
+              "limit B - A = %.15g",
+              m->name, rhos[i], e, p, want);
       }
       const double e = 2.0 * t->E_cv, c = sqrt(t->a * (t->a + 1.0) * e);
       struct eos_state st = {(double)NAN, (double)NAN};
       const int rc = eos_evaluate(m, rhos[i], e, &st);
       CHECK(rc == 0 && isfinite(st.p) && fabs(st.p) <= 1e-12 && fabs(st.cs - c) <= 1e-9 * c,
             "%s: expanded at %g kg/m3, e = %g: p = %g (a rho e), c = %.15g, want sqrt(a(a+1)e) = "
-            "%.15g", m->name, rhos[i], e, st.p, st.cs, c);
+            "%.15g",
+            m->name, rhos[i], e, st.p, st.cs, c);
     }
   }
 }
@@ -707,13 +738,14 @@ static void test_energy_from_pressure(void)
         const double pc = eos_mg_cold_pressure(&m->eosp.mg, rho);
         const double rel = fabs(p - ps[j]) / (fabs(ps[j]) + fabs(pc) + 1.0);
         if (rel > worst) worst = rel;
-        CHECK(rc == 0 && rel <= 1e-12, "%s: p(rho, e(p)) = %.15g for p = %g at %g rho0", m->name,
-              p, ps[j], xs[i]);
+        CHECK(rc == 0 && rel <= 1e-12, "%s: p(rho, e(p)) = %.15g for p = %g at %g rho0", m->name, p,
+              ps[j], xs[i]);
       }
   }
   printf("  energy_from_pressure (Mie-Gruneisen): worst relative residual %.2g\n", worst);
   /* Γ = 0 (rubber): only p = p_c(ρ) is reachable */
-  CHECK(eos_energy_from_pressure(&mg_all[7], 1.0, 0.0, &e) == 0 && e == 0.0, "rubber: p = 0 at rho0");
+  CHECK(eos_energy_from_pressure(&mg_all[7], 1.0, 0.0, &e) == 0 && e == 0.0,
+        "rubber: p = 0 at rho0");
   CHECK(eos_energy_from_pressure(&mg_all[7], 1.0, 0.5, &e) == EOS_ERR_NO_SOLUTION,
         "rubber: p = 0.5 at rho0 has no energy");
   /* Tillotson: bisection, round trip to 1e-10 relative, in compression and expansion */
@@ -732,14 +764,17 @@ static void test_energy_from_pressure(void)
               xs[i], e);
       }
     }
-    CHECK(eos_energy_from_pressure(m, m->rho0, 0.0, &e) == 0 && e == 0.0, "%s: p = 0 at rho0 -> "
-          "e = 0", m->name);
+    CHECK(eos_energy_from_pressure(m, m->rho0, 0.0, &e) == 0 && e == 0.0,
+          "%s: p = 0 at rho0 -> "
+          "e = 0",
+          m->name);
     CHECK(eos_energy_from_pressure(m, 1.2 * m->rho0, 0.0, &e) == EOS_ERR_NO_SOLUTION,
           "%s: p = 0 in compression needs e < 0: no solution", m->name);
   }
   /* bad input */
   CHECK(eos_evaluate(&mg_all[1], 0.0, 0.0, &(struct eos_state){0, 0}) == EOS_ERR_INPUT, "rho = 0");
-  CHECK(eos_evaluate(&mg_all[1], 7000.0, NAN, &(struct eos_state){0, 0}) == EOS_ERR_INPUT, "e = NaN");
+  CHECK(eos_evaluate(&mg_all[1], 7000.0, NAN, &(struct eos_state){0, 0}) == EOS_ERR_INPUT,
+        "e = NaN");
   char msg[256];
   eos_describe(&mg_all[1], -1.0, 0.0, EOS_ERR_INPUT, msg, sizeof msg);
   CHECK(strstr(msg, "material 'steel-target' (mie-gruneisen)") && strstr(msg, "rho = -1"),

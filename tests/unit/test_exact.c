@@ -53,7 +53,7 @@ static void test_toro1_sod(void)
   const double cL = sqrt(1.4), t = 0.2;
   exact_riemann(L, R, G14, (-cL * t - 1e-6) / t, &o);
   CHECK(o.rho == 1.0 && o.u == 0.0 && o.p == 1.0, "Sod: left state left of the head");
-  exact_riemann(L, R, G14, -0.5 * cL, &o);   /* inside the fan: isentropic, J+ constant */
+  exact_riemann(L, R, G14, -0.5 * cL, &o); /* inside the fan: isentropic, J+ constant */
   double c = sqrt(1.4 * o.p / o.rho);
   CHECK_CLOSE(o.p / pow(o.rho, 1.4), 1.0, 1e-12, "Sod fan: p/rho^gamma = left value");
   CHECK_CLOSE(o.u + 2.0 * c / 0.4, 2.0 * cL / 0.4, 1e-12, "Sod fan: Riemann invariant J+");

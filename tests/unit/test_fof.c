@@ -37,21 +37,21 @@ static void add_block(struct particles *p, const double lo[3], int nx, int ny, i
                      (i + j + k) % 2 ? mat_odd : mat_even, body);
 }
 
-static const double S = 1e-3;  /* [m] lattice spacing */
+static const double S = 1e-3; /* [m] lattice spacing */
 
 static void two_clusters(struct particles *p, double gap)
 {
   const double va[3] = {100.0, 0.0, -3.0}, vb[3] = {-50.0, 20.0, 7.0};
   const double loa[3] = {0, 0, 0}, lob[3] = {4 * S + gap, 0.0, 1.0 * S};
-  add_block(p, loa, 5, 5, 5, S, 2e-3, va, 0, 0, 0);   /* 125 × 2 g */
-  add_block(p, lob, 4, 4, 4, S, 1e-3, vb, 0, 1, 1);   /* 64 × 1 g, materials 0/1 */
+  add_block(p, loa, 5, 5, 5, S, 2e-3, va, 0, 0, 0); /* 125 × 2 g */
+  add_block(p, lob, 4, 4, 4, S, 1e-3, vb, 0, 1, 1); /* 64 × 1 g, materials 0/1 */
 }
 
 static void test_two_clusters(void)
 {
   struct particles p;
   particles_init(&p);
-  const double gap = 3.0 * S;  /* nearest distance between the clusters */
+  const double gap = 3.0 * S; /* nearest distance between the clusters */
   two_clusters(&p, gap);
   struct fof_params par = {.b = FOF_B_FACTOR * S, .nmat = 2};
   struct fof_result r;
@@ -85,7 +85,7 @@ static void test_two_clusters(void)
   }
   fof_result_free(&r);
 
-  par.b = 1.01 * gap;  /* longer than the gap: one fragment */
+  par.b = 1.01 * gap; /* longer than the gap: one fragment */
   CHECK(fof_find(&p, &par, &r, &err) == 0, "fof runs");
   CHECK(r.nfrag == 1, "b = 1.01 × gap merges the clusters: %zu fragments", r.nfrag);
   if (r.nfrag == 1) {
@@ -96,17 +96,17 @@ static void test_two_clusters(void)
   par.b = 0.99 * gap;
   CHECK(fof_find(&p, &par, &r, &err) == 0 && r.nfrag == 2, "b = 0.99 × gap keeps two");
   fof_result_free(&r);
-  par.b = 0.9 * S;  /* shorter than the lattice spacing: every particle alone */
+  par.b = 0.9 * S; /* shorter than the lattice spacing: every particle alone */
   CHECK(fof_find(&p, &par, &r, &err) == 0 && r.nfrag == p.n, "b < Δ: %zu single particles",
         r.nfrag);
-  CHECK(r.nfrag == p.n && r.frag[0].m == 2e-3 && r.frag[0].root == 0 &&
-            r.frag[124].root == 124 && r.frag[125].root == 125,
+  CHECK(r.nfrag == p.n && r.frag[0].m == 2e-3 && r.frag[0].root == 0 && r.frag[124].root == 124 &&
+            r.frag[125].root == 125,
         "equal masses sorted by smallest slot");
   CHECK(fof_count_min(&r, 2) == 0, "no fragment of two or more particles");
   fof_result_free(&r);
 
   /* a mask leaves out the second cluster */
-  if (p.n != 125 + 64) {   /* two_clusters' particles; the mask below is one per slot */
+  if (p.n != 125 + 64) { /* two_clusters' particles; the mask below is one per slot */
     CHECK(0, "two clusters of 125 + 64 particles: %zu", p.n);
     particles_free(&p);
     return;
@@ -129,8 +129,8 @@ static void test_half_model(void)
   particles_init(&p);
   const double v[3] = {10, 0, 5};
   const double on[3] = {0, 0, 0.5 * S}, off[3] = {20 * S, 0, 10 * S};
-  add_block(&p, on, 3, 3, 3, S, 1e-3, v, 0, 0, 0);    /* touches z = 0: its own mirror */
-  add_block(&p, off, 2, 2, 2, S, 1e-3, v, 0, 0, 0);   /* has a mirror twin */
+  add_block(&p, on, 3, 3, 3, S, 1e-3, v, 0, 0, 0);  /* touches z = 0: its own mirror */
+  add_block(&p, off, 2, 2, 2, S, 1e-3, v, 0, 0, 0); /* has a mirror twin */
   struct fof_params par = {.b = 1.5 * S, .nmat = 1, .half_model = 1};
   struct fof_result r;
   struct hv_error err;
@@ -164,7 +164,10 @@ static void brute(const struct particles *p, const double *b, uint32_t *root)
         uint32_t a = (uint32_t)i, c = (uint32_t)j;
         while (root[a] != a) a = root[a];
         while (root[c] != c) c = root[c];
-        if (a < c) root[c] = a; else if (c < a) root[a] = c;
+        if (a < c)
+          root[c] = a;
+        else if (c < a)
+          root[a] = c;
       }
     }
   for (size_t i = 0; i < n; i++) {
@@ -196,7 +199,7 @@ static void test_brute_force(int per_particle)
   particles_init(&p);
   const size_t n = 3000;
   const double v0[3] = {0, 0, 0};
-  for (size_t i = 0; i < n; i++)  /* clumpy: points around 40 centres */
+  for (size_t i = 0; i < n; i++) /* clumpy: points around 40 centres */
     add_particle(&p, 0, 0, 0, 1.0 + (double)(i % 7), v0, 0, 0);
   double cx[40][3];
   for (int c = 0; c < 40; c++)
@@ -219,14 +222,17 @@ static void test_brute_force(int per_particle)
     nroots += root[i] == i;
     same &= r.group[i] >= 0 && r.frag[r.group[i]].root == root[i];
   }
-  CHECK(same && nroots == r.nfrag, "%s linking: grid agrees with the O(N²) search (%zu vs %zu "
-        "fragments)", per_particle ? "per-particle" : "uniform", r.nfrag, nroots);
+  CHECK(same && nroots == r.nfrag,
+        "%s linking: grid agrees with the O(N²) search (%zu vs %zu "
+        "fragments)",
+        per_particle ? "per-particle" : "uniform", r.nfrag, nroots);
   int sorted = 1;
   double msum = 0;
   for (size_t f = 0; f < r.nfrag; f++) {
     msum += r.frag[f].m;
-    if (f) sorted &= r.frag[f].m < r.frag[f - 1].m ||
-                     (r.frag[f].m == r.frag[f - 1].m && r.frag[f].root > r.frag[f - 1].root);
+    if (f)
+      sorted &= r.frag[f].m < r.frag[f - 1].m ||
+                (r.frag[f].m == r.frag[f - 1].m && r.frag[f].root > r.frag[f - 1].root);
   }
   CHECK(sorted, "fragments sorted by mass, then root");
   CHECK(r.nfrag > 40 && r.nfrag < n, "a mixture of clusters and loners (%zu)", r.nfrag);
@@ -294,7 +300,8 @@ static void test_csv(void)
     if (buf[0] != '#' && nl < 3) snprintf(line[nl++], sizeof line[0], "%s", buf);
   if (f) fclose(f);
   CHECK(strcmp(line[0], "rank,mass,multiplicity,count,x,y,z,vx,vy,vz,root_id,m_tungsten,"
-               "m_steel\n") == 0, "header: %s", line[0]);
+                        "m_steel\n") == 0,
+        "header: %s", line[0]);
   double m1 = 0, cnt1 = 0, x1 = 0;
   CHECK(sscanf(line[1], "0,%lf,1,%lf,%lf,", &m1, &cnt1, &x1) == 3 && m1 == r.frag[0].m &&
             cnt1 == 125 && x1 == r.frag[0].x[0],
@@ -316,12 +323,13 @@ static void test_bad_input(void)
   struct hv_error err;
   hv_error_clear(&err);
   CHECK(fof_find(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT, "b = 0 is an error");
-  CHECK(strstr(err.msg, "linking length") != NULL, "message names the linking length: %s",
-        err.msg);
-  par.b = 1e-30;  /* far too many cells across the particles */
+  CHECK(strstr(err.msg, "linking length") != NULL, "message names the linking length: %s", err.msg);
+  par.b = 1e-30; /* far too many cells across the particles */
   hv_error_clear(&err);
-  CHECK(fof_find(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_RUN, "tiny b: an error, not "
-        "a crash (%s)", err.msg);
+  CHECK(fof_find(&p, &par, &r, &err) == -1 && err.code == HV_EXIT_RUN,
+        "tiny b: an error, not "
+        "a crash (%s)",
+        err.msg);
   p.x[0][3] = NAN;
   par.b = 1.5 * S;
   CHECK(fof_find(&p, &par, &r, &err) == 0 && r.n_skipped == 1 && r.group[3] == -1,

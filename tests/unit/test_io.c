@@ -96,9 +96,13 @@ static const char *bodies[] = {"bumper", "rod <W&\"Fe\">"};
 
 static struct snapshot_meta meta(void)
 {
-  return (struct snapshot_meta){.time = 1.2345678901234567e-6, .step = 4242,
-                                .version = "v0.1-test", .case_name = "demo",
-                                .material_names = mats, .nmat = 3, .body_names = bodies,
+  return (struct snapshot_meta){.time = 1.2345678901234567e-6,
+                                .step = 4242,
+                                .version = "v0.1-test",
+                                .case_name = "demo",
+                                .material_names = mats,
+                                .nmat = 3,
+                                .body_names = bodies,
                                 .nbody = 2};
 }
 
@@ -110,9 +114,12 @@ static void test_csv(struct particles *p)
   const char *path = path_in("particles.csv");
   CHECK(io_write_particles_csv(path, p, &m, &err) == 0, "CSV written: %s", err.msg);
   char *text = test_slurp(path, NULL);
-  CHECK(text && strncmp(text, "# hvsph v0.1-test case demo time 1.2345678901234567e-06 s step 4242\n",
-                        67) == 0, "CSV comment line");
-  CHECK(text && strstr(text, "\n# materials 0=al-2024 1=steel_4340 2=W--alloy\n"), "materials line");
+  CHECK(text &&
+            strncmp(text, "# hvsph v0.1-test case demo time 1.2345678901234567e-06 s step 4242\n",
+                    67) == 0,
+        "CSV comment line");
+  CHECK(text && strstr(text, "\n# materials 0=al-2024 1=steel_4340 2=W--alloy\n"),
+        "materials line");
   CHECK(text && strstr(text, "\nid,x,y,z,vx,vy,vz,m,rho,p,e,h,mat,body,cs,dt\n"), "CSV header");
   int lines = 0;
   for (char *q = text; q && *q; q++) lines += *q == '\n';
@@ -142,7 +149,8 @@ static void test_csv_errors(void)
   particles_init(&q);
   const char *nid = test_write_file("io_noid.csv", "x,y,z,foo\n1,2,3,4\n");
   CHECK(io_read_particles_csv(nid, &q, &t, &err) != 0 && strstr(err.msg, "'id'") &&
-            err.code == HV_EXIT_INPUT, "missing id column: %s", err.msg);
+            err.code == HV_EXIT_INPUT,
+        "missing id column: %s", err.msg);
   CHECK(isnan(t), "no comment line: time is NaN");
   const char *ok = test_write_file("io_min.csv", "# hvsph x case c time 2.5 s step 3\n"
                                                  "z,unknown,y,id,x\n3,9,2,17,1\n");
@@ -151,7 +159,8 @@ static void test_csv_errors(void)
         "columns by name, unknown ignored: %s", err.msg);
   const char *bad = test_write_file("io_bad.csv", "id,x,y,z\n1,0,0,0\n2,0,zero,0\n");
   CHECK(io_read_particles_csv(bad, &q, NULL, &err) != 0 && strstr(err.msg, "line 3") &&
-            strstr(err.msg, "'y'"), "bad value names line and column: %s", err.msg);
+            strstr(err.msg, "'y'"),
+        "bad value names line and column: %s", err.msg);
   CHECK(q.n == 1, "failed read leaves the store as it was (n = %zu)", q.n);
   const char *shrt = test_write_file("io_short.csv", "id,x,y,z\n1,0,0\n");
   CHECK(io_read_particles_csv(shrt, &q, NULL, &err) != 0 && strstr(err.msg, "3 values"),
@@ -187,20 +196,25 @@ static void test_vtu(struct particles *p)
         "header declares 100 points and cells");
   CHECK(strstr(text, "header_type=\"UInt64\"") && strstr(text, "type=\"UnstructuredGrid\""),
         "UnstructuredGrid with UInt64 headers");
-  CHECK(strstr(text, "Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">1.2345678901234567e-06<") &&
-            strstr(text, "Name=\"STEP\" NumberOfTuples=\"1\" format=\"ascii\">4242<"),
-        "FieldData TIME and STEP");
+  CHECK(
+      strstr(text, "Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">1.2345678901234567e-06<") &&
+          strstr(text, "Name=\"STEP\" NumberOfTuples=\"1\" format=\"ascii\">4242<"),
+      "FieldData TIME and STEP");
   CHECK(strstr(text, "<!-- hvsph v0.1-test case demo -->") && strstr(text, "W-_alloy"),
         "version in a comment, '--' kept out of comments");
   CHECK(strstr(text, "type=\"Float64\" Name=\"v\" NumberOfComponents=\"3\"") &&
-            strstr(text, "type=\"Int32\" Name=\"mat\"") && strstr(text, "type=\"Int64\" Name=\"id\"") &&
-            !strstr(text, "Name=\"a\"") && !strstr(text, "Name=\"drho\""),
+            strstr(text, "type=\"Int32\" Name=\"mat\"") &&
+            strstr(text, "type=\"Int64\" Name=\"id\"") && !strstr(text, "Name=\"a\"") &&
+            !strstr(text, "Name=\"drho\""),
         "PointData: PF_OUT fields with VTK types");
   char *app = strstr(text, "<AppendedData encoding=\"raw\">");
   char *us = app ? app + strlen("<AppendedData encoding=\"raw\">") : NULL;
   while (us && (*us == '\n' || *us == ' ')) us++;
   CHECK(us && *us == '_', "appended data starts with '_'");
-  if (!us || *us != '_') { free(text); return; }
+  if (!us || *us != '_') {
+    free(text);
+    return;
+  }
   const unsigned char *base = (const unsigned char *)us + 1;
   long long off = attr_after(text, "<Points>", "offset");
   uint64_t nb = 0;
@@ -223,8 +237,8 @@ static void test_vtu(struct particles *p)
   long long otype = attr_after(text, "Name=\"types\"", "offset");
   CHECK(otype == 0 && base[otype + 8] == 1 && base[otype + 8 + NP - 1] == 1,
         "types are VTK_VERTEX, the first block (offset %lld)", otype);
-  CHECK(oid >= 0 && strcmp((const char *)base + oid + 8 + 8 * NP,
-                           "\n  </AppendedData>\n</VTKFile>\n") == 0,
+  CHECK(oid >= 0 &&
+            strcmp((const char *)base + oid + 8 + 8 * NP, "\n  </AppendedData>\n</VTKFile>\n") == 0,
         "the file ends after id's block");
   /* the names of the materials and bodies as FieldData: "mat <name>" and "body <name>"
      holding the index, the names escaped for XML (not cleaned as in the comments) */
@@ -247,8 +261,13 @@ static int utf8_ok(const unsigned char *s, size_t n)
 {
   for (size_t i = 0; i < n;) {
     const unsigned c = s[i];
-    size_t k = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 ? 1 : (c & 0xf0) == 0xe0 ? 2 : (c & 0xf8) == 0xf0 ? 3 : 9;
-    if (k == 9 || (k == 1 && c < 0xc2) || (k == 3 && c > 0xf4) || i + k >= n + (k ? 0 : 1)) return 0;
+    size_t k = c < 0x80             ? 0
+               : (c & 0xe0) == 0xc0 ? 1
+               : (c & 0xf0) == 0xe0 ? 2
+               : (c & 0xf8) == 0xf0 ? 3
+                                    : 9;
+    if (k == 9 || (k == 1 && c < 0xc2) || (k == 3 && c > 0xf4) || i + k >= n + (k ? 0 : 1))
+      return 0;
     for (size_t j = 1; j <= k; j++)
       if ((s[i + j] & 0xc0) != 0x80) return 0;
     if (k == 2 && ((c == 0xe0 && s[i + 1] < 0xa0) || (c == 0xed && s[i + 1] >= 0xa0))) return 0;
@@ -265,8 +284,12 @@ static void test_vtu_utf8(struct particles *p)
   struct hv_error err;
   hv_error_clear(&err);
   const char *badm[2] = {"st\xe4hl", "w\xc3"};
-  struct snapshot_meta m = {.time = 1.0, .step = 1, .version = "v\xff" "1",
-                            .case_name = "caf\xc3\xa9 \xfc x\xe2\x82", .material_names = badm,
+  struct snapshot_meta m = {.time = 1.0,
+                            .step = 1,
+                            .version = "v\xff"
+                                       "1",
+                            .case_name = "caf\xc3\xa9 \xfc x\xe2\x82",
+                            .material_names = badm,
                             .nmat = 2};
   char path[4200];
   snprintf(path, sizeof path, "%s/utf8.vtu", dir);
@@ -288,8 +311,8 @@ static void test_vtu_utf8(struct particles *p)
 
 /* Writes a copy of src with its first occurrence of `from` replaced by `to` (same
  * length, so offsets stay) or, with cut > 0, only its first cut bytes. */
-static const char *vtu_variant(const char *src, const char *name, const char *from,
-                               const char *to, size_t cut)
+static const char *vtu_variant(const char *src, const char *name, const char *from, const char *to,
+                               size_t cut)
 {
   size_t len = 0;
   char *text = test_slurp(src, &len);
@@ -331,8 +354,8 @@ static void test_vtu_read(struct particles *p)
   char names[8][64] = {{0}};
   int nm = io_read_material_names(path, names, 8);
   CHECK(nm == 3 && !strcmp(names[0], "al-2024") && !strcmp(names[1], "steel_4340") &&
-            !strcmp(names[2], "W-_alloy"), "material names from the VTU comment (%d: %s %s %s)",
-        nm, names[0], names[1], names[2]);
+            !strcmp(names[2], "W-_alloy"),
+        "material names from the VTU comment (%d: %s %s %s)", nm, names[0], names[1], names[2]);
   particles_free(&q);
 
   /* a solid store: S (6 components) and damage come back, and enable the solid arrays */
@@ -348,8 +371,8 @@ static void test_vtu_read(struct particles *p)
   }
   const char *spath = path_in("solid.vtu");
   particles_init(&q);
-  int ok = io_write_vtu(spath, &ps, NULL, &err) == 0 &&
-           io_read_particles_vtu(spath, &q, &t, &err) == 0;
+  int ok =
+      io_write_vtu(spath, &ps, NULL, &err) == 0 && io_read_particles_vtu(spath, &q, &t, &err) == 0;
   CHECK(ok && q.solid && q.n == 3 && q.S[4][2] == 5e6 + 2 && q.damage[1] == 0.25 &&
             q.x[0][2] == 2.0 && t == 0.0,
         "solid fields read back into a solid store: %s", err.msg);
@@ -360,7 +383,7 @@ static void test_vtu_read(struct particles *p)
      root element and must not be taken for it) */
   struct snapshot_meta odd = meta();
   odd.case_name = "x<AppendedData encoding=\"raw\">_y";
-  char opath[4200];   /* not path_in: its few buffers hold the paths used below */
+  char opath[4200]; /* not path_in: its few buffers hold the paths used below */
   snprintf(opath, sizeof opath, "%s/oddname.vtu", dir);
   particles_init(&q);
   ok = io_write_vtu(opath, p, &odd, &err) == 0 && io_read_particles_vtu(opath, &q, &t, &err) == 0;
@@ -380,32 +403,37 @@ static void test_vtu_read(struct particles *p)
   const char *nox = vtu_variant(path, "nox.vtu", "Name=\"x\"", "Name=\"q\"", 0);
   CHECK(io_read_particles_vtu(nox, &q, NULL, &err) != 0 && strstr(err.msg, "'x'") && q.n == 0,
         "no positions: %s", err.msg);
-  const char *wrong = vtu_variant(path, "type.vtu", "type=\"Int64\" Name=\"id\"",
-                                  "type=\"Int32\" Name=\"id\"", 0);
+  const char *wrong =
+      vtu_variant(path, "type.vtu", "type=\"Int64\" Name=\"id\"", "type=\"Int32\" Name=\"id\"", 0);
   CHECK(io_read_particles_vtu(wrong, &q, NULL, &err) != 0 && strstr(err.msg, "'id'") &&
-            strstr(err.msg, "Int32") && q.n == 0, "wrong type: %s", err.msg);
-  const char *np = vtu_variant(path, "np.vtu", "NumberOfPoints=\"100\"",
-                               "NumberOfPoints=\"101\"", 0);
-  CHECK(io_read_particles_vtu(np, &q, NULL, &err) != 0 && strstr(err.msg, "101 points") &&
-            q.n == 0, "point count not matching the blocks: %s", err.msg);
+            strstr(err.msg, "Int32") && q.n == 0,
+        "wrong type: %s", err.msg);
+  const char *np =
+      vtu_variant(path, "np.vtu", "NumberOfPoints=\"100\"", "NumberOfPoints=\"101\"", 0);
+  CHECK(io_read_particles_vtu(np, &q, NULL, &err) != 0 && strstr(err.msg, "101 points") && q.n == 0,
+        "point count not matching the blocks: %s", err.msg);
   const char *huge = vtu_variant(path, "huge.vtu", "NumberOfPoints=\"100\" NumberOfCells=\"100\"",
                                  "NumberOfPoints=\"2000000000\" NumberOfC=\"\"", 0);
   CHECK(io_read_particles_vtu(huge, &q, NULL, &err) != 0 && strstr(err.msg, "2000000000 points") &&
-            q.n == 0 && q.cap < 1000, "2e9 points claimed: refused before allocating (capacity "
-        "%zu): %s", q.cap, err.msg);
+            q.n == 0 && q.cap < 1000,
+        "2e9 points claimed: refused before allocating (capacity "
+        "%zu): %s",
+        q.cap, err.msg);
   const char *twice = vtu_variant(path, "twice.vtu", "Name=\"m\"", "Name=\"h\"", 0);
   CHECK(io_read_particles_vtu(twice, &q, NULL, &err) != 0 && strstr(err.msg, "'h' appears twice") &&
-            q.n == 0, "an array twice: %s", err.msg);
+            q.n == 0,
+        "an array twice: %s", err.msg);
   const char *noid = vtu_variant(path, "noid.vtu", "Name=\"id\"", "Name=\"iq\"", 0);
   CHECK(io_read_particles_vtu(noid, &q, NULL, &err) != 0 && strstr(err.msg, "'id'") && q.n == 0,
         "no ids: %s", err.msg);
-  const char *be = vtu_variant(path, "be.vtu", "byte_order=\"LittleEndian\"",
-                               "byte_order=\"BigEndianxxx\"", 0);
+  const char *be =
+      vtu_variant(path, "be.vtu", "byte_order=\"LittleEndian\"", "byte_order=\"BigEndianxxx\"", 0);
   CHECK(io_read_particles_vtu(be, &q, NULL, &err) != 0 && strstr(err.msg, "byte order"),
         "other byte order: %s", err.msg);
   const char *csv = test_write_file("io_notvtu.vtu", "id,x,y,z\n1,0,0,0\n");
   CHECK(io_read_particles_vtu(csv, &q, NULL, &err) != 0 && strstr(err.msg, "io_notvtu.vtu") &&
-            q.n == 0, "not a VTU file: %s", err.msg);
+            q.n == 0,
+        "not a VTU file: %s", err.msg);
   particles_free(&q);
 }
 
@@ -418,13 +446,16 @@ static void test_pvd(void)
   const char *path = path_in("run.pvd");
   /* a case named so that its comment holds what the reader looks for */
   struct snapshot_meta meta = {.version = "0.9.0 (commit abc1234)",
-                               .case_name = "<DataSet timestep=\"9\" file=\"x.vtu\"/> <Collection>"};
+                               .case_name =
+                                   "<DataSet timestep=\"9\" file=\"x.vtu\"/> <Collection>"};
   CHECK(io_write_pvd(path, t, files, 3, &meta, &err) == 0, "PVD written: %s", err.msg);
   char *text = test_slurp(path, NULL);
   CHECK(text && strstr(text, "type=\"Collection\""), "PVD is a collection");
-  CHECK(text && !strncmp(text, "<?xml version=\"1.0\"?>\n<!-- hvsph 0.9.0 (commit abc1234) case "
-                         "<DataSet", 58), "PVD's comment gives the version and case: %.80s",
-        text ? text : "");
+  CHECK(text && !strncmp(text,
+                         "<?xml version=\"1.0\"?>\n<!-- hvsph 0.9.0 (commit abc1234) case "
+                         "<DataSet",
+                         58),
+        "PVD's comment gives the version and case: %.80s", text ? text : "");
   double *rt = NULL;
   char **rf = NULL;
   int rn = io_read_pvd(path, &rt, &rf, &err);
@@ -433,10 +464,13 @@ static void test_pvd(void)
   for (int k = 0; k < rn; k++) free(rf[k]);
   free(rf);
   free(rt);
-  CHECK(text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
-            strstr(text, "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
-            strstr(text, "file=\"a&amp;b.vtu\""),
-        "PVD lists every (time, file), escaped");
+  CHECK(
+      text && strstr(text, "timestep=\"0\" group=\"\" part=\"0\" file=\"particles_000000.vtu\"") &&
+          strstr(
+              text,
+              "timestep=\"9.9999999999999995e-07\" group=\"\" part=\"0\" file=\"particles_000001.vtu\"") &&
+          strstr(text, "file=\"a&amp;b.vtu\""),
+      "PVD lists every (time, file), escaped");
   free(text);
 }
 
@@ -450,7 +484,8 @@ static void test_table(void)
   CHECK(io_write_table_csv(path, cols, 3, rows, 2, "hvsph v\ncase demo", &err) == 0,
         "table written: %s", err.msg);
   char *text = test_slurp(path, NULL);
-  const char *want = "# hvsph v\n# case demo\nstep,time,e_total\n0,0,1.5\n1,9.9999999999999995e-07,-3\n";
+  const char *want =
+      "# hvsph v\n# case demo\nstep,time,e_total\n0,0,1.5\n1,9.9999999999999995e-07,-3\n";
   int same = text && strcmp(text, want) == 0;
   CHECK(same, "table text exact%s%s", same ? "" : ":\n", same ? "" : text ? text : "(none)");
   free(text);
@@ -463,7 +498,8 @@ static void test_table(void)
   /* an empty file (no header) or one that cannot be read is an error, not zero rows */
   const char *empty = test_write_file("io_empty_table.csv", "# only a comment\n");
   err.msg[0] = '\0';
-  CHECK(io_read_table_column(empty, "time", &col, &err) == -1 && strstr(err.msg, "io_empty_table.csv"),
+  CHECK(io_read_table_column(empty, "time", &col, &err) == -1 &&
+            strstr(err.msg, "io_empty_table.csv"),
         "a table without a header: %s", err.msg);
   free(col);
   err.msg[0] = '\0';
@@ -492,7 +528,8 @@ static void test_atomic(struct particles *p)
   CHECK(io_write_table_csv(path, cols, 1, rows, 2, NULL, &err) == 0, "first file written");
   char *before = test_slurp(path, NULL);
   struct atomic_file af;
-  CHECK(atomic_file_open(&af, path, &err) == 0 && count_tmp() == 1, "atomic_file_open makes one tmp file");
+  CHECK(atomic_file_open(&af, path, &err) == 0 && count_tmp() == 1,
+        "atomic_file_open makes one tmp file");
   CHECK(strstr(af.tmp, "/.keep.csv.tmp.") != NULL, "tmp name '%s'", af.tmp);
   CHECK(atomic_file_printf(&af, &err, "garbage\n") == 0, "write to tmp");
   atomic_file_abort(&af);
@@ -507,7 +544,8 @@ static void test_atomic(struct particles *p)
   hv_error_clear(&e2);
   CHECK(io_mkdir_p(path_in("adir.vtu"), &e2) == 0, "folder in the way made");
   CHECK(io_write_vtu(path_in("adir.vtu"), p, NULL, &e2) != 0 && strstr(e2.msg, "adir.vtu") &&
-            e2.code == HV_EXIT_RUN, "rename failure reported: %s", e2.msg);
+            e2.code == HV_EXIT_RUN,
+        "rename failure reported: %s", e2.msg);
   CHECK(count_tmp() == 0, "no tmp file after a failed rename");
 
   /* A folder without write permission (only meaningful when not root). */
@@ -516,7 +554,8 @@ static void test_atomic(struct particles *p)
     io_mkdir_p(ro, &e2);
     chmod(ro, 0555);
     CHECK(io_write_table_csv(path_in("ro/t.csv"), cols, 1, rows, 1, NULL, &e2) != 0 &&
-              strstr(e2.msg, "Permission denied"), "read-only folder: %s", e2.msg);
+              strstr(e2.msg, "Permission denied"),
+          "read-only folder: %s", e2.msg);
     chmod(ro, 0755);
   }
 
@@ -547,7 +586,11 @@ static void test_full_disk(int small_writes)
   if (fclose(af.f) != 0) CHECK(0, "fclose tmp");
   af.f = fopen("/dev/full", "w");
   CHECK(af.f != NULL, "open /dev/full");
-  if (!af.f) { atomic_file_abort(&af); free(before); return; }
+  if (!af.f) {
+    atomic_file_abort(&af);
+    free(before);
+    return;
+  }
   static char block[1 << 16];
   memset(block, 'x', sizeof block);
   for (int k = 0; k < 64; k++) { /* 4 MB; return values ignored on purpose */
@@ -629,8 +672,8 @@ static void test_vtu_zlib(struct particles *p)
   }
   const char *bpath = path_in("zlib_big.vtu");
   particles_init(&q);
-  int ok = io_write_vtu(bpath, &big, &m, &err) == 0 &&
-           io_read_particles_vtu(bpath, &q, NULL, &err) == 0;
+  int ok =
+      io_write_vtu(bpath, &big, &m, &err) == 0 && io_read_particles_vtu(bpath, &q, NULL, &err) == 0;
   CHECK(ok && q.n == 5000 && same_out_fields(&big, &q, &bad),
         "5,000 particles in several zlib blocks read back bitwise (%s) %s", bad, err.msg);
   particles_free(&q);
@@ -652,7 +695,7 @@ static void test_vtu_zlib(struct particles *p)
   if (us && ox >= 0) {
     uint64_t nbx;
     memcpy(&nbx, us + 1 + ox, 8);
-    char *z0 = us + 1 + ox + 8 * (3 + (long long)nbx);   /* x's first zlib stream */
+    char *z0 = us + 1 + ox + 8 * (3 + (long long)nbx); /* x's first zlib stream */
     z0[40] = (char)(z0[40] ^ 0x5a);
     FILE *f = fopen(path_in("zlib_damaged.vtu"), "wb");
     if (f) {
@@ -666,7 +709,7 @@ static void test_vtu_zlib(struct particles *p)
           "a damaged zlib block is refused, nothing appended: %s", err.msg);
     particles_free(&q);
     f = fopen(path_in("zlib_cut.vtu"), "wb");
-    if (f) {   /* x's block cut, the closing tag kept (so the block's extent is checked) */
+    if (f) { /* x's block cut, the closing tag kept (so the block's extent is checked) */
       fwrite(btext, 1, (size_t)(z0 - btext) + 100, f);
       fputs("\n  </AppendedData>\n</VTKFile>\n", f);
       fclose(f);
@@ -695,11 +738,12 @@ static void test_vtu_zlib(struct particles *p)
   }
   free(btext);
   particles_free(&big);
-  const char *lzma = vtu_variant(path, "lzma.vtu", "vtkZLibDataCompressor",
-                                 "vtkLZMADataCompressor", 0);
+  const char *lzma =
+      vtu_variant(path, "lzma.vtu", "vtkZLibDataCompressor", "vtkLZMADataCompressor", 0);
   particles_init(&q);
-  CHECK(io_read_particles_vtu(lzma, &q, NULL, &err) != 0 && strstr(err.msg, "vtkLZMADataCompressor") &&
-            q.n == 0, "another compressor is named and refused: %s", err.msg);
+  CHECK(io_read_particles_vtu(lzma, &q, NULL, &err) != 0 &&
+            strstr(err.msg, "vtkLZMADataCompressor") && q.n == 0,
+        "another compressor is named and refused: %s", err.msg);
   particles_free(&q);
   free(text);
 }
@@ -743,10 +787,10 @@ static void test_status_line(void)
   hv_log_level = 1;
   fputs("\rstep 1", stderr);
   hv_status_line(6);
-  hv_info("not shown");           /* below the level: prints nothing, so ends nothing */
+  hv_info("not shown"); /* below the level: prints nothing, so ends nothing */
   fputs("\rstep 2", stderr);
-  hv_warn("a warning");           /* ends the status line first */
-  hv_warn("another");             /* no status line now: no empty line */
+  hv_warn("a warning"); /* ends the status line first */
+  hv_warn("another");   /* no status line now: no empty line */
   hv_log_level = lvl;
   fflush(stderr);
   dup2(saved, STDERR_FILENO);

@@ -27,7 +27,8 @@ int main(void)
   const double h = 1.7e-3;
   const enum kernel_kind kinds[] = {KERNEL_CUBIC_SPLINE, KERNEL_WENDLAND_C2, KERNEL_QUADRATIC};
   const double tol_lattice[] = {0.02, 0.02, 0.05};
-  const double w0[] = {1.0 / HV_KERNEL_PI, 21.0 / (16.0 * HV_KERNEL_PI), 15.0 / (16.0 * HV_KERNEL_PI)};
+  const double w0[] = {1.0 / HV_KERNEL_PI, 21.0 / (16.0 * HV_KERNEL_PI),
+                       15.0 / (16.0 * HV_KERNEL_PI)};
 
   for (int n = 0; n < 3; n++) {
     const enum kernel_kind k = kinds[n];
@@ -54,17 +55,19 @@ int main(void)
     double worst_h3 = 0.0, worst_f = 0.0;
     for (int i = 1; i < 40; i++) {
       const double q = 0.05 * i, r = q * h;
-      const double rel = fabs(kernel_w_h3(k, q) - h * h * h * kernel_w(k, r, h)) / kernel_w_h3(k, q);
+      const double rel =
+          fabs(kernel_w_h3(k, q) - h * h * h * kernel_w(k, r, h)) / kernel_w_h3(k, q);
       if (rel > worst_h3) worst_h3 = rel;
       const double d = 1e-6 * h;
       const double dwdr = (kernel_w(k, r + d, h) - kernel_w(k, r - d, h)) / (2.0 * d);
-      const double scale = kernel_w(k, 0.0, h) / h;  /* a slope of order W(0)/h */
+      const double scale = kernel_w(k, 0.0, h) / h; /* a slope of order W(0)/h */
       const double err = fabs(kernel_f(k, r, h) * r - dwdr) / scale;
       if (err > worst_f) worst_f = err;
     }
     CHECK(worst_h3 < 1e-13, "%s: kernel_w_h3 = h^3 W (worst relative %.2e)", NAMES[n], worst_h3);
-    CHECK(worst_f < 1e-6, "%s: (1/r) dW/dr against a central difference of W (worst %.2e of W(0)/h)",
-          NAMES[n], worst_f);
+    CHECK(worst_f < 1e-6,
+          "%s: (1/r) dW/dr against a central difference of W (worst %.2e of W(0)/h)", NAMES[n],
+          worst_f);
 
     /* Σ_j V_j (x_j − x_i) ⊗ ∇_i W_ij = I and Σ_j V_j W_ij = 1 on a cubic lattice, h = 1.2 Δ */
     const double D = h / 1.2, V = D * D * D;
@@ -73,9 +76,9 @@ int main(void)
       for (int iy = -3; iy <= 3; iy++)
         for (int iz = -3; iz <= 3; iz++) {
           if (!ix && !iy && !iz) continue;
-          const double x[3] = {ix * D, iy * D, iz * D};   /* x_j − x_i */
+          const double x[3] = {ix * D, iy * D, iz * D}; /* x_j − x_i */
           const double r = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-          const double f = kernel_f(k, r, h);             /* ∇_i W = (x_i − x_j) f */
+          const double f = kernel_f(k, r, h); /* ∇_i W = (x_i − x_j) f */
           S += V * kernel_w(k, r, h);
           for (int p = 0; p < 3; p++)
             for (int q = 0; q < 3; q++) A[3 * p + q] += V * x[p] * (-x[q]) * f;
@@ -87,7 +90,8 @@ int main(void)
     const double tl = tol_lattice[n];
     CHECK(fabs(A[0] - 1.0) < tl && fabs(A[4] - 1.0) < tl && fabs(A[8] - 1.0) < tl && off < 1e-12,
           "%s: lattice sum of V (xj - xi) x grad W = I within %.0f %% (diagonal %.4f %.4f %.4f, "
-          "off-diagonal %.1e)", NAMES[n], 100 * tl, A[0], A[4], A[8], off);
+          "off-diagonal %.1e)",
+          NAMES[n], 100 * tl, A[0], A[4], A[8], off);
     CHECK(fabs(S - 1.0) < tl, "%s: lattice sum of V W = 1 within %.0f %% (got %.4f)", NAMES[n],
           100 * tl, S);
   }
@@ -104,7 +108,8 @@ int main(void)
   CHECK(mono, "quadratic: |dW/dr| falls monotonically from the centre outwards");
   const double r_small = 1e-6 * h;
   CHECK_CLOSE(kernel_f(KERNEL_QUADRATIC, r_small, h) * r_small * h * h * h * h,
-              -0.75 * 5.0 / (4.0 * HV_KERNEL_PI), 1e-5, "quadratic: dW/dr at the centre = -3/4 sigma/h^4");
+              -0.75 * 5.0 / (4.0 * HV_KERNEL_PI), 1e-5,
+              "quadratic: dW/dr at the centre = -3/4 sigma/h^4");
   CHECK(fabs(kernel_f(KERNEL_CUBIC_SPLINE, r_small, h) * r_small) * h * h * h * h < 1e-5,
         "cubic spline: dW/dr vanishes at the centre");
   CHECK(kernel_f(KERNEL_QUADRATIC, 0.0, h) == 0.0, "quadratic: a pair at one point has no force");

@@ -116,12 +116,12 @@ static void test_paper_values(void)
     if (rc) continue;
     const struct eos_mie_gruneisen *g = &m.eosp.mg;
     /* exact equality: the library's decimal values with units convert to the nearest double */
-    CHECK(m.eos == EOS_MIE_GRUNEISEN && g->rho0 == w->rho0 && m.rho0 == w->rho0 &&
-              g->c0 == w->c0 && g->n == w->n && g->Gamma == w->Gamma,
+    CHECK(m.eos == EOS_MIE_GRUNEISEN && g->rho0 == w->rho0 && m.rho0 == w->rho0 && g->c0 == w->c0 &&
+              g->n == w->n && g->Gamma == w->Gamma,
           "%s: EOS rho0 %.17g c0 %.17g n %.17g Gamma %.17g", w->name, g->rho0, g->c0, g->n,
           g->Gamma);
-    CHECK(m.str.enabled && m.str.yield == YIELD_CONSTANT && m.str.Y0 == w->Y,
-          "%s: yield %.17g Pa", w->name, m.str.Y0);
+    CHECK(m.str.enabled && m.str.yield == YIELD_CONSTANT && m.str.Y0 == w->Y, "%s: yield %.17g Pa",
+          w->name, m.str.Y0);
     if (w->G > 0) {
       CHECK(m.str.G == w->G, "%s: G = %.17g Pa (table)", w->name, m.str.G);
     } else {
@@ -177,14 +177,15 @@ static void test_paper_values(void)
 
 static void test_overrides(void)
 {
-  static const char *yaml = "materials:\n"                                            /* 1 */
-                            "  target: {library: steel-target, strength: {yield: 0.5 GPa}, fracture: {friction: 0.4}}\n"
-                            "  rod: {library: tungsten-alloy, strength: {poisson: 0.28}}\n"
-                            "  plate:\n"                                                 /* 4 */
-                            "    library: al-alloy\n"
-                            "    c0: 5 km/s\n"
-                            "    fracture: {model: none}\n"
-                            "  hard: {library: steel-target, strength: {model: linear, hardening: 1 GPa}}\n";
+  static const char *yaml =
+      "materials:\n" /* 1 */
+      "  target: {library: steel-target, strength: {yield: 0.5 GPa}, fracture: {friction: 0.4}}\n"
+      "  rod: {library: tungsten-alloy, strength: {poisson: 0.28}}\n"
+      "  plate:\n" /* 4 */
+      "    library: al-alloy\n"
+      "    c0: 5 km/s\n"
+      "    fracture: {model: none}\n"
+      "  hard: {library: steel-target, strength: {model: linear, hardening: 1 GPa}}\n";
   struct hv_error err = {0};
   struct cfg *c = cfg_load_string(yaml, "case.yaml", &err);
   struct material m[4];
@@ -243,22 +244,28 @@ static void test_sigma_c_off(void)
   struct material m;
   struct hv_error err = {0};
   int rc = read_case_material("materials:\n  x: {library: steel-bumper, fracture: {model: "
-                              "cumulative, sigma_c: 0, eps_f: 0.8}}\n", "x", &m, NULL, &err);
+                              "cumulative, sigma_c: 0, eps_f: 0.8}}\n",
+                              "x", &m, NULL, &err);
   CHECK(rc == 0 && m.frac.kind == FRACTURE_CUMULATIVE && m.frac.sigma_c == 0.0 &&
             m.frac.eps_f == 0.8,
         "cumulative, sigma_c: 0 over steel-bumper's -0.47 GPa: strain criterion only (%s)",
         rc ? err.msg : "ok");
   if (!rc) material_free(&m);
   rc = read_case_material("materials:\n  x: {library: steel-bumper, fracture: {model: "
-                          "cumulative, eps_f: 0.8}}\n", "x", &m, NULL, &err);
-  CHECK(rc == 0 && m.frac.sigma_c == -0.47e9,
-        "without sigma_c the library's -0.47 GPa stays (%s)", rc ? err.msg : "ok");
+                          "cumulative, eps_f: 0.8}}\n",
+                          "x", &m, NULL, &err);
+  CHECK(rc == 0 && m.frac.sigma_c == -0.47e9, "without sigma_c the library's -0.47 GPa stays (%s)",
+        rc ? err.msg : "ok");
   if (!rc) material_free(&m);
   expect_error("materials:\n  x: {library: steel-bumper, fracture: {model: cumulative, "
-               "sigma_c: 0}}\n", "x", "case.yaml:2: materials.x.fracture.model: cumulative "
+               "sigma_c: 0}}\n",
+               "x",
+               "case.yaml:2: materials.x.fracture.model: cumulative "
                "damage needs eps_f > 0");
   expect_error("materials:\n  x: {library: steel-bumper, fracture: {model: cumulative, "
-               "sigma_c: 0.1 GPa, eps_f: 1}}\n", "x", "must be negative (tension is negative, "
+               "sigma_c: 0.1 GPa, eps_f: 1}}\n",
+               "x",
+               "must be negative (tension is negative, "
                "as in the paper's tables); 0 switches the tensile criterion off");
   expect_error("materials:\n  x: {library: steel-bumper, fracture: {sigma_c: 0}}\n", "x",
                "case.yaml:2: materials.x.fracture.sigma_c: sigma_c = 0 Pa must be negative "
@@ -271,10 +278,12 @@ static void test_errors(void)
 {
   expect_error("materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 7.8 g/cm3\n    c0: 5 km/s\n"
                "    n: 4\n    gamma: 2\n    strength: {poisson: 0.5, yield: 1 GPa}\n",
-               "x", "case.yaml:8: materials.x.strength.poisson: Poisson's ratio 0.5 is outside "
+               "x",
+               "case.yaml:8: materials.x.strength.poisson: Poisson's ratio 0.5 is outside "
                "(-1, 0.5)");
-  expect_error("materials:\n  x: {library: steel-bumper, strength: {poisson: -1}}\n", "x",
-               "case.yaml:2: materials.x.strength.poisson: Poisson's ratio -1 is outside (-1, 0.5)");
+  expect_error(
+      "materials:\n  x: {library: steel-bumper, strength: {poisson: -1}}\n", "x",
+      "case.yaml:2: materials.x.strength.poisson: Poisson's ratio -1 is outside (-1, 0.5)");
   expect_error("materials:\n  x:\n    library: aluminium-tillotson\n    E_cv: 2 MJ/kg\n", "x",
                "case.yaml:4: materials.x.E_cv: E_cv = 2000000 J/kg must be greater than E_iv = "
                "3000000 J/kg");
@@ -286,100 +295,125 @@ static void test_errors(void)
   expect_error("materials:\n  x: {library: steel-targte}\n", "x",
                "has: tungsten-alloy, steel-target, steel-projectile");
   expect_error("materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 7.8 g/cm3\n    n: 4\n"
-               "    gamma: 2\n", "x", "case.yaml:2: missing required key 'materials.x.c0'");
+               "    gamma: 2\n",
+               "x", "case.yaml:2: missing required key 'materials.x.c0'");
   expect_error("materials:\n  x: {library: steel-target, fracture: {sigma_c: 0.39 GPa}}\n", "x",
                "case.yaml:2: materials.x.fracture.sigma_c: sigma_c = 390000000 Pa must be "
                "negative");
   expect_error("materials:\n  x: {library: steel-target, c0: 5 kg}\n", "x",
                "case.yaml:2: materials.x.c0: unit 'kg' is a mass, expected a velocity");
   expect_error("materials:\n  x: {library: steel-target, strength: {poisson: 0.3, shear_modulus: "
-               "80 GPa}}\n", "x", "materials.x.strength.poisson: give shear_modulus or poisson, "
+               "80 GPa}}\n",
+               "x",
+               "materials.x.strength.poisson: give shear_modulus or poisson, "
                "not both");
   expect_error("materials:\n  x: {library: tungsten-alloy, strength: {hardening: 1 GPa}}\n", "x",
                "case.yaml:2: materials.x.strength.hardening: hardening applies to model: linear "
                "only");
   expect_error("materials:\n  x: {library: aluminium-tillotson, strength: {poisson: 0.3, yield: "
-               "1 GPa}, fracture: {model: tresca}}\n", "x",
-               "missing required key 'materials.x.fracture.sigma_c'");
-  expect_error("materials:\n  x: {library: nitrogen, strength: {poisson: 0.3, yield: 1 GPa}}\n", "x",
-               "materials.x.strength.poisson: G from Poisson's ratio needs the bulk modulus");
+               "1 GPa}, fracture: {model: tresca}}\n",
+               "x", "missing required key 'materials.x.fracture.sigma_c'");
+  expect_error("materials:\n  x: {library: nitrogen, strength: {poisson: 0.3, yield: 1 GPa}}\n",
+               "x", "materials.x.strength.poisson: G from Poisson's ratio needs the bulk modulus");
   expect_error("materials:\n  x: {library: steel-target, strength: {model: johnson-cook, B: 1 GPa, "
-               "N: 0.3, cv: 450, T_melt: 200 K}}\n", "x",
-               "materials.x.strength.T_melt: T_melt = 200 K must be above T_ref = 293.15 K");
-  expect_error("materials:\n  x: 5\n", "x", "case.yaml:2: materials.x: material 'x' must be a "
+               "N: 0.3, cv: 450, T_melt: 200 K}}\n",
+               "x", "materials.x.strength.T_melt: T_melt = 200 K must be above T_ref = 293.15 K");
+  expect_error("materials:\n  x: 5\n", "x",
+               "case.yaml:2: materials.x: material 'x' must be a "
                "mapping");
   expect_error("materials:\n  x: {library: steel-target, fracture: {model: none, friction: 0.5}}\n",
-               "x", "case.yaml:2: materials.x.fracture.friction: friction applies to split "
+               "x",
+               "case.yaml:2: materials.x.fracture.friction: friction applies to split "
                "material: model tresca or cumulative");
   expect_error("materials:\n  x: {library: steel-target, fracture: {friction: -0.1}}\n", "x",
                "materials.x.fracture.friction");
   expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0}, fracture: "
-               "{friction: 0.5}}\n", "x", "materials.x.fracture.friction: friction limits the "
+               "{friction: 0.5}}\n",
+               "x",
+               "materials.x.fracture.friction: friction limits the "
                "deviatoric stress of split material, but the material has no strength");
   expect_error("materials:\n  x: {library: steel-target, fracture: {split: brittle}}\n", "x",
                "case.yaml:2: materials.x.fracture.split");
   expect_error("materials:\n  x: {library: steel-target, fracture: {model: none, split: "
-               "no-tension}}\n", "x", "case.yaml:2: materials.x.fracture.split: split applies "
+               "no-tension}}\n",
+               "x",
+               "case.yaml:2: materials.x.fracture.split: split applies "
                "to split material");
   expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0}, fracture: "
-               "{split: no-tension}}\n", "x", "materials.x.fracture.split: split: no-tension "
+               "{split: no-tension}}\n",
+               "x",
+               "materials.x.fracture.split: split: no-tension "
                "keeps the deviatoric stress of split material, but the material has no strength");
   expect_error("materials:\n  x: {library: steel-target, fracture: {split: no-tension, friction: "
-               "0.5}}\n", "x", "materials.x.fracture.split: split: no-tension keeps the yield "
+               "0.5}}\n",
+               "x",
+               "materials.x.fracture.split: split: no-tension keeps the yield "
                "stress of split material; friction");
   /* crack_eps_f: the cracked state's strain to failure, with split: crack only */
   expect_error("materials:\n  x: {library: al-alloy, fracture: {crack_eps_f: 0.2}}\n", "x",
                "case.yaml:2: materials.x.fracture.crack_eps_f: crack_eps_f is the strain to "
                "failure of a cracked particle: it applies to split: crack only");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {model: none, crack_eps_f: "
-               "0.2}}\n", "x", "materials.x.fracture.crack_eps_f: crack_eps_f applies to split: crack");
+               "0.2}}\n",
+               "x", "materials.x.fracture.crack_eps_f: crack_eps_f applies to split: crack");
   /* energy: a cohesive opening before the paper's split (model tresca, split fluid) */
   expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: 10 kJ/m2, split: crack}}\n",
-               "x", "materials.x.fracture.energy: energy (a cohesive opening before the split) ends "
+               "x",
+               "materials.x.fracture.energy: energy (a cohesive opening before the split) ends "
                "in the paper's split (split: fluid); with split: crack leave it out");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {model: cumulative, eps_f: 1, "
-               "energy: 10 kJ/m2}}\n", "x", "materials.x.fracture.energy: energy (a cohesive "
+               "energy: 10 kJ/m2}}\n",
+               "x",
+               "materials.x.fracture.energy: energy (a cohesive "
                "opening before the split) applies to model: tresca only");
-  expect_error("materials:\n  x: {eos: ideal-gas, gamma: 1.4, strength: {shear_modulus: 10 GPa, "
-               "yield: 1 GPa}, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n", "x",
-               "materials.x.fracture.energy: the cohesive opening (energy > 0) takes each particle's "
-               "spacing from its mass and the material's rho0");
+  expect_error(
+      "materials:\n  x: {eos: ideal-gas, gamma: 1.4, strength: {shear_modulus: 10 GPa, "
+      "yield: 1 GPa}, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n",
+      "x",
+      "materials.x.fracture.energy: the cohesive opening (energy > 0) takes each particle's "
+      "spacing from its mass and the material's rho0");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: 10 kJ}}\n", "x",
                "materials.x.fracture.energy");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {energy: -1 J/m2}}\n", "x",
                "materials.x.fracture.energy");
   expect_error("materials:\n  x: {eos: mie-gruneisen, rho0: 2.7 g/cm3, c0: 5.2 km/s, n: 4, "
-               "gamma: 2, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n", "x",
+               "gamma: 2, fracture: {model: tresca, sigma_c: -1 GPa, energy: 10 kJ/m2}}\n",
+               "x",
                "materials.x.fracture.energy: the cohesive opening (energy > 0) acts on the stress "
                "of a solid, but the material has no strength");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: 0}}\n",
                "x", "materials.x.fracture.crack_eps_f: the strain to failure must be > 0");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: "
-               "{d2: 0.1}}}\n", "x", "materials.x.fracture.crack_eps_f.d1");
+               "{d2: 0.1}}}\n",
+               "x", "materials.x.fracture.crack_eps_f.d1");
   expect_error("materials:\n  x: {library: al-alloy, fracture: {split: crack, crack_eps_f: "
-               "{d1: -2.2, d2: 5.43, d3: -2}}}\n", "x", "materials.x.fracture.crack_eps_f: "
+               "{d1: -2.2, d2: 5.43, d3: -2}}}\n",
+               "x",
+               "materials.x.fracture.crack_eps_f: "
                "d1 + d2 exp(d3 sigma*) = ");
   {
     struct material m;
     struct hv_error err = {0};
     int rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack, "
-                                "crack_eps_f: {d1: 0.13, d2: 0.13, d3: -1.5}}}\n", "x", &m, NULL,
-                                &err);
+                                "crack_eps_f: {d1: 0.13, d2: 0.13, d3: -1.5}}}\n",
+                                "x", &m, NULL, &err);
     CHECK(rc == 0 && m.frac.crack_eps_f_on && m.frac.crack_d[0] == 0.13 &&
-          m.frac.crack_d[1] == 0.13 && m.frac.crack_d[2] == -1.5,
+              m.frac.crack_d[1] == 0.13 && m.frac.crack_d[2] == -1.5,
           "crack_eps_f {d1, d2, d3} read (%s)", rc ? err.msg : "ok");
     if (!rc) material_free(&m);
     rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack, "
-                            "crack_eps_f: 0.3}}\n", "x", &m, NULL, &err);
+                            "crack_eps_f: 0.3}}\n",
+                            "x", &m, NULL, &err);
     CHECK(rc == 0 && m.frac.crack_eps_f_on && m.frac.crack_d[0] == 0.3 && m.frac.crack_d[1] == 0.0,
           "crack_eps_f as a number: a constant strain to failure (%s)", rc ? err.msg : "ok");
     if (!rc) material_free(&m);
-    rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack}}\n",
-                            "x", &m, NULL, &err);
+    rc = read_case_material("materials:\n  x: {library: al-alloy, fracture: {split: crack}}\n", "x",
+                            &m, NULL, &err);
     CHECK(rc == 0 && !m.frac.crack_eps_f_on, "split: crack without crack_eps_f: none");
     if (!rc) material_free(&m);
     rc = read_case_material("materials:\n  x: {library: steel-projectile, fracture: {energy: "
-                            "11 kJ/m2}}\n", "x", &m, NULL, &err);
+                            "11 kJ/m2}}\n",
+                            "x", &m, NULL, &err);
     CHECK(rc == 0 && fabs(m.frac.energy - 11e3) < 1e-9 && m.frac.sigma_c == -2.66e9,
           "fracture.energy 11 kJ/m2 read as %g J/m2 over the library's sigma_c (%s)",
           rc ? 0.0 : m.frac.energy, rc ? err.msg : "ok");
@@ -395,19 +429,22 @@ static void test_errors(void)
  * written in; with its unit, 0, a library's value or a gas's, it is taken. */
 static void test_wrong_units(void)
 {
-#define MG "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: %s\n    c0: %s\n    n: 4\n" \
-           "    gamma: 2\n"
+#define MG                                                                                         \
+  "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: %s\n    c0: %s\n    n: 4\n"                 \
+  "    gamma: 2\n"
   char y[512];
   snprintf(y, sizeof y, MG, "2780", "5.35");
-  expect_error(y, "x", "case.yaml:5: materials.x.c0: the bare number 5.35 is read as 5.35 m/s "
+  expect_error(y, "x",
+               "case.yaml:5: materials.x.c0: the bare number 5.35 is read as 5.35 m/s "
                "(a number without a unit is SI), outside the bulk sound speeds of condensed "
                "materials, 100 to 50000 m/s; was it 5.35 km/s? Write the value with its unit "
                "('5.35 m/s' keeps this one)");
   snprintf(y, sizeof y, MG, "2.78", "5350");
-  expect_error(y, "x", "case.yaml:4: materials.x.rho0: the bare number 2.78 is read as 2.78 "
+  expect_error(y, "x",
+               "case.yaml:4: materials.x.rho0: the bare number 2.78 is read as 2.78 "
                "kg/m3 (a number without a unit is SI), outside the densities of condensed "
                "materials, 50 to 100000 kg/m3; was it 2.78 g/cm3?");
-  snprintf(y, sizeof y, MG, "2780", "1e6");   /* no likely unit: the range and the way out */
+  snprintf(y, sizeof y, MG, "2780", "1e6"); /* no likely unit: the range and the way out */
   expect_error(y, "x", "50000 m/s; write the value with its unit ('1e6 m/s' keeps this one)");
   expect_error("materials:\n  x: {library: steel-target, strength: {yield: 0.39}}\n", "x",
                "case.yaml:2: materials.x.strength.yield: the bare number 0.39 is read as 0.39 Pa");
@@ -423,8 +460,7 @@ static void test_wrong_units(void)
                "materials.x.strength.B: the bare number 510 is read as 510 Pa");
   expect_error("materials:\n  x: {library: aluminium-tillotson, E0: 5}\n", "x",
                "materials.x.E0: the bare number 5 is read as 5 J/kg");
-  expect_error("materials:\n  x: {library: aluminium-tillotson, E0: 5}\n", "x",
-               "was it 5 MJ/kg?");
+  expect_error("materials:\n  x: {library: aluminium-tillotson, E0: 5}\n", "x", "was it 5 MJ/kg?");
   /* taken: the same values with their units, in range, 0, a gas in scaled units */
   static const char *const ok[] = {
       "materials:\n  x:\n    eos: mie-gruneisen\n    rho0: 2780\n    c0: 5.35 m/s\n"
@@ -458,7 +494,7 @@ static void test_library_errors(void)
   snprintf(file, sizeof file, "%s/materials.yaml", dir);
   FILE *f = fopen(file, "w");
   if (!f) return;
-  fputs("# a library with a mistake\n"        /* 1 */
+  fputs("# a library with a mistake\n"         /* 1 */
         "good: {eos: ideal-gas, gamma: 1.4}\n" /* 2 */
         "bad:\n"                               /* 3 */
         "  eos: mie-gruneisen\n"               /* 4 */
@@ -491,10 +527,10 @@ static void test_library_errors(void)
 static void test_table_material(void)
 {
   test_write_file("tab_eos.txt", "rho_count 2 e_count 2\n1000 2000\n0 1e6\n0 4e8\n0 8e8\n");
-  const char *casefile = test_write_file("tab_case.yaml",
-                                         "materials:\n"
-                                         "  t: {eos: table, file: tab_eos.txt, rho0: 1000}\n"
-                                         "  u: {eos: table, file: missing.txt}\n");
+  const char *casefile =
+      test_write_file("tab_case.yaml", "materials:\n"
+                                       "  t: {eos: table, file: tab_eos.txt, rho0: 1000}\n"
+                                       "  u: {eos: table, file: missing.txt}\n");
   struct hv_error err = {0};
   struct cfg *c = cfg_load(casefile, &err);
   if (!c) {
@@ -516,8 +552,10 @@ static void test_table_material(void)
   }
   rc = material_read(c, "materials.u", "u", &m, &err);
   char want[8400];
-  snprintf(want, sizeof want, "%s:3: materials.u.file: cannot open EOS table '%s/missing.txt': "
-           "No such file or directory", casefile, test_tmpdir());
+  snprintf(want, sizeof want,
+           "%s:3: materials.u.file: cannot open EOS table '%s/missing.txt': "
+           "No such file or directory",
+           casefile, test_tmpdir());
   CHECK(rc == -1 && !strcmp(err.msg, want), "missing table: '%s'", err.msg);
   cfg_free(c);
 }
@@ -545,12 +583,15 @@ static void test_graft(void)
   CHECK(!strcmp(cfg_where(d, "a.y", w, sizeof w), "src.yaml:3"), "grafted line: %s", w);
   CHECK(!strcmp(cfg_where(d, "a.m.q", w, sizeof w), "src.yaml:4"), "grafted nested line: %s", w);
   CHECK(!strcmp(cfg_where(d, "a.x", w, sizeof w), "dst.yaml:2"), "own line: %s", w);
-  CHECK(!strcmp(cfg_node_file(d, "a.y"), "src.yaml") && !strcmp(cfg_node_file(d, "a.x"), "dst.yaml")
-            && !strcmp(cfg_node_file(d, "nothing"), "dst.yaml"),
+  CHECK(!strcmp(cfg_node_file(d, "a.y"), "src.yaml") &&
+            !strcmp(cfg_node_file(d, "a.x"), "dst.yaml") &&
+            !strcmp(cfg_node_file(d, "nothing"), "dst.yaml"),
         "cfg_node_file");
   rc = cfg_get_quantity(d, "a.y", UNIT_NONE, NULL, 100.0, 200.0, &v[5], &err);
-  CHECK(rc == -1 && !strncmp(err.msg, "src.yaml:3: a.y: ", 17), "value error in a grafted key: "
-        "'%s'", err.msg);
+  CHECK(rc == -1 && !strncmp(err.msg, "src.yaml:3: a.y: ", 17),
+        "value error in a grafted key: "
+        "'%s'",
+        err.msg);
   /* grafted keys never read are not "unknown" (the reader decides what applies) */
   CHECK(cfg_check_unused(d, &err) == 0, "unused grafted keys are not errors (%s)",
         err.code ? err.msg : "ok");
@@ -559,8 +600,10 @@ static void test_graft(void)
   CHECK(rc == -1 && strstr(err.msg, "src.yaml:1: 'e' must be a mapping"), "graft of a scalar: '%s'",
         err.msg);
   rc = cfg_graft(d, "a.x", s, "", &err);
-  CHECK(rc == -1 && strstr(err.msg, "dst.yaml:2: a.x: expected a mapping"), "graft onto a scalar: "
-        "'%s'", err.msg);
+  CHECK(rc == -1 && strstr(err.msg, "dst.yaml:2: a.x: expected a mapping"),
+        "graft onto a scalar: "
+        "'%s'",
+        err.msg);
   cfg_free(s);
   cfg_free(d);
 }
@@ -586,8 +629,9 @@ static void test_find_or_load(void)
         "library material by name, case material, reuse (%d %d %d, n %d)", i0, i1, i2, n);
   CHECK(cfg_has(c, "materials.copper.c0"), "the library entry is grafted into the case");
   int i3 = material_find_or_load(c, "bodies[3].material", "nope", mats, &n, 4, &err);
-  CHECK(i3 == -1 && strstr(err.msg, "case.yaml:7: bodies[3].material: unknown material 'nope' "
-                                    "(the case defines: a, copper; the library ") &&
+  CHECK(i3 == -1 &&
+            strstr(err.msg, "case.yaml:7: bodies[3].material: unknown material 'nope' "
+                            "(the case defines: a, copper; the library ") &&
             strstr(err.msg, "has: tungsten-alloy, steel-target"),
         "unknown material: '%s'", err.msg);
   CHECK(cfg_check_unused(c, &err) != 0, "bodies' other keys are still unread (sanity)");
@@ -609,8 +653,8 @@ static void test_cli(void)
   st = test_run(cmd, out, sizeof out);
   CHECK(st == 0 && strstr(out, "poisson") && strstr(out, "0.362") && strstr(out, "sigma_c") &&
             strstr(out, "-590000000") && strstr(out, "kg/m3") && strstr(out, "(5.612 km/s)"),
-        "hvsph materials al-alloy: every parameter with units (status %d)%s%s", st,
-        st ? "\n" : "", st ? out : "");
+        "hvsph materials al-alloy: every parameter with units (status %d)%s%s", st, st ? "\n" : "",
+        st ? out : "");
   snprintf(cmd, sizeof cmd, "'%s' materials steel-targte", test_bin());
   st = test_run(cmd, out, sizeof out);
   CHECK(st == 2 && strstr(out, "unknown material 'steel-targte'") && strstr(out, "steel-target"),

@@ -37,7 +37,7 @@
 #include "testlib.h"
 #include "testparticles.h"
 
-static const double S = 1e-3;  /* [m] lattice spacing Δ */
+static const double S = 1e-3; /* [m] lattice spacing Δ */
 
 static size_t add_particle(struct particles *p, const double x[3], int body)
 {
@@ -46,11 +46,11 @@ static size_t add_particle(struct particles *p, const double x[3], int body)
 
 /* What to cut out of a lattice. */
 struct cut {
-  double yc;          /* hole axis y (z = 0) */
-  double R;           /* cylinder radius (0: none) */
-  double xcut;        /* the cylinder removes x < xcut */
-  double a, b, ey;    /* ellipse semi-axes along y and z, centre y (a = 0: none) */
-  double R2, xcut2;   /* a second, wider cylinder over x < xcut2 (entrance crater) */
+  double yc;        /* hole axis y (z = 0) */
+  double R;         /* cylinder radius (0: none) */
+  double xcut;      /* the cylinder removes x < xcut */
+  double a, b, ey;  /* ellipse semi-axes along y and z, centre y (a = 0: none) */
+  double R2, xcut2; /* a second, wider cylinder over x < xcut2 (entrance crater) */
 };
 
 static int kept(const struct cut *c, const double x[3])
@@ -99,8 +99,8 @@ static const double X0 = 0.01, TH = 3 * S, W = 30 * S;
 
 static void plate_geom(struct meas_geom *g, double yc, int half)
 {
-  *g = (struct meas_geom){.body = 1, .x0 = X0, .thickness = TH, .yc = yc, .spacing = S,
-                          .half_model = half};
+  *g = (struct meas_geom){
+      .body = 1, .x0 = X0, .thickness = TH, .yc = yc, .spacing = S, .half_model = half};
 }
 
 /* The half-model plate on the axis yc = 0 with default measurement parameters. */
@@ -117,32 +117,36 @@ static void check_hole(double D, double yc, int half, int hcp)
   const double lo[3] = {X0, -W, half ? 0.0 : -W}, hi[3] = {X0 + TH, W, W};
   const struct cut c = {.yc = yc, .R = 0.5 * D, .xcut = 1.0};
   const double rmin = add_lattice(&p, lo, hi, hcp, &c, 1, 1.0);
-  const double other[3] = {X0 - 0.05, 0, 0};  /* a particle of another body, in the hole's way */
+  const double other[3] = {X0 - 0.05, 0, 0}; /* a particle of another body, in the hole's way */
   add_particle(&p, other, 0);
   struct meas_geom g;
   plate_geom(&g, yc, half);
   struct meas_plate_params par;
   meas_plate_defaults(&par, &g);
-  par.slab_front = 0.1;  /* reaches the other body's particle: only body 1 counts */
+  par.slab_front = 0.1; /* reaches the other body's particle: only body 1 counts */
   struct meas_plate r;
   struct hv_error err;
   hv_error_clear(&err);
   const char *what = hcp ? "hcp" : "cubic";
   const char *model = half ? "half" : "full";
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0, "plate measurement runs: %s", err.msg);
-  CHECK(r.perforated && !r.hole_open, "%s %s plate, D = %.2fΔ, yc = %.2fΔ: perforated, closed "
-        "hole", what, model, D / S, yc / S);
+  CHECK(r.perforated && !r.hole_open,
+        "%s %s plate, D = %.2fΔ, yc = %.2fΔ: perforated, closed "
+        "hole",
+        what, model, D / S, yc / S);
   CHECK(fabs(r.d_circle - D) <= S, "%s %s D = %.2fΔ: largest circle %.3fΔ within Δ", what, model,
         D / S, r.d_circle / S);
-  CHECK(fabs(r.d_equiv - D) <= S, "%s %s D = %.2fΔ: equivalent-area diameter %.3fΔ within Δ",
-        what, model, D / S, r.d_equiv / S);
-  CHECK(fabs(r.d_circle_impact - D) <= S, "%s %s D = %.2fΔ: circle at the impact point %.3fΔ "
-        "within Δ", what, model, D / S, r.d_circle_impact / S);
+  CHECK(fabs(r.d_equiv - D) <= S, "%s %s D = %.2fΔ: equivalent-area diameter %.3fΔ within Δ", what,
+        model, D / S, r.d_equiv / S);
+  CHECK(fabs(r.d_circle_impact - D) <= S,
+        "%s %s D = %.2fΔ: circle at the impact point %.3fΔ "
+        "within Δ",
+        what, model, D / S, r.d_circle_impact / S);
   /* the definition at the hole's axis, from the kept particles: the search can only do better */
   const double d_axis = 2 * (rmin - 0.5 * S);
   CHECK(r.d_circle >= d_axis - 1e-12 && r.d_circle <= d_axis + 0.5 * S,
-        "%s %s D = %.2fΔ: circle %.4fΔ >= the one on the axis %.4fΔ (and close to it)", what,
-        model, D / S, r.d_circle / S, d_axis / S);
+        "%s %s D = %.2fΔ: circle %.4fΔ >= the one on the axis %.4fΔ (and close to it)", what, model,
+        D / S, r.d_circle / S, d_axis / S);
   CHECK_CLOSE(r.d_circle_impact, d_axis, 1e-12, "circle centred at the impact point = definition");
   CHECK(hypot(r.circle_center[0] - yc, r.circle_center[1]) <= 0.5 * S,
         "%s %s: circle centred on the hole (%.3fΔ, %.3fΔ)", what, model,
@@ -167,7 +171,7 @@ static void test_blind_and_slab(void)
   struct particles p;
   particles_init(&p);
   const double lo[3] = {X0, -W, 0}, hi[3] = {X0 + TH, W, W};
-  const struct cut c = {.yc = 0, .R = 6 * S, .xcut = X0 + 2 * S};  /* leaves the last layer */
+  const struct cut c = {.yc = 0, .R = 6 * S, .xcut = X0 + 2 * S}; /* leaves the last layer */
   add_lattice(&p, lo, hi, 0, &c, 1, 1.0);
   struct meas_geom g;
   struct meas_plate_params par;
@@ -175,7 +179,7 @@ static void test_blind_and_slab(void)
   struct meas_plate r;
   struct hv_error err;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated, "blind crater: not "
-        "perforated");
+                                                                     "perforated");
   CHECK(r.d_circle == 0 && r.d_equiv == 0 && r.area == 0, "blind crater: no hole diameter");
   particles_free(&p);
 
@@ -197,7 +201,8 @@ static void test_blind_and_slab(void)
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated &&
             fabs(r.d_circle - 12 * S) <= S && r.n_detached == nplug && nplug > 0,
         "a plug broken loose, still inside the slab, is debris: D %.3fΔ, %zu particles left "
-        "out (its %zu)", r.d_circle / S, r.n_detached, nplug);
+        "out (its %zu)",
+        r.d_circle / S, r.n_detached, nplug);
   par.attached_only = 0;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && !r.perforated,
         "with attached_only 0 the plug blocks the line of sight");
@@ -218,7 +223,8 @@ static void test_detached(void)
   add_lattice(&p, lo, hi, 0, &h, 1, 1.0);
   const size_t nplate = p.n;
   /* three single particles in the hole, 2Δ and more from each other and from the rim */
-  const double loose[3][3] = {{X0 + 1.5 * S, 0.0, 0.5 * S}, {X0 + 1.5 * S, 2.2 * S, 1.0 * S},
+  const double loose[3][3] = {{X0 + 1.5 * S, 0.0, 0.5 * S},
+                              {X0 + 1.5 * S, 2.2 * S, 1.0 * S},
                               {X0 + 0.5 * S, -1.5 * S, 2.5 * S}};
   for (int k = 0; k < 3; k++) add_particle(&p, loose[k], 1);
   struct meas_geom g;
@@ -244,8 +250,7 @@ static void test_detached(void)
   }
   par.attached_only = 1;
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.n_detached == 0 && r.d_circle < 10.5 * S,
-        "a petal joined to the rim is plate: D %.3fΔ, %zu left out", r.d_circle / S,
-        r.n_detached);
+        "a petal joined to the rim is plate: D %.3fΔ, %zu left out", r.d_circle / S, r.n_detached);
   particles_free(&p);
 
   /* rubble: a ring of split particles joined to the rim (radius 6Δ) filling the hole to
@@ -290,8 +295,10 @@ static void test_ellipse_and_open(void)
   CHECK(measure_plate(&p, &g, &par, &r, &err) == 0 && r.perforated, "elliptical hole found");
   CHECK(fabs(r.d_circle - 10 * S) <= S, "ellipse 20Δ × 10Δ: largest circle = minor axis (%.3fΔ)",
         r.d_circle / S);
-  CHECK(fabs(r.d_equiv - 2 * sqrt(50.0) * S) <= S, "ellipse: equivalent diameter 2√(ab) = %.3fΔ "
-        "(%.3fΔ)", 2 * sqrt(50.0), r.d_equiv / S);
+  CHECK(fabs(r.d_equiv - 2 * sqrt(50.0) * S) <= S,
+        "ellipse: equivalent diameter 2√(ab) = %.3fΔ "
+        "(%.3fΔ)",
+        2 * sqrt(50.0), r.d_equiv / S);
   CHECK(fabs(r.circle_center[0] - 2 * S) <= S && fabs(r.circle_center[1]) <= S,
         "ellipse: circle at its centre (%.2fΔ, %.2fΔ)", r.circle_center[0] / S,
         r.circle_center[1] / S);
@@ -314,15 +321,17 @@ static void test_ellipse_and_open(void)
         "the whole plate's window sees it closed (%.2fΔ)", r.d_circle / S);
   struct particles empty;
   particles_init(&empty);
-  CHECK(measure_plate(&empty, &g, &par, &r, &err) == 0 && r.n_plate == 0, "no plate particles: "
-        "no crash (perforated %d)", r.perforated);
+  CHECK(measure_plate(&empty, &g, &par, &r, &err) == 0 && r.n_plate == 0,
+        "no plate particles: "
+        "no crash (perforated %d)",
+        r.perforated);
   particles_free(&empty);
   par.tol = -1;
   hv_error_clear(&err);
   CHECK(measure_plate(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "negative tolerance: an error (%s)", err.msg);
   par.tol = S;
-  par.footprint = INFINITY;   /* refused like the cavity's and the backwall's */
+  par.footprint = INFINITY; /* refused like the cavity's and the backwall's */
   hv_error_clear(&err);
   CHECK(measure_plate(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "infinite footprint: an error, not d_equiv = %g (%s)", r.d_equiv, err.msg);
@@ -330,8 +339,8 @@ static void test_ellipse_and_open(void)
 }
 
 /* A block 50Δ deep at x0 = 0, |y| <= 15Δ, 0 <= z <= 15Δ (a half model), with a cavity. */
-static const struct meas_geom BLOCK_G = {.body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0,
-                                         .spacing = S, .half_model = 1};
+static const struct meas_geom BLOCK_G = {
+    .body = 2, .x0 = 0.0, .thickness = 50 * S, .yc = 0.0, .spacing = S, .half_model = 1};
 
 /* The cavity of the block's particles with the default parameters. */
 static struct meas_cavity measure_block(const struct particles *p)
@@ -368,7 +377,7 @@ static void test_cavity(void)
   CHECK(fabs(r.D - 2 * Rc) <= S, "cavity diameter %.2fΔ: D = %.3fΔ within Δ", 2 * Rc / S, r.D / S);
   CHECK(fabs(r.D_mean - 2 * Rc) <= S, "D_mean = %.3fΔ within Δ", r.D_mean / S);
   /* the definition from the kept lattice: the nearest wall particle minus the footprint */
-  const double rmin_wall = hypot(1.5, 4.5) * S;  /* nearest lattice (y, z) outside 4.6Δ */
+  const double rmin_wall = hypot(1.5, 4.5) * S; /* nearest lattice (y, z) outside 4.6Δ */
   CHECK_CLOSE(r.D, 2 * (rmin_wall - 0.5 * S), 1e-12, "D = 2 (ρ_min − Δ/2)");
   CHECK(!r.perforated && r.nopen > 0 && r.nslice >= 99, "not perforated; %zu slices, %zu open",
         r.nslice, r.nopen);
@@ -417,8 +426,10 @@ static void test_cavity(void)
   CHECK(fabs(r.D - 15.2 * S) <= S && r.depth_at_D < 3 * S,
         "D is the largest diameter, at the entrance (%.2fΔ at depth %.2fΔ)", r.D / S,
         r.depth_at_D / S);
-  CHECK(r.D_mean < 0.5 * (r.D + 2 * Rc) && fabs(r.L - Lc) <= S, "D_mean follows the channel "
-        "(%.2fΔ); L unchanged (%.2fΔ)", r.D_mean / S, r.L / S);
+  CHECK(r.D_mean < 0.5 * (r.D + 2 * Rc) && fabs(r.L - Lc) <= S,
+        "D_mean follows the channel "
+        "(%.2fΔ); L unchanged (%.2fΔ)",
+        r.D_mean / S, r.L / S);
   meas_cavity_free(&r);
   particles_free(&p);
 
@@ -452,9 +463,9 @@ static struct meas_cavity wall_case(double R, int hcp, int nstray)
   const double lo[3] = {0, -15 * S, 0}, hi[3] = {50 * S, 15 * S, 15 * S};
   const struct cut c = {.R = R * S, .xcut = 23.4 * S};
   add_lattice(&p, lo, hi, hcp, &c, 2, 23.4 * S);
-  if (hcp)  /* an hcp site holds Δ³/√2 */
+  if (hcp) /* an hcp site holds Δ³/√2 */
     for (size_t i = 0; i < p.n; i++) p.m[i] /= sqrt(2.0);
-  for (int k = 0; k < nstray; k++) {  /* at depths 1.2, 3.2, 5.2 … Δ, angle 0.3 + 0.13k */
+  for (int k = 0; k < nstray; k++) { /* at depths 1.2, 3.2, 5.2 … Δ, angle 0.3 + 0.13k */
     const double a = 0.3 + 0.13 * k, q[3] = {(1.2 + 2.0 * k) * S, 3 * S * cos(a), 3 * S * sin(a)};
     add_particle(&p, q, 2);
   }
@@ -478,17 +489,18 @@ static void test_cavity_wall(void)
       CHECK(fabs(r.D_wall - 2 * radii[k] * S) <= 0.5 * S &&
                 fabs(r.D_wall_mean - 2 * radii[k] * S) <= 0.5 * S,
             "%s, R = %.1fΔ: D_wall = %.3fΔ, D_wall_mean = %.3fΔ, 2R within Δ/2 (nearest "
-            "particle: D = %.3fΔ)", hcp ? "hcp" : "cubic", radii[k], r.D_wall / S,
-            r.D_wall_mean / S, r.D / S);
+            "particle: D = %.3fΔ)",
+            hcp ? "hcp" : "cubic", radii[k], r.D_wall / S, r.D_wall_mean / S, r.D / S);
       meas_cavity_free(&r);
     }
   struct meas_cavity a = wall_case(4.6, 0, 0), b = wall_case(4.6, 0, 11);
   CHECK(fabs(b.L - a.L) <= 1e-12, "the strays leave L as it is (%.3fΔ)", b.L / S);
-  CHECK(a.D_mean - b.D_mean > 0.5 * S, "eleven strays narrow D_mean by more than Δ/2: %.3fΔ → %.3fΔ",
-        a.D_mean / S, b.D_mean / S);
+  CHECK(a.D_mean - b.D_mean > 0.5 * S,
+        "eleven strays narrow D_mean by more than Δ/2: %.3fΔ → %.3fΔ", a.D_mean / S, b.D_mean / S);
   CHECK(fabs(a.D_wall_mean - b.D_wall_mean) < 0.1 * S && fabs(a.D_wall - b.D_wall) < 0.1 * S,
         "… and the wall by filled volume by less than Δ/10: D_wall_mean %.3fΔ → %.3fΔ, "
-        "D_wall %.3fΔ → %.3fΔ", a.D_wall_mean / S, b.D_wall_mean / S, a.D_wall / S, b.D_wall / S);
+        "D_wall %.3fΔ → %.3fΔ",
+        a.D_wall_mean / S, b.D_wall_mean / S, a.D_wall / S, b.D_wall / S);
   meas_cavity_free(&b);
   /* a fragment flung 10 km out (in the slabs' depth) leaves the wall as it is (without
      the cap on the annuli it asked for 2·10⁸ bins and the measurement failed) */
@@ -513,7 +525,8 @@ static void test_cavity_wall(void)
     b = measure_block(&q);
     CHECK(b.L == a.L && b.D == a.D && b.nslice == a.nslice,
           "a fragment on the axis at x = %g m: L %.3fΔ → %.3fΔ, D %.3fΔ → %.3fΔ, %zu → %zu "
-          "slices", far[k], a.L / S, b.L / S, a.D / S, b.D / S, a.nslice, b.nslice);
+          "slices",
+          far[k], a.L / S, b.L / S, a.D / S, b.D / S, a.nslice, b.nslice);
     meas_cavity_free(&b);
     particles_free(&q);
   }
@@ -534,8 +547,8 @@ static void test_cavity_wall(void)
     hv_error_clear(&err);
     CHECK(measure_cavity(&p, &g, &par, &a, &err) == -1 && err.code == HV_EXIT_INPUT &&
               strstr(err.msg, "wall"),
-          "wall_slab %gΔ, wall_dr %gΔ, wall_fill %g: refused (%s)", bad[k][0], bad[k][1],
-          bad[k][2], err.msg);
+          "wall_slab %gΔ, wall_dr %gΔ, wall_fill %g: refused (%s)", bad[k][0], bad[k][1], bad[k][2],
+          err.msg);
   }
   particles_free(&p);
 }
@@ -610,14 +623,16 @@ static void test_cavity_two_bodies(void)
     Dw[k] = csv_value(path, "cavity_diameter_wall", "block");
     perf[k] = csv_value(path, "perforated", "block");
   }
-  const double dc = 0.5e-3;  /* the core's spacing */
+  const double dc = 0.5e-3; /* the core's spacing */
   CHECK(fabs(L[0] - 8e-3) <= dc, "two bodies: L = %.3f mm, 8 mm within the core's 0.5 mm",
         1e3 * L[0]);
   CHECK(fabs(D[0] - 6e-3) <= dc, "two bodies: D = %.3f mm, 6 mm within 0.5 mm", 1e3 * D[0]);
   CHECK(fabs(Dw[0] - 6e-3) <= 0.5 * dc, "two bodies: D_wall = %.3f mm, 6 mm within 0.25 mm",
         1e3 * Dw[0]);
-  CHECK(L[1] > 19e-3 && perf[1] == 1.0, "the outer block alone sees the core's channel as a "
-        "perforation: L = %.2f mm", 1e3 * L[1]);
+  CHECK(L[1] > 19e-3 && perf[1] == 1.0,
+        "the outer block alone sees the core's channel as a "
+        "perforation: L = %.2f mm",
+        1e3 * L[1]);
 }
 
 /* measure.cavity_min_count through a case file: the block of test_cavity_two_bodies
@@ -647,8 +662,7 @@ static void test_cavity_min_count_case(void)
   const char *meas[] = {"thick_target: [block, stray]",
                         "thick_target: [block, stray], cavity_min_count: 2",
                         "thick_target: [block, stray], cavity_min_count: 0",
-                        "thick_target: [block, stray], cavity_min_count: 9",
-                        "cavity_min_count: 2"};
+                        "thick_target: [block, stray], cavity_min_count: 9", "cavity_min_count: 2"};
   char text[2048], path[4400];
   double L[2] = {NAN, NAN};
   for (int k = 0; k < 5; k++) {
@@ -658,10 +672,14 @@ static void test_cavity_min_count_case(void)
     L[k] = csv_value(path, "penetration_depth", "block");
   }
   const double d = 0.5e-3;
-  CHECK(fabs(L[0] - 4e-3) <= d, "a stray on the axis 4 mm down closes the cavity there by "
-        "default: L = %.3f mm, 4 mm within 0.5 mm", 1e3 * L[0]);
-  CHECK(fabs(L[1] - 8e-3) <= d, "cavity_min_count: 2 passes over it: L = %.3f mm, 8 mm within "
-        "0.5 mm", 1e3 * L[1]);
+  CHECK(fabs(L[0] - 4e-3) <= d,
+        "a stray on the axis 4 mm down closes the cavity there by "
+        "default: L = %.3f mm, 4 mm within 0.5 mm",
+        1e3 * L[0]);
+  CHECK(fabs(L[1] - 8e-3) <= d,
+        "cavity_min_count: 2 passes over it: L = %.3f mm, 8 mm within "
+        "0.5 mm",
+        1e3 * L[1]);
 }
 
 /* A plate (or backwall) of two bodies through a case file, variant k of a family: `ring`,
@@ -671,15 +689,16 @@ static void test_cavity_min_count_case(void)
  * through a 1 mm plate, a crater 1 mm deep in a thicker one); run to t = 0 with
  * measure: {meas}. refuse/key as run_variant; returns 1 when it ran (csv: its
  * measurements.csv). */
-static int ring_disc_variant(const char *stem, int k, int refuse, const char *key,
-                             const char *meas, const char *mat, double t, double yd, double r,
-                             char *csv, size_t ncsv)
+static int ring_disc_variant(const char *stem, int k, int refuse, const char *key, const char *meas,
+                             const char *mat, double t, double yd, double r, char *csv, size_t ncsv)
 {
   static const char *const cut =
       "{type: cylinder, center: [0.5 mm, 0, 0], axis: [1, 0, 0], radius: 3 mm, length: 1 mm}";
   char text[2048], disc[256];
-  snprintf(disc, sizeof disc, "{type: cylinder, center: [%g mm, %g mm, 0], axis: [1, 0, 0], "
-           "radius: %g mm, length: %g mm}", 0.5 * t, yd, r, t);
+  snprintf(disc, sizeof disc,
+           "{type: cylinder, center: [%g mm, %g mm, 0], axis: [1, 0, 0], "
+           "radius: %g mm, length: %g mm}",
+           0.5 * t, yd, r, t);
   snprintf(text, sizeof text,
            "name: two-body-plate\n"
            "domain: {min: [-5 mm, -20 mm, 0], max: [5 mm, 20 mm, 20 mm], half_model: true}\n"
@@ -713,26 +732,30 @@ static void test_plate_two_bodies(void)
   const char *plates[] = {"[[ring, disc]]", "[ring]", "[[]]", "[[ring, ring]]", "[[ring, discs]]"};
   for (int k = 0; k < 5; k++) {
     snprintf(what, sizeof what, "plates: %s", plates[k]);
-    if (!ring_disc_variant("two_body_plate", k, k >= 2, "measure.plates[0]", what,
-                           "steel-bumper", 1.0, 6.0, 4.0, path, sizeof path))
+    if (!ring_disc_variant("two_body_plate", k, k >= 2, "measure.plates[0]", what, "steel-bumper",
+                           1.0, 6.0, 4.0, path, sizeof path))
       continue;
     const double perf = csv_value(path, "perforated", "ring");
     const double open = csv_value(path, "hole_open", "ring");
     const double d = csv_value(path, "hole_diameter", "ring");
     const double de = csv_value(path, "hole_diameter_equiv", "ring");
     if (k == 0) {
-      const double dc = 1e-3;  /* the ring's spacing: half the rim is the ring's */
-      CHECK(perf == 1.0 && open == 0.0, "ring + disc: perforated (%g), the hole closed (%g)",
-            perf, open);
+      const double dc = 1e-3; /* the ring's spacing: half the rim is the ring's */
+      CHECK(perf == 1.0 && open == 0.0, "ring + disc: perforated (%g), the hole closed (%g)", perf,
+            open);
       CHECK(fabs(d - 6e-3) <= dc, "ring + disc: hole %.3f mm, 6 mm within the ring's 1 mm",
             1e3 * d);
-      CHECK(fabs(de - 6e-3) <= dc, "ring + disc: equivalent-area diameter %.3f mm, 6 mm within "
-            "1 mm", 1e3 * de);
+      CHECK(fabs(de - 6e-3) <= dc,
+            "ring + disc: equivalent-area diameter %.3f mm, 6 mm within "
+            "1 mm",
+            1e3 * de);
     } else {
       /* the hole and the disc's place are one opening: 3 mm + 4 mm from the axis at y = 6 mm
          (14 mm long); the largest circle is the disc's 8 mm */
-      CHECK(perf == 1.0 && fabs(d - 8e-3) <= 1e-3, "the ring alone: the disc's place is part "
-            "of its hole, largest circle %.2f mm (8 mm within its 1 mm spacing)", 1e3 * d);
+      CHECK(perf == 1.0 && fabs(d - 8e-3) <= 1e-3,
+            "the ring alone: the disc's place is part "
+            "of its hole, largest circle %.2f mm (8 mm within its 1 mm spacing)",
+            1e3 * d);
     }
   }
 }
@@ -751,8 +774,8 @@ static void test_backwall_two_bodies(void)
   const char *walls[] = {"[ring, disc]", "ring", "[]", "[ring, ring]", "[ring, discs]"};
   for (int k = 0; k < 5; k++) {
     snprintf(what, sizeof what, "backwall: %s", walls[k]);
-    if (!ring_disc_variant("two_body_backwall", k, k >= 2, "measure.backwall", what,
-                           "al-alloy", 2.0, 0.0, 8.0, path, sizeof path))
+    if (!ring_disc_variant("two_body_backwall", k, k >= 2, "measure.backwall", what, "al-alloy",
+                           2.0, 0.0, 8.0, path, sizeof path))
       continue;
     const double depth = csv_value(path, "crater_depth", "ring");
     const double rc = csv_value(path, "crater_radius", "ring");
@@ -760,7 +783,7 @@ static void test_backwall_two_bodies(void)
     const double perf = csv_value(path, "perforated", "ring");
     const double hd = csv_value(path, "hole_diameter", "ring");
     if (k == 0) {
-      const double dc = 0.25e-3;  /* the disc's spacing */
+      const double dc = 0.25e-3; /* the disc's spacing */
       CHECK(fabs(depth - 1e-3) <= 1e-9, "ring + disc: crater depth %.4f mm, 1 mm exactly",
             1e3 * depth);
       CHECK(fabs(rc - 3e-3) <= 2 * dc, "ring + disc: crater radius %.3f mm, 3 mm within 0.5 mm",
@@ -770,7 +793,8 @@ static void test_backwall_two_bodies(void)
       CHECK(perf == 0.0, "ring + disc: not perforated (%g)", perf);
       CHECK(hd == 0.0, "ring + disc: hole diameter 0 (%g)", hd);
     } else {
-      CHECK(perf == 1.0 && fabs(hd - 16e-3) <= 1e-3, "the ring alone: the disc's place is a "
+      CHECK(perf == 1.0 && fabs(hd - 16e-3) <= 1e-3,
+            "the ring alone: the disc's place is a "
             "hole through it (%g), largest circle %.2f mm (16 mm within its 1 mm spacing)",
             perf, 1e3 * hd);
     }
@@ -800,8 +824,8 @@ static void test_backwall_moved(void)
       "measure: {backwall: wall%s}\n";
   char text[1024], path[4400];
   snprintf(text, sizeof text, fmt, "");
-  if (!run_variant(text, "moved_backwall", 0, 0, "measure.backwall", "a backwall moved 5 mm",
-                   path, sizeof path))
+  if (!run_variant(text, "moved_backwall", 0, 0, "measure.backwall", "a backwall moved 5 mm", path,
+                   sizeof path))
     return;
   const double perf = csv_value(path, "perforated", "wall");
   const double depth = csv_value(path, "crater_depth", "wall");
@@ -812,12 +836,16 @@ static void test_backwall_moved(void)
   CHECK(fabs(depth) <= 1e-6, "... and it has no crater: depth %.4f mm from the far wall",
         1e3 * depth);
   snprintf(text, sizeof text, fmt, ", crater_reference: original-face");
-  if (!run_variant(text, "moved_backwall", 1, 0, "measure.backwall", "the moved backwall from its "
-                   "original face", path, sizeof path))
+  if (!run_variant(text, "moved_backwall", 1, 0, "measure.backwall",
+                   "the moved backwall from its "
+                   "original face",
+                   path, sizeof path))
     return;
   const double depth0 = csv_value(path, "crater_depth", "wall");
-  CHECK(fabs(depth0 - 5e-3) <= 0.25e-3, "... its depth from the original face %.3f mm (5 mm "
-        "within half its 0.5 mm spacing)", 1e3 * depth0);
+  CHECK(fabs(depth0 - 5e-3) <= 0.25e-3,
+        "... its depth from the original face %.3f mm (5 mm "
+        "within half its 0.5 mm spacing)",
+        1e3 * depth0);
   CHECK(csv_value(path, "wall_shift", "wall") == 0.0, "... and no wall_shift then");
   snprintf(text, sizeof text, fmt, ", crater_reference: far");
   run_variant(text, "moved_backwall", 2, 1, "measure.crater_reference",

@@ -36,7 +36,7 @@
 #include "testlib.h"
 #include "testparticles.h"
 
-static const double S = 1e-3;  /* [m] lattice spacing Δ */
+static const double S = 1e-3; /* [m] lattice spacing Δ */
 static const double DEG = HV_MEAS_PI / 180.0;
 
 static size_t add_particle(struct particles *p, double x, double y, double z, double m, int body)
@@ -49,7 +49,7 @@ static void test_debris(void)
   struct particles p;
   particles_init(&p);
   const double x0 = 0.02, th = 2 * S, yc = 0.005, xr = x0 + th;
-  for (int k = 0; k < 100; k++) {  /* spread over azimuths in z >= 0, at 10 to 40 mm */
+  for (int k = 0; k < 100; k++) { /* spread over azimuths in z >= 0, at 10 to 40 mm */
     const double th_k = 0.4 * (k + 1) * DEG, phi = HV_MEAS_PI * (k % 10) / 9.0;
     const double d = 0.01 + 0.0003 * ((k * 37) % 100);
     const size_t i = add_particle(&p, xr + d * cos(th_k), yc + d * sin(th_k) * cos(phi),
@@ -65,11 +65,11 @@ static void test_debris(void)
   p.v[0][i] = 9000.0;
   i = add_particle(&p, x0 - 0.01, yc, 0.0, 1.0, 1);
   p.v[0][i] = -9000.0;
-  struct meas_geom g = {.body = 0, .x0 = x0, .thickness = th, .yc = yc, .spacing = S,
-                        .half_model = 1};
+  struct meas_geom g = {
+      .body = 0, .x0 = x0, .thickness = th, .yc = yc, .spacing = S, .half_model = 1};
   struct meas_debris_params par;
   meas_debris_defaults(&par, &g);
-  par.x_limit = 0.3;  /* the next plate's front face */
+  par.x_limit = 0.3; /* the next plate's front face */
   struct meas_debris r;
   struct hv_error err;
   hv_error_clear(&err);
@@ -86,12 +86,13 @@ static void test_debris(void)
   CHECK(measure_debris(&p, &par, &r, &err) == 0, "runs");
   CHECK_CLOSE(r.half_angle / DEG, 20.0, 1e-9, "half of the mass within 20°");
   par.q_angle = 0.9;
-  par.body = 1;  /* the odd ones only: k = 1, 3, ..., 99 */
+  par.body = 1; /* the odd ones only: k = 1, 3, ..., 99 */
   CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == 50, "one body's cloud: 50");
   CHECK_CLOSE(r.v_mean, 1500.0, 1e-9, "its mean velocity");
   par.body = -1;
   par.x_limit = INFINITY;
-  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == n_cloud + 1, "without x_limit the "
+  CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == n_cloud + 1,
+        "without x_limit the "
         "particle beyond the next plate joins");
   par.x_rear = xr + 1.0;
   CHECK(measure_debris(&p, &par, &r, &err) == 0 && r.count == 0 && isnan(r.v_mean) && r.m == 0,
@@ -121,8 +122,8 @@ static void test_debris_front(void)
     const double phi = HV_MEAS_PI * k / 5.0;
     add_particle(&p, xr + 0.002, 0.004 * cos(phi), 0.004 * sin(phi), 5.0, 1);
   }
-  struct meas_geom g = {.body = 0, .x0 = x0, .thickness = th, .yc = 0.0, .spacing = S,
-                        .half_model = 1};
+  struct meas_geom g = {
+      .body = 0, .x0 = x0, .thickness = th, .yc = 0.0, .spacing = S, .half_model = 1};
   struct meas_debris_params par;
   meas_debris_defaults(&par, &g);
   par.margin = 0.001;
@@ -133,7 +134,8 @@ static void test_debris_front(void)
   CHECK_CLOSE(r.x_lead, 0.02, 1e-15, "leading edge 20 mm behind the face");
   CHECK_CLOSE(r.half_angle / DEG, atan2(4.0, 2.0) / DEG, 1e-9,
               "90 % cone over the whole cloud takes in the rim's ring (63.4°)");
-  CHECK_CLOSE(r.half_angle_front / DEG, 27.0, 1e-9, "90 % cone over the front (x >= x_lead/2): 27°");
+  CHECK_CLOSE(r.half_angle_front / DEG, 27.0, 1e-9,
+              "90 % cone over the front (x >= x_lead/2): 27°");
   par.front_fraction = 0.0;
   CHECK(measure_debris(&p, &par, &r, &err) == 0 && fabs(r.half_angle_front - r.half_angle) < 1e-15,
         "front fraction 0: the whole cloud");
@@ -163,7 +165,7 @@ static void test_gas(void)
         p.rho[q] = (r < R ? 2.0 : 1.0 + noise) * rho0;
       }
   const double far[3] = {0.1, 0.0, 0.0};
-  add_particle(&p, far[0], far[1], far[2], 1.0, 0);  /* a dense metal particle: not gas */
+  add_particle(&p, far[0], far[1], far[2], 1.0, 0); /* a dense metal particle: not gas */
   p.rho[p.n - 1] = 2700;
   struct meas_gas_params par;
   meas_gas_defaults(&par, 3, rho0, o, S);
@@ -179,13 +181,14 @@ static void test_gas(void)
      r_axis (2Δ) of the axis — the axial front is undefined, not 0 */
   for (size_t q = 0; q + 1 < p.n; q++)
     if (hypot(p.x[1][q], p.x[2][q]) <= 3.0 * S) p.rho[q] = rho0;
-  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked > 1000 &&
-            isnan(r.x_axial) && fabs(r.r_radial - R) <= S,
-        "nothing shocked on the axis: axial front NaN (%g), radial %.3fΔ, %zu shocked",
-        r.x_axial, r.r_radial / S, r.n_shocked);
+  CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked > 1000 && isnan(r.x_axial) &&
+            fabs(r.r_radial - R) <= S,
+        "nothing shocked on the axis: axial front NaN (%g), radial %.3fΔ, %zu shocked", r.x_axial,
+        r.r_radial / S, r.n_shocked);
   par.factor = 2.5;
   CHECK(measure_gas_front(&p, &par, &r, &err) == 0 && r.n_shocked == 0 && r.r_max == 0 &&
-            r.x_axial == 0, "factor 2.5: nothing shocked, all 0");
+            r.x_axial == 0,
+        "factor 2.5: nothing shocked, all 0");
   par.factor = 1.1;
   par.rho_ref = 0;
   hv_error_clear(&err);
@@ -221,8 +224,8 @@ static void test_backwall(void)
   particles_init(&p);
   backwall(&p, 0.0);
   const double x0 = 0.2;
-  struct meas_geom g = {.body = 4, .x0 = x0, .thickness = 8 * S, .yc = 0.0, .spacing = S,
-                        .half_model = 1};
+  struct meas_geom g = {
+      .body = 4, .x0 = x0, .thickness = 8 * S, .yc = 0.0, .spacing = S, .half_model = 1};
   struct meas_backwall_params par;
   meas_backwall_defaults(&par, &g);
   struct meas_backwall r;
@@ -240,21 +243,24 @@ static void test_backwall(void)
         "local crater depth 4.4Δ: %.3fΔ within Δ, its surroundings at %.3fΔ, at (%.2fΔ, %.2fΔ)",
         r.crater_depth_local / S, r.crater_local_ref / S, r.crater_local_pos[0] / S,
         r.crater_local_pos[1] / S);
-  CHECK(r.r_crater > 20 * S && r.r_crater < 23.2 * S, "cratered area reaches the second crater "
-        "(r_crater %.2fΔ)", r.r_crater / S);
+  CHECK(r.r_crater > 20 * S && r.r_crater < 23.2 * S,
+        "cratered area reaches the second crater "
+        "(r_crater %.2fΔ)",
+        r.r_crater / S);
   CHECK(fabs(r.r_damage_particles - 19 * S) <= S, "damaged particles out to 19Δ: %.3fΔ",
         r.r_damage_particles / S);
   /* the damaged area: the disc of damage to 15.5Δ; the plastic ring at 18.2..19Δ lies
      beyond an undamaged gap of 2.7Δ and is not part of it */
   CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
         "damaged area: the disc to 15.5Δ, not the separate plastic ring: r_damage %.2fΔ "
-        "(ring %.1fΔ)", r.r_damage / S, par.ring / S);
+        "(ring %.1fΔ)",
+        r.r_damage / S, par.ring / S);
   CHECK(r.n_damaged > 0 && fabs(r.m_damaged - 2e-6 * (double)r.n_damaged) < 1e-9 * r.m_damaged,
         "damaged mass mirrored: %zu particles", r.n_damaged);
   par.eps_p_min = 0.5;
-  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 &&
-            fabs(r.r_damage_particles - 15.5 * S) <= S,
-        "plastic strain below the threshold: damage radius 15.5Δ (%.3fΔ)", r.r_damage_particles / S);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && fabs(r.r_damage_particles - 15.5 * S) <= S,
+        "plastic strain below the threshold: damage radius 15.5Δ (%.3fΔ)",
+        r.r_damage_particles / S);
   CHECK(r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
         "... and the damaged area ends at 15.5Δ: r_damage %.2fΔ", r.r_damage / S);
   /* ejecta flying back out in front of the wall are not wall */
@@ -274,11 +280,11 @@ static void test_backwall(void)
       p.damage[i] = 1.0;
   }
   int rc = measure_backwall(&p, &g, &par, &r, &err);
-  CHECK(rc == 0 && r.r_damage_particles > 29 * S &&
-            r.r_damage >= 14.5 * S && r.r_damage <= 15.5 * S + par.ring,
+  CHECK(rc == 0 && r.r_damage_particles > 29 * S && r.r_damage >= 14.5 * S &&
+            r.r_damage <= 15.5 * S + par.ring,
         "scattered damage: extent %.2fΔ, damaged area still %.2fΔ", r.r_damage_particles / S,
         r.r_damage / S);
-  par.area_fraction = 0.25;   /* the scattered damage now counts as an area */
+  par.area_fraction = 0.25; /* the scattered damage now counts as an area */
   rc = measure_backwall(&p, &g, &par, &r, &err);
   CHECK(rc == 0 && r.r_damage > 29 * S,
         "... unless area_fraction is lowered below its share: %.2fΔ", r.r_damage / S);
@@ -297,8 +303,8 @@ static void test_backwall(void)
         "moved wall: wall_shift %.3fΔ (2Δ), depth from the far wall %.3fΔ (4.4Δ within Δ)",
         r.wall_shift / S, r.crater_depth / S);
   CHECK(fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_local_ref) <= 0.5 * S,
-        "... below its surroundings %.3fΔ (4.4Δ within Δ), they at %.3fΔ",
-        r.crater_depth_local / S, r.crater_local_ref / S);
+        "... below its surroundings %.3fΔ (4.4Δ within Δ), they at %.3fΔ", r.crater_depth_local / S,
+        r.crater_local_ref / S);
   /* splash joined to the moved wall (two layers 0.8Δ and 2Δ before its face, linked to
      it and to each other within the friends-of-friends link of 1.5Δ) over the whole
      ring 4Δ..8Δ: not the surface a gauge rests on, the crater still 4.4Δ below its
@@ -316,7 +322,8 @@ static void test_backwall(void)
     CHECK(p.n > n0 + 50 && measure_backwall(&p, &g, &par, &r, &err) == 0 &&
               fabs(r.crater_depth_local - 4.4 * S) <= S && fabs(r.crater_depth - 4.4 * S) <= S,
           "splash over the ring (%zu particles): below its surroundings %.3fΔ (4.4Δ within Δ), "
-          "from the far wall %.3fΔ", p.n - n0, r.crater_depth_local / S, r.crater_depth / S);
+          "from the far wall %.3fΔ",
+          p.n - n0, r.crater_depth_local / S, r.crater_depth / S);
     p.n = n0;
     measure_backwall(&p, &g, &par, &r, &err);
   }
@@ -372,8 +379,8 @@ static void test_backwall(void)
       }
   meas_backwall_defaults(&par, &g);
   rc = measure_backwall(&p, &g, &par, &r, &err);
-  CHECK(rc == 0 && r.r_damage >= 4 * S - 1e-12 &&
-            r.r_damage <= 5 * S + par.ring && r.crater_depth < 1e-12,
+  CHECK(rc == 0 && r.r_damage >= 4 * S - 1e-12 && r.r_damage <= 5 * S + par.ring &&
+            r.crater_depth < 1e-12,
         "perforated wall: the hole is the damaged area (%.2fΔ for radius 5Δ)", r.r_damage / S);
   /* spall behind the hole: a detached cluster of 3 x 3 x 2 particles 12Δ behind the face
      on the axis is not wall (attached_only, the default): the hole stays a hole, no
@@ -385,8 +392,8 @@ static void test_backwall(void)
   rc = measure_backwall(&p, &g, &par, &r, &err);
   CHECK(rc == 0 && r.crater_depth < 1e-12 && r.r_damage >= 4 * S - 1e-12 &&
             r.r_damage <= 5 * S + par.ring,
-        "spall behind the hole is not wall: depth %.3gΔ, damaged area %.2fΔ",
-        r.crater_depth / S, r.r_damage / S);
+        "spall behind the hole is not wall: depth %.3gΔ, damaged area %.2fΔ", r.crater_depth / S,
+        r.r_damage / S);
   par.attached_only = 0;
   rc = measure_backwall(&p, &g, &par, &r, &err);
   CHECK(rc == 0 && fabs(r.crater_depth - 11.5 * S) < 1e-9,
@@ -402,14 +409,14 @@ static void test_backwall(void)
   particles_init(&p);
   for (int k = 0; k < 10; k++)
     for (int j = -10; j < 10; j++)
-      for (int i = 0; i < 4; i++) add_particle(&p, x0 + (i + 0.5) * S, (j + 0.5) * S, (k + 0.5) * S, 1e-6, 4);
+      for (int i = 0; i < 4; i++)
+        add_particle(&p, x0 + (i + 0.5) * S, (j + 0.5) * S, (k + 0.5) * S, 1e-6, 4);
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && r.crater_depth < 1e-12 &&
             r.r_damage == 0 && r.n_damaged == 0 && r.n_wall == p.n,
         "intact wall without solid fields: depth %.3gΔ, no damage", r.crater_depth / S);
 
   /* pressure at the centre: 1 GPa in the first layer within 2Δ, 0.5 GPa below */
-  for (size_t i = 0; i < p.n; i++)
-    p.p[i] = p.x[0][i] < x0 + S ? 1e9 : 5e8;
+  for (size_t i = 0; i < p.n; i++) p.p[i] = p.x[0][i] < x0 + S ? 1e9 : 5e8;
   size_t cnt = 0;
   double pc = measure_center_pressure(&p, &g, 2 * S, 0.6 * S, NULL, &cnt);
   CHECK_CLOSE(pc, 1e9, 1e-3, "centre pressure over the first layer");
@@ -444,7 +451,8 @@ static double gauge_pressure(const char *keys, int *rc, char *msg, size_t nmsg)
            "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [2 mm, 5 mm, 5 mm]}\n"
            "    spacing: 0.5 mm\n"
            "time: {end: 0}\n"
-           "measure: {%s}\n", keys);
+           "measure: {%s}\n",
+           keys);
   struct hv_error err;
   hv_error_clear(&err);
   struct sim s;
@@ -461,7 +469,7 @@ static double gauge_pressure(const char *keys, int *rc, char *msg, size_t nmsg)
     measure_run_step(&mr, &s);
     pc = mr.peak_pressure;
   }
-  measure_run_free(&mr);   /* a set-up that failed half way holds memory too */
+  measure_run_free(&mr); /* a set-up that failed half way holds memory too */
   sim_free(&s);
   if (c) cfg_free(c);
   return pc;
@@ -472,22 +480,30 @@ static void test_gauge(void)
   int rc;
   char msg[2048];
   double pc = gauge_pressure("backwall: wall", &rc, msg, sizeof msg);
-  CHECK(rc == 0 && fabs(pc - 1e9 / 3) < 1e-6 * 1e9, "default 2Δ disc and depth: %.6g Pa, 1/3 "
-        "GPa (%s)", pc, rc ? msg : "ok");
+  CHECK(rc == 0 && fabs(pc - 1e9 / 3) < 1e-6 * 1e9,
+        "default 2Δ disc and depth: %.6g Pa, 1/3 "
+        "GPa (%s)",
+        pc, rc ? msg : "ok");
   pc = gauge_pressure("backwall: wall, pressure_depth: 0.3 mm", &rc, msg, sizeof msg);
-  CHECK(rc == 0 && fabs(pc - 1e9) < 1e-6 * 1e9, "pressure_depth 0.3 mm: the first layer, "
-        "%.6g Pa (1 GPa)", pc);
-  pc = gauge_pressure("backwall: wall, pressure_depth: 0.3 mm, pressure_radius: 4 mm", &rc,
-                      msg, sizeof msg);
-  CHECK(rc == 0 && fabs(pc / 1e9 - 0.16) < 0.25 * 0.16, "pressure_radius 4 mm: %.4g GPa, the "
-        "area share (1.6/4)^2 = 0.16 within 25 %%", pc / 1e9);
+  CHECK(rc == 0 && fabs(pc - 1e9) < 1e-6 * 1e9,
+        "pressure_depth 0.3 mm: the first layer, "
+        "%.6g Pa (1 GPa)",
+        pc);
+  pc = gauge_pressure("backwall: wall, pressure_depth: 0.3 mm, pressure_radius: 4 mm", &rc, msg,
+                      sizeof msg);
+  CHECK(rc == 0 && fabs(pc / 1e9 - 0.16) < 0.25 * 0.16,
+        "pressure_radius 4 mm: %.4g GPa, the "
+        "area share (1.6/4)^2 = 0.16 within 25 %%",
+        pc / 1e9);
   (void)gauge_pressure("pressure_radius: 4 mm", &rc, msg, sizeof msg);
   CHECK(rc == HV_EXIT_INPUT && strstr(msg, "gauge.yaml") && strstr(msg, "pressure_radius") &&
             strstr(msg, "no measure.backwall"),
         "no backwall: refused, exit 2 (%d): %s", rc, msg);
   (void)gauge_pressure("backwall: wall, pressure_depth: -1 mm", &rc, msg, sizeof msg);
-  CHECK(rc == HV_EXIT_INPUT && strstr(msg, "pressure_depth"), "a negative depth: refused (%d): "
-        "%s", rc, msg);
+  CHECK(rc == HV_EXIT_INPUT && strstr(msg, "pressure_depth"),
+        "a negative depth: refused (%d): "
+        "%s",
+        rc, msg);
 }
 
 int main(void)

@@ -35,7 +35,7 @@ static void test_rows_and_text(void)
   meas_table_init(&t);
   meas_table_add(&t, 0.0, "perforated", 0, "", "bumper");
   meas_table_add(&t, 1e-5, "hole_diameter", 0.011, "m", "bumper");
-  meas_table_add(&t, 1e-5, "hole_diameter", 0.0105, "m", "bumper");  /* replaces */
+  meas_table_add(&t, 1e-5, "hole_diameter", 0.0105, "m", "bumper"); /* replaces */
   meas_table_add(&t, 1e-5, "hole_diameter", 0.007, "m", "bumper 2");
   meas_table_add(&t, 2e-5, "cloud_velocity_mean", NAN, "m/s", "cloud, \"behind\" bumper");
   meas_table_add(&t, 2e-5, "note", 1, NULL, NULL);
@@ -64,12 +64,14 @@ static void test_rows_and_text(void)
   int same = meas_table_read(&back, path, &err) == 0 && back.n == t.n;
   for (size_t k = 0; same && k < t.n; k++) {
     const struct meas_row *a = &t.rows[k], *b = &back.rows[k];
-    same = a->time == b->time && !strcmp(a->quantity, b->quantity) &&
-           !strcmp(a->unit, b->unit) && !strcmp(a->object, b->object) &&
+    same = a->time == b->time && !strcmp(a->quantity, b->quantity) && !strcmp(a->unit, b->unit) &&
+           !strcmp(a->object, b->object) &&
            (a->value == b->value || (isnan(a->value) && isnan(b->value)));
   }
-  CHECK(same, "meas_table_read gives back the %zu rows written (object with a comma and "
-        "quotes: '%s')", back.n, back.n > 3 ? back.rows[3].object : "");
+  CHECK(same,
+        "meas_table_read gives back the %zu rows written (object with a comma and "
+        "quotes: '%s')",
+        back.n, back.n > 3 ? back.rows[3].object : "");
   meas_table_free(&back);
 
   /* a line break inside a quoted field (written as RFC 4180 asks) reads back too */
@@ -90,7 +92,8 @@ static void test_rows_and_text(void)
   meas_table_free(&nl);
 
   CHECK(meas_table_read(&back, "/nonexistent/measurements.csv", &err) == -1 &&
-            err.code == HV_EXIT_INPUT, "a missing file: an error");
+            err.code == HV_EXIT_INPUT,
+        "a missing file: an error");
 
   /* a failed write (folder missing) reports the file and leaves nothing behind */
   char bad[4300];
@@ -112,8 +115,13 @@ static void test_measurement_rows(void)
   meas_table_init(&t);
   struct meas_cavity cav = {.L = 0.08, .D = 0.0125, .D_mean = 0.012};
   struct meas_plate pl = {.perforated = 1, .d_circle = 0.0105, .d_equiv = 0.011, .area = 9e-5};
-  struct meas_debris db = {.count = 10, .m = 1e-3, .v_mean = 3000, .v_lead = 6000,
-                           .v_max = 6500, .x_lead = 0.05, .half_angle = HV_MEAS_PI / 6,
+  struct meas_debris db = {.count = 10,
+                           .m = 1e-3,
+                           .v_mean = 3000,
+                           .v_lead = 6000,
+                           .v_max = 6500,
+                           .x_lead = 0.05,
+                           .half_angle = HV_MEAS_PI / 6,
                            .half_angle_front = HV_MEAS_PI / 12,
                            .gap = 0.2};
   struct meas_backwall bw = {.crater_depth = 0.004, .r_damage = 0.15};
@@ -122,7 +130,7 @@ static void test_measurement_rows(void)
                                {.m = 0.2, .count = 3, .multiplicity = 2},
                                {.m = 0.01, .count = 1, .multiplicity = 2}};
   struct fof_result fo = {.nfrag = 3, .frag = fr, .n_full = 5, .m_total = 0.5 + 0.4 + 0.02};
-  for (int rep = 0; rep < 2; rep++) {  /* the second round replaces, at the same time */
+  for (int rep = 0; rep < 2; rep++) { /* the second round replaces, at the same time */
     meas_table_add_cavity(&t, 1e-4, "target", &cav);
     meas_table_add_plate(&t, 1e-4, "bumper", &pl);
     meas_table_add_debris(&t, 1e-4, "cloud1", &db);
@@ -144,7 +152,8 @@ static void test_measurement_rows(void)
     if (strcmp(r->quantity, "cloud_half_angle") == 0)
       CHECK(fabs(r->value - 30.0) < 1e-12 && strcmp(r->unit, "deg") == 0, "angle in degrees");
     if (strcmp(r->quantity, "cloud_half_angle_front") == 0)
-      CHECK(fabs(r->value - 15.0) < 1e-12 && strcmp(r->unit, "deg") == 0, "front's angle in degrees");
+      CHECK(fabs(r->value - 15.0) < 1e-12 && strcmp(r->unit, "deg") == 0,
+            "front's angle in degrees");
     if (strcmp(r->quantity, "fragment_mass_largest") == 0)
       CHECK(r->value == 0.5, "largest fragment 0.5 kg");
     if (strcmp(r->quantity, "fragment_mass_second") == 0)

@@ -82,11 +82,14 @@ static void compare(const char *what, struct particles *p)
       bad++;
     }
   }
-  CHECK(bad == 0, "%s: %zu particles, %ld neighbour pairs (h %g..%g, %zu cells): every count "
+  CHECK(bad == 0,
+        "%s: %zu particles, %ld neighbour pairs (h %g..%g, %zu cells): every count "
         "equals the brute force (%zu differ; first: particle %zu, %d expected, %d found)",
         what, p->n, pairs, hmin, hmax, g.ncells, bad, first_bad, want_bad, got_bad);
-  CHECK(pairs > 5 * (long)p->n, "%s: the set is dense enough to mean something (%.1f "
-        "neighbours per particle)", what, (double)pairs / (double)p->n);
+  CHECK(pairs > 5 * (long)p->n,
+        "%s: the set is dense enough to mean something (%.1f "
+        "neighbours per particle)",
+        what, (double)pairs / (double)p->n);
   nbr_grid_free(&g);
 }
 
@@ -96,7 +99,7 @@ int main(void)
 
   /* 1. three clusters, h 1 : 3 : 8, with gaps, overlapping at their edges */
   particles_init(&p);
-  for (int k = 0; k < 1500; k++)   /* fine: a ball of radius 1 at the origin */
+  for (int k = 0; k < 1500; k++) /* fine: a ball of radius 1 at the origin */
     for (;;) {
       const double x = 2 * uniform() - 1, y = 2 * uniform() - 1, z = 2 * uniform() - 1;
       if (x * x + y * y + z * z < 1) {
@@ -104,11 +107,11 @@ int main(void)
         break;
       }
     }
-  for (int k = 0; k < 1500; k++)   /* medium: a slab 0.8 < x < 1.6, overlapping the ball */
+  for (int k = 0; k < 1500; k++) /* medium: a slab 0.8 < x < 1.6, overlapping the ball */
     add(&p, 0.8 + 0.8 * uniform(), 6 * uniform() - 3, 6 * uniform() - 3, 0.3);
-  for (int k = 0; k < 600; k++)    /* coarse: a thin sheet far away, one layer of h 0.8 */
+  for (int k = 0; k < 600; k++) /* coarse: a thin sheet far away, one layer of h 0.8 */
     add(&p, 12.0 + 0.2 * uniform(), 20 * uniform() - 10, 20 * uniform() - 10, 0.8);
-  for (int k = 0; k < 300; k++)    /* coarse particles drifting into the fine ball */
+  for (int k = 0; k < 300; k++) /* coarse particles drifting into the fine ball */
     add(&p, 1.6 * uniform() - 0.8, 1.6 * uniform() - 0.8, 1.6 * uniform() - 0.8, 0.8);
   compare("three populations", &p);
   particles_free(&p);

@@ -21,7 +21,7 @@ static int fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
   last_error = e;
   last_arg = arg;
   nfail++;
-  return 7;   /* an exit status the parser hands back as it is */
+  return 7; /* an exit status the parser hands back as it is */
 }
 
 static void help(FILE *f)
@@ -72,10 +72,14 @@ static int parse(const char *args, struct got *g, int eq_strict, int lone_dash)
       {"--material", NULL, CLI_REFUSED, .dest = NULL},
       {"--help", "-h", CLI_HELP, .dest = NULL},
   };
-  const struct cli_cmd cmd = {.name = "test", .opts = opts,
+  const struct cli_cmd cmd = {.name = "test",
+                              .opts = opts,
                               .nopts = (int)(sizeof opts / sizeof opts[0]),
-                              .positional = &g->pos, .eq_strict = eq_strict,
-                              .lone_dash = lone_dash, .fail = fail, .help = help};
+                              .positional = &g->pos,
+                              .eq_strict = eq_strict,
+                              .lone_dash = lone_dash,
+                              .fail = fail,
+                              .help = help};
   nfail = nhelp = 0;
   last_arg = NULL;
   return cli_parse(&cmd, argc, argv);
@@ -86,8 +90,8 @@ int main(void)
   struct got g;
   int st = parse("-q --no-mirror -o a.png --count 1e1 --set x=1 --set=y=2 CASE", &g, 0, 0);
   CHECK(st == CLI_GO_ON && nfail == 0, "a good command line goes on (status %d)", st);
-  CHECK(g.quiet == 1 && g.mirror == 0, "flags store their value: quiet %d, mirror %d",
-        g.quiet, g.mirror);
+  CHECK(g.quiet == 1 && g.mirror == 0, "flags store their value: quiet %d, mirror %d", g.quiet,
+        g.mirror);
   CHECK(g.out && !strcmp(g.out, "a.png"), "-o's value stored");
   CHECK(g.n == 10, "--count converted (1e1 = 10), got %ld", g.n);
   CHECK(g.sets.n == 2 && !strcmp(g.setv[0], "x=1") && !strcmp(g.setv[1], "y=2"),
@@ -102,7 +106,8 @@ int main(void)
   /* mistakes: the kind, the argument named, the status of fail, the rest not parsed */
   st = parse("--bogus -q", &g, 0, 0);
   CHECK(st == 7 && nfail == 1 && last_error == CLI_UNKNOWN && !strcmp(last_arg, "--bogus") &&
-        !g.quiet, "an unknown option stops the parse there");
+            !g.quiet,
+        "an unknown option stops the parse there");
   st = parse("A B", &g, 0, 0);
   CHECK(st == 7 && last_error == CLI_EXTRA && !strcmp(last_arg, "B"), "a second positional");
   st = parse("-o", &g, 0, 0);
@@ -115,8 +120,7 @@ int main(void)
   st = parse("--only -q", &g, 0, 0);
   CHECK(st == 7 && last_error == CLI_NO_VALUE, "--only without a word");
   st = parse("--material x", &g, 0, 0);
-  CHECK(st == 7 && last_error == CLI_REFUSE && !strcmp(last_arg, "--material"),
-        "a refused option");
+  CHECK(st == 7 && last_error == CLI_REFUSE && !strcmp(last_arg, "--material"), "a refused option");
   st = parse("--count=3 CASE", &g, 0, 0);
   CHECK(st == 7 && last_error == CLI_UNKNOWN && !strcmp(last_arg, "--count=3"),
         "'=' only for the options that take it (not strict: the whole argument is unknown)");

@@ -38,11 +38,10 @@ static void test_table(void)
           "EOS row %d is complete", k);
     if (!e || !e->name) continue;
     for (int j = 0; j < k; j++)
-      CHECK(strcmp(e->name, eos_models[j]->name), "EOS rows %d and %d share the name '%s'", j,
-            k, e->name);
+      CHECK(strcmp(e->name, eos_models[j]->name), "EOS rows %d and %d share the name '%s'", j, k,
+            e->name);
     for (const struct material_typical *t = e->typical; t && t->key; t++)
-      CHECK(t->lo > 0.0 && t->hi > t->lo && t->what, "EOS '%s': the span of '%s'", e->name,
-            t->key);
+      CHECK(t->lo > 0.0 && t->hi > t->lo && t->what, "EOS '%s': the span of '%s'", e->name, t->key);
   }
   CHECK(eos_models[EOS_IDEAL_GAS]->typical == NULL, "ideal-gas is the gas (no condensed spans)");
   for (int k = 0; k < YIELD_KIND_COUNT; k++) {
@@ -51,14 +50,15 @@ static void test_table(void)
           "yield row %d is complete", k);
     if (!y || !y->name) continue;
     for (int j = 0; j < k; j++)
-      CHECK(strcmp(y->name, yield_models[j]->name), "yield rows %d and %d share the name '%s'",
-            j, k, y->name);
+      CHECK(strcmp(y->name, yield_models[j]->name), "yield rows %d and %d share the name '%s'", j,
+            k, y->name);
   }
 }
 
 int main(void)
 {
-  CHECK(!config_included, "a physics header includes config/config.h (directly or through "
+  CHECK(!config_included,
+        "a physics header includes config/config.h (directly or through "
         "another header): move the reading function to a *_read.h included by .c files");
   test_table();
   return test_finish();

@@ -16,8 +16,8 @@ static void iso(double s, double G[9])
 
 int main(void)
 {
-  const double d = 1e-3, edot = -1e4;   /* spacing [m], compressive slope [1/s] */
-  const double g = edot * d * d;        /* r·G r of a unit slope pair */
+  const double d = 1e-3, edot = -1e4; /* spacing [m], compressive slope [1/s] */
+  const double g = edot * d * d;      /* r·G r of a unit slope pair */
   double Gi[9], Gj[9];
 
   /* a linear field: both slopes equal, the pair's approach speed is exactly g */

@@ -21,13 +21,13 @@
 #include "testlib.h"
 #include "testparticles.h"
 
-#define PI 3.14159265358979323846
+#define PI        3.14159265358979323846
 #define RHO_STEEL 7850.0
 
 /* ---- particle sets ------------------------------------------------------ */
 
-static void put(struct particles *p, double x, double y, double z, double m, double h,
-                double rho, int mat, double vx)
+static void put(struct particles *p, double x, double y, double z, double m, double h, double rho,
+                int mat, double vx)
 {
   const size_t i = tp_add(p, x, y, z, m, h, rho, 0);
   p->v[0][i] = vx;
@@ -59,7 +59,8 @@ static void add_plate(struct particles *p, double x0, double t, double W, double
   for (int k = 0; k < ny; k++)
     for (int j = 0; j < ny; j++)
       for (int i = 0; i < nx; i++) {
-        double x = x0 + (i + 0.5) * dx, y = -0.5 * W + (j + 0.5) * dx, z = -0.5 * W + (k + 0.5) * dx;
+        double x = x0 + (i + 0.5) * dx, y = -0.5 * W + (j + 0.5) * dx,
+               z = -0.5 * W + (k + 0.5) * dx;
         if (z < zlo || y * y + z * z < rh * rh) continue;
         put(p, x, y, z, rho * dx * dx * dx, 1.2 * dx, rho, mat, 0.0);
       }
@@ -96,7 +97,8 @@ static struct sig areal(const struct particles *p, const struct render_options *
     s.peak = fmax(s.peak, sigma[k]);
   }
   int i = (int)floor((u - v0.u0) / v0.pix), j = (int)floor((v0.v1 - v) / v0.pix);
-  if (i >= 0 && j >= 0 && i < v0.nu && j < v0.nv) s.at = sigma[(size_t)j * (size_t)v0.nu + (size_t)i];
+  if (i >= 0 && j >= 0 && i < v0.nu && j < v0.nv)
+    s.at = sigma[(size_t)j * (size_t)v0.nu + (size_t)i];
   free(sigma);
   if (view_out) *view_out = v0;
   return s;
@@ -207,12 +209,14 @@ static void test_sphere(void)
   double Mh = total_mass(&half);
   s = areal(&half, &o, 0, 0, &v);
   CHECK(v.mirror == 1, "a half model (z >= 0) is mirrored by default");
-  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01, "half sphere along z, mirrored: mass / twice the particle mass");
+  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01,
+              "half sphere along z, mirrored: mass / twice the particle mass");
   CHECK_CLOSE(s.at / peak, 1.0, 0.05, "half sphere along z, mirrored: centre / 2R rho");
   o.axis = 1;
   s = areal(&half, &o, 0, 0, &v);
   CHECK(v.iu == 0 && v.iv == 2 && v.v0 < -R, "along y the picture shows x and z, both halves");
-  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01, "half sphere along y, mirrored: mass / twice the particle mass");
+  CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01,
+              "half sphere along y, mirrored: mass / twice the particle mass");
   CHECK_CLOSE(s.at / peak, 1.0, 0.05, "half sphere along y, mirrored: centre / 2R rho");
   o.axis = 2;
   o.mirror = 0;
@@ -236,7 +240,8 @@ static void test_plate(void)
   struct render_view v;
   struct sig s = areal(&p, &o, 0.0, 5e-3, &v);
   CHECK(v.mirror == 1 && v.iu == 1 && v.iv == 2, "plate along x: y right, z up, mirrored");
-  CHECK_CLOSE(s.mass / (2 * total_mass(&p)), 1.0, 0.01, "plate face on: mass / twice the particle mass");
+  CHECK_CLOSE(s.mass / (2 * total_mass(&p)), 1.0, 0.01,
+              "plate face on: mass / twice the particle mass");
   CHECK_CLOSE(s.at / (RHO_STEEL * t), 1.0, 0.01, "plate face on: areal density / rho t");
   o.have_box = 1; /* a box and a size: exactly that size, square pixels, box inside */
   double box[6] = {-1e-3, 3e-3, -8e-3, 8e-3, -8e-3, 8e-3};
@@ -265,8 +270,10 @@ static void test_extremes(void)
   struct sig s = areal(&p, &o, 0.0, 0.0, &v);
   double expect = 1.0 * 1.5 / PI / 1e12; /* m F(0) / h² [kg/m2] */
   CHECK(2.0 * p.h[0] / v.pix > 2147483647.0, "the kernel spans %g pixels", 2.0 * p.h[0] / v.pix);
-  CHECK_CLOSE(s.at / expect, 1.0, 1e-3, "kernel wider than INT_MAX pixels: sigma at the centre / m F(0)/h^2");
-  CHECK_CLOSE(s.mass / (expect * 1e-4), 1.0, 1e-3, "kernel wider than INT_MAX pixels: mass in the picture");
+  CHECK_CLOSE(s.at / expect, 1.0, 1e-3,
+              "kernel wider than INT_MAX pixels: sigma at the centre / m F(0)/h^2");
+  CHECK_CLOSE(s.mass / (expect * 1e-4), 1.0, 1e-3,
+              "kernel wider than INT_MAX pixels: mass in the picture");
 
   struct hv_error err;
   const double bad[2][6] = {{0, 5e-324, 0, 5e-324, -1, 1}, {-1e308, 1e308, -1, 1, -1, 1}};
@@ -305,7 +312,8 @@ static const char *write_scene(const char *name, int solid, int swap)
       a[q] = (double)(r >> 11) / 9007199254740992.0;
     }
     double ang = 0.6 * a[0], phi = PI * a[1], dist = 10e-3 + 22e-3 * a[2];
-    double x = 2e-3 + dist * cos(ang), y = dist * sin(ang) * cos(phi), z = dist * sin(ang) * sin(phi);
+    double x = 2e-3 + dist * cos(ang), y = dist * sin(ang) * cos(phi),
+           z = dist * sin(ang) * sin(phi);
     int n = 1 + (int)(6 * a[3]);
     for (int q = 0; q < n; q++)
       put(&p, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4), 7850 * 1.25e-10,
@@ -316,7 +324,8 @@ static const char *write_scene(const char *name, int solid, int swap)
   if (solid & 4)
     for (size_t i = 0; i < p.n; i++) p.dt[i] = p.mat[i] == 0 ? 1e-9 : 1e-7;
   if (solid & 1)
-    for (size_t i = 0; i < p.n; i++) p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
+    for (size_t i = 0; i < p.n; i++)
+      p.damage[i] = p.mat[i] == 1 ? (hypot(p.x[1][i], p.x[2][i]) < 14e-3 ? 1.0 : 0.0) : 0.1;
   for (size_t i = 0; i < p.n; i++) {
     p.body[i] = p.mat[i];
     if (swap) p.mat[i] = 1 - p.mat[i];
@@ -326,15 +335,20 @@ static const char *write_scene(const char *name, int solid, int swap)
     names[0] = "steel-bumper";
     names[1] = "steel-projectile";
   }
-  struct snapshot_meta meta = {.time = 12e-6, .step = 400, .version = "test", .case_name = "scene",
-                               .material_names = names, .nmat = 2};
+  struct snapshot_meta meta = {.time = 12e-6,
+                               .step = 400,
+                               .version = "test",
+                               .case_name = "scene",
+                               .material_names = names,
+                               .nmat = 2};
   static char path[8][4096];
   static int slot = 0;
   char *out = path[slot++ % 8];
   snprintf(out, 4096, "%s/%s", test_tmpdir(), name);
   struct hv_error err;
   hv_error_clear(&err);
-  CHECK(io_write_particles_csv(out, &p, &meta, &err) == 0, "scene written (%zu particles) %s", p.n, err.msg);
+  CHECK(io_write_particles_csv(out, &p, &meta, &err) == 0, "scene written (%zu particles) %s", p.n,
+        err.msg);
   particles_free(&p);
   return out;
 }
@@ -403,38 +417,44 @@ static void test_command(void)
   st = run(args, out, sizeof out);
   CHECK(st == 0, "radiograph along z: exit %d %s", st, out);
 
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --axis y --size 800x500", scene, dir);
+  snprintf(args, sizeof args,
+           "'%s' -o '%s/particles_mat.png' --mode particles --axis y --size 800x500", scene, dir);
   st = run(args, out, sizeof out);
   snprintf(args, sizeof args, "%s/particles_mat.png", dir);
   img = read_png(args, &w, &h);
   CHECK(st == 0 && img && w == 800 && h == 500, "particles by material: exit %d, %dx%d", st, w, h);
-  if (img) CHECK(img[0] == 255 && img[1] == 255 && img[2] == 255, "particles: background pixel is white");
+  if (img)
+    CHECK(img[0] == 255 && img[1] == 255 && img[2] == 255, "particles: background pixel is white");
 
   /* the same bodies with their materials numbered the other way round: the same picture,
    * legend included (colours follow the bodies' order, not the material index) */
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_swapped.png' --mode particles --axis y --size 800x500",
-           swapped, dir);
+  snprintf(args, sizeof args,
+           "'%s' -o '%s/particles_swapped.png' --mode particles --axis y --size 800x500", swapped,
+           dir);
   st = run(args, out, sizeof out);
   snprintf(args, sizeof args, "%s/particles_swapped.png", dir);
   int w2 = 0, h2 = 0;
   unsigned char *img2 = read_png(args, &w2, &h2);
-  CHECK(st == 0 && img2 && w2 == w && h2 == h, "particles by material, materials renumbered: exit %d, %dx%d",
-        st, w2, h2);
+  CHECK(st == 0 && img2 && w2 == w && h2 == h,
+        "particles by material, materials renumbered: exit %d, %dx%d", st, w2, h2);
   if (img && img2 && w2 == w && h2 == h) {
     long differ = 0, colored = 0;
     for (long k = 0; k < 3L * w * h; k++) differ += img[k] != img2[k];
-    for (long k = 0; k < (long)w * h; k++) colored += img[3 * k] != img[3 * k + 1] || img[3 * k] != img[3 * k + 2];
-    CHECK(differ == 0 && colored > 1000,
-          "materials renumbered: the same picture (%ld of %ld bytes differ, 0; %ld coloured pixels)", differ,
-          3L * w * h, colored);
+    for (long k = 0; k < (long)w * h; k++)
+      colored += img[3 * k] != img[3 * k + 1] || img[3 * k] != img[3 * k + 2];
+    CHECK(
+        differ == 0 && colored > 1000,
+        "materials renumbered: the same picture (%ld of %ld bytes differ, 0; %ld coloured pixels)",
+        differ, 3L * w * h, colored);
   }
   free(img2);
   free(img);
 
   const char *colors[] = {"velocity", "damage", "pressure", "density"};
   for (int k = 0; k < 4; k++) {
-    snprintf(args, sizeof args, "'%s' -o '%s/particles_%s.png' --mode particles --color %s --axis %s",
-             scene, dir, colors[k], colors[k], k % 2 ? "z" : "y");
+    snprintf(args, sizeof args,
+             "'%s' -o '%s/particles_%s.png' --mode particles --color %s --axis %s", scene, dir,
+             colors[k], colors[k], k % 2 ? "z" : "y");
     st = run(args, out, sizeof out);
     CHECK(st == 0, "particles by %s: exit %d %s", colors[k], st, out);
   }
@@ -452,8 +472,10 @@ static void test_command(void)
     hv_error_clear(&e);
     CHECK(io_write_particles_csv(bigpath, &big, &meta, &e) == 0, "big particle written %s", e.msg);
     particles_free(&big);
-    snprintf(args, sizeof args, "'%s' -o '%s/big.png' --mode particles --axis y --no-mirror "
-             "--box -5mm,5mm,-1,1,-5mm,5mm --size 400x300", bigpath, dir);
+    snprintf(args, sizeof args,
+             "'%s' -o '%s/big.png' --mode particles --axis y --no-mirror "
+             "--box -5mm,5mm,-1,1,-5mm,5mm --size 400x300",
+             bigpath, dir);
     st = run(args, out, sizeof out);
     snprintf(args, sizeof args, "%s/big.png", dir);
     img = read_png(args, &w, &h);
@@ -462,8 +484,10 @@ static void test_command(void)
       unsigned char c[3];
       render_palette(0, c);
       const unsigned char *q = img + 3 * (100 * 400 + 200);
-      CHECK(q[0] == c[0] && q[1] == c[1] && q[2] == c[2], "a huge disc covers the picture: "
-            "centre pixel %d %d %d (%d %d %d)", q[0], q[1], q[2], c[0], c[1], c[2]);
+      CHECK(q[0] == c[0] && q[1] == c[1] && q[2] == c[2],
+            "a huge disc covers the picture: "
+            "centre pixel %d %d %d (%d %d %d)",
+            q[0], q[1], q[2], c[0], c[1], c[2]);
     }
     free(img);
   }
@@ -471,12 +495,16 @@ static void test_command(void)
   /* --range with --color alpha: alpha is dimensionless like damage (the range's units
    * were looked up past the end of a table) */
   const char *avscene = write_scene("scene_av.csv", 3, 0);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
-           "--range 0,1 --axis y --size 640x400", avscene, dir);
+  snprintf(args, sizeof args,
+           "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
+           "--range 0,1 --axis y --size 640x400",
+           avscene, dir);
   st = run(args, out, sizeof out);
   CHECK(st == 0, "particles by alpha with --range 0,1: exit %d (0) %s", st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
-           "--range 0,1km/s", avscene, dir);
+  snprintf(args, sizeof args,
+           "'%s' -o '%s/particles_alpha.png' --mode particles --color alpha "
+           "--range 0,1km/s",
+           avscene, dir);
   st = run(args, out, sizeof out);
   CHECK(st == 1 && strstr(out, "--range"), "alpha --range with a unit: exit %d (1) %s", st, out);
 
@@ -486,22 +514,23 @@ static void test_command(void)
    * no disc has the top end. Counted in the plot, above the caption band. */
   const char *dtscene = write_scene("scene_dt.csv", 5, 0);
   static const struct {
-    const char *scene;        /* "dt": the scene with dt, "av": without the column */
+    const char *scene; /* "dt": the scene with dt, "av": without the column */
     const char *opts;
-    int status, top;          /* exit status; whether the top colour must be drawn */
-    const char *needle;       /* in the output, or NULL */
+    int status, top;    /* exit status; whether the top colour must be drawn */
+    const char *needle; /* in the output, or NULL */
   } dtc[] = {
       {"dt", "--axis y", 0, -1, NULL},
       {"dt", "--range 1ns,0.1us --axis y", 0, 1, NULL},
       {"dt", "--range 10ns,1us --axis y", 0, 0, NULL},
       {"dt", "--range 0,1us", 1, -1, "time steps are positive"},
       {"dt", "--range 1,2km/s", 1, -1, "--range"},
-      {"av", "", 2, -1, "no dt column"},   /* a snapshot without the column (an older hvsph's) */
+      {"av", "", 2, -1, "no dt column"}, /* a snapshot without the column (an older hvsph's) */
   };
   for (size_t k = 0; k < sizeof dtc / sizeof dtc[0]; k++) {
-    snprintf(args, sizeof args, "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
-             "--size 640x400 %s", dtc[k].scene[0] == 'd' ? dtscene : avscene, dir,
-             dtc[k].opts);
+    snprintf(args, sizeof args,
+             "'%s' -o '%s/particles_dt.png' --mode particles --color dt "
+             "--size 640x400 %s",
+             dtc[k].scene[0] == 'd' ? dtscene : avscene, dir, dtc[k].opts);
     st = run(args, out, sizeof out);
     CHECK(st == dtc[k].status && (!dtc[k].needle || strstr(out, dtc[k].needle)),
           "--color dt %s: exit %d (%d) %s", dtc[k].opts, st, dtc[k].status, out);
@@ -520,7 +549,8 @@ static void test_command(void)
       }
     CHECK(img && nlo > 200 && (dtc[k].top ? nhi > 200 : nhi == 0),
           "--color dt %s: %ld pixels of the map's low end (projectile, > 200), %ld of its top "
-          "(bumper, %s)", dtc[k].opts, nlo, nhi, dtc[k].top ? "> 200" : "none");
+          "(bumper, %s)",
+          dtc[k].opts, nlo, nhi, dtc[k].top ? "> 200" : "none");
     free(img);
   }
 
@@ -528,7 +558,8 @@ static void test_command(void)
    * loop for ever */
   {
     char cmd[8192];
-    snprintf(cmd, sizeof cmd, "timeout 60 '%s' render '%s' -o '%s/particles_narrow.png' --mode "
+    snprintf(cmd, sizeof cmd,
+             "timeout 60 '%s' render '%s' -o '%s/particles_narrow.png' --mode "
              "particles --color velocity --range 1,1.0000000000000002 --size 640x400",
              test_bin(), scene, dir);
     st = test_run(cmd, out, sizeof out);
@@ -537,12 +568,16 @@ static void test_command(void)
   CHECK(tmp_files_left() == 0, "no temporary files left behind");
 
   /* failures: the previous picture stays as it was */
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color damage", gas, dir);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color damage", gas,
+           dir);
   st = run(args, out, sizeof out);
-  CHECK(st == 2 && strstr(out, "damage"), "damage colour without a damage column: exit %d (2): %s", st, out);
-  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color alpha", gas, dir);
+  CHECK(st == 2 && strstr(out, "damage"), "damage colour without a damage column: exit %d (2): %s",
+        st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/particles_mat.png' --mode particles --color alpha", gas,
+           dir);
   st = run(args, out, sizeof out);
-  CHECK(st == 2 && strstr(out, "alpha"), "alpha colour without an alpha column: exit %d (2): %s", st, out);
+  CHECK(st == 2 && strstr(out, "alpha"), "alpha colour without an alpha column: exit %d (2): %s",
+        st, out);
   snprintf(args, sizeof args, "%s/particles_mat.png", dir);
   img = read_png(args, &w, &h);
   CHECK(img && w == 800 && h == 500, "a failed render leaves the previous file whole");
@@ -596,7 +631,6 @@ static void test_command(void)
   }
 }
 
-
 /* ---- exposure, axes, labels, bad data ----------------------------------- */
 
 /* Pixels of two PNG files: -1 when either cannot be read or the sizes differ, else the
@@ -615,25 +649,26 @@ static long png_differ(const char *a, const char *b)
   return d;
 }
 
-
 /* The tick step: the smallest 1, 2 or 5 x 10^k whose ticks lie min_px apart. */
 static void test_tick_step(void)
 {
   static const struct {
     double span, npx, min_px, step;
   } c[] = {
-      {100.0, 1000.0, 80.0, 10.0},   /* 8 wanted: 10 */
-      {37.0, 500.0, 60.0, 5.0},      /* 4.44: 5 */
-      {3.0, 400.0, 60.0, 0.5},       /* 0.45: 0.5 */
-      {200.0, 1000.0, 10.0, 2.0},    /* exactly 2: 2, not 5 */
-      {0.01, 500.0, 84.0, 0.002},    /* 0.00168: 0.002 */
-      {283.0, 1120.0, 84.0, 50.0},   /* 21.2: 50 (20 is too close) */
-      {1.0, 10.0, 84.0, 10.0},       /* ticks farther apart than the axis: one at most */
+      {100.0, 1000.0, 80.0, 10.0}, /* 8 wanted: 10 */
+      {37.0, 500.0, 60.0, 5.0},    /* 4.44: 5 */
+      {3.0, 400.0, 60.0, 0.5},     /* 0.45: 0.5 */
+      {200.0, 1000.0, 10.0, 2.0},  /* exactly 2: 2, not 5 */
+      {0.01, 500.0, 84.0, 0.002},  /* 0.00168: 0.002 */
+      {283.0, 1120.0, 84.0, 50.0}, /* 21.2: 50 (20 is too close) */
+      {1.0, 10.0, 84.0, 10.0},     /* ticks farther apart than the axis: one at most */
   };
   for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
     const double st = render_tick_step(c[k].span, c[k].npx, c[k].min_px);
-    CHECK(fabs(st - c[k].step) <= 1e-12 * c[k].step, "tick step for %g mm on %g px, %g px "
-          "apart: %g (%g)", c[k].span, c[k].npx, c[k].min_px, st, c[k].step);
+    CHECK(fabs(st - c[k].step) <= 1e-12 * c[k].step,
+          "tick step for %g mm on %g px, %g px "
+          "apart: %g (%g)",
+          c[k].span, c[k].npx, c[k].min_px, st, c[k].step);
   }
   CHECK(render_tick_step(0.0, 100.0, 10.0) == 0.0 && render_tick_step(NAN, 100.0, 10.0) == 0.0,
         "no step for an empty or undefined span");
@@ -650,8 +685,10 @@ static void test_tick_step(void)
     if (!series || st < want * (1 - 1e-9) || smaller >= want) ok = 0;
     worst = fmax(worst, st / want);
   }
-  CHECK(ok && worst <= 2.5 + 1e-9, "2000 spans from 1 um to 10 m: each step 1, 2 or 5 x 10^k, "
-        "the smallest wide enough (at most %.3g times the least)", worst);
+  CHECK(ok && worst <= 2.5 + 1e-9,
+        "2000 spans from 1 um to 10 m: each step 1, 2 or 5 x 10^k, "
+        "the smallest wide enough (at most %.3g times the least)",
+        worst);
 }
 
 /* The automatic exposure: the lower quartile of the pixels holding a particle at
@@ -681,10 +718,7 @@ static int grey_at(const unsigned char *img, int w, const struct render_view *v,
   return img[3 * ((size_t)j * (size_t)w + (size_t)(v->ml + i))];
 }
 
-static int cmp_int(const void *a, const void *b)
-{
-  return *(const int *)a - *(const int *)b;
-}
+static int cmp_int(const void *a, const void *b) { return *(const int *)a - *(const int *)b; }
 
 /* Writes p as dir/name with materials names[0..nmat) and renders it with the options
  * (library call, as the command does); returns the picture (malloc) and its view. */
@@ -733,8 +767,8 @@ static void test_exposure(void)
     cl[k][1] = z;
     const int n = 1 + (int)(7 * a[3]);
     for (int q = 0; q < n; q++)
-      put(&al, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4),
-          2700 * 6.4e-11, 0.48e-3, 2700, 1, 6000 * cos(ang));
+      put(&al, x + 0.4e-3 * (q % 2), y + 0.4e-3 * (q / 2 % 2), z + 0.4e-3 * (q / 4), 2700 * 6.4e-11,
+          0.48e-3, 2700, 1, 6000 * cos(ang));
   }
   for (size_t i = 0; i < al.n; i++) al.body[i] = al.mat[i];
   struct render_options o;
@@ -756,9 +790,11 @@ static void test_exposure(void)
     qsort(dark[pass], (size_t)n, sizeof dark[pass][0], cmp_int);
     CHECK(n == 300, "the clusters are in the picture (%d of 300)", n);
     if (n == 300)
-      CHECK(pass ? dark[1][150] < 20 : dark[0][150] >= 60, "aluminium debris, %s: the median "
-            "cluster centre %d grey levels below white (%s)", pass ? "--mu 0.05" : "by default",
-            dark[pass][150], pass ? "under 20: why the default changed" : "at least 60");
+      CHECK(pass ? dark[1][150] < 20 : dark[0][150] >= 60,
+            "aluminium debris, %s: the median "
+            "cluster centre %d grey levels below white (%s)",
+            pass ? "--mu 0.05" : "by default", dark[pass][150],
+            pass ? "under 20: why the default changed" : "at least 60");
   }
 
   const double c[3] = {25e-3, 0, 0}, R = 6.75e-3;
@@ -769,8 +805,10 @@ static void test_exposure(void)
   const int g0 = img ? grey_at(img, w, &v, c[0], 0.0) : -1,
             g8 = img ? grey_at(img, w, &v, c[0], 0.8 * R) : -1;
   free(img);
-  CHECK(g0 >= 8 && g8 >= g0 + 20, "steel sphere and plate by default: not saturated, grey %d "
-        "at the sphere's centre (>= 8), %d at 0.8 R (20 lighter)", g0, g8);
+  CHECK(g0 >= 8 && g8 >= g0 + 20,
+        "steel sphere and plate by default: not saturated, grey %d "
+        "at the sphere's centre (>= 8), %d at 0.8 R (20 lighter)",
+        g0, g8);
   particles_free(&al);
   particles_free(&st);
 }
@@ -811,10 +849,12 @@ static void test_axes(void)
     for (int y = 12 * s; y < v.nv; y++)
       for (int x = 0; x < v.ml - 5 * s; x++) ink_left += img[3 * ((size_t)y * w + x)] == 0;
     CHECK(step == (size ? 5.0 : 10.0) && runs == expect && expect >= 4,
-          "%d px wide: %d ticks every %g mm along x (%d; step 5 mm at 1200 px, 10 at 400)", w,
-          runs, step, expect);
-    CHECK(ink_bottom > 20 * expect && ink_left > 20, "%d px wide: tick labels drawn: %ld "
-          "black pixels under the ticks, %ld left of the plot", w, ink_bottom, ink_left);
+          "%d px wide: %d ticks every %g mm along x (%d; step 5 mm at 1200 px, 10 at 400)", w, runs,
+          step, expect);
+    CHECK(ink_bottom > 20 * expect && ink_left > 20,
+          "%d px wide: tick labels drawn: %ld "
+          "black pixels under the ticks, %ld left of the plot",
+          w, ink_bottom, ink_left);
     free(img);
   }
   particles_free(&p);
@@ -832,7 +872,8 @@ static void test_labels(void)
   FILE *f = fopen(path, "w");
   if (f) {
     fputs("name: labels\nbodies:\n  - name: projectile\n    material: al\n"
-          "  - name: bumper\n    material: al\n", f);
+          "  - name: bumper\n    material: al\n",
+          f);
     fclose(f);
   }
   char names[4][64] = {{0}};
@@ -869,11 +910,14 @@ static void test_labels(void)
   for (int y = 0; y < v.nv; y++)
     for (int x = 0; x < v.nu; x++) {
       const int black = plot.rgb[3 * ((size_t)y * v.nu + x)] == 0;
-      if (abs(x - cx) <= half && abs(y - cy) <= 6 * v.scale) ink += black;
-      else if (abs(x - (int)((c1[0] - v.u0) / v.pix)) > 60 * v.scale) elsewhere += black;
+      if (abs(x - cx) <= half && abs(y - cy) <= 6 * v.scale)
+        ink += black;
+      else if (abs(x - (int)((c1[0] - v.u0) / v.pix)) > 60 * v.scale)
+        elsewhere += black;
     }
   canvas_free(&plot);
-  CHECK(placed == 2 && ink > 50 && elsewhere == 0, "labels: %d placed (2: bumper-core's would "
+  CHECK(placed == 2 && ink > 50 && elsewhere == 0,
+        "labels: %d placed (2: bumper-core's would "
         "overlap bumper's), %ld black pixels at the projectile's centre, %ld elsewhere (0)",
         placed, ink, elsewhere);
   const char *wide[1] = {"a name far too long to fit in a picture of this size, so not drawn "
@@ -882,13 +926,15 @@ static void test_labels(void)
   canvas_init(&plot, v.nu, v.nv);
   const int nwide = render_body_labels(&plot, &p, &v, &winfo);
   canvas_free(&plot);
-  CHECK(nwide == 1, "a label wider than the picture is left out; body 1's says \"body 1\", "
-        "body 2's would overlap it (%d placed, 1)", nwide);
+  CHECK(nwide == 1,
+        "a label wider than the picture is left out; body 1's says \"body 1\", "
+        "body 2's would overlap it (%d placed, 1)",
+        nwide);
 
   /* the command: names from the snapshot's folder; --no-labels draws none */
   const char *mn[1] = {"al"};
-  struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "labels",
-                               .material_names = mn, .nmat = 1};
+  struct snapshot_meta meta = {
+      .time = 0.0, .version = "test", .case_name = "labels", .material_names = mn, .nmat = 1};
   snprintf(path, sizeof path, "%s/particles_00000.csv", dir);
   CHECK(io_write_particles_csv(path, &p, &meta, &err) == 0, "labelled scene: %s", err.msg);
   particles_free(&p);
@@ -906,19 +952,25 @@ static void test_labels(void)
     snprintf(b, sizeof b, "%s/without.png", dir);
     diff[k] = st ? -2 : png_differ(a, b);
   }
-  CHECK(diff[0] > 200 && diff[1] > 200, "the command labels the bodies (radiograph: %ld bytes "
-        "differ from --no-labels, particles: %ld; > 200)", diff[0], diff[1]);
+  CHECK(diff[0] > 200 && diff[1] > 200,
+        "the command labels the bodies (radiograph: %ld bytes "
+        "differ from --no-labels, particles: %ld; > 200)",
+        diff[0], diff[1]);
   /* the same snapshot in a folder without used_parameters.yaml: "body N", not the names */
-  snprintf(args, sizeof args, "mkdir -p '%s/unnamed' && cp '%s' '%s/unnamed/' && '%s' render "
+  snprintf(args, sizeof args,
+           "mkdir -p '%s/unnamed' && cp '%s' '%s/unnamed/' && '%s' render "
            "'%s/unnamed/particles_00000.csv' -o '%s/unnamed.png' --size 800 --mode particles "
-           "--axis y", test_tmpdir(), path, test_tmpdir(), test_bin(), test_tmpdir(), dir);
+           "--axis y",
+           test_tmpdir(), path, test_tmpdir(), test_bin(), test_tmpdir(), dir);
   const int st = test_run(args, out, sizeof out);
   char a[4400], b[4400];
   snprintf(a, sizeof a, "%s/with.png", dir);
   snprintf(b, sizeof b, "%s/unnamed.png", dir);
   const long dn = st ? -2 : png_differ(a, b);
-  CHECK(dn > 100, "names from the snapshot's used_parameters.yaml, \"body N\" without it: %ld "
-        "bytes differ (> 100) %s", dn, out);
+  CHECK(dn > 100,
+        "names from the snapshot's used_parameters.yaml, \"body N\" without it: %ld "
+        "bytes differ (> 100) %s",
+        dn, out);
 }
 
 /* Bad data: refused with one line naming the file, the particle and the field, exit 2,
@@ -927,7 +979,7 @@ static void test_bad_data(void)
 {
   static const struct {
     const char *field;
-    int which;      /* 0 x, 1 y, 2 mat, 3 rho, 4 m, 5 h, 6 vx */
+    int which; /* 0 x, 1 y, 2 mat, 3 rho, 4 m, 5 h, 6 vx */
     double value;
   } bad[] = {
       {"'x' = nan", 0, NAN},       {"'y' = 1e+300", 1, 1e300}, {"'mat' = 99", 2, 99},
@@ -946,16 +998,17 @@ static void test_bad_data(void)
     add_sphere(&p, c, 2e-3, 0.5e-3, 2700, 1, 0, 0);
     const size_t i = 17;
     switch (bad[k].which) {
-    case 0: case 1: p.x[bad[k].which][i] = bad[k].value; break;
+    case 0:
+    case 1: p.x[bad[k].which][i] = bad[k].value; break;
     case 2: p.mat[i] = (int)bad[k].value; break;
     case 3: p.rho[i] = bad[k].value; break;
     case 4: p.m[i] = bad[k].value; break;
     case 5: p.h[i] = bad[k].value; break;
     default: p.v[0][i] = bad[k].value; break;
     }
-    p.rho[i + 3] = bad[k].which == 3 ? -1.0 : p.rho[i + 3];   /* a second bad one, counted */
-    struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "bad",
-                                 .material_names = names, .nmat = 2};
+    p.rho[i + 3] = bad[k].which == 3 ? -1.0 : p.rho[i + 3]; /* a second bad one, counted */
+    struct snapshot_meta meta = {
+        .time = 0.0, .version = "test", .case_name = "bad", .material_names = names, .nmat = 2};
     struct hv_error err;
     hv_error_clear(&err);
     snprintf(path, sizeof path, "%s/particles_%05zu.csv", dir, k);
@@ -985,24 +1038,23 @@ static void test_bad_data(void)
 
 /* A gas blob on the move and expanding (a half model, z >= 0), four outputs: each
  * snapshot alone would be framed and coloured differently. */
-static const char *blob_case =
-    "name: blob\n"
-    "materials:\n"
-    "  gas: {eos: ideal-gas, gamma: 1.4}\n"
-    "bodies:\n"
-    "  - name: blob\n"
-    "    material: gas\n"
-    "    shape: {type: box, min: [0, 0, 0], max: [0.05, 0.025, 0.025]}\n"
-    "    spacing: 6.25 mm\n"
-    "    density: 1.0\n"
-    "    pressure: 1.0\n"
-    "    velocity: [5, 0, 0]\n"
-    "    radial_velocity: 1\n"
-    "time:\n"
-    "  end: 0.03\n"
-    "output:\n"
-    "  every: 0.01\n"
-    "  csv: true\n";
+static const char *blob_case = "name: blob\n"
+                               "materials:\n"
+                               "  gas: {eos: ideal-gas, gamma: 1.4}\n"
+                               "bodies:\n"
+                               "  - name: blob\n"
+                               "    material: gas\n"
+                               "    shape: {type: box, min: [0, 0, 0], max: [0.05, 0.025, 0.025]}\n"
+                               "    spacing: 6.25 mm\n"
+                               "    density: 1.0\n"
+                               "    pressure: 1.0\n"
+                               "    velocity: [5, 0, 0]\n"
+                               "    radial_velocity: 1\n"
+                               "time:\n"
+                               "  end: 0.03\n"
+                               "output:\n"
+                               "  every: 0.01\n"
+                               "  csv: true\n";
 
 /* The frame_NNNNN.png files in dir and their largest number (-1: none). */
 static int count_frames(const char *dir, int *last)
@@ -1045,8 +1097,10 @@ static void test_series(void)
   static char out[65536];
   snprintf(run_dir, sizeof run_dir, "%s/blobrun", dir);
   const char *casefile = test_write_file("blob.yaml", blob_case);
-  snprintf(cmd, sizeof cmd, "cd '%s' && rm -rf blobrun frames_* csvrun mixrun slotrun emptyrun badrun && "
-           "'%s' run '%s' -o '%s' --quiet", dir, test_bin(), casefile, run_dir);
+  snprintf(cmd, sizeof cmd,
+           "cd '%s' && rm -rf blobrun frames_* csvrun mixrun slotrun emptyrun badrun && "
+           "'%s' run '%s' -o '%s' --quiet",
+           dir, test_bin(), casefile, run_dir);
   int st = test_run(cmd, out, sizeof out);
   CHECK(st == 0, "the tiny run: exit %d %s", st, out);
   /* run.pvd lists the run's snapshots; an earlier run's, left in the folder, is not in it */
@@ -1055,7 +1109,8 @@ static void test_series(void)
   const int nsnap = pvd ? count_lines(pvd, "<DataSet") : -1;
   free(pvd);
   CHECK(nsnap == 4, "run.pvd lists %d snapshots (4)", nsnap);
-  snprintf(cmd, sizeof cmd, "cp '%s/particles_00001.vtu' '%s/particles_00007.vtu'", run_dir, run_dir);
+  snprintf(cmd, sizeof cmd, "cp '%s/particles_00001.vtu' '%s/particles_00007.vtu'", run_dir,
+           run_dir);
   CHECK(system(cmd) == 0, "%s", cmd);
 
   /* radiographs: one frame per snapshot of run.pvd, from the .vtu files, all one size */
@@ -1065,8 +1120,8 @@ static void test_series(void)
   snprintf(path, sizeof path, "%s/frames_xray", dir);
   n = count_frames(path, &last);
   CHECK(st == 0 && n == nsnap && last == nsnap - 1,
-        "series of radiographs: exit %d, %d frames up to %d (%d, numbered 0..%d) %s", st, n,
-        last, nsnap, nsnap - 1, out);
+        "series of radiographs: exit %d, %d frames up to %d (%d, numbered 0..%d) %s", st, n, last,
+        nsnap, nsnap - 1, out);
   CHECK(count_lines(out, "hvsph: wrote ") == nsnap && !strstr(out, "particles_00007") &&
             count_lines(out, ".vtu, t = ") == nsnap,
         "one line per frame, from the .vtu snapshots, none from particles_00007.vtu: %s", out);
@@ -1081,8 +1136,10 @@ static void test_series(void)
   st = run(args, out, sizeof out);
   snprintf(path, sizeof path, "%s/frames_quiet", dir);
   n = count_frames(path, &last);
-  CHECK(st == 0 && n == nsnap && out[0] == '\0', "--quiet: exit %d, %d frames (%d), nothing "
-        "said: '%s'", st, n, nsnap, out);
+  CHECK(st == 0 && n == nsnap && out[0] == '\0',
+        "--quiet: exit %d, %d frames (%d), nothing "
+        "said: '%s'",
+        st, n, nsnap, out);
   int w0 = 0, h0 = 0, same = 1;
   for (int k = 0; k < nsnap; k++) {
     int w = 0, h = 0;
@@ -1137,32 +1194,39 @@ static void test_series(void)
     particles_free(&p);
   }
   for (int f = 0; f < 2; f++) /* else the check below could not tell */
-    CHECK(own_ext[f][0] > ext[0] + 0.01 * (ext[1] - ext[0]) || own_ext[f][1] < ext[1] - 0.01 * (ext[1] - ext[0]),
+    CHECK(own_ext[f][0] > ext[0] + 0.01 * (ext[1] - ext[0]) ||
+              own_ext[f][1] < ext[1] - 0.01 * (ext[1] - ext[0]),
           "snapshot %d alone is framed otherwise: x %g..%g m of %g..%g m", f ? nsnap - 1 : 0,
           own_ext[f][0], own_ext[f][1], ext[0], ext[1]);
   CHECK(own_lo[0] > lo + 0.01 * (hi - lo) || own_hi[0] < hi - 0.01 * (hi - lo),
-        "snapshot 0 alone has another range: |v| %g..%g of %g..%g m/s", own_lo[0], own_hi[0], lo, hi);
+        "snapshot 0 alone has another range: |v| %g..%g of %g..%g m/s", own_lo[0], own_hi[0], lo,
+        hi);
   snprintf(args, sizeof args, "'%s' -o '%s/frames_v' --mode particles --color velocity --size 640",
            run_dir, dir);
   st = run(args, out, sizeof out);
   snprintf(path, sizeof path, "%s/frames_v", dir);
   n = count_frames(path, &last);
-  CHECK(st == 0 && n == nsnap, "series of particles by velocity: exit %d, %d frames %s", st, n, out);
+  CHECK(st == 0 && n == nsnap, "series of particles by velocity: exit %d, %d frames %s", st, n,
+        out);
   int w = 0, h = 0;
   snprintf(path, sizeof path, "%s/frames_v/frame_00000.png", dir);
   unsigned char *img = read_png(path, &w, &h);
   free(img);
   for (int f = 0; f < 2; f++) {
     const int k = f ? nsnap - 1 : 0;
-    snprintf(args, sizeof args, "'%s/particles_%05d.vtu' -o '%s/alone_%d.png' --mode particles "
+    snprintf(args, sizeof args,
+             "'%s/particles_%05d.vtu' -o '%s/alone_%d.png' --mode particles "
              "--color velocity --box %.17g,%.17g,%.17g,%.17g,-1000,1000 --range %.17g,%.17g "
-             "--size %dx%d", run_dir, k, dir, k, ext[0], ext[1], ext[2], ext[3], lo, hi, w, h);
+             "--size %dx%d",
+             run_dir, k, dir, k, ext[0], ext[1], ext[2], ext[3], lo, hi, w, h);
     st = run(args, out, sizeof out);
     snprintf(path, sizeof path, "%s/frames_v/frame_%05d.png", dir, k);
     snprintf(path2, sizeof path2, "%s/alone_%d.png", dir, k);
     const long d = st == 0 ? png_differ(path, path2) : -2;
-    CHECK(d == 0, "frame %d is snapshot %d alone with the union box and range: %ld bytes "
-          "differ (0; -1 unreadable or sizes differ) %s", k, k, d, out);
+    CHECK(d == 0,
+          "frame %d is snapshot %d alone with the union box and range: %ld bytes "
+          "differ (0; -1 unreadable or sizes differ) %s",
+          k, k, d, out);
   }
 
   /* a run without .vtu files (no run.pvd): the .csv files that match summary.csv; an
@@ -1170,7 +1234,8 @@ static void test_series(void)
    * and the frames numbered 0, 1, 2 all the same */
   char csv_dir[4200];
   snprintf(csv_dir, sizeof csv_dir, "%s/csvrun", dir);
-  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --quiet --set output.vtu=false && "
+  snprintf(cmd, sizeof cmd,
+           "'%s' run '%s' -o '%s' --quiet --set output.vtu=false && "
            "cp '%s/particles_00001.csv' '%s/particles_00009.csv' && "
            "cp '%s/particles_00000.csv' '%s/particles_00001.csv'",
            test_bin(), casefile, csv_dir, csv_dir, csv_dir, csv_dir, csv_dir);
@@ -1183,12 +1248,12 @@ static void test_series(void)
   CHECK(st == 0 && n == 3 && last == 2 && line_has(out, "frame_00001.png", "particles_00002.csv") &&
             line_has(out, "particles_00001.csv is not one of the outputs", "skipped") &&
             line_has(out, "particles_00009.csv is not one of the outputs", "skipped"),
-        "csv run: exit %d, %d frames up to %d (3, 0..2), frame 1 from snapshot 2: %s", st, n,
-        last, out);
+        "csv run: exit %d, %d frames up to %d (3, 0..2), frame 1 from snapshot 2: %s", st, n, last,
+        out);
 
   /* run.pvd lists a snapshot whose .vtu is gone: its .csv is read instead */
-  snprintf(cmd, sizeof cmd, "cp -r '%s' '%s/mixrun' && rm '%s/mixrun/particles_00002.vtu'",
-           run_dir, dir, dir);
+  snprintf(cmd, sizeof cmd, "cp -r '%s' '%s/mixrun' && rm '%s/mixrun/particles_00002.vtu'", run_dir,
+           dir, dir);
   CHECK(system(cmd) == 0, "%s", cmd);
   snprintf(args, sizeof args, "'%s/mixrun' -o '%s/frames_mix' --size 400", dir, dir);
   st = run(args, out, sizeof out);
@@ -1196,8 +1261,8 @@ static void test_series(void)
   n = count_frames(path, &last);
   CHECK(st == 0 && n == nsnap && line_has(out, "frame_00002.png", "particles_00002.csv") &&
             line_has(out, "frame_00003.png", "particles_00003.vtu"),
-        "a .vtu missing, its .csv there: exit %d, %d frames (%d), frame 2 from the .csv: %s", st,
-        n, nsnap, out);
+        "a .vtu missing, its .csv there: exit %d, %d frames (%d), frame 2 from the .csv: %s", st, n,
+        nsnap, out);
 
   /* material colours over the whole series: the plate (body 1) keeps the second colour
    * after the projectile (body 0) has left; snapshot 1 alone would give it the first */
@@ -1213,8 +1278,8 @@ static void test_series(void)
       a.body[i + 1] = b.body[i] = 1;
     }
     const char *names[2] = {"plate", "projectile"};
-    struct snapshot_meta meta = {.time = 0.0, .version = "test", .case_name = "slots",
-                                 .material_names = names, .nmat = 2};
+    struct snapshot_meta meta = {
+        .time = 0.0, .version = "test", .case_name = "slots", .material_names = names, .nmat = 2};
     struct hv_error err;
     hv_error_clear(&err);
     snprintf(cmd, sizeof cmd, "mkdir -p '%s/slotrun'", dir);
@@ -1241,18 +1306,25 @@ static void test_series(void)
       second += !memcmp(img + 3 * k, c1, 3);
     }
     free(img);
-    CHECK(st == 0 && second > 50 && first == 0, "the plate in frame 1 keeps the second colour: "
-          "exit %d, %ld pixels of it (> 50), %ld of the first (0) %s", st, second, first, out);
+    CHECK(st == 0 && second > 50 && first == 0,
+          "the plate in frame 1 keeps the second colour: "
+          "exit %d, %ld pixels of it (> 50), %ld of the first (0) %s",
+          st, second, first, out);
   }
 
   /* the folder of an earlier, longer series: its frames beyond are named */
   snprintf(args, sizeof args, "'%s' -o '%s/frames_xray' --size 400", csv_dir, dir);
   st = run(args, out, sizeof out);
-  CHECK(st == 0 && strstr(out, "also holds 1 frame_NNNNN.png of an earlier, longer series (from frame_00003.png on)"),
-        "frames of an earlier series beyond this one's: exit %d %s", st, out);
+  CHECK(
+      st == 0 &&
+          strstr(
+              out,
+              "also holds 1 frame_NNNNN.png of an earlier, longer series (from frame_00003.png on)"),
+      "frames of an earlier series beyond this one's: exit %d %s", st, out);
 
   /* errors: one line naming the folder or file, exit 2; frames already there stay */
-  snprintf(cmd, sizeof cmd, "mkdir -p '%s/emptyrun' && cp -r '%s' '%s/badrun' && "
+  snprintf(cmd, sizeof cmd,
+           "mkdir -p '%s/emptyrun' && cp -r '%s' '%s/badrun' && "
            "head -c 600 '%s/particles_00002.vtu' > '%s/badrun/particles_00002.vtu'",
            dir, run_dir, dir, run_dir, dir);
   CHECK(system(cmd) == 0, "%s", cmd);

@@ -23,9 +23,9 @@ struct setup_result {
   int rc;
   char msg[2048];
   size_t n;
-  double mass, vcells, spacing;   /* spacing of the first body */
-  int layers_x;                   /* distinct x of the particles (first 64) */
-  double xmin;                    /* smallest x */
+  double mass, vcells, spacing; /* spacing of the first body */
+  int layers_x;                 /* distinct x of the particles (first 64) */
+  double xmin;                  /* smallest x */
 };
 
 static struct setup_result setup_case(const char *yaml)
@@ -48,7 +48,8 @@ static struct setup_result setup_case(const char *yaml)
       r.mass += s.p.m[i];
       r.xmin = fmin(r.xmin, s.p.x[0][i]);
       int seen = 0;
-      for (int k = 0; k < r.layers_x && !seen; k++) seen = fabs(xs[k] - s.p.x[0][i]) < 1e-9 * r.spacing;
+      for (int k = 0; k < r.layers_x && !seen; k++)
+        seen = fabs(xs[k] - s.p.x[0][i]) < 1e-9 * r.spacing;
       if (!seen && r.layers_x < 64) xs[r.layers_x++] = s.p.x[0][i];
     }
     r.vcells = 0;
@@ -65,7 +66,8 @@ static char *body_case(const char *shape, const char *extra)
            "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
            "bodies:\n  - {name: b, material: gas, density: 2.0, pressure: 1.0, %s,\n"
            "     shape: %s}\n"
-           "time: {end: 1}\n", extra, shape);
+           "time: {end: 1}\n",
+           extra, shape);
   return buf;
 }
 
@@ -77,27 +79,37 @@ static void check_volume(const char *what, const char *shape, double vexact, dou
   CHECK(r.rc == 0, "%s: set up (%s)", what, r.msg);
   CHECK_CLOSE(r.mass, 2.0 * vexact, 1e-12 * 2.0 * vexact, "total mass = rho V (exact volume)");
   double vl = (double)r.n * spacing * spacing * spacing;
-  CHECK(fabs(vl / vexact - 1) < LATTICE_VOLUME_TOL, "%s: lattice volume N dx^3 = %.5g vs exact "
-        "%.5g (%+.2f %%)", what, vl, vexact, 100 * (vl / vexact - 1));
+  CHECK(fabs(vl / vexact - 1) < LATTICE_VOLUME_TOL,
+        "%s: lattice volume N dx^3 = %.5g vs exact "
+        "%.5g (%+.2f %%)",
+        what, vl, vexact, 100 * (vl / vexact - 1));
 }
 
 static void test_volumes(void)
 {
   check_volume("sphere R = 1", "{type: sphere, center: [0, 0, 0], radius: 1}", 4.0 / 3.0 * PI, 0.1);
   check_volume("box 2 x 1 x 0.5", "{type: box, min: [0, 0, 0], max: [2, 1, 0.5]}", 1.0, 0.05);
-  check_volume("cylinder along x", "{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], "
-               "radius: 0.5, length: 3}", PI * 0.25 * 3, 0.05);
-  check_volume("oblique cylinder", "{type: cylinder, center: [1, 2, 3], axis: [1, 1, 1], "
-               "radius: 0.5, length: 3}", PI * 0.25 * 3, 0.05);
-  check_volume("hollow cylinder (vessel wall)", "{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], "
+  check_volume("cylinder along x",
+               "{type: cylinder, center: [0, 0, 0], axis: [1, 0, 0], "
+               "radius: 0.5, length: 3}",
+               PI * 0.25 * 3, 0.05);
+  check_volume("oblique cylinder",
+               "{type: cylinder, center: [1, 2, 3], axis: [1, 1, 1], "
+               "radius: 0.5, length: 3}",
+               PI * 0.25 * 3, 0.05);
+  check_volume("hollow cylinder (vessel wall)",
+               "{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], "
                "radius: 1, length: 2, minus: [{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], "
-               "radius: 0.8, length: 1.6}]}", PI * (2.0 - 0.64 * 1.6), 0.04);
-  check_volume("box minus box", "{type: box, min: [0, 0, 0], max: [1, 1, 1], minus: [{type: box, "
-               "min: [0.25, 0.25, 0.25], max: [0.75, 0.75, 0.75]}]}", 1.0 - 0.125, 0.05);
+               "radius: 0.8, length: 1.6}]}",
+               PI * (2.0 - 0.64 * 1.6), 0.04);
+  check_volume("box minus box",
+               "{type: box, min: [0, 0, 0], max: [1, 1, 1], minus: [{type: box, "
+               "min: [0.25, 0.25, 0.25], max: [0.75, 0.75, 0.75]}]}",
+               1.0 - 0.125, 0.05);
   /* particle count from `particles`: at least N, and no more than the lattice's
      discreteness needs (a spacing finer by 0.1 % steps from (V/N)^(1/3)) */
-  struct setup_result r = setup_case(body_case("{type: sphere, center: [0, 0, 0], radius: 1}",
-                                               "particles: 20000"));
+  struct setup_result r =
+      setup_case(body_case("{type: sphere, center: [0, 0, 0], radius: 1}", "particles: 20000"));
   CHECK(r.rc == 0 && r.n >= 20000 && (double)r.n / 20000 - 1 < LATTICE_VOLUME_TOL,
         "particles: 20000 gives %zu particles (at least 20000, within 3 %%)", r.n);
   /* a small cylinder: its count jumps by whole rings and pairs of slices (here 4 960 ->
@@ -111,15 +123,18 @@ static void test_volumes(void)
   struct setup_result coarser = setup_case(body_case(cyl, extra));
   CHECK(r.rc == 0 && r.n >= 5000 && coarser.rc == 0 && coarser.n < 5000,
         "cylinder, particles: 5000: %zu particles; 0.1 %% coarser %zu (the coarsest spacing "
-        "with at least 5000)", r.n, coarser.n);
+        "with at least 5000)",
+        r.n, coarser.n);
   /* a thin plate: whole layers, rounded up so that the count is not below N. 1 mm
      thick, 120 x 60 mm: (V/N)^(1/3) = 0.711 mm for N = 20 000 is 1.41 layers; to the
      nearest that was one layer of 1 mm, 7 200 particles; rounded up, two of 0.5 mm,
      240 x 120 x 2 = 57 600 */
-  r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1e-3, 0.12, 0.06]}",
-                           "particles: 20000"));
-  CHECK(r.rc == 0 && r.n == 57600, "1 mm plate, particles: 20000: %zu particles (want 57600: "
-        "two whole layers)", r.n);
+  r = setup_case(
+      body_case("{type: box, min: [0, 0, 0], max: [1e-3, 0.12, 0.06]}", "particles: 20000"));
+  CHECK(r.rc == 0 && r.n == 57600,
+        "1 mm plate, particles: 20000: %zu particles (want 57600: "
+        "two whole layers)",
+        r.n);
   /* a disc (cylinder along x, 1 mm long): L spacings along its length give L layers,
      the first Δ/2 behind its face, as in a box; centred on the cylinder's centre, an odd
      L put the end layers on the faces (5 spacings: 4 layers, 1.25 times too heavy) */
@@ -130,23 +145,29 @@ static void test_volumes(void)
     r = setup_case(body_case(disc, extra));
     CHECK(r.rc == 0 && r.layers_x == L && fabs(r.xmin - 0.5e-3 / L) < 1e-9,
           "disc 1 mm long, spacing 1/%d mm: %d layers (want %d), the first at %.4f mm (want "
-          "%.4f)", L, r.layers_x, L, 1e3 * r.xmin, 0.5 / L);
+          "%.4f)",
+          L, r.layers_x, L, 1e3 * r.xmin, 0.5 / L);
   }
   /* ... and given by a count, whole layers rounded up: 14 mm radius, 20 000 particles:
      (V/N)^(1/3) = 0.313 mm is 3.2 layers -> 4 of 0.25 mm */
   r = setup_case(body_case("{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], "
-                           "radius: 14e-3, length: 1e-3}", "particles: 20000"));
+                           "radius: 14e-3, length: 1e-3}",
+                           "particles: 20000"));
   CHECK(r.rc == 0 && r.layers_x == 4 && r.n >= 20000 && fabs(r.spacing - 0.25e-3) < 1e-12,
         "disc, particles: 20000: %d whole layers of %.4f mm, %zu particles (want 4 of 0.25 mm, "
-        ">= 20000)", r.layers_x, 1e3 * r.spacing, r.n);
+        ">= 20000)",
+        r.layers_x, 1e3 * r.spacing, r.n);
   /* a plate with a disc cut out (a plate refined near the impact point is this and the
      disc): its exact volume, and whole layers from a count as for a plain plate */
-  check_volume("plate minus a disc", "{type: box, min: [0, -0.01, -0.01], max: [1e-3, 0.01, "
+  check_volume("plate minus a disc",
+               "{type: box, min: [0, -0.01, -0.01], max: [1e-3, 0.01, "
                "0.01], minus: [{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], "
-               "radius: 0.005, length: 1e-3}]}", 1e-3 * (4e-4 - PI * 2.5e-5), 0.5e-3);
+               "radius: 0.005, length: 1e-3}]}",
+               1e-3 * (4e-4 - PI * 2.5e-5), 0.5e-3);
   /* the same where the disc's faces (centre ± length/2) meet the plate's only to rounding:
      W.P.3's backwall, 121.3 .. 124.5 mm, and its disc centred at 122.9 mm, 3.2 mm long */
-  check_volume("plate minus a disc, faces equal to rounding", "{type: box, min: [0.1213, -0.05, "
+  check_volume("plate minus a disc, faces equal to rounding",
+               "{type: box, min: [0.1213, -0.05, "
                "-0.05], max: [0.1245, 0.05, 0.05], minus: [{type: cylinder, center: [0.1229, 0, "
                "0], axis: [1, 0, 0], radius: 0.02, length: 3.2e-3}]}",
                3.2e-3 * (0.01 - PI * 4e-4), 1.6e-3);
@@ -154,8 +175,10 @@ static void test_volumes(void)
                      "[{type: cylinder, center: [0.5e-3, 0, 0], axis: [1, 0, 0], radius: 0.02, "
                      "length: 1e-3}]}";
   r = setup_case(body_case(ring, "particles: 20000"));
-  CHECK(r.rc == 0 && r.layers_x == 2 && r.n >= 20000, "plate minus a disc, particles: 20000: "
-        "%d whole layers, %zu particles (want 2, >= 20000)", r.layers_x, r.n);
+  CHECK(r.rc == 0 && r.layers_x == 2 && r.n >= 20000,
+        "plate minus a disc, particles: 20000: "
+        "%d whole layers, %zu particles (want 2, >= 20000)",
+        r.layers_x, r.n);
   /* a cylinder taken out of a parallel one, its bounding box inside the other's but
      poking out of its side (centre 0.85 from the axis, radius 0.3 > 0.15): the volume is
      not known, so the mass is the lattice's, ρ N Δ³; moved to 0.5 from the axis it fits,
@@ -168,16 +191,21 @@ static void test_volumes(void)
   r = setup_case(body_case(sh, "spacing: 0.05"));
   CHECK(r.rc == 0 && fabs(r.mass - 2.0 * (double)r.n * 1.25e-4) < 1e-9 * r.mass,
         "an off-axis cut poking out of a cylinder: mass from the lattice (%.6g, rho N dx^3 = "
-        "%.6g)", r.mass, 2.0 * (double)r.n * 1.25e-4);
+        "%.6g)",
+        r.mass, 2.0 * (double)r.n * 1.25e-4);
   snprintf(sh, sizeof sh, offcut, 0.5, 0.0);
   r = setup_case(body_case(sh, "spacing: 0.05"));
   const double vcut = PI * (1.0 - 0.09 * 0.5);
-  CHECK(r.rc == 0 && fabs(r.mass - 2.0 * vcut) < 1e-9 * r.mass, "an off-axis cut inside a "
-        "cylinder: exact mass %.6g (rho V = %.6g)", r.mass, 2.0 * vcut);
+  CHECK(r.rc == 0 && fabs(r.mass - 2.0 * vcut) < 1e-9 * r.mass,
+        "an off-axis cut inside a "
+        "cylinder: exact mass %.6g (rho V = %.6g)",
+        r.mass, 2.0 * vcut);
   /* hcp: volume per particle dx^3/sqrt(2) */
-  r = setup_case(body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
+  r = setup_case(
+      body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 0.05, lattice: hcp"));
   double vl = (double)r.n * 0.05 * 0.05 * 0.05 / sqrt(2.0);
-  CHECK(r.rc == 0 && fabs(vl - 1.0) < LATTICE_VOLUME_TOL, "hcp: N dx^3/sqrt2 = %.4f (box volume 1)", vl);
+  CHECK(r.rc == 0 && fabs(vl - 1.0) < LATTICE_VOLUME_TOL, "hcp: N dx^3/sqrt2 = %.4f (box volume 1)",
+        vl);
 }
 
 static void test_half_model(void)
@@ -210,8 +238,10 @@ static void test_half_model(void)
   f = setup_case(a);
   h = setup_case(b);
   CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - (16.0 - PI)) < 1e-9 &&
-        fabs(h.mass - 0.5 * (16.0 - PI)) < 1e-9, "plate minus a disc, full and half: mass %.6f "
-        "and %.6f (exact %.6f and half) (%s%s)", f.mass, h.mass, 16.0 - PI, f.msg, h.msg);
+            fabs(h.mass - 0.5 * (16.0 - PI)) < 1e-9,
+        "plate minus a disc, full and half: mass %.6f "
+        "and %.6f (exact %.6f and half) (%s%s)",
+        f.mass, h.mass, 16.0 - PI, f.msg, h.msg);
   /* a cylinder whose axis is the symmetry plane's normal, centred on it (a rod cut across
      its length): symmetric too, so half the exact mass, and `particles:` is taken */
   static const char *const zc =
@@ -226,15 +256,17 @@ static void test_half_model(void)
     snprintf(b, sizeof b, zc, hdom, "spacing: 0.1", ax);
     f = setup_case(a);
     h = setup_case(b);
-    CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - 2.0 * PI) < 1e-9 &&
-          fabs(h.mass - PI) < 1e-9 && 2 * h.n == f.n, "cylinder along z (axis %s) centred "
+    CHECK(f.rc == 0 && h.rc == 0 && fabs(f.mass - 2.0 * PI) < 1e-9 && fabs(h.mass - PI) < 1e-9 &&
+              2 * h.n == f.n,
+          "cylinder along z (axis %s) centred "
           "on z = 0, full and half: mass %.6f and %.6f (exact %.6f and half), %zu and %zu "
-          "particles (%s%s)", ax, f.mass, h.mass, 2.0 * PI, f.n, h.n, f.msg, h.msg);
+          "particles (%s%s)",
+          ax, f.mass, h.mass, 2.0 * PI, f.n, h.n, f.msg, h.msg);
     snprintf(b, sizeof b, zc, hdom, "particles: 3000", ax);
     h = setup_case(b);
     CHECK(h.rc == 0 && fabs(h.mass - PI) < 1e-9 && fabs((double)h.n - 3000.0) < 0.05 * 3000,
-          "... and by a particle count: %zu particles (asked 3000), mass %.6f (%s)", h.n,
-          h.mass, h.msg);
+          "... and by a particle count: %zu particles (asked 3000), mass %.6f (%s)", h.n, h.mass,
+          h.msg);
   }
 }
 
@@ -255,7 +287,8 @@ static void test_errors(void)
       "time: {end: 1}\n";
   char y[1024];
   snprintf(y, sizeof y, pf, "st", ", part_of: c", "");
-  expect_error("part_of an unknown body", y, "shape.yaml:3: bodies[0].part_of: body 'a': part_of "
+  expect_error("part_of an unknown body", y,
+               "shape.yaml:3: bodies[0].part_of: body 'a': part_of "
                "'c' names no body (the other bodies: 'b')");
   snprintf(y, sizeof y, pf, "st", ", part_of: a", "");
   expect_error("part_of itself", y, "part_of 'a' is the body itself");
@@ -266,29 +299,33 @@ static void test_errors(void)
   snprintf(y, sizeof y, pf, "st", "", ", part_of: a");
   struct setup_result ok = setup_case(y);
   CHECK(ok.rc == 0, "part_of between two solid bodies sets up (%s)", ok.msg);
-  expect_error("overlap",
-               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
-               "bodies:\n"
-               "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
-               "  - {name: b, material: gas, density: 1, spacing: 0.1, shape: {type: sphere, center: [1, 0.5, 0.5], radius: 0.3}}\n"
-               "time: {end: 1}\n",
-               "bodies 'a' and 'b' overlap");
-  expect_error("outside the domain",
-               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
-               "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: wall}}\n"
-               "bodies:\n"
-               "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0.5, 0, 0], max: [1.5, 1, 1]}}\n"
-               "time: {end: 1}\n",
-               "reaches outside the domain");
-  expect_error("zero particles", body_case("{type: sphere, center: [0, 0, 0], radius: 0.01}", "spacing: 1"),
+  expect_error(
+      "overlap",
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "bodies:\n"
+      "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+      "  - {name: b, material: gas, density: 1, spacing: 0.1, shape: {type: sphere, center: [1, 0.5, 0.5], radius: 0.3}}\n"
+      "time: {end: 1}\n",
+      "bodies 'a' and 'b' overlap");
+  expect_error(
+      "outside the domain",
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "domain: {min: [0, 0, 0], max: [1, 1, 1], boundary: {x: wall}}\n"
+      "bodies:\n"
+      "  - {name: a, material: gas, density: 1, spacing: 0.1, shape: {type: box, min: [0.5, 0, 0], max: [1.5, 1, 1]}}\n"
+      "time: {end: 1}\n",
+      "reaches outside the domain");
+  expect_error("zero particles",
+               body_case("{type: sphere, center: [0, 0, 0], radius: 0.01}", "spacing: 1"),
                "gives no particle");
-  expect_error("impact angle 0",
-               "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
-               "bodies:\n"
-               "  - {name: a, material: gas, density: 1, spacing: 0.1, speed: 1 km/s, impact_angle: 0 deg,\n"
-               "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
-               "time: {end: 1}\n",
-               "outside (0, 90] deg");
+  expect_error(
+      "impact angle 0",
+      "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+      "bodies:\n"
+      "  - {name: a, material: gas, density: 1, spacing: 0.1, speed: 1 km/s, impact_angle: 0 deg,\n"
+      "     shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
+      "time: {end: 1}\n",
+      "outside (0, 90] deg");
   expect_error("minus not a list",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
                "bodies:\n"
@@ -311,25 +348,30 @@ static void test_errors(void)
                "     impact_angle: 45 deg, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
                "time: {end: 1}\n",
                "body 'a': impact_angle applies with speed");
-  expect_error("too many particles", body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
+  expect_error("too many particles",
+               body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
   /* a disc given by its count, a radius in metres where millimetres were meant: one
      whole layer of its thickness would need 3e20 particles; refused at once (it was
      counted point by point, for hours: tools/fuzz-input.py, 2026-12-07 at 6f0da84) */
-  expect_error("count-given disc far too wide",
-               body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
-                         "particles: 5000"),
-               "whole layers needs a spacing of at most 100 mm");
+  expect_error(
+      "count-given disc far too wide",
+      body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
+                "particles: 5000"),
+      "whole layers needs a spacing of at most 100 mm");
   /* a rod along a diagonal 1000 m long (metres where millimetres were meant): 5 000
      particles, but its bounding box holds 3e14 lattice points to scan, hours; refused
      at once; written bare, at the length, with the unit it was likely meant in */
-  expect_error("diagonal rod of 1000 m",
-               body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
-                         "length: 1000 m}", "particles: 5000"),
-               "body 'b': its bounding box, 577.352 x 577.352 x 577.352 m, spans 3.06e+14 lattice points");
+  expect_error(
+      "diagonal rod of 1000 m",
+      body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
+                "length: 1000 m}",
+                "particles: 5000"),
+      "body 'b': its bounding box, 577.352 x 577.352 x 577.352 m, spans 3.06e+14 lattice points");
   expect_error("diagonal rod of a bare 1000",
                body_case("{type: cylinder, center: [0, 0, 0], axis: [1, 1, 1], radius: 0.001, "
-                         "length: 1000}", "particles: 5000"),
+                         "length: 1000}",
+                         "particles: 5000"),
                "bodies[0].shape.length: the bare number 1000 is read as 1000 m (a number "
                "without a unit is SI), and body 'b' then spans 3.06e+14 lattice points in its "
                "bounding box, more than");
@@ -340,11 +382,13 @@ static void test_errors(void)
                "unit is SI), and body 'b' then needs about 1e+12 particles, more than this "
                "machine's memory holds; was it 1 mm?");
   /* and not where millimetres would not help either (a radius of 1e9 is 1000 km so) */
-  expect_error("no mm hint where it would not fit either",
-               body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
-                         "particles: 5000"),
-               "check the shape's size and units");
-  expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"), "cone");
+  expect_error(
+      "no mm hint where it would not fit either",
+      body_case("{type: cylinder, center: [0, 0, 0], axis: [0, 0, 1], radius: 1e9, length: 0.1}",
+                "particles: 5000"),
+      "check the shape's size and units");
+  expect_error("unknown shape", body_case("{type: cone, center: [0, 0, 0]}", "spacing: 0.1"),
+               "cone");
   expect_error("damage without fracture",
                "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
                "bodies:\n"
@@ -374,8 +418,10 @@ static void test_errors(void)
                "symmetry plane");
   snprintf(y2, sizeof y2, hcp, "1");
   struct setup_result r = setup_case(y2);
-  CHECK(r.rc == 0 && r.n > 0, "hcp body clear of the symmetry plane in a half model: set up "
-        "(%zu particles) %s", r.n, r.msg);
+  CHECK(r.rc == 0 && r.n > 0,
+        "hcp body clear of the symmetry plane in a half model: set up "
+        "(%zu particles) %s",
+        r.n, r.msg);
 }
 
 int main(void)

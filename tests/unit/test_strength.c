@@ -34,7 +34,7 @@ static void test_eigen(void)
 static void test_rate(void)
 {
   const double G = 80e9, gd = 1e3, S0[6] = {0};
-  double L[9] = {0, gd, 0, 0, 0, 0, 0, 0, 0}, dS[6];  /* simple shear v_x = γ̇ y */
+  double L[9] = {0, gd, 0, 0, 0, 0, 0, 0, 0}, dS[6]; /* simple shear v_x = γ̇ y */
   strength_rate(G, S0, L, dS);
   CHECK_CLOSE(dS[T_XY], G * gd, 1e-6 * G * gd, "simple shear: dS_xy/dt = G γ̇");
   CHECK(dS[T_XX] == 0 && dS[T_YY] == 0 && dS[T_ZZ] == 0, "simple shear from rest: no normal rate");
@@ -47,8 +47,8 @@ static void test_rate(void)
   const double S[6] = {2e8, -1e8, -1e8, 3e7, 0, 1e7};
   double W[9] = {0, -5, 0, 5, 0, 0, 0, 0, 0};
   strength_rate(G, S, W, dS);
-  double sds = S[0] * dS[0] + S[1] * dS[1] + S[2] * dS[2] +
-               2 * (S[3] * dS[3] + S[4] * dS[4] + S[5] * dS[5]);
+  double sds =
+      S[0] * dS[0] + S[1] * dS[1] + S[2] * dS[2] + 2 * (S[3] * dS[3] + S[4] * dS[4] + S[5] * dS[5]);
   CHECK(fabs(sds) < 1e-6 * sym3_j2(S) * 5, "rotation leaves J2 unchanged (S:dS = %.3g)", sds);
   CHECK_CLOSE(dS[0] + dS[1] + dS[2], 0.0, 1e-3, "rotation keeps S traceless");
   /* a pure rotation by Ω = [[0,-w],[w,0]] turns S_xx - S_yy into S_xy: dS_xy = w (S_xx - S_yy) */
@@ -58,7 +58,7 @@ static void test_rate(void)
 static void test_return(void)
 {
   const double G = 26e9, Y = 300e6;
-  double S[6] = {2 * Y / 3, -Y / 3, -Y / 3, 0, 0, 0};  /* uniaxial: √(3J2) = Y */
+  double S[6] = {2 * Y / 3, -Y / 3, -Y / 3, 0, 0, 0}; /* uniaxial: √(3J2) = Y */
   CHECK_CLOSE(sqrt(3 * sym3_j2(S)), Y, 1e-6, "uniaxial deviator has von Mises stress σ");
   double deps = strength_return(G, Y, S);
   CHECK(deps == 0.0, "on the yield surface: no plastic strain");
@@ -69,19 +69,29 @@ static void test_return(void)
   struct strength_params sp = {.enabled = 1, .G = G, .yield = YIELD_LINEAR, .Y0 = Y, .H = 1e8};
   CHECK_CLOSE(strength_yield(&sp, 0.5, 0, 0), Y + 0.5e8, 1e-6, "linear hardening");
   sp.yield = YIELD_JOHNSON_COOK;
-  sp.jc_A = 90e6; sp.jc_B = 292e6; sp.jc_N = 0.31; sp.jc_C = 0.025; sp.jc_M = 1.09;
-  sp.jc_rate0 = 1.0; sp.T_ref = 294; sp.T_melt = 1356; sp.cv = 383;
+  sp.jc_A = 90e6;
+  sp.jc_B = 292e6;
+  sp.jc_N = 0.31;
+  sp.jc_C = 0.025;
+  sp.jc_M = 1.09;
+  sp.jc_rate0 = 1.0;
+  sp.T_ref = 294;
+  sp.T_melt = 1356;
+  sp.cv = 383;
   double yjc = strength_yield(&sp, 0.1, 1.0, 0.0);
   CHECK_CLOSE(yjc, 90e6 + 292e6 * pow(0.1, 0.31), 1.0, "Johnson-Cook at reference rate and T");
-  CHECK_CLOSE(strength_yield(&sp, 0.1, 1e3, 0.0) / yjc, 1 + 0.025 * log(1e3), 1e-12, "JC rate factor");
-  CHECK(strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) + 1) == 0.0, "JC: no strength above melt");
+  CHECK_CLOSE(strength_yield(&sp, 0.1, 1e3, 0.0) / yjc, 1 + 0.025 * log(1e3), 1e-12,
+              "JC rate factor");
+  CHECK(strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) + 1) == 0.0,
+        "JC: no strength above melt");
   /* thermal softening below melt: e = c_v (T_melt − T_ref)/2 gives T = 825 K, T* = 531/1062
      = 0.5 exactly; at the reference rate (rate factor 1) and ε_p = 0.1 the reference yield
      is yjc (checked above), so Y = yjc (1 − 0.5^M) exactly (today: equal to round-off; a
      linear softening, M = 1, would be off by 6 %, T* taken as T/T_melt by 21 %) */
   const double yhalf = strength_yield(&sp, 0.1, 1.0, 383.0 * (1356 - 294) / 2);
   const double yhalf_want = yjc * (1 - pow(0.5, 1.09));
-  CHECK_CLOSE(yhalf, yhalf_want, 1e-12 * yhalf_want, "JC thermal softening at T* = 0.5: "
+  CHECK_CLOSE(yhalf, yhalf_want, 1e-12 * yhalf_want,
+              "JC thermal softening at T* = 0.5: "
               "Y = Y_ref (1 - 0.5^M)");
 }
 
@@ -91,30 +101,36 @@ static void test_return(void)
  * entirely. */
 static void test_no_tension(void)
 {
-  struct fracture_params nt = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_NO_TENSION};
+  struct fracture_params nt = {
+      .kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_NO_TENSION};
   CHECK(fracture_keeps_stress(&nt, FRACTURE_SPLIT) && fracture_no_tension(&nt, FRACTURE_SPLIT) &&
-        !fracture_no_tension(&nt, FRACTURE_INTACT), "no-tension: split particles keep a stress");
+            !fracture_no_tension(&nt, FRACTURE_INTACT),
+        "no-tension: split particles keep a stress");
   CHECK(fracture_yield(&nt, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.383e9, "no-tension: split keeps Y");
   const double ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3}, c = cos(0.7), s = sin(0.7);
-  double Q[9];   /* Rodrigues: Q = c I + s [a]x + (1 − c) a aᵀ */
+  double Q[9]; /* Rodrigues: Q = c I + s [a]x + (1 − c) a aᵀ */
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) Q[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * ax[a] * ax[b];
-  Q[1] -= s * ax[2]; Q[2] += s * ax[1]; Q[3] += s * ax[2];
-  Q[5] -= s * ax[0]; Q[6] -= s * ax[1]; Q[7] += s * ax[0];
+  Q[1] -= s * ax[2];
+  Q[2] += s * ax[1];
+  Q[3] += s * ax[2];
+  Q[5] -= s * ax[0];
+  Q[6] -= s * ax[1];
+  Q[7] += s * ax[0];
   const double lam[3] = {2e8, -1e8, -3e8}, lam_p[3] = {0.0, -1e8, -3e8}, p = 0.5e8;
   double sig[6], want[6], T[6];
   sym3_from_eigen(Q, lam, sig);
   sym3_from_eigen(Q, lam_p, want);
-  for (int k = 0; k < 6; k++) T[k] = sig[k] + (k < 3 ? p : 0.0);   /* σ = −pI + T */
+  for (int k = 0; k < 6; k++) T[k] = sig[k] + (k < 3 ? p : 0.0); /* σ = −pI + T */
   CHECK(fracture_project(p, T) == 1, "no-tension: a principal tension is removed");
   double err = 0.0;
   for (int k = 0; k < 6; k++) err = fmax(err, fabs(T[k] - (k < 3 ? p : 0.0) - want[k]));
   CHECK(err < 1e-6 * 3e8, "no-tension: σ' = Q diag(0, -1, -3) Qᵀ (largest error %g Pa)", err);
-  double lam2[3], out[6];   /* the projected stress itself, σ' = −pI + T */
+  double lam2[3], out[6]; /* the projected stress itself, σ' = −pI + T */
   for (int k = 0; k < 6; k++) out[k] = T[k] - (k < 3 ? p : 0.0);
   sym3_eigen(out, lam2, NULL);
   CHECK(fabs(lam2[0]) < 1e-6 * 3e8, "no-tension: σ' has no tension (σ1 = %g Pa)", lam2[0]);
-  double C[6], C0[6];   /* all principal stresses compressive: unchanged, to the bit */
+  double C[6], C0[6]; /* all principal stresses compressive: unchanged, to the bit */
   const double lc[3] = {-0.5e8, -1e8, -3e8};
   sym3_from_eigen(Q, lc, C);
   for (int k = 0; k < 6; k++) C0[k] = C[k];
@@ -122,9 +138,9 @@ static void test_no_tension(void)
   int same = 1;
   for (int k = 0; k < 6; k++) same &= C[k] == C0[k];
   CHECK(same, "no-tension: compressive stress unchanged");
-  double H[6] = {0, 0, 0, 0, 0, 0};   /* hydrostatic tension p = −1e8: σ' = 0 */
+  double H[6] = {0, 0, 0, 0, 0, 0}; /* hydrostatic tension p = −1e8: σ' = 0 */
   CHECK(fracture_project(-1e8, H) == 1 && fabs(H[0] + 1e8) < 1e-6 * 1e8 &&
-        fabs(H[1] + 1e8) < 1e-6 * 1e8 && fabs(H[2] + 1e8) < 1e-6 * 1e8 && fabs(H[3]) < 1.0,
+            fabs(H[1] + 1e8) < 1e-6 * 1e8 && fabs(H[2] + 1e8) < 1e-6 * 1e8 && fabs(H[3]) < 1.0,
         "no-tension: hydrostatic tension released entirely (T = pI, σ' = 0)");
   /* the same σ split into p' and a traceless S' (σ' = −p'I + S'): p' = −tr σ'/3 = 4/3·10⁸ */
   double S0d[6], Se[6];
@@ -132,9 +148,11 @@ static void test_no_tension(void)
   const double pe = fracture_effective(p, S0d, Se);
   double err2 = fabs(Se[0] + Se[1] + Se[2]);
   for (int k = 0; k < 6; k++) err2 = fmax(err2, fabs(Se[k] - (k < 3 ? pe : 0.0) - want[k]));
-  CHECK(fabs(pe - 4e8 / 3) < 1e-6 * 3e8 && err2 < 1e-6 * 3e8, "no-tension: p' = %.6g Pa "
-        "(4/3e8), S' traceless and -p'I + S' = σ' (largest error %g Pa)", pe, err2);
-  double Cc[6];   /* no tension: p and S returned as they are */
+  CHECK(fabs(pe - 4e8 / 3) < 1e-6 * 3e8 && err2 < 1e-6 * 3e8,
+        "no-tension: p' = %.6g Pa "
+        "(4/3e8), S' traceless and -p'I + S' = σ' (largest error %g Pa)",
+        pe, err2);
+  double Cc[6]; /* no tension: p and S returned as they are */
   CHECK(fracture_effective(1e8, C0, Cc) == 1e8 && !memcmp(Cc, C0, sizeof Cc),
         "no-tension: p and S unchanged without tension");
 }
@@ -152,12 +170,15 @@ static void test_crack(void)
 {
   const double S0c[6] = {0, 0, 0, 0, 0, 0};
   struct fracture_params cr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_CRACK};
-  CHECK(fracture_cracked(&cr, FRACTURE_SPLIT) && !fracture_cracked(&cr, FRACTURE_INTACT) && !fracture_cracked(&cr, FRACTURE_SPLIT_AGAIN),
+  CHECK(fracture_cracked(&cr, FRACTURE_SPLIT) && !fracture_cracked(&cr, FRACTURE_INTACT) &&
+            !fracture_cracked(&cr, FRACTURE_SPLIT_AGAIN),
         "crack: cracked at D = 1, intact below, fluid at D = 2");
-  CHECK(fracture_keeps_stress(&cr, FRACTURE_SPLIT) && !fracture_keeps_stress(&cr, FRACTURE_SPLIT_AGAIN),
+  CHECK(fracture_keeps_stress(&cr, FRACTURE_SPLIT) &&
+            !fracture_keeps_stress(&cr, FRACTURE_SPLIT_AGAIN),
         "crack: a cracked particle keeps its stress, a twice-split one none");
   CHECK(fracture_yield(&cr, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.383e9 &&
-        fracture_yield(&cr, FRACTURE_SPLIT_AGAIN, 0.383e9, 1e9) == 0.0, "crack: cracked keeps Y, fluid has none");
+            fracture_yield(&cr, FRACTURE_SPLIT_AGAIN, 0.383e9, 1e9) == 0.0,
+        "crack: cracked keeps Y, fluid has none");
   CHECK(!fracture_no_tension(&cr, FRACTURE_SPLIT), "crack is not no-tension");
   const double K = 76e9, G = 26e9, M = K + 4.0 / 3.0 * G;
   /* uniaxial strain ε along y (elastic): p = −Kε, S = 2Gε dev(e_y e_y), σ_yy = Mε =
@@ -166,18 +187,21 @@ static void test_crack(void)
   const double eps = 0.5e9 / M;
   double S[6] = {-2 * G * eps / 3, 4 * G * eps / 3, -2 * G * eps / 3, 0, 0, 0}, n[3] = {0, 0, 0};
   double ec = 0.0, dp = 0.0, p = -K * eps;
-  int st = fracture_crack_return(&cr, fracture_tension(&cr, 0.0, p, S, 1e-9) >= 1.0, p, K, G,
-                                 0.0, S, n, &ec, &dp);
+  int st = fracture_crack_return(&cr, fracture_tension(&cr, 0.0, p, S, 1e-9) >= 1.0, p, K, G, 0.0,
+                                 S, n, &ec, &dp);
   double smax = 0.0;
   for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(S[k]));
-  CHECK(st == FRACTURE_SPLIT && fabs(fabs(n[1]) - 1.0) < 1e-12, "crack: uniaxial strain in y cracks across y "
-        "(state %d, n = (%g, %g, %g))", st, n[0], n[1], n[2]);
+  CHECK(st == FRACTURE_SPLIT && fabs(fabs(n[1]) - 1.0) < 1e-12,
+        "crack: uniaxial strain in y cracks across y "
+        "(state %d, n = (%g, %g, %g))",
+        st, n[0], n[1], n[2]);
   CHECK(fabs(ec - eps) < 1e-12 * eps && smax < 1e-6 * 0.5e9 && fabs(p + dp) < 1e-6 * 0.5e9,
         "crack: the opening takes the whole uniaxial strain (ε_c/ε = %.12f, |S| %g Pa, p + dp "
-        "= %g Pa)", ec / eps, smax, p + dp);
+        "= %g Pa)",
+        ec / eps, smax, p + dp);
   /* in-plane tension with the crack's plane traction-free (plane stress, σ_xx = 0 across
      a crack normal to x): carried, nothing moves, below |σ_c| */
-  const double T = 0.3e9;   /* σ = diag(0, T, T) = −pI + S */
+  const double T = 0.3e9; /* σ = diag(0, T, T) = −pI + S */
   double Sm[6] = {-2 * T / 3, T / 3, T / 3, 0, 0, 0}, nx[3] = {1, 0, 0}, S0[6];
   for (int k = 0; k < 6; k++) S0[k] = Sm[k];
   ec = 0.0;
@@ -196,28 +220,35 @@ static void test_crack(void)
   st = fracture_crack_return(&cr, 0, -T, K, G, 0.0, Sh, nh, &ec, &dp);
   const double syy = -(-T + dp) + Sh[T_YY], sxx = -(-T + dp) + Sh[T_XX];
   CHECK(st == FRACTURE_SPLIT && fabs(ec - T / M) < 1e-12 * T / M && fabs(sxx) < 1e-6 * T &&
-        fabs(syy - T * 2 * G / M) < 1e-6 * T, "crack: hydrostatic tension T opens it by T/M = "
-        "%.4g and leaves σ_xx = %g Pa, σ_yy = %.5g GPa (T·2G/M = %.5g)", ec, sxx, syy * 1e-9,
-        T * 2 * G / M * 1e-9);
+            fabs(syy - T * 2 * G / M) < 1e-6 * T,
+        "crack: hydrostatic tension T opens it by T/M = "
+        "%.4g and leaves σ_xx = %g Pa, σ_yy = %.5g GPa (T·2G/M = %.5g)",
+        ec, sxx, syy * 1e-9, T * 2 * G / M * 1e-9);
   /* an open crack closes under compression, down to ε_c = 0, and then carries the rest */
   double Sc[6] = {0, 0, 0, 0, 0, 0}, nc[3] = {1, 0, 0};
   ec = 1e-3;
-  const double pc = 0.0;   /* σ_xx = −2e-3 M (as if compressed by 2e-3 in x) */
+  const double pc = 0.0; /* σ_xx = −2e-3 M (as if compressed by 2e-3 in x) */
   for (int k = 0; k < 6; k++) Sc[k] = 0.0;
   Sc[T_XX] = -2e-3 * 4 * G / 3;
   Sc[T_YY] = Sc[T_ZZ] = 2e-3 * 2 * G / 3;
   const double pcl = 2e-3 * K;
   st = fracture_crack_return(&cr, 0, pcl + pc, K, G, 0.0, Sc, nc, &ec, &dp);
-  CHECK(st == FRACTURE_SPLIT && ec == 0.0 && fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
+  CHECK(st == FRACTURE_SPLIT && ec == 0.0 &&
+            fabs(sig_nn(pcl + dp, Sc, nc) + 1e-3 * M) < 1e-6 * M * 1e-3,
         "crack: closes by 1e-3 of its 2e-3 compression and carries σ_nn = %.5g GPa (−1e-3 M "
-        "= %.5g)", sig_nn(pcl + dp, Sc, nc) * 1e-9, -1e-3 * M * 1e-9);
+        "= %.5g)",
+        sig_nn(pcl + dp, Sc, nc) * 1e-9, -1e-3 * M * 1e-9);
   /* open, with shear on its plane: the shear traction is released, in-plane shear kept */
   const double ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3}, c = cos(0.7), s = sin(0.7);
-  double Q[9];   /* Rodrigues, as test_no_tension: the crack's frame turned */
+  double Q[9]; /* Rodrigues, as test_no_tension: the crack's frame turned */
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) Q[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * ax[a] * ax[b];
-  Q[1] -= s * ax[2]; Q[2] += s * ax[1]; Q[3] += s * ax[2];
-  Q[5] -= s * ax[0]; Q[6] -= s * ax[1]; Q[7] += s * ax[0];
+  Q[1] -= s * ax[2];
+  Q[2] += s * ax[1];
+  Q[3] += s * ax[2];
+  Q[5] -= s * ax[0];
+  Q[6] -= s * ax[1];
+  Q[7] += s * ax[0];
   double nq[3] = {Q[0], Q[3], Q[6]};
   /* σ₀ in the crack's frame (e₁ = n): normal 0.1 GPa, shear 0.05 and −0.03 on the plane,
      in-plane 0.2, −0.1 and 0.04 GPa */
@@ -231,7 +262,7 @@ static void test_crack(void)
   double Sq[6] = {m3[0][0] + ps, m3[1][1] + ps, m3[2][2] + ps, m3[0][1], m3[1][2], m3[0][2]};
   ec = 0.0;
   st = fracture_crack_return(&cr, 0, ps, K, G, 0.0, Sq, nq, &ec, &dp);
-  double t[3] = {0, 0, 0};   /* the traction on the plane after: (σ n) */
+  double t[3] = {0, 0, 0}; /* the traction on the plane after: (σ n) */
   const double sg[3][3] = {{Sq[T_XX] - ps - dp, Sq[T_XY], Sq[T_XZ]},
                            {Sq[T_XY], Sq[T_YY] - ps - dp, Sq[T_YZ]},
                            {Sq[T_XZ], Sq[T_YZ], Sq[T_ZZ] - ps - dp}};
@@ -245,23 +276,27 @@ static void test_crack(void)
     for (int b = 0; b < 3; b++) s23 += e2[a] * sg[a][b] * e3[b];
   CHECK(st == FRACTURE_SPLIT && ec > 0.0 && tt < 1e-6 * 1e8 && fabs(s23 - 4e7) < 1e-6 * 1e8,
         "crack, open in a turned frame: no traction on the plane (|σn| = %g Pa), in-plane "
-        "shear kept (%.6g GPa, 0.04)", tt, s23 * 1e-9);
+        "shear kept (%.6g GPa, 0.04)",
+        tt, s23 * 1e-9);
   /* the normal of the largest principal tension */
   const double lam[3] = {3e8, 1e8, -2e8};
   double d6[6], nn[3];
   sym3_from_eigen(Q, lam, d6);
-  for (int k = 0; k < 6; k++) S[k] = d6[k] + (k < 3 ? -(2e8 / 3) : 0.0);   /* p = −tr/3 */
+  for (int k = 0; k < 6; k++) S[k] = d6[k] + (k < 3 ? -(2e8 / 3) : 0.0); /* p = −tr/3 */
   fracture_crack_normal(-(2e8 / 3), S, nn);
   const double dot = nn[0] * nq[0] + nn[1] * nq[1] + nn[2] * nq[2];
-  CHECK(fabs(fabs(dot) - 1.0) < 1e-12, "crack normal along the largest principal stress "
-        "(|n·e| = %.15f)", fabs(dot));
+  CHECK(fabs(fabs(dot) - 1.0) < 1e-12,
+        "crack normal along the largest principal stress "
+        "(|n·e| = %.15f)",
+        fabs(dot));
   /* the spin turns n: rigid rotation about z at ω, 0.5 rad in 1000 steps; a stretch does not */
   const double w = 5e5, dt = 1e-9;
-  const double Lr[9] = {0, -w, 0, w, 0, 0, 0, 0, 0};   /* L[3a+b] = ∂v_a/∂x_b, v = ω × x */
+  const double Lr[9] = {0, -w, 0, w, 0, 0, 0, 0, 0}; /* L[3a+b] = ∂v_a/∂x_b, v = ω × x */
   double r[3] = {1, 0, 0};
   for (int k = 0; k < 1000; k++) fracture_crack_rotate(r, Lr, dt);
   CHECK(fabs(r[0] - cos(0.5)) < 1e-3 && fabs(r[1] - sin(0.5)) < 1e-3 && r[2] == 0.0,
-        "crack: turned by the spin to (%.5f, %.5f, %g), want (cos 0.5, sin 0.5, 0)", r[0], r[1], r[2]);
+        "crack: turned by the spin to (%.5f, %.5f, %g), want (cos 0.5, sin 0.5, 0)", r[0], r[1],
+        r[2]);
   const double Ls[9] = {1e5, 0, 0, 0, -1e5, 0, 0, 0, 0};
   double q[3] = {0.6, 0.8, 0};
   for (int k = 0; k < 100; k++) fracture_crack_rotate(q, Ls, dt);
@@ -278,28 +313,31 @@ static void test_crack(void)
   cf.crack_d[2] = -1.5;
   const double Tm = 0.3e9;
   const double Sb[6] = {-2 * Tm / 3, Tm / 3, Tm / 3, 0, 0, 0};
-  const double Su[6] = {2 * Tm / 3, -Tm / 3, -Tm / 3, 0, 0, 0};   /* σ = diag(T, 0, 0) */
-  const double Sp[6] = {0, 0, 0, Tm, 0, 0};                       /* pure shear */
+  const double Su[6] = {2 * Tm / 3, -Tm / 3, -Tm / 3, 0, 0, 0}; /* σ = diag(T, 0, 0) */
+  const double Sp[6] = {0, 0, 0, Tm, 0, 0};                     /* pure shear */
   const double ef_b = fracture_crack_eps_f(&cf, -2 * Tm / 3, Sb);
   const double ef_u = fracture_crack_eps_f(&cf, -Tm / 3, Su);
   const double ef_s = fracture_crack_eps_f(&cf, 0.0, Sp);
   CHECK(fabs(ef_b - (0.13 + 0.13 * exp(-1.0))) < 1e-12 &&
-        fabs(ef_u - (0.13 + 0.13 * exp(-0.5))) < 1e-12 && fabs(ef_s - 0.26) < 1e-12, "crack_eps_f: ε_f = %.5f (equibiaxial, want 0.17782), %.5f "
-        "(uniaxial, 0.20885), %.5f (shear, 0.26)", ef_b, ef_u, ef_s);
+            fabs(ef_u - (0.13 + 0.13 * exp(-0.5))) < 1e-12 && fabs(ef_s - 0.26) < 1e-12,
+        "crack_eps_f: ε_f = %.5f (equibiaxial, want 0.17782), %.5f "
+        "(uniaxial, 0.20885), %.5f (shear, 0.26)",
+        ef_b, ef_u, ef_s);
   CHECK(fracture_crack_eps_f(&cf, -1e8, S0c) == 0.13 + 0.13 * exp(-2.25) &&
-        fracture_crack_eps_f(&cf, 1e8, S0c) == 0.13 + 0.13 * exp(2.25) &&
-        fracture_crack_eps_f(&cr, -1e8, S0c) == HUGE_VAL,
+            fracture_crack_eps_f(&cf, 1e8, S0c) == 0.13 + 0.13 * exp(2.25) &&
+            fracture_crack_eps_f(&cr, -1e8, S0c) == HUGE_VAL,
         "crack_eps_f: σ* clamped to ±1.5 without a deviator; none without crack_eps_f");
-  const double Ssm[6] = {0, 0, 0, 1e6, 0, 0};   /* σ_eq = √3 MPa under 0.1 GPa: σ* = ±57.7 */
+  const double Ssm[6] = {0, 0, 0, 1e6, 0, 0}; /* σ_eq = √3 MPa under 0.1 GPa: σ* = ±57.7 */
   CHECK(fracture_crack_eps_f(&cf, -1e8, Ssm) == 0.13 + 0.13 * exp(-2.25) &&
-        fracture_crack_eps_f(&cf, 1e8, Ssm) == 0.13 + 0.13 * exp(2.25),
+            fracture_crack_eps_f(&cf, 1e8, Ssm) == 0.13 + 0.13 * exp(2.25),
         "crack_eps_f: σ* = ±57.7 (a small deviator) clamped to ±1.5");
   /* the membrane of 0.3 GPa (carried above, below |σ_c|) tears once ε_p reaches ε_f */
   double Sa[6], na[3] = {1, 0, 0};
   for (int k = 0; k < 6; k++) Sa[k] = Sb[k];
   ec = 0.0;
   st = fracture_crack_return(&cf, 0, -2 * Tm / 3, K, G, 0.99 * ef_b, Sa, na, &ec, &dp);
-  CHECK(st == FRACTURE_SPLIT && !memcmp(Sa, Sb, sizeof Sa), "crack_eps_f: carried at ε_p = 0.99 ε_f");
+  CHECK(st == FRACTURE_SPLIT && !memcmp(Sa, Sb, sizeof Sa),
+        "crack_eps_f: carried at ε_p = 0.99 ε_f");
   st = fracture_crack_return(&cf, 0, -2 * Tm / 3, K, G, ef_b, Sa, na, &ec, &dp);
   CHECK(st == FRACTURE_SPLIT_AGAIN && Sa[1] == 0.0 && na[0] == 0.0,
         "crack_eps_f: split again (state %d) at ε_p = ε_f", st);
@@ -312,7 +350,8 @@ static void test_crack(void)
         "crack_eps_f: σ* = −1 gives 0.7126");
   ec = 0.0;
   st = fracture_crack_return(&cf, 0, Pc, K, G, 0.5, Sk, nk, &ec, &dp);
-  CHECK(st == FRACTURE_SPLIT, "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), state %d", st);
+  CHECK(st == FRACTURE_SPLIT,
+        "crack_eps_f: ε_p = 0.5 carried under compression (σ* = −1), state %d", st);
 }
 
 /* fracture.energy: a material point in uniaxial strain along y, stretched in small steps
@@ -333,9 +372,11 @@ static void test_cohesive(void)
   struct fracture_params co = {.kind = FRACTURE_TRESCA, .sigma_c = -sc, .energy = Gf};
   const double wu = fracture_open_strain(&co, l);
   CHECK(fabs(wu - 2 * Gf / (sc * l)) < 1e-14 * wu, "cohesive: w_u = 2 G_f/(|σ_c| l) = %.5f", wu);
-  CHECK(!fracture_opening(&co, FRACTURE_INTACT) && fracture_opening(&co, FRACTURE_OPENING) && !fracture_opening(&co, FRACTURE_SPLIT),
+  CHECK(!fracture_opening(&co, FRACTURE_INTACT) && fracture_opening(&co, FRACTURE_OPENING) &&
+            !fracture_opening(&co, FRACTURE_SPLIT),
         "cohesive: opening for 0 < D < 1 only");
-  CHECK(fracture_keeps_stress(&co, FRACTURE_OPENING) && fracture_yield(&co, FRACTURE_OPENING, 1.55e9, 0.0) == 1.55e9,
+  CHECK(fracture_keeps_stress(&co, FRACTURE_OPENING) &&
+            fracture_yield(&co, FRACTURE_OPENING, 1.55e9, 0.0) == 1.55e9,
         "cohesive: an opening particle keeps its deviator and its yield stress");
   /* monotonic stretching to the split */
   double eps = 0.0, w = 0.0, D = 0.0, S[6], n[3] = {0, 0, 0}, work = 0.0, peak = 0.0;
@@ -358,12 +399,18 @@ static void test_cohesive(void)
   CHECK(D == 1.0 && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0 && w == 0.0,
         "cohesive: split (D = %g) clears the normal and w", D);
   CHECK(fabs(peak - sc) < 1e-3 * sc, "cohesive: the stress peaks at |σ_c| (%.5g GPa)", peak * 1e-9);
-  CHECK(fabs(sig_at_01 - 0.9 * sc) < 2e-3 * sc, "cohesive: at D = 0.1 the plane carries 0.9|σ_c| "
-        "(%.5g GPa)", sig_at_01 * 1e-9);
-  CHECK(fabs(eps_at_split - wu) < 2e-4 * wu, "cohesive: it splits when the strain reaches w_u "
-        "(ε/w_u = %.6f)", eps_at_split / wu);
-  CHECK(fabs(work * l / Gf - 1.0) < 1e-3, "cohesive: the work to split it, times l, is G_f: "
-        "%.2f J/m2 (%.0f), %d steps", work * l, Gf, steps);
+  CHECK(fabs(sig_at_01 - 0.9 * sc) < 2e-3 * sc,
+        "cohesive: at D = 0.1 the plane carries 0.9|σ_c| "
+        "(%.5g GPa)",
+        sig_at_01 * 1e-9);
+  CHECK(fabs(eps_at_split - wu) < 2e-4 * wu,
+        "cohesive: it splits when the strain reaches w_u "
+        "(ε/w_u = %.6f)",
+        eps_at_split / wu);
+  CHECK(fabs(work * l / Gf - 1.0) < 1e-3,
+        "cohesive: the work to split it, times l, is G_f: "
+        "%.2f J/m2 (%.0f), %d steps",
+        work * l, Gf, steps);
   /* a short pulse: stretched to 0.3 w_u and back to compression — it does not split, the
      opening closes, and on reloading the plane carries (1 − D)|σ_c| at most */
   eps = w = D = 0.0;
@@ -375,19 +422,28 @@ static void test_cohesive(void)
     for (int k = 0; k < 20000; k++) {
       eps += step;
       double p = cohesive_state(K, G, eps - w, S), dp = 0.0;
-      D = fracture_cohesive_return(&co, D, fracture_tension(&co, D, p, S, 1e-9), p, K, G, l, S,
-                                   n, &w, &dp);
+      D = fracture_cohesive_return(&co, D, fracture_tension(&co, D, p, S, 1e-9), p, K, G, l, S, n,
+                                   &w, &dp);
       if (phase == 2) peak2 = fmax(peak2, -(p + dp) + S[T_YY]);
     }
     if (phase == 0) Dpulse = D;
     /* on the softening line ε = D w_u + (1 − D)|σ_c|/M: D = (ε/w_u − r)/(1 − r), r = |σ_c|/(M w_u) */
     const double r = sc / (M * wu);
-    if (phase == 0) CHECK(fabs(D - (0.3 - r) / (1 - r)) < 1e-3, "cohesive: stretched to 0.3 w_u, "
-                          "D = %.4f ((0.3 − r)/(1 − r) = %.4f)", D, (0.3 - r) / (1 - r));
-    if (phase == 1) CHECK(w == 0.0 && D == Dpulse, "cohesive: compressed after the pulse, the "
-                          "opening has closed (w = %g) and D = %.4f stays", w, D);
-    if (phase == 2) CHECK(fabs(D - (0.6 - r) / (1 - r)) < 1e-3, "cohesive: reloaded to 0.6 w_u, "
-                          "the opening went on: D = %.4f (%.4f)", D, (0.6 - r) / (1 - r));
+    if (phase == 0)
+      CHECK(fabs(D - (0.3 - r) / (1 - r)) < 1e-3,
+            "cohesive: stretched to 0.3 w_u, "
+            "D = %.4f ((0.3 − r)/(1 − r) = %.4f)",
+            D, (0.3 - r) / (1 - r));
+    if (phase == 1)
+      CHECK(w == 0.0 && D == Dpulse,
+            "cohesive: compressed after the pulse, the "
+            "opening has closed (w = %g) and D = %.4f stays",
+            w, D);
+    if (phase == 2)
+      CHECK(fabs(D - (0.6 - r) / (1 - r)) < 1e-3,
+            "cohesive: reloaded to 0.6 w_u, "
+            "the opening went on: D = %.4f (%.4f)",
+            D, (0.6 - r) / (1 - r));
   }
   CHECK(fabs(peak2 - (1.0 - Dpulse) * sc) < 2e-3 * sc,
         "cohesive: reloaded, the plane carries (1 − D)|σ_c| = %.4g GPa at most (%.4g)",
@@ -410,27 +466,35 @@ static void test_fracture(void)
   CHECK(fracture_tension(&tr, 0, -0.38e9, S0, 1e-9) == 0.0, "below |σc|: no split");
   CHECK(fracture_tension(&tr, 0, -0.40e9, S0, 1e-9) == 1.0, "beyond |σc|: split");
   CHECK(fracture_tension(&tr, 0, 1e9, S, 1e-9) == 0.0, "compression: no split");
-  struct fracture_params cu = {.kind = FRACTURE_CUMULATIVE, .sigma_c = -1e8, .eps_f = 0.5, .tau = 1e-6};
+  struct fracture_params cu = {
+      .kind = FRACTURE_CUMULATIVE, .sigma_c = -1e8, .eps_f = 0.5, .tau = 1e-6};
   double Dc = 0.0;
   int32_t sc = FRACTURE_INTACT;
   fracture_plastic(&cu, 0.1, &Dc, &sc);
   CHECK_CLOSE(Dc, 0.2, 1e-15, "cumulative: dD = deps/eps_f");
   CHECK(sc == FRACTURE_INTACT, "cumulative: intact below D = 1");
   fracture_plastic(&cu, 0.45, &Dc, &sc);
-  CHECK(Dc == 1.0 && sc == FRACTURE_SPLIT, "cumulative: plastic strain to D = 1 splits it (D = "
-        "%g, state %d)", Dc, (int)sc);
-  CHECK_CLOSE(fracture_tension(&cu, 0.2, -2e8, S0, 2e-7), 0.4, 1e-12, "cumulative: dD = dt/tau in tension");
+  CHECK(Dc == 1.0 && sc == FRACTURE_SPLIT,
+        "cumulative: plastic strain to D = 1 splits it (D = "
+        "%g, state %d)",
+        Dc, (int)sc);
+  CHECK_CLOSE(fracture_tension(&cu, 0.2, -2e8, S0, 2e-7), 0.4, 1e-12,
+              "cumulative: dD = dt/tau in tension");
   CHECK(fracture_tension(&cu, 0.9, -2e8, S0, 2e-7) == 1.0, "cumulative: split at D = 1");
   /* split material: no deviatoric stress (the paper's rule), or min(Y, μ max(p, 0)) */
   CHECK(fracture_keeps_stress(&tr, FRACTURE_INTACT) && !fracture_keeps_stress(&tr, FRACTURE_SPLIT),
         "without friction only intact particles keep a deviatoric stress");
   CHECK(fracture_yield(&tr, FRACTURE_SPLIT, 0.383e9, 1e9) == 0.0, "split, no friction: Y = 0");
   struct fracture_params fr = {.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .friction = 0.3};
-  CHECK(fracture_keeps_stress(&fr, FRACTURE_SPLIT), "with friction split particles keep a deviatoric stress");
-  CHECK(fracture_yield(&fr, FRACTURE_INTACT, 0.383e9, 1e9) == 0.383e9, "not yet split: the intact Y");
-  CHECK_CLOSE(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, 1e9), 0.3e9, 1e-15, "split: Y = μp below Y0");
+  CHECK(fracture_keeps_stress(&fr, FRACTURE_SPLIT),
+        "with friction split particles keep a deviatoric stress");
+  CHECK(fracture_yield(&fr, FRACTURE_INTACT, 0.383e9, 1e9) == 0.383e9,
+        "not yet split: the intact Y");
+  CHECK_CLOSE(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, 1e9), 0.3e9, 1e-15,
+              "split: Y = μp below Y0");
   CHECK(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, 2e9) == 0.383e9, "split: Y = Y0 when μp > Y0");
-  CHECK(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.0, "split: no strength without pressure");
+  CHECK(fracture_yield(&fr, FRACTURE_SPLIT, 0.383e9, -1e8) == 0.0,
+        "split: no strength without pressure");
   test_no_tension();
   test_crack();
   test_cohesive();
@@ -445,17 +509,20 @@ static void test_states(void)
   struct material mat[3];
   memset(mat, 0, sizeof mat);
   mat[0].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9};
-  mat[1].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
-                                         .split = SPLIT_CRACK};
-  mat[2].frac = (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9,
-                                         .energy = 1e4};
+  mat[1].frac =
+      (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .split = SPLIT_CRACK};
+  mat[2].frac =
+      (struct fracture_params){.kind = FRACTURE_TRESCA, .sigma_c = -0.39e9, .energy = 1e4};
   double d;
   int32_t st;
   fracture_start(&mat[0].frac, 1.0, &d, &st);
-  CHECK(d == 1.0 && st == FRACTURE_SPLIT, "start: damage 1 is split (D = %g, state %d)", d, (int)st);
+  CHECK(d == 1.0 && st == FRACTURE_SPLIT, "start: damage 1 is split (D = %g, state %d)", d,
+        (int)st);
   fracture_start(&mat[1].frac, 1.0, &d, &st);
-  CHECK(d == 2.0 && st == FRACTURE_SPLIT_AGAIN, "start: split: crack starts split again, no "
-        "crack known (D = %g, state %d)", d, (int)st);
+  CHECK(d == 2.0 && st == FRACTURE_SPLIT_AGAIN,
+        "start: split: crack starts split again, no "
+        "crack known (D = %g, state %d)",
+        d, (int)st);
   fracture_start(&mat[2].frac, 0.3, &d, &st);
   CHECK(d == 0.3 && st == FRACTURE_OPENING, "start: energy and 0 < D < 1 is opening (state %d)",
         (int)st);
@@ -507,8 +574,9 @@ static void test_states(void)
   for (int k = 0; k < 6; k++) smax = fmax(smax, fabs(p.S[k][0]));
   CHECK(p.fstate[0] == FRACTURE_SPLIT && p.damage[0] == 1.0 && smax == 0.0 && again == 1,
         "end of step: tension beyond |σ_c| splits (state %d, D = %g, |S| %g, %ld to evaluate "
-        "again)", (int)p.fstate[0], p.damage[0], smax, again);
-  p.p[0] = -0.3e9;   /* split, below |σ_c|: stays split, still in tension */
+        "again)",
+        (int)p.fstate[0], p.damage[0], smax, again);
+  p.p[0] = -0.3e9; /* split, below |σ_c|: stays split, still in tension */
   CHECK(fracture_end_step(&p, mat, 1e-9) == 1 && p.fstate[0] == FRACTURE_SPLIT,
         "end of step: a split particle stays split");
   particles_free(&p);

@@ -43,11 +43,11 @@
 #include "simtext.h"
 #include "testlib.h"
 
-#define A0 4e-3        /* [m] bore */
-#define B0 20e-3       /* [m] outer radius */
-#define V0 450.0       /* [m/s] at the bore */
-#define RHO0 7810.0    /* [kg/m3] steel-target */
-#define T_MAX 80e-6    /* [s] the bore stops at 36-49 µs (1.0-0.5 mm spacing) */
+#define A0      4e-3   /* [m] bore */
+#define B0      20e-3  /* [m] outer radius */
+#define V0      450.0  /* [m/s] at the bore */
+#define RHO0    7810.0 /* [kg/m3] steel-target */
+#define T_MAX   80e-6  /* [s] the bore stops at 36-49 µs (1.0-0.5 mm spacing) */
 #define REL_TOL 0.05   /* on a_f: ±10 % in Y (see above) */
 
 static const char *const CASE =
@@ -78,10 +78,13 @@ static double exact_af(double Y)
 {
   const double c = B0 * B0 - A0 * A0, s0 = A0 * A0, q0 = A0 * V0;
   const double rhs = 2.0 * (sqrt(3.0) / 2.0) * (RHO0 / Y) * q0 * q0 * 0.5 * log(1.0 + c / s0);
-  double lo = s0, hi = 100.0 * s0;   /* prim(s) - prim(s0) = rhs (twice the ∫ ℓ ds) */
+  double lo = s0, hi = 100.0 * s0; /* prim(s) - prim(s0) = rhs (twice the ∫ ℓ ds) */
   for (int k = 0; k < 200; k++) {
     const double mid = 0.5 * (lo + hi);
-    if (prim(mid, c) - prim(s0, c) < rhs) lo = mid; else hi = mid;
+    if (prim(mid, c) - prim(s0, c) < rhs)
+      lo = mid;
+    else
+      hi = mid;
   }
   return sqrt(0.5 * (lo + hi));
 }
@@ -152,8 +155,9 @@ int main(void)
          dx * 1e3, Y * 1e-9, n, nin, steps, t_stop * 1e6, amax * 1e3, af * 1e3,
          100.0 * (amax / af - 1.0), exact_af(0.5 * Y) * 1e3, exact_af(2.0 * Y) * 1e3);
   CHECK(t_stop > 0.0, "the bore stops before %.0f us", T_MAX * 1e6);
-  CHECK(fabs(amax / af - 1.0) <= REL_TOL, "the bore stops at %.3f mm, exact %.3f mm (within %.0f %%)",
-        amax * 1e3, af * 1e3, REL_TOL * 100);
+  CHECK(fabs(amax / af - 1.0) <= REL_TOL,
+        "the bore stops at %.3f mm, exact %.3f mm (within %.0f %%)", amax * 1e3, af * 1e3,
+        REL_TOL * 100);
   free(r0_of);
   free(inner);
   sim_free(&s);

@@ -29,10 +29,10 @@
 #include "solidcase.h"
 #include "testlib.h"
 
-#define R0 2.638e-3      /* [m] the rod's radius (the case) */
-#define V0 1100.0        /* [m/s] impact speed (the case) */
-#define T_FIRST 11.5e-6  /* [s] the steady window: snapshots from 12 µs on */
-#define FLUX_TOL 0.15
+#define R0        2.638e-3 /* [m] the rod's radius (the case) */
+#define V0        1100.0   /* [m/s] impact speed (the case) */
+#define T_FIRST   11.5e-6  /* [s] the steady window: snapshots from 12 µs on */
+#define FLUX_TOL  0.15
 #define SPEED_MIN 0.90
 #define SPEED_MAX 1.03
 
@@ -70,8 +70,8 @@ int main(void)
         const double y = p.x[1][i], z = p.x[2][i], r = hypot(y, z);
         if (fabs(r - R) >= dR) continue;
         const double vr = (y * p.v[1][i] + z * p.v[2][i]) / r;
-        const double sp = sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] +
-                               p.v[2][i] * p.v[2][i]);
+        const double sp =
+            sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
         flux += p.m[i] * vr / (2 * dR);
         m += p.m[i];
         ms += p.m[i] * sp;
@@ -93,10 +93,14 @@ int main(void)
   if (nwin < 1) return test_finish();
   for (int s = 0; s < 2; s++) {
     const double fr = fsum[s] / nwin, spd = ssum[s] / nwin;
-    CHECK(fabs(fr - 1) < FLUX_TOL, "R = %.0f r0: mean radial mass flux %.3f of the rod's inflow "
-          "(mass conservation: 1, within %.0f%%)", Rs[s], fr, 100 * FLUX_TOL);
-    CHECK(spd >= SPEED_MIN && spd <= SPEED_MAX, "R = %.0f r0: mean outflow speed %.3f v "
-          "(Bernoulli: 1; at least %.2f, at most %.2f)", Rs[s], spd, SPEED_MIN, SPEED_MAX);
+    CHECK(fabs(fr - 1) < FLUX_TOL,
+          "R = %.0f r0: mean radial mass flux %.3f of the rod's inflow "
+          "(mass conservation: 1, within %.0f%%)",
+          Rs[s], fr, 100 * FLUX_TOL);
+    CHECK(spd >= SPEED_MIN && spd <= SPEED_MAX,
+          "R = %.0f r0: mean outflow speed %.3f v "
+          "(Bernoulli: 1; at least %.2f, at most %.2f)",
+          Rs[s], spd, SPEED_MIN, SPEED_MAX);
   }
   return test_finish();
 }

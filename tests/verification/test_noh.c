@@ -40,8 +40,8 @@
 
 #define T_END 0.6
 #define GAMMA (5.0 / 3.0)
-#define DR 0.01     /* [m] bin width for the shock radius (~1.5 post-shock spacings) */
-#define NB 60
+#define DR    0.01 /* [m] bin width for the shock radius (~1.5 post-shock spacings) */
+#define NB    60
 
 /* Thresholds. Measured (sph.continuity: mass, cubic spline, η = 1.5; 1 thread,
  * docs/verification.md §3.2):
@@ -69,13 +69,13 @@
  * The physics they guard (measured with the same test, extra --set):
  *   γ = 1.4 (plateau 216, r_s = 0.12): plateau 153.7, r_s 0.1443 at 0.025 → fails
  *   no viscosity (α = β = 0):          the run fails (status 3)  → fails */
-#define CONVERGE 0.85
-#define PLATEAU_TOL 0.38
+#define CONVERGE         0.85
+#define PLATEAU_TOL      0.38
 #define PLATEAU_TOL_FINE 0.27
-#define SHOCK_TOL 0.15
-#define SHOCK_TOL_FINE 0.11
-#define INFLOW_TOL 0.03
-#define CONSIST_TOL 0.05
+#define SHOCK_TOL        0.15
+#define SHOCK_TOL_FINE   0.11
+#define INFLOW_TOL       0.03
+#define CONSIST_TOL      0.05
 
 struct noh_meas {
   double plateau, rshock, inflow, consist, wall;
@@ -113,8 +113,10 @@ static int noh_case(const char *dir, double dx, int argc, char **argv, const cha
   double plateau = 0.0, inflow = 0.0, smass = 0.0, srho = 0.0;
   long np = 0, ni = 0;
   char comment[512];
-  snprintf(comment, sizeof comment, "noh t=%.6g n=%zu spacing=%g: particles vs Noh's solution "
-           "(gamma 5/3, shock at r = %.4g)", t, p.n, dx, rs);
+  snprintf(comment, sizeof comment,
+           "noh t=%.6g n=%zu spacing=%g: particles vs Noh's solution "
+           "(gamma 5/3, shock at r = %.4g)",
+           t, p.n, dx, rs);
   FILE *f = profile_open(prof, comment, "r,rho,rho_exact,vr,vr_exact");
   for (size_t i = 0; i < p.n; i++) {
     const double re = exact_noh_density(r[i], t, GAMMA, 1.0);
@@ -145,8 +147,10 @@ static int noh_case(const char *dir, double dx, int argc, char **argv, const cha
     }
     profile_close(f);
   }
-  CHECK(np > 0 && ni > 0 && smass > 0, "particles in the plateau, shell and inflow bands "
-        "(%ld, %ld)", np, ni);
+  CHECK(np > 0 && ni > 0 && smass > 0,
+        "particles in the plateau, shell and inflow bands "
+        "(%ld, %ld)",
+        np, ni);
   if (!np || !ni || !(smass > 0)) {
     free(r);
     particles_free(&p);
@@ -171,23 +175,28 @@ static int noh_case(const char *dir, double dx, int argc, char **argv, const cha
     }
   }
   printf("  binned density (width %g):", DR);
-  for (int b = 0; b < 30; b++) printf("%s%.3f:%.1f", b % 6 ? "  " : "\n    ", (b + 0.5) * DR,
-                                     mean[b]);
+  for (int b = 0; b < 30; b++)
+    printf("%s%.3f:%.1f", b % 6 ? "  " : "\n    ", (b + 0.5) * DR, mean[b]);
   printf("\n");
   printf("  Noh at t = %g, spacing %g: %zu particles, wall %.1f s\n", t, dx, p.n, ms->wall);
-  printf("  plateau (0.05 < r < 0.15, %ld particles): mean rho = %.3f (exact 64, %+.1f %%)\n",
-         np, plateau, 100 * (plateau / 64.0 - 1));
-  printf("  shock radius (binned rho crosses %.0f): %.4f (exact %.4f, %+.1f %%)\n", mid, rshock,
-         rs, 100 * (rshock / rs - 1));
+  printf("  plateau (0.05 < r < 0.15, %ld particles): mean rho = %.3f (exact 64, %+.1f %%)\n", np,
+         plateau, 100 * (plateau / 64.0 - 1));
+  printf("  shock radius (binned rho crosses %.0f): %.4f (exact %.4f, %+.1f %%)\n", mid, rshock, rs,
+         100 * (rshock / rs - 1));
   printf("  inflow (0.25 < r < 0.35, %ld particles): <rho/rho_exact> = %.4f\n", ni, inflow);
   printf("  consistency (0.10 < r < 0.18): mean rho %.3f / count density %.3f = %.4f\n",
          srho / smass, smass / shellvol, consist);
   printf("  MEASURED noh n=%zu spacing=%g wall=%.1f plateau=%.3f rshock=%.4f inflow=%.4f "
-         "consistency=%.4f\n", p.n, dx, ms->wall, plateau, rshock, inflow, consist);
-  CHECK(fabs(inflow - 1.0) <= INFLOW_TOL, "spacing %g: pre-shock density ratio %.4f within "
-        "%.0f %% of 1", dx, inflow, 100 * INFLOW_TOL);
-  CHECK(fabs(consist - 1.0) <= CONSIST_TOL, "spacing %g: the carried density %.4f times the "
-        "count density, within %.0f %%", dx, consist, 100 * CONSIST_TOL);
+         "consistency=%.4f\n",
+         p.n, dx, ms->wall, plateau, rshock, inflow, consist);
+  CHECK(fabs(inflow - 1.0) <= INFLOW_TOL,
+        "spacing %g: pre-shock density ratio %.4f within "
+        "%.0f %% of 1",
+        dx, inflow, 100 * INFLOW_TOL);
+  CHECK(fabs(consist - 1.0) <= CONSIST_TOL,
+        "spacing %g: the carried density %.4f times the "
+        "count density, within %.0f %%",
+        dx, consist, 100 * CONSIST_TOL);
   CHECK(isfinite(rshock), "spacing %g: a shock front is found", dx);
   ms->plateau = plateau;
   ms->rshock = rshock;
@@ -225,18 +234,19 @@ int main(int argc, char **argv)
   const double ep0 = fabs(c.plateau / 64.0 - 1), ep1 = fabs(fn.plateau / 64.0 - 1);
   const double es0 = fabs(c.rshock / rs - 1), es1 = fabs(fn.rshock / rs - 1);
   printf("  convergence (spacing %g -> %g): plateau error %.4f -> %.4f (x %.3f), shock error "
-         "%.4f -> %.4f (x %.3f)\n", dx[0], dx[1], ep0, ep1, ep1 / ep0, es0, es1, es1 / es0);
+         "%.4f -> %.4f (x %.3f)\n",
+         dx[0], dx[1], ep0, ep1, ep1 / ep0, es0, es1, es1 / es0);
   CHECK(ep0 <= PLATEAU_TOL, "plateau density %.2f within %.0f %% of 64", c.plateau,
         100 * PLATEAU_TOL);
   CHECK(es0 <= SHOCK_TOL, "shock radius %.4f within %.0f %% of %.3f", c.rshock, 100 * SHOCK_TOL,
         rs);
-  CHECK(ep1 <= PLATEAU_TOL_FINE, "finer run: plateau density %.2f within %.0f %% of 64",
-        fn.plateau, 100 * PLATEAU_TOL_FINE);
+  CHECK(ep1 <= PLATEAU_TOL_FINE, "finer run: plateau density %.2f within %.0f %% of 64", fn.plateau,
+        100 * PLATEAU_TOL_FINE);
   CHECK(es1 <= SHOCK_TOL_FINE, "finer run: shock radius %.4f within %.0f %% of %.3f", fn.rshock,
         100 * SHOCK_TOL_FINE, rs);
   CHECK(ep1 <= CONVERGE * ep0, "plateau error falls with resolution: %.4f <= %.2f x %.4f", ep1,
         CONVERGE, ep0);
-  CHECK(es1 <= CONVERGE * es0, "shock-radius error falls with resolution: %.4f <= %.2f x %.4f",
-        es1, CONVERGE, es0);
+  CHECK(es1 <= CONVERGE * es0, "shock-radius error falls with resolution: %.4f <= %.2f x %.4f", es1,
+        CONVERGE, es0);
   return test_finish();
 }

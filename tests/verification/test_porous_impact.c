@@ -57,41 +57,47 @@
 #include "testlib.h"
 
 /* al-alloy, data/materials.yaml (the paper's Tables 5 and 8) */
-#define RHO0 2780.0      /* [kg/m3] */
-#define C0 5612.0        /* [m/s] */
-#define N_MURN 3.54      /* [-] */
-#define GAMMA_G 1.176    /* [-] */
-#define V_IMPACT 7000.0  /* [m/s] */
+#define RHO0     2780.0 /* [kg/m3] */
+#define C0       5612.0 /* [m/s] */
+#define N_MURN   3.54   /* [-] */
+#define GAMMA_G  1.176  /* [-] */
+#define V_IMPACT 7000.0 /* [m/s] */
 
-#define FORCE_TOL 0.05           /* the plate's momentum rate / (p A): the debris arrives in
+#define FORCE_TOL                                                                                  \
+  0.05                       /* the plate's momentum rate / (p A): the debris arrives in
                                     layer pulses, the fit over 8 outputs reads them to a few
                                     % (measured 3.8 % at most; the unbounded rule 86 %) */
-#define INTERFACE_TOL 0.02       /* plateau velocity / u (f = 0.3) */
-#define AREA (1.8e-3 * 1.8e-3)   /* [m2] the periodic cross-section */
-#define SHOCK_SPEED_TOL 0.03     /* issue 3 */
-#define PRESSURE_TOL 0.03        /* issue 3 */
-#define OVERCOMPRESSED_TOL 0.01  /* plate particles above 2 ρ₀, fraction of the plate
+#define INTERFACE_TOL   0.02 /* plateau velocity / u (f = 0.3) */
+#define AREA            (1.8e-3 * 1.8e-3) /* [m2] the periodic cross-section */
+#define SHOCK_SPEED_TOL 0.03              /* issue 3 */
+#define PRESSURE_TOL    0.03              /* issue 3 */
+#define OVERCOMPRESSED_TOL                                                                         \
+  0.01                     /* plate particles above 2 ρ₀, fraction of the plate
                                     (measured 0.32 % at f = 0.3; the unbounded rule 1.6-4.4 %) */
-#define T_FIT_START 0.1e-6       /* [s] fit the front from here on */
+#define T_FIT_START 0.1e-6 /* [s] fit the front from here on */
 
 /* The debris' shocked state at particle speed jump w from (f ρ₀, 0, 0). */
 static void porous_hugoniot(double f, double w, double *rho1, double *Us, double *p1)
 {
   const double r00 = f * RHO0;
-  double a = r00 * (1.0 + 1e-9), b = 4.0 * RHO0;   /* residual < 0 at a, > 0 at b */
+  double a = r00 * (1.0 + 1e-9), b = 4.0 * RHO0; /* residual < 0 at a, > 0 at b */
   for (int k = 0; k < 200; k++) {
     const double r = 0.5 * (a + b);
     const double p = r00 * w * w * r / (r - r00);
     const double pe = fmax(sc_mg_pressure(RHO0, C0, N_MURN, GAMMA_G, r, 0.5 * w * w), 0.0);
-    if (pe - p > 0) b = r;
-    else a = r;
+    if (pe - p > 0)
+      b = r;
+    else
+      a = r;
   }
   *rho1 = 0.5 * (a + b);
   *Us = w * *rho1 / (*rho1 - r00);
   *p1 = r00 * *Us * w;
 }
 
-struct exact { double u, p, rho_plate, us_plate, rho_debris; };
+struct exact {
+  double u, p, rho_plate, us_plate, rho_debris;
+};
 
 static struct exact match(double f)
 {
@@ -100,8 +106,10 @@ static struct exact match(double f)
     const double u = 0.5 * (lo + hi);
     sc_mg_hugoniot(RHO0, C0, N_MURN, GAMMA_G, u, &r, &us, &ps);
     porous_hugoniot(f, V_IMPACT - u, &rd, &ud, &pd);
-    if (ps > pd) hi = u;
-    else lo = u;
+    if (ps > pd)
+      hi = u;
+    else
+      lo = u;
   }
   struct exact e;
   e.u = 0.5 * (lo + hi);
@@ -115,13 +123,14 @@ static void one_case(double f, double density, double spacing_mm)
 {
   const struct exact e = match(f);
   printf("f = %.2f: u = %.2f m/s, p = %.3f GPa, plate %.4f rho0 with Us = %.1f m/s, debris "
-         "compacted to %.4f rho0\n", f, e.u, e.p * 1e-9, e.rho_plate / RHO0, e.us_plate,
-         e.rho_debris / RHO0);
+         "compacted to %.4f rho0\n",
+         f, e.u, e.p * 1e-9, e.rho_plate / RHO0, e.us_plate, e.rho_debris / RHO0);
   char extra[512], out[32], label[64];
-  snprintf(extra, sizeof extra, "--set bodies[0].density=\"%.6g kg/m3\" --set "
+  snprintf(extra, sizeof extra,
+           "--set bodies[0].density=\"%.6g kg/m3\" --set "
            "bodies[0].spacing=\"%g mm\" --set \"bodies[0].velocity=[%.7f m/s, 0, 0]\" "
-           "--set \"bodies[1].velocity=[%.7f m/s, 0, 0]\"", density, spacing_mm,
-           V_IMPACT - e.u, -e.u);
+           "--set \"bodies[1].velocity=[%.7f m/s, 0, 0]\"",
+           density, spacing_mm, V_IMPACT - e.u, -e.u);
   snprintf(out, sizeof out, "porous_impact_%02d", (int)lround(100 * f));
   snprintf(label, sizeof label, "porous-impact.yaml at f = %g", f);
   int nsnap;
@@ -142,7 +151,7 @@ static void one_case(double f, double density, double spacing_mm)
     double t;
     if (sc_read(dir, k, &p, &t)) break;
     size_t over = 0;
-    double mom = 0.0;   /* the plate's x-momentum */
+    double mom = 0.0; /* the plate's x-momentum */
     for (size_t i = 0; i < p.n; i++) {
       if (p.body[i] != 1) continue;
       rho_max = fmax(rho_max, p.rho[i]);
@@ -166,39 +175,49 @@ static void one_case(double f, double density, double spacing_mm)
       int c;
       plat_p = sc_plateau(X, P, nl[1], front, 0.3, 0.8, &c);
       plat_v = sc_plateau(X, V, nl[1], front, 0.3, 0.8, NULL);
-      printf("  t = %.3e s: front at %+.4e m, plateau (%d layers) v = %+.2f m/s, p = %.3f GPa\n",
-             t, front, c, plat_v, plat_p * 1e-9);
+      printf("  t = %.3e s: front at %+.4e m, plateau (%d layers) v = %+.2f m/s, p = %.3f GPa\n", t,
+             front, c, plat_v, plat_p * 1e-9);
     }
     particles_free(&p);
   }
-  CHECK(nmom >= 4 && nfit >= 4, "f = %g: %d momenta and %d front positions to fit", f, nmom,
-        nfit);
+  CHECK(nmom >= 4 && nfit >= 4, "f = %g: %d momenta and %d front positions to fit", f, nmom, nfit);
   if (nmom >= 4 && nfit >= 4) {
     double rms;
     const double force = sc_linfit(tm, pm, nmom, NULL, NULL), want = e.p * AREA;
     const double slope = sc_linfit(tt, xf, nfit, NULL, &rms);
-    const double Us = fabs(slope) + e.u;   /* relative to the plate ahead (at −u) */
+    const double Us = fabs(slope) + e.u; /* relative to the plate ahead (at −u) */
     printf("  force on the plate %.4g N vs p A = %.4g N (%+.2f%%); shock: front at %+.1f m/s "
            "(fit rms %.2e m), Us = %.1f m/s vs %.1f (%+.2f%%); plateau p = %.3f GPa vs %.3f "
-           "(%+.2f%%), velocity %+.2f m/s (%.2f%% of u)\n", force, want,
-           100 * (force / want - 1), slope, rms, Us, e.us_plate, 100 * (Us / e.us_plate - 1),
-           plat_p * 1e-9, e.p * 1e-9, 100 * (plat_p / e.p - 1), plat_v, 100 * fabs(plat_v) / e.u);
-    CHECK(fabs(force / want - 1) < FORCE_TOL, "f = %g: the debris pushes the plate with %.4g N, "
-          "within %.0f%% of the impedance match's p A = %.4g N", f, force, 100 * FORCE_TOL,
-          want);
-    CHECK(fabs(Us / e.us_plate - 1) < SHOCK_SPEED_TOL, "f = %g: shock speed %.1f m/s within "
-          "%.0f%% of %.1f m/s", f, Us, 100 * SHOCK_SPEED_TOL, e.us_plate);
-    if (f >= 0.3) {   /* the debris a continuum on the plate's scale */
-      CHECK(fabs(plat_v) < INTERFACE_TOL * e.u, "f = %g: the plate's plateau is at rest, %+.2f "
-            "m/s (within %.0f%% of u = %.1f m/s)", f, plat_v, 100 * INTERFACE_TOL, e.u);
-      CHECK(fabs(plat_p / e.p - 1) < PRESSURE_TOL, "f = %g: plateau pressure %.3f GPa within "
-            "%.0f%% of %.3f GPa", f, plat_p * 1e-9, 100 * PRESSURE_TOL, e.p * 1e-9);
+           "(%+.2f%%), velocity %+.2f m/s (%.2f%% of u)\n",
+           force, want, 100 * (force / want - 1), slope, rms, Us, e.us_plate,
+           100 * (Us / e.us_plate - 1), plat_p * 1e-9, e.p * 1e-9, 100 * (plat_p / e.p - 1), plat_v,
+           100 * fabs(plat_v) / e.u);
+    CHECK(fabs(force / want - 1) < FORCE_TOL,
+          "f = %g: the debris pushes the plate with %.4g N, "
+          "within %.0f%% of the impedance match's p A = %.4g N",
+          f, force, 100 * FORCE_TOL, want);
+    CHECK(fabs(Us / e.us_plate - 1) < SHOCK_SPEED_TOL,
+          "f = %g: shock speed %.1f m/s within "
+          "%.0f%% of %.1f m/s",
+          f, Us, 100 * SHOCK_SPEED_TOL, e.us_plate);
+    if (f >= 0.3) { /* the debris a continuum on the plate's scale */
+      CHECK(fabs(plat_v) < INTERFACE_TOL * e.u,
+            "f = %g: the plate's plateau is at rest, %+.2f "
+            "m/s (within %.0f%% of u = %.1f m/s)",
+            f, plat_v, 100 * INTERFACE_TOL, e.u);
+      CHECK(fabs(plat_p / e.p - 1) < PRESSURE_TOL,
+            "f = %g: plateau pressure %.3f GPa within "
+            "%.0f%% of %.3f GPa",
+            f, plat_p * 1e-9, 100 * PRESSURE_TOL, e.p * 1e-9);
     }
   }
   printf("  plate: largest density %.3f rho0, at most %zu of %zu particles above 2 rho0 at "
-         "one output\n", rho_max / RHO0, over_max, nplate);
-  CHECK((double)over_max <= OVERCOMPRESSED_TOL * (double)nplate, "f = %g: %zu plate particles "
-        "above 2 rho0 (at most %.0f%% of %zu)", f, over_max, 100 * OVERCOMPRESSED_TOL, nplate);
+         "one output\n",
+         rho_max / RHO0, over_max, nplate);
+  CHECK((double)over_max <= OVERCOMPRESSED_TOL * (double)nplate,
+        "f = %g: %zu plate particles "
+        "above 2 rho0 (at most %.0f%% of %zu)",
+        f, over_max, 100 * OVERCOMPRESSED_TOL, nplate);
   for (int b = 0; b < 2; b++) free(layer[b]);
   free(X);
   free(V);

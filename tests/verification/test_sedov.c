@@ -41,11 +41,11 @@
 #include "profile.h"
 #include "testlib.h"
 
-#define T_END 0.05
-#define GAMMA (5.0 / 3.0)
-#define E_BLAST 1.0   /* [J] the whole sphere; the octant holds E/8 */
-#define DR 0.01       /* [m] bin width */
-#define NB 60
+#define T_END   0.05
+#define GAMMA   (5.0 / 3.0)
+#define E_BLAST 1.0  /* [J] the whole sphere; the octant holds E/8 */
+#define DR      0.01 /* [m] bin width */
+#define NB      60
 
 /* Thresholds. Measured at the CI resolution (Δ = 0.015, R = 0.06, η = 1.5, density by
  * summation, 27 000 particles): half-height radius 0.3587 (+3.2 %), peak radius 0.3429
@@ -57,13 +57,13 @@
  *                                                                      → fails
  *   no viscosity (α = β = 0):     half-height −39 %, peak radius −50 %  → fails
  *   continuity density (sph.density: continuity): peak radius −8.8 %   → fails */
-#define RADIUS_RTOL 0.055     /* |r_half/r_s − 1| */
-#define RPEAK_RTOL 0.04       /* |r_peak/r_s − 1| */
-#define PEAK_LO 2.45
-#define PEAK_HI 2.95
-#define ETOT_RTOL 0.01        /* |(E_kin + E_int)/(E/8) − 1|; measured −0.14 % */
-#define EKIN_RTOL 0.10        /* |E_kin/E_kin,exact − 1|; measured +7.3 % */
-#define ECORE_MAX 0.01        /* [J] internal energy within r < 0.3 r_s; measured 0.0052 */
+#define RADIUS_RTOL 0.055 /* |r_half/r_s − 1| */
+#define RPEAK_RTOL  0.04  /* |r_peak/r_s − 1| */
+#define PEAK_LO     2.45
+#define PEAK_HI     2.95
+#define ETOT_RTOL   0.01 /* |(E_kin + E_int)/(E/8) − 1|; measured −0.14 % */
+#define EKIN_RTOL   0.10 /* |E_kin/E_kin,exact − 1|; measured +7.3 % */
+#define ECORE_MAX   0.01 /* [J] internal energy within r < 0.3 r_s; measured 0.0052 */
 
 int main(int argc, char **argv)
 {
@@ -86,8 +86,10 @@ int main(int argc, char **argv)
   double *r = profile_radii(&p);
   const double rs = exact_sedov_radius(sol.xi0, E_BLAST, 1.0, t);
   char comment[512];
-  snprintf(comment, sizeof comment, "sedov t=%.6g n=%zu: particles vs the Sedov-Taylor "
-           "solution (gamma 5/3, E = 1, xi0 = %.5f, shock at r = %.4g)", t, p.n, sol.xi0, rs);
+  snprintf(comment, sizeof comment,
+           "sedov t=%.6g n=%zu: particles vs the Sedov-Taylor "
+           "solution (gamma 5/3, E = 1, xi0 = %.5f, shock at r = %.4g)",
+           t, p.n, sol.xi0, rs);
   FILE *f = profile_open("sedov_profile.csv", comment, "r,rho,rho_exact,vr,vr_exact,p,p_exact");
   for (size_t i = 0; i < p.n; i++) {
     struct gas_state e;
@@ -95,8 +97,7 @@ int main(int argc, char **argv)
     double vr = 0.0;
     for (int k = 0; k < 3; k++) vr += p.v[k][i] * p.x[k][i];
     vr = r[i] > 0 ? vr / r[i] : 0.0;
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i], p.rho[i], e.rho, vr, e.u, p.p[i],
-            e.p);
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r[i], p.rho[i], e.rho, vr, e.u, p.p[i], e.p);
   }
   profile_close(f);
   f = profile_open("sedov_exact.csv", comment, "r,rho_exact,vr_exact,p_exact");
@@ -122,8 +123,8 @@ int main(int argc, char **argv)
     }
   }
   for (int k = 0; k < 20000; k++) {
-    const double rr = (k + 0.5) * rs / 20000.0, dv = 0.5 * 3.14159265358979323846 * rr * rr *
-                                                     rs / 20000.0;
+    const double rr = (k + 0.5) * rs / 20000.0,
+                 dv = 0.5 * 3.14159265358979323846 * rr * rr * rs / 20000.0;
     struct gas_state e;
     exact_sedov(&sol, E_BLAST, 1.0, t, rr, &e);
     xk += 0.5 * e.rho * e.u * e.u * dv;
@@ -131,14 +132,18 @@ int main(int argc, char **argv)
     if (rr < 0.3 * rs) xi_in += e.p / (GAMMA - 1.0) * dv;
   }
   printf("  energy [J]: kinetic %.4f (exact %.4f), internal %.4f (exact %.4f); kinetic "
-         "fraction %.3f (exact %.3f)\n", ek, xk, ei, xi, ek / (ek + ei), xk / (xk + xi));
-  printf("  internal energy within r < 0.3 r_s: %.4f in %ld particles (exact %.4f)\n", ei_in,
-         n_in, xi_in);
-  CHECK(fabs((ek + ei) / (E_BLAST / 8) - 1.0) <= ETOT_RTOL, "total energy %.5f J within %.0f %% "
-        "of the octant's E/8 = %.3f J (%+.2f %%)", ek + ei, 100 * ETOT_RTOL, E_BLAST / 8,
-        100 * ((ek + ei) / (E_BLAST / 8) - 1.0));
-  CHECK(fabs(ek / xk - 1.0) <= EKIN_RTOL, "kinetic energy %.5f J within %.0f %% of the exact "
-        "%.5f J (%+.2f %%)", ek, 100 * EKIN_RTOL, xk, 100 * (ek / xk - 1.0));
+         "fraction %.3f (exact %.3f)\n",
+         ek, xk, ei, xi, ek / (ek + ei), xk / (xk + xi));
+  printf("  internal energy within r < 0.3 r_s: %.4f in %ld particles (exact %.4f)\n", ei_in, n_in,
+         xi_in);
+  CHECK(fabs((ek + ei) / (E_BLAST / 8) - 1.0) <= ETOT_RTOL,
+        "total energy %.5f J within %.0f %% "
+        "of the octant's E/8 = %.3f J (%+.2f %%)",
+        ek + ei, 100 * ETOT_RTOL, E_BLAST / 8, 100 * ((ek + ei) / (E_BLAST / 8) - 1.0));
+  CHECK(fabs(ek / xk - 1.0) <= EKIN_RTOL,
+        "kinetic energy %.5f J within %.0f %% of the exact "
+        "%.5f J (%+.2f %%)",
+        ek, 100 * EKIN_RTOL, xk, 100 * (ek / xk - 1.0));
   CHECK(ei_in < ECORE_MAX, "internal energy within r < 0.3 r_s %.5f J < %.2f J (exact %.5f J)",
         ei_in, ECORE_MAX, xi_in);
 
@@ -166,8 +171,8 @@ int main(int argc, char **argv)
       break;
     }
   printf("  binned density (width %g):", DR);
-  for (int b = 0; b < 45; b++) printf("%s%.3f:%.2f", b % 6 ? "  " : "\n    ", (b + 0.5) * DR,
-                                     mean[b]);
+  for (int b = 0; b < 45; b++)
+    printf("%s%.3f:%.2f", b % 6 ? "  " : "\n    ", (b + 0.5) * DR, mean[b]);
   printf("\n");
   printf("  Sedov at t = %g: %zu particles, wall %.1f s\n", t, p.n, wall);
   printf("  exact shock radius %.4f (xi0 = %.5f)\n", rs, sol.xi0);
@@ -178,10 +183,14 @@ int main(int argc, char **argv)
   printf("  MEASURED sedov n=%zu wall=%.1f rpeak=%.4f peak=%.3f rhalf=%.4f\n", p.n, wall, rpeak,
          peak, rhalf);
 
-  CHECK(fabs(rhalf / rs - 1.0) <= RADIUS_RTOL, "shock radius (outer half-height point) %.4f "
-        "within %.1f %% of %.4f", rhalf, 100 * RADIUS_RTOL, rs);
-  CHECK(fabs(rpeak / rs - 1.0) <= RPEAK_RTOL, "radius of the density peak %.4f within %.0f %% "
-        "of %.4f", rpeak, 100 * RPEAK_RTOL, rs);
+  CHECK(fabs(rhalf / rs - 1.0) <= RADIUS_RTOL,
+        "shock radius (outer half-height point) %.4f "
+        "within %.1f %% of %.4f",
+        rhalf, 100 * RADIUS_RTOL, rs);
+  CHECK(fabs(rpeak / rs - 1.0) <= RPEAK_RTOL,
+        "radius of the density peak %.4f within %.0f %% "
+        "of %.4f",
+        rpeak, 100 * RPEAK_RTOL, rs);
   CHECK(peak >= PEAK_LO && peak <= PEAK_HI, "peak density %.3f in [%.2f, %.2f]", peak, PEAK_LO,
         PEAK_HI);
   free(r);

@@ -31,7 +31,7 @@
 #include "testlib.h"
 
 #define T_END 0.2
-#define X_MAX 0.4   /* |x| < X_MAX: the region compared */
+#define X_MAX 0.4 /* |x| < X_MAX: the region compared */
 
 /* Thresholds. Measured at the CI resolution (Δ = 0.005 left / 0.01 right, Wendland C2,
  * η = 1.8, density by summation, 28 800 particles): L1(ρ) = 0.00568, L1(vx) = 0.01008,
@@ -43,8 +43,8 @@
  *   cubic spline, η = 1.5, summation (too few layers along the stretched
  *   lattice): star pressure +6.0 %                                     → fails */
 #define L1_RHO_MAX 0.0082
-#define L1_VX_MAX 0.0146
-#define L1_P_MAX 0.0097
+#define L1_VX_MAX  0.0146
+#define L1_P_MAX   0.0097
 /* Star plateau: measured p = 0.30740 (+1.41 %), vx = 0.92472 (−0.29 %); allowed 2.5 %
  * on p and 1 % on vx (γ = 5/3: exact u* = 0.8412, −9.3 %, measured −9.6 %; with the
  * viscosity switch u* is −0.44 %). */
@@ -61,10 +61,10 @@
  * (SW_REST_MAX); an expansion is no source either (SW_RAREF_MAX); the shock raises α
  * (SW_SHOCK_MIN) and it decays behind it (SW_STAR_MAX: without the decay the left star
  * would keep the value of the start's jump). */
-#define SW_REST_MAX 1e-3
+#define SW_REST_MAX  1e-3
 #define SW_RAREF_MAX 0.05
 #define SW_SHOCK_MIN 0.5
-#define SW_STAR_MAX 0.35
+#define SW_STAR_MAX  0.35
 
 static void sod_switch(const struct particles *p)
 {
@@ -81,8 +81,8 @@ static void sod_switch(const struct particles *p)
   double mean[4];
   for (int k = 0; k < 4; k++) mean[k] = cnt[k] ? sum[k] / (double)cnt[k] : -1.0;
   printf("  switch: alpha mean / max: rest %.4f / %.4f, rarefaction %.4f / %.4f, left star "
-         "%.4f / %.4f, shock %.4f / %.4f\n", mean[0], mx[0], mean[1], mx[1], mean[2], mx[2],
-         mean[3], mx[3]);
+         "%.4f / %.4f, shock %.4f / %.4f\n",
+         mean[0], mx[0], mean[1], mx[1], mean[2], mx[2], mean[3], mx[3]);
   CHECK(cnt[0] && mx[0] <= SW_REST_MAX, "switch: undisturbed gas keeps alpha <= %g (max %.4f)",
         SW_REST_MAX, mx[0]);
   CHECK(mean[1] <= SW_RAREF_MAX, "switch: rarefaction mean alpha %.4f <= %g", mean[1],
@@ -116,25 +116,27 @@ int main(int argc, char **argv)
   /* where the error lies: the L1 sums split by wave region (edges at t = 0.2) */
   enum { NREG = 6 };
   static const char *const reg_name[NREG] = {"undisturbed", "rarefaction", "left star",
-                                              "contact", "right star", "shock"};
+                                             "contact",     "right star",  "shock"};
   static const double reg_edge[NREG - 1] = {-0.25, -0.01, 0.17, 0.20, 0.33};
   double reg[NREG][3] = {{0}};
   long n = 0, nstar = 0;
   char comment[512];
-  snprintf(comment, sizeof comment, "sod t=%.6g n=%zu: particles vs the exact Riemann "
-           "solution (gamma 1.4)", t, p.n);
+  snprintf(comment, sizeof comment,
+           "sod t=%.6g n=%zu: particles vs the exact Riemann "
+           "solution (gamma 1.4)",
+           t, p.n);
   FILE *f = profile_open("sod_profile.csv", comment, "x,rho,rho_exact,vx,vx_exact,p,p_exact");
   for (size_t i = 0; i < p.n; i++) {
     const double x = p.x[0][i];
     struct gas_state e;
     exact_riemann(L, R, gamma, x / t, &e);
-    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", x, p.rho[i], e.rho, p.v[0][i], e.u,
-            p.p[i], e.p);
+    fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", x, p.rho[i], e.rho, p.v[0][i], e.u, p.p[i],
+            e.p);
     if (fabs(x) < X_MAX) {
       const double d[3] = {fabs(p.rho[i] - e.rho), fabs(p.v[0][i] - e.u), fabs(p.p[i] - e.p)};
       int k = 0;
       while (k < NREG - 1 && x >= reg_edge[k]) k++;
-      if (k == NREG - 1 && x >= 0.37) k = 0;  /* beyond the shock: undisturbed right state */
+      if (k == NREG - 1 && x >= 0.37) k = 0; /* beyond the shock: undisturbed right state */
       for (int c = 0; c < 3; c++) {
         l1[c] += d[c];
         reg[k][c] += d[c];
@@ -170,10 +172,11 @@ int main(int argc, char **argv)
     printf("    %-12s %.5f %.5f %.5f\n", reg_name[k], reg[k][0] / (double)n, reg[k][1] / (double)n,
            reg[k][2] / (double)n);
   printf("  star plateau (0.03 < x < 0.15, %ld particles): p = %.5f (exact %.5f, %+.2f %%), "
-         "vx = %.5f (exact %.5f, %+.2f %%)\n", nstar, pm, ps, 100 * (pm / ps - 1), um, us,
-         100 * (um / us - 1));
+         "vx = %.5f (exact %.5f, %+.2f %%)\n",
+         nstar, pm, ps, 100 * (pm / ps - 1), um, us, 100 * (um / us - 1));
   printf("  MEASURED sod n=%zu wall=%.1f L1_rho=%.5f L1_vx=%.5f L1_p=%.5f pstar=%.5f "
-         "ustar=%.5f\n", p.n, wall, l1[0], l1[1], l1[2], pm, um);
+         "ustar=%.5f\n",
+         p.n, wall, l1[0], l1[1], l1[2], pm, um);
 
   CHECK(l1[0] <= L1_RHO_MAX, "L1(rho) = %.5f <= %.4f", l1[0], L1_RHO_MAX);
   CHECK(l1[1] <= L1_VX_MAX, "L1(vx) = %.5f <= %.4f", l1[1], L1_VX_MAX);

@@ -52,21 +52,21 @@
 #include "solidcase.h"
 #include "testlib.h"
 
-#define SIGMA_C 0.59e9        /* [Pa] |σ_c| of al-alloy (data/materials.yaml, Tables 5, 8) */
-#define SPALL_BAND 4.0        /* [initial spacings] half-width of the band around x_s */
-#define EXCLUDE_CONTACT 2.0   /* [initial spacings] contact layers (checked apart, item 4) */
-#define TAU_SHORT 0.2e-6      /* [s] shorter than the tension at the spall plane lasts */
-#define TAU_LONG 5e-6         /* [s] longer than the run (1.6 µs) */
-#define DT_OUT 0.05e-6        /* [s] output interval of runs 2-4 */
+#define SIGMA_C         0.59e9  /* [Pa] |σ_c| of al-alloy (data/materials.yaml, Tables 5, 8) */
+#define SPALL_BAND      4.0     /* [initial spacings] half-width of the band around x_s */
+#define EXCLUDE_CONTACT 2.0     /* [initial spacings] contact layers (checked apart, item 4) */
+#define TAU_SHORT       0.2e-6  /* [s] shorter than the tension at the spall plane lasts */
+#define TAU_LONG        5e-6    /* [s] longer than the run (1.6 µs) */
+#define DT_OUT          0.05e-6 /* [s] output interval of runs 2-4 */
 
 struct outcome {
   size_t split_inside, split_band, split_outside, split_contact;
-  double xlo, xhi;           /* [m] range of initial x of the split particles (not contact) */
-  double sigmax;             /* [Pa] largest principal tension over the outputs (not contact) */
-  double xs, dx;             /* [m] expected spall plane, initial spacing */
-  double t_over, t_split;    /* [s] first output with an unsplit particle beyond |σ_c|, and
+  double xlo, xhi;        /* [m] range of initial x of the split particles (not contact) */
+  double sigmax;          /* [Pa] largest principal tension over the outputs (not contact) */
+  double xs, dx;          /* [m] expected spall plane, initial spacing */
+  double t_over, t_split; /* [s] first output with an unsplit particle beyond |σ_c|, and
                                 with a split one (both away from the contact; HUGE_VAL: none) */
-  size_t layer_count;        /* particles in one lattice layer */
+  size_t layer_count;     /* particles in one lattice layer */
 };
 
 static int analyse(const char *out, const char *extra, struct outcome *o)
@@ -94,13 +94,13 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
   }
   o->layer_count = 0;
   for (size_t i = 0; i < p0.n; i++) o->layer_count += p0.body[i] == 1 && p0.x[0][i] == tmin;
-  o->dx = tmin - fmax;                       /* the lattices meet at x = 0, dx apart */
+  o->dx = tmin - fmax; /* the lattices meet at x = 0, dx apart */
   const double contact = 0.5 * (tmin + fmax);
   const double t_flyer = fmax - fmin + o->dx, rear = tmax + 0.5 * o->dx;
   o->xs = rear - t_flyer;
   printf("  flyer %.3f mm thick, target rear face at %.3f mm, spacing %.4f mm: expected spall "
-         "plane x_s = %.3f mm (initial coordinates)\n", t_flyer * 1e3, rear * 1e3, o->dx * 1e3,
-         o->xs * 1e3);
+         "plane x_s = %.3f mm (initial coordinates)\n",
+         t_flyer * 1e3, rear * 1e3, o->dx * 1e3, o->xs * 1e3);
   o->sigmax = 0;
   o->t_over = o->t_split = HUGE_VAL;
   for (int k = 1; k < nsnap; k++) {
@@ -138,8 +138,10 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
           continue;
         }
         o->split_inside++;
-        if (fabs(xi - o->xs) <= SPALL_BAND * o->dx) o->split_band++;
-        else o->split_outside++;
+        if (fabs(xi - o->xs) <= SPALL_BAND * o->dx)
+          o->split_band++;
+        else
+          o->split_outside++;
         o->xlo = xi < o->xlo ? xi : o->xlo;
         o->xhi = xi > o->xhi ? xi : o->xhi;
       }
@@ -147,7 +149,8 @@ static int analyse(const char *out, const char *extra, struct outcome *o)
     size_t nsplit = 0;
     for (size_t i = 0; i < p.n; i++) nsplit += p.damage[i] >= 1;
     printf("  t = %.2f us: largest principal tension (unsplit, away from the contact) %.4f GPa "
-           "at x0 = %.2f mm; %zu split\n", t * 1e6, smax * 1e-9, xsm * 1e3, nsplit);
+           "at x0 = %.2f mm; %zu split\n",
+           t * 1e6, smax * 1e-9, xsm * 1e3, nsplit);
     particles_free(&p);
   }
   free(x0);
@@ -162,29 +165,39 @@ int main(void)
   if (analyse("spall", NULL, &hi)) return test_finish();
   printf("  split: %zu away from the contact (initial x from %.3f to %.3f mm), of which %zu in "
          "the band x_s +- %.0f spacings = [%.3f, %.3f] mm; %zu outside; %zu in the contact "
-         "layers\n", hi.split_inside, hi.xlo * 1e3, hi.xhi * 1e3, hi.split_band,
-         SPALL_BAND, (hi.xs - SPALL_BAND * hi.dx) * 1e3, (hi.xs + SPALL_BAND * hi.dx) * 1e3,
-         hi.split_outside, hi.split_contact);
-  CHECK(hi.split_inside >= hi.layer_count, "the target spalls: %zu particles split (a full "
-        "layer is %zu)", hi.split_inside, hi.layer_count);
-  CHECK(hi.split_outside == 0, "every split particle lies within %.0f spacings of the expected "
-        "plane %.3f mm (split from %.3f to %.3f mm; %zu outside)", SPALL_BAND, hi.xs * 1e3,
-        hi.xlo * 1e3, hi.xhi * 1e3, hi.split_outside);
+         "layers\n",
+         hi.split_inside, hi.xlo * 1e3, hi.xhi * 1e3, hi.split_band, SPALL_BAND,
+         (hi.xs - SPALL_BAND * hi.dx) * 1e3, (hi.xs + SPALL_BAND * hi.dx) * 1e3, hi.split_outside,
+         hi.split_contact);
+  CHECK(hi.split_inside >= hi.layer_count,
+        "the target spalls: %zu particles split (a full "
+        "layer is %zu)",
+        hi.split_inside, hi.layer_count);
+  CHECK(hi.split_outside == 0,
+        "every split particle lies within %.0f spacings of the expected "
+        "plane %.3f mm (split from %.3f to %.3f mm; %zu outside)",
+        SPALL_BAND, hi.xs * 1e3, hi.xlo * 1e3, hi.xhi * 1e3, hi.split_outside);
   /* guards the contact unloading in sph_density_rate_solid(); measured 0 (before the fix
      the contact layers split at ~1.2 µs) */
-  CHECK(hi.split_contact == 0, "100 m/s: no particle of the contact layers splits after the "
-        "bodies separate (%zu split)", hi.split_contact);
+  CHECK(hi.split_contact == 0,
+        "100 m/s: no particle of the contact layers splits after the "
+        "bodies separate (%zu split)",
+        hi.split_contact);
 
   printf("run 2: flyer at 50 m/s\n");
   if (analyse("spall_low", "--set 'bodies[0].velocity=[50 m/s, 0, 0]' --set output.every=5e-8",
               &lo))
     return test_finish();
-  printf("  split: %zu away from the contact; %zu in the contact layers\n",
-         lo.split_inside, lo.split_contact);
-  CHECK(lo.sigmax < SIGMA_C, "at 50 m/s the tension stays below |sigma_c|: largest principal "
-        "stress over the outputs %.4f GPa < %.2f GPa", lo.sigmax * 1e-9, SIGMA_C * 1e-9);
-  CHECK(lo.split_inside == 0, "no particle splits where the tension stayed below |sigma_c| "
-        "(%zu split)", lo.split_inside);
+  printf("  split: %zu away from the contact; %zu in the contact layers\n", lo.split_inside,
+         lo.split_contact);
+  CHECK(lo.sigmax < SIGMA_C,
+        "at 50 m/s the tension stays below |sigma_c|: largest principal "
+        "stress over the outputs %.4f GPa < %.2f GPa",
+        lo.sigmax * 1e-9, SIGMA_C * 1e-9);
+  CHECK(lo.split_inside == 0,
+        "no particle splits where the tension stayed below |sigma_c| "
+        "(%zu split)",
+        lo.split_inside);
   /* the contact unloading (see the header, item 4); measured 0 */
   CHECK(lo.split_contact == 0, "50 m/s: no particle of the contact layers splits (%zu split)",
         lo.split_contact);
@@ -192,37 +205,45 @@ int main(void)
   char extra[512];
   printf("run 3: flyer at 100 m/s, cumulative criterion, tau = %.2f us\n", TAU_SHORT * 1e6);
   struct outcome cu;
-  snprintf(extra, sizeof extra, "--set 'materials.al={library: al-alloy, fracture: {model: "
-           "cumulative, tau: %.17g}}' --set output.every=%.17g", TAU_SHORT, DT_OUT);
+  snprintf(extra, sizeof extra,
+           "--set 'materials.al={library: al-alloy, fracture: {model: "
+           "cumulative, tau: %.17g}}' --set output.every=%.17g",
+           TAU_SHORT, DT_OUT);
   if (analyse("spall_tau_short", extra, &cu)) return test_finish();
   printf("  split: %zu away from the contact (%zu in the band), initial x from %.3f to %.3f mm; "
          "tension beyond |sigma_c| first seen at %.2f us, the first split at %.2f us; %zu in "
-         "the contact layers\n", cu.split_inside, cu.split_band, cu.xlo * 1e3, cu.xhi * 1e3,
-         cu.t_over * 1e6, cu.t_split * 1e6, cu.split_contact);
+         "the contact layers\n",
+         cu.split_inside, cu.split_band, cu.xlo * 1e3, cu.xhi * 1e3, cu.t_over * 1e6,
+         cu.t_split * 1e6, cu.split_contact);
   /* the contact unloading (see the header, item 4); measured 0 */
-  CHECK(cu.split_contact == 0, "tau = %.2f us: no particle of the contact layers splits (%zu "
-        "split)", TAU_SHORT * 1e6, cu.split_contact);
-  CHECK(cu.split_inside >= cu.layer_count &&
-            fabs(0.5 * (cu.xlo + cu.xhi) - cu.xs) <= 1.0 * cu.dx,
+  CHECK(cu.split_contact == 0,
+        "tau = %.2f us: no particle of the contact layers splits (%zu "
+        "split)",
+        TAU_SHORT * 1e6, cu.split_contact);
+  CHECK(cu.split_inside >= cu.layer_count && fabs(0.5 * (cu.xlo + cu.xhi) - cu.xs) <= 1.0 * cu.dx,
         "tau = %.2f us: the target spalls (%zu split, a layer is %zu) in a zone centred on the "
         "expected plane (%.3f to %.3f mm, centre within one spacing of %.3f mm)",
-        TAU_SHORT * 1e6, cu.split_inside, cu.layer_count, cu.xlo * 1e3, cu.xhi * 1e3,
-        cu.xs * 1e3);
+        TAU_SHORT * 1e6, cu.split_inside, cu.layer_count, cu.xlo * 1e3, cu.xhi * 1e3, cu.xs * 1e3);
   CHECK(cu.t_split - cu.t_over >= TAU_SHORT - DT_OUT - 1e-12,
         "no split before the tension has lasted tau: first split %.2f us after the first "
-        "output beyond |sigma_c| (>= %.2f us)", (cu.t_split - cu.t_over) * 1e6,
-        (TAU_SHORT - DT_OUT) * 1e6);
+        "output beyond |sigma_c| (>= %.2f us)",
+        (cu.t_split - cu.t_over) * 1e6, (TAU_SHORT - DT_OUT) * 1e6);
 
   printf("run 4: flyer at 100 m/s, cumulative criterion, tau = %.1f us\n", TAU_LONG * 1e6);
-  snprintf(extra, sizeof extra, "--set 'materials.al={library: al-alloy, fracture: {model: "
-           "cumulative, tau: %.17g}}' --set output.every=%.17g", TAU_LONG, DT_OUT);
+  snprintf(extra, sizeof extra,
+           "--set 'materials.al={library: al-alloy, fracture: {model: "
+           "cumulative, tau: %.17g}}' --set output.every=%.17g",
+           TAU_LONG, DT_OUT);
   if (analyse("spall_tau_long", extra, &cu)) return test_finish();
   printf("  split: %zu away from the contact; %zu in the contact layers\n", cu.split_inside,
          cu.split_contact);
   /* the contact unloading (see the header, item 4); measured 0 */
-  CHECK(cu.split_contact == 0, "tau = %.1f us: no particle of the contact layers splits (%zu "
-        "split)", TAU_LONG * 1e6, cu.split_contact);
-  CHECK(cu.sigmax > SIGMA_C && cu.split_inside == 0, "tau = %.1f us: the tension reaches %.3f "
+  CHECK(cu.split_contact == 0,
+        "tau = %.1f us: no particle of the contact layers splits (%zu "
+        "split)",
+        TAU_LONG * 1e6, cu.split_contact);
+  CHECK(cu.sigmax > SIGMA_C && cu.split_inside == 0,
+        "tau = %.1f us: the tension reaches %.3f "
         "GPa (> |sigma_c|) and nothing away from the contact splits (%zu split)",
         TAU_LONG * 1e6, cu.sigmax * 1e-9, cu.split_inside);
   return test_finish();

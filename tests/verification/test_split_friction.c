@@ -51,22 +51,22 @@
 #include "testlib.h"
 
 /* al-alloy, data/materials.yaml (the paper's Tables 5 and 8) */
-#define RHO0 2780.0      /* [kg/m3] */
-#define C0 5612.0        /* [m/s] */
-#define N_MURN 3.54      /* [-] Murnaghan exponent */
-#define GAMMA_G 1.176    /* [-] Grüneisen coefficient */
-#define UP 50.0          /* [m/s] the case's ±50 m/s: each plate is brought to rest */
-#define MU 0.3           /* [-] the case's fracture.friction */
+#define RHO0    2780.0    /* [kg/m3] */
+#define C0      5612.0    /* [m/s] */
+#define N_MURN  3.54      /* [-] Murnaghan exponent */
+#define GAMMA_G 1.176     /* [-] Grüneisen coefficient */
+#define UP      50.0      /* [m/s] the case's ±50 m/s: each plate is brought to rest */
+#define MU      0.3       /* [-] the case's fracture.friction */
 #define G_SHEAR 26.6136e9 /* [Pa] al-alloy's G (Poisson 0.362; hvsph materials al-alloy) */
-#define Y0 0.383e9       /* [Pa] al-alloy's yield stress */
+#define Y0      0.383e9   /* [Pa] al-alloy's yield stress */
 
-#define SPEED_TOL 0.03     /* wave speed within 3 % */
-#define PRESSURE_TOL 0.03  /* plateau pressure within 3 % */
-#define RATIO_TOL 0.03     /* −S_xx/p within 3 % of ⅔μ */
+#define SPEED_TOL     0.03 /* wave speed within 3 % */
+#define PRESSURE_TOL  0.03 /* plateau pressure within 3 % */
+#define RATIO_TOL     0.03 /* −S_xx/p within 3 % of ⅔μ */
 #define NT_STRESS_TOL 0.01 /* no-tension: −S_xx within 1 % of ⅔Y₀ (measured −0.16 %; was 3 %) */
-#define RATIO_US_TOL 0.01  /* the ratio of the two runs' wave speeds within 1 % */
-#define T_FIT_START 0.25e-6
-#define STRETCH_VMAX 1e-3  /* [m/s] stretched split plates stay at rest */
+#define RATIO_US_TOL  0.01 /* the ratio of the two runs' wave speeds within 1 % */
+#define T_FIT_START   0.25e-6
+#define STRETCH_VMAX  1e-3 /* [m/s] stretched split plates stay at rest */
 
 static double eos_p(double rho, double E)
 {
@@ -83,11 +83,13 @@ static double rh_residual(double rho1, double k)
 
 static void rankine_hugoniot(double k, double *Us, double *p1)
 {
-  double a = RHO0 * (1.0 + 1e-7), b = 1.5 * RHO0;   /* residual < 0 at a, > 0 at b */
+  double a = RHO0 * (1.0 + 1e-7), b = 1.5 * RHO0; /* residual < 0 at a, > 0 at b */
   for (int it = 0; it < 200; it++) {
     const double m = 0.5 * (a + b);
-    if (rh_residual(m, k) > 0) b = m;
-    else a = m;
+    if (rh_residual(m, k) > 0)
+      b = m;
+    else
+      a = m;
   }
   const double rho1 = 0.5 * (a + b);
   *Us = UP * rho1 / (rho1 - RHO0);
@@ -98,7 +100,7 @@ static void rankine_hugoniot(double k, double *Us, double *p1)
 static double hel_speed(void)
 {
   const double rho1 = RHO0 * exp(Y0 / (2.0 * G_SHEAR));
-  double sig = Y0;   /* |σ_xx|, iterated with E₁ = ½|σ_xx|(1/ρ₀ − 1/ρ₁) */
+  double sig = Y0; /* |σ_xx|, iterated with E₁ = ½|σ_xx|(1/ρ₀ − 1/ρ₁) */
   for (int it = 0; it < 50; it++)
     sig = eos_p(rho1, 0.5 * sig * (1.0 / RHO0 - 1.0 / rho1)) + 2.0 * Y0 / 3.0;
   return sqrt(sig / (RHO0 * (1.0 - RHO0 / rho1)));
@@ -120,8 +122,8 @@ static void check_case(double mu, int no_tension, const char *outname, double *u
     printf("split: no-tension: elastic precursor U_H = %.1f m/s, -S_xx = %.4f GPa\n", Us,
            2.0 * Y0 / 3.0 * 1e-9);
   } else {
-    printf("friction %.2f: Rankine-Hugoniot Us = %.1f m/s, p1 = %.4f GPa, -S_xx/p = %.4f\n",
-           mu, Us, p1 * 1e-9, 2.0 * mu / 3.0);
+    printf("friction %.2f: Rankine-Hugoniot Us = %.1f m/s, p1 = %.4f GPa, -S_xx/p = %.4f\n", mu, Us,
+           p1 * 1e-9, 2.0 * mu / 3.0);
   }
   char label[32], extra[160];
   snprintf(label, sizeof label, no_tension ? "split: no-tension" : "friction %g", mu);
@@ -139,10 +141,11 @@ static void check_case(double mu, int no_tension, const char *outname, double *u
   double *X = malloc((size_t)nmax * sizeof *X), *V = malloc((size_t)nmax * sizeof *V);
   double *P = malloc((size_t)nmax * sizeof *P), *SX = malloc((size_t)nmax * sizeof *SX);
   double *sxx = malloc(nid * sizeof *sxx);
-  double tt[2][64], xf[2][64], plateau_p[2] = {(double)NAN, (double)NAN}, plateau_r[2] = {(double)NAN, (double)NAN};
+  double tt[2][64], xf[2][64], plateau_p[2] = {(double)NAN, (double)NAN},
+                               plateau_r[2] = {(double)NAN, (double)NAN};
   int nfit[2] = {0, 0};
-  double smax = 0.0;   /* largest |S| anywhere (μ = 0: must be 0) */
-  long intact = 0;     /* particles that are not split (must stay 0) */
+  double smax = 0.0; /* largest |S| anywhere (μ = 0: must be 0) */
+  long intact = 0;   /* particles that are not split (must stay 0) */
   for (int s = 1; s < nsnap && s < 64; s++) {
     struct particles p;
     double t;
@@ -169,17 +172,20 @@ static void check_case(double mu, int no_tension, const char *outname, double *u
         plateau_r[b] = -sc_plateau(X, SX, nl[b], front, 0.3, 0.8, NULL) /
                        (no_tension ? 2.0 * Y0 / 3.0 : plateau_p[b]);
         printf("  %s plate, t = %.2e s: front at %+.4e m; plateau (%d layers) p = %.4f GPa, "
-               "-S_xx/%s = %.4f\n", b ? "right" : "left ", t, front, c, plateau_p[b] * 1e-9,
+               "-S_xx/%s = %.4f\n",
+               b ? "right" : "left ", t, front, c, plateau_p[b] * 1e-9,
                no_tension ? "(2Y0/3)" : "p", plateau_r[b]);
       }
     }
     particles_free(&p);
   }
-  CHECK(intact == 0, "%s: every particle stays split (%ld intact particle-snapshots)",
-        label, intact);
+  CHECK(intact == 0, "%s: every particle stays split (%ld intact particle-snapshots)", label,
+        intact);
   if (mu == 0.0 && !no_tension)
-    CHECK(smax == 0.0, "friction 0: split particles carry no deviatoric stress (largest |S| "
-          "%g Pa)", smax);
+    CHECK(smax == 0.0,
+          "friction 0: split particles carry no deviatoric stress (largest |S| "
+          "%g Pa)",
+          smax);
   double us_sum = 0.0;
   for (int b = 0; b < 2; b++) {
     const char *name = b ? "right" : "left";
@@ -187,24 +193,29 @@ static void check_case(double mu, int no_tension, const char *outname, double *u
     if (nfit[b] < 4) continue;
     const double us = fabs(sc_linfit(tt[b], xf[b], nfit[b], NULL, NULL)) + UP;
     us_sum += us;
-    CHECK(fabs(us / Us - 1) < SPEED_TOL, "%s, %s plate: wave speed %.1f m/s within "
-          "%.0f%% of %.1f m/s (%+.2f%%)", label, name, us, 100 * SPEED_TOL, Us,
-          100 * (us / Us - 1));
+    CHECK(fabs(us / Us - 1) < SPEED_TOL,
+          "%s, %s plate: wave speed %.1f m/s within "
+          "%.0f%% of %.1f m/s (%+.2f%%)",
+          label, name, us, 100 * SPEED_TOL, Us, 100 * (us / Us - 1));
     if (no_tension) {
-      CHECK(fabs(plateau_r[b] - 1) < NT_STRESS_TOL, "split: no-tension, %s plate: -S_xx = "
-            "%.4f GPa within %.0f%% of 2Y0/3 = %.4f GPa (%+.2f%%)", name,
-            plateau_r[b] * 2 * Y0 / 3e9, 100 * NT_STRESS_TOL, 2 * Y0 / 3e9,
+      CHECK(fabs(plateau_r[b] - 1) < NT_STRESS_TOL,
+            "split: no-tension, %s plate: -S_xx = "
+            "%.4f GPa within %.0f%% of 2Y0/3 = %.4f GPa (%+.2f%%)",
+            name, plateau_r[b] * 2 * Y0 / 3e9, 100 * NT_STRESS_TOL, 2 * Y0 / 3e9,
             100 * (plateau_r[b] - 1));
       continue;
     }
-    CHECK(fabs(plateau_p[b] / p1 - 1) < PRESSURE_TOL, "friction %g, %s plate: pressure %.4f "
-          "GPa within %.0f%% of %.4f GPa (%+.2f%%)", mu, name, plateau_p[b] * 1e-9,
-          100 * PRESSURE_TOL, p1 * 1e-9, 100 * (plateau_p[b] / p1 - 1));
+    CHECK(fabs(plateau_p[b] / p1 - 1) < PRESSURE_TOL,
+          "friction %g, %s plate: pressure %.4f "
+          "GPa within %.0f%% of %.4f GPa (%+.2f%%)",
+          mu, name, plateau_p[b] * 1e-9, 100 * PRESSURE_TOL, p1 * 1e-9,
+          100 * (plateau_p[b] / p1 - 1));
     if (mu > 0.0) {
       const double want = 2.0 * mu / 3.0;
-      CHECK(fabs(plateau_r[b] / want - 1) < RATIO_TOL, "friction %g, %s plate: -S_xx/p = %.4f "
-            "within %.0f%% of 2mu/3 = %.4f (%+.2f%%)", mu, name, plateau_r[b], 100 * RATIO_TOL,
-            want, 100 * (plateau_r[b] / want - 1));
+      CHECK(fabs(plateau_r[b] / want - 1) < RATIO_TOL,
+            "friction %g, %s plate: -S_xx/p = %.4f "
+            "within %.0f%% of 2mu/3 = %.4f (%+.2f%%)",
+            mu, name, plateau_r[b], 100 * RATIO_TOL, want, 100 * (plateau_r[b] / want - 1));
     }
   }
   if (nfit[0] >= 4 && nfit[1] >= 4) *us_mean = 0.5 * us_sum;
@@ -229,7 +240,8 @@ static void check_stretched(void)
                         "--set materials.al.fracture.split=no-tension "
                         "'--set=bodies[0].velocity=[0, 0, 0]' '--set=bodies[1].velocity=[0, 0, 0]' "
                         "--set 'bodies[0].density=2750 kg/m3' "
-                        "--set 'bodies[1].density=2750 kg/m3'", &secs);
+                        "--set 'bodies[1].density=2750 kg/m3'",
+                        &secs);
   CHECK(rc == 0, "stretched split plates run (exit status %d, %.1f s)", rc, secs);
   if (rc) return;
   const char *dir = sc_outdir("no_tension_stretched");
@@ -246,8 +258,10 @@ static void check_stretched(void)
     pmin = fmin(pmin, p.p[i]);
   }
   CHECK(pmin < -0.5e9, "the plates are stretched (EOS pressure %.3f GPa)", pmin * 1e-9);
-  CHECK(vmax < STRETCH_VMAX, "split: no-tension, stretched plates stay at rest: largest "
-        "|v_x| %.3g m/s at %.2e s below %g m/s", vmax, t, STRETCH_VMAX);
+  CHECK(vmax < STRETCH_VMAX,
+        "split: no-tension, stretched plates stay at rest: largest "
+        "|v_x| %.3g m/s at %.2e s below %g m/s",
+        vmax, t, STRETCH_VMAX);
   particles_free(&p);
 }
 
@@ -265,9 +279,10 @@ int main(void)
   check_case(0.0, 0, "no_friction", &us0);
   /* the two runs share the front's smearing: the ratio of their speeds is sharper */
   const double want = Us1 / Us0, got = us1 / us0;
-  CHECK(fabs(got / want - 1) < RATIO_US_TOL, "wave speed with friction %g over without: %.4f "
-        "within %.0f%% of %.4f (%+.2f%%)", MU, got, 100 * RATIO_US_TOL, want,
-        100 * (got / want - 1));
+  CHECK(fabs(got / want - 1) < RATIO_US_TOL,
+        "wave speed with friction %g over without: %.4f "
+        "within %.0f%% of %.4f (%+.2f%%)",
+        MU, got, 100 * RATIO_US_TOL, want, 100 * (got / want - 1));
   double us_nt;
   check_case(0.0, 1, "no_tension", &us_nt);
   check_stretched();

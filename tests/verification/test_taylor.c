@@ -44,13 +44,13 @@
 #include "solidcase.h"
 #include "testlib.h"
 
-#define L0 32.4e-3         /* [m] initial length (the case) */
-#define V0 227.0           /* [m/s] impact speed (the case) */
-#define L_REF 21.45e-3     /* [m] published final length 21.4–21.5 mm: the middle */
-#define R_REF 7.05e-3      /* [m] published mushroom radius 7.0–7.1 mm: the middle */
-#define LENGTH_TOL 0.03    /* the brief: final length within 3% */
-#define RADIUS_TOL 0.08    /* the brief: radius within 8% (justified above) */
-#define REST_TOL 0.05      /* mean |v_x| at the end below 5% of V0 */
+#define L0         32.4e-3  /* [m] initial length (the case) */
+#define V0         227.0    /* [m/s] impact speed (the case) */
+#define L_REF      21.45e-3 /* [m] published final length 21.4–21.5 mm: the middle */
+#define R_REF      7.05e-3  /* [m] published mushroom radius 7.0–7.1 mm: the middle */
+#define LENGTH_TOL 0.03     /* the brief: final length within 3% */
+#define RADIUS_TOL 0.08     /* the brief: radius within 8% (justified above) */
+#define REST_TOL   0.05     /* mean |v_x| at the end below 5% of V0 */
 
 struct shape {
   double L, R, Rrear, vx, epsmax;
@@ -93,7 +93,7 @@ int main(void)
   double t;
   struct shape s0, s;
   if (sc_read(dir, 0, &p, &t)) return CHECK(0, "snapshot 0 readable"), test_finish();
-  const double dx = cbrt(p.m[0] / p.rho[0]);   /* m = ρ Δ³ on the cubic lattice */
+  const double dx = cbrt(p.m[0] / p.rho[0]); /* m = ρ Δ³ on the cubic lattice */
   const size_t nid = p.n;
   unsigned char *face = calloc(nid, 1), *rear = calloc(nid, 1);
   double x0min = HUGE_VAL, x0max = -HUGE_VAL;
@@ -108,7 +108,8 @@ int main(void)
   }
   measure(&p, dx, face, rear, &s0);
   printf("initial: %zu particles (quarter bar), spacing %.4f mm; estimators: L = %.3f mm, "
-         "R = %.3f mm (true 32.4, 3.2)\n", p.n, dx * 1e3, s0.L * 1e3, s0.R * 1e3);
+         "R = %.3f mm (true 32.4, 3.2)\n",
+         p.n, dx * 1e3, s0.L * 1e3, s0.R * 1e3);
   particles_free(&p);
   for (int k = 1; k < nsnap; k++) {
     if (sc_read(dir, k, &p, &t)) {
@@ -118,18 +119,23 @@ int main(void)
     }
     measure(&p, dx, face, rear, &s);
     printf("  t = %5.1f us: L = %.3f mm, R = %.3f mm, rear radius %.3f mm, mean v_x = %+.2f m/s, "
-           "max plastic strain %.3f\n", t * 1e6, s.L * 1e3, s.R * 1e3, s.Rrear * 1e3, s.vx,
-           s.epsmax);
+           "max plastic strain %.3f\n",
+           t * 1e6, s.L * 1e3, s.R * 1e3, s.Rrear * 1e3, s.vx, s.epsmax);
     particles_free(&p);
   }
   printf("at %.0f us: final length %.3f mm vs %.2f mm (%+.2f%%), mushroom radius %.3f mm vs "
-         "%.2f mm (%+.2f%%), L/L0 = %.4f\n", t * 1e6, s.L * 1e3, L_REF * 1e3,
-         100 * (s.L / L_REF - 1), s.R * 1e3, R_REF * 1e3, 100 * (s.R / R_REF - 1), s.L / L0);
+         "%.2f mm (%+.2f%%), L/L0 = %.4f\n",
+         t * 1e6, s.L * 1e3, L_REF * 1e3, 100 * (s.L / L_REF - 1), s.R * 1e3, R_REF * 1e3,
+         100 * (s.R / R_REF - 1), s.L / L0);
   CHECK(fabs(t - 80e-6) < 1e-9, "the run reaches 80 us (t = %.3f us)", t * 1e6);
-  CHECK(fabs(s.vx) < REST_TOL * V0, "the bar has stopped: mean v_x = %+.2f m/s (< %.0f%% of "
-        "%.0f m/s)", s.vx, 100 * REST_TOL, V0);
-  CHECK(fabs(s.Rrear - s0.R) <= 0.5 * dx, "the rear end keeps its radius: %.3f mm (initially "
-        "%.3f mm)", s.Rrear * 1e3, s0.R * 1e3);
+  CHECK(fabs(s.vx) < REST_TOL * V0,
+        "the bar has stopped: mean v_x = %+.2f m/s (< %.0f%% of "
+        "%.0f m/s)",
+        s.vx, 100 * REST_TOL, V0);
+  CHECK(fabs(s.Rrear - s0.R) <= 0.5 * dx,
+        "the rear end keeps its radius: %.3f mm (initially "
+        "%.3f mm)",
+        s.Rrear * 1e3, s0.R * 1e3);
   CHECK(fabs(s.L / L_REF - 1) < LENGTH_TOL, "final length %.3f mm within %.0f%% of %.2f mm",
         s.L * 1e3, 100 * LENGTH_TOL, L_REF * 1e3);
   CHECK(fabs(s.R / R_REF - 1) < RADIUS_TOL, "mushroom radius %.3f mm within %.0f%% of %.2f mm",
