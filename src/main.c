@@ -8,7 +8,6 @@
 
 #include "cli/cli.h"
 #include "core/error.h"
-#include "material/material_read.h"
 #include "version.h"
 
 /* Each command's lines of the usage: `hvsph --help` prints them all, `hvsph CMD --help`
@@ -83,10 +82,9 @@ static const struct {
   int (*main)(int argc, char **argv);
   int own_help;
 } commands[] = {
-    {"run", cli_run, 0},           {"check", cli_check, 0},
-    {"restart", cli_restart, 0},   {"bench", cli_bench, 0},
-    {"validate", cli_validate, 0}, {"materials", material_library_main, 1},
-    {"render", cli_render, 1},     {"measure", cli_measure, 1},
+    {"run", cli_run, 0},       {"check", cli_check, 0},       {"restart", cli_restart, 0},
+    {"bench", cli_bench, 0},   {"validate", cli_validate, 0}, {"materials", cli_materials, 1},
+    {"render", cli_render, 1}, {"measure", cli_measure, 1},
 };
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose

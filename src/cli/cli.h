@@ -5,12 +5,13 @@
 #ifndef HV_CLI_H
 #define HV_CLI_H
 
-int cli_run(int argc, char **argv);      /* run.c: hvsph run CASE */
-int cli_restart(int argc, char **argv);  /* run.c: hvsph restart RUNDIR */
-int cli_check(int argc, char **argv);    /* check.c: hvsph check CASE */
-int cli_bench(int argc, char **argv);    /* bench.c: hvsph bench */
-int cli_measure(int argc, char **argv);  /* measure.c: hvsph measure RUNDIR */
-int cli_validate(int argc, char **argv); /* validate.c: hvsph validate */
-int cli_render(int argc, char **argv);   /* render.c: hvsph render SNAPSHOT|RUNDIR */
+int cli_run(int argc, char **argv);       /* run.c: hvsph run CASE */
+int cli_restart(int argc, char **argv);   /* run.c: hvsph restart RUNDIR */
+int cli_check(int argc, char **argv);     /* check.c: hvsph check CASE */
+int cli_bench(int argc, char **argv);     /* bench.c: hvsph bench */
+int cli_measure(int argc, char **argv);   /* measure.c: hvsph measure RUNDIR */
+int cli_validate(int argc, char **argv);  /* validate.c: hvsph validate */
+int cli_render(int argc, char **argv);    /* render.c: hvsph render SNAPSHOT|RUNDIR */
+int cli_materials(int argc, char **argv); /* materials.c: hvsph materials [NAME] */
 
 #endif

@@ -196,16 +196,16 @@ void material_print(FILE *f, const struct material *m)
 
 /* ---------------------------------------------------------------- hvsph materials */
 
-int material_library_main(int argc, char **argv)
+void material_library_usage(FILE *f)
 {
-  if (argc > 1 || (argc == 1 && argv[0][0] == '-')) {
-    FILE *f = argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? stdout : stderr;
-    fprintf(f, "usage: hvsph materials [NAME]\n"
-               "  lists the material library (name, EOS, reference density, source), or every\n"
-               "  parameter of one entry with its unit; HVSPH_DATA names the folder of\n"
-               "  materials.yaml\n");
-    return f == stdout ? HV_EXIT_OK : HV_EXIT_USAGE;
-  }
+  fprintf(f, "usage: hvsph materials [NAME]\n"
+             "  lists the material library (name, EOS, reference density, source), or every\n"
+             "  parameter of one entry with its unit; HVSPH_DATA names the folder of\n"
+             "  materials.yaml\n");
+}
+
+int material_library_list(const char *name)
+{
   struct hv_error err = {0};
   struct cfg *lib;
   if (material_library_load(NULL, &lib, &err)) {
@@ -214,31 +214,31 @@ int material_library_main(int argc, char **argv)
   }
   const char *const *names;
   int n = cfg_keys(lib, "", &names), st = HV_EXIT_OK;
-  if (argc == 1 && !cfg_is_map(lib, argv[0])) {
+  if (name && !cfg_is_map(lib, name)) {
     char list[1200];
     name_list(lib, "", list, sizeof list);
-    fprintf(stderr, "hvsph materials: unknown material '%s'; %s has: %s\n", argv[0], cfg_file(lib),
+    fprintf(stderr, "hvsph materials: unknown material '%s'; %s has: %s\n", name, cfg_file(lib),
             list);
     cfg_free(lib);
     return HV_EXIT_INPUT;
   }
-  if (argc == 0)
+  if (!name)
     printf("# %s\n%-20s %-14s %-13s %s\n", cfg_file(lib), "name", "eos", "rho0 [kg/m3]", "source");
   for (int i = 0; i < n && st == HV_EXIT_OK; i++) {
-    if (argc == 1 && strcmp(names[i], argv[0])) continue;
+    if (name && strcmp(names[i], name)) continue;
     struct material m;
     if (material_read(lib, names[i], names[i], &m, &err)) {
       fprintf(stderr, "hvsph materials: %s\n", err.msg);
       st = HV_EXIT_INPUT;
       break;
     }
-    if (argc == 1)
+    if (name)
       material_print(stdout, &m);
     else
       printf("%-20s %-14s %-13.6g %s\n", m.name, eos_models[m.eos]->name, m.rho0, m.source);
     material_free(&m);
   }
-  if (st == HV_EXIT_OK && argc == 0 && cfg_check_unused(lib, &err)) {
+  if (st == HV_EXIT_OK && !name && cfg_check_unused(lib, &err)) {
     fprintf(stderr, "hvsph materials: %s\n", err.msg);
     st = HV_EXIT_INPUT;
   }

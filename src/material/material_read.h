@@ -65,8 +65,10 @@ int material_find_or_load(struct cfg *c, const char *key_path, const char *name,
                           struct material *mats, int *nmat, int max, struct hv_error *err);
 /* Prints every parameter of a material with its unit (hvsph materials NAME). */
 void material_print(FILE *f, const struct material *m);
-/* `hvsph materials [NAME]`: lists the library, or one entry in full. Returns the exit
- * status (2 for an unknown name or a bad library). */
-int material_library_main(int argc, char **argv);
+/* `hvsph materials [NAME]`: lists the library (name NULL), or one entry in full.
+ * Returns the exit status (2 for an unknown name or a bad library). */
+int material_library_list(const char *name);
+/* The usage of `hvsph materials`. */
+void material_library_usage(FILE *f);
 
 #endif
