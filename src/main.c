@@ -12,6 +12,7 @@
 #include "run/check.h"
 #include "run/remeasure.h"
 #include "run/run.h"
+#include "run/sweep.h"
 #include "run/validate.h"
 #include "version.h"
 
@@ -47,6 +48,13 @@ static const struct {
     {"measure", "  hvsph measure RUNDIR [--case FILE] [--quiet]\n"
                 "      take a run's measurements again from its particle snapshots\n"
                 "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"},
+    {"sweep", "  hvsph sweep CASE.yaml -o DIR [--vary KEY=V1,V2,...]... [--bisect KEY=LO..HI]\n"
+              "            [--tol DT] [--measure QUANTITY[@OBJECT]] [--jobs N] [--threads T]\n"
+              "            [--set KEY=VALUE]... [--emit slurm] [--only I] [--quiet]\n"
+              "  hvsph sweep --collect DIR\n"
+              "      run a case over a grid of values and bisect one key at each grid point\n"
+              "      on a yes/no measurement (perforated): DIR/sweep.csv, ballistic_limit.csv\n"
+              "      and .png; resumable; the case's own `sweep:` section needs no options\n"},
     {"validate", "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
                  "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
                  "      run the paper's cases (examples/paper, or --cases DIR; particle counts x S)\n"
@@ -204,7 +212,7 @@ int main(int argc, char **argv)
     return 0;
   }
   if ((!strcmp(cmd, "run") || !strcmp(cmd, "check") || !strcmp(cmd, "restart") ||
-       !strcmp(cmd, "bench") || !strcmp(cmd, "validate")) && asks_help(argc - 2, argv + 2)) {
+       !strcmp(cmd, "bench") || !strcmp(cmd, "validate") || !strcmp(cmd, "sweep")) && asks_help(argc - 2, argv + 2)) {
     usage(stdout, cmd);
     return 0;
   }
@@ -213,6 +221,7 @@ int main(int argc, char **argv)
   if (!strcmp(cmd, "restart")) return cmd_run(argc - 2, argv + 2, 1);
   if (!strcmp(cmd, "bench")) return cmd_bench(argc - 2, argv + 2);
   if (!strcmp(cmd, "validate")) return validate_main(argc - 2, argv + 2);
+  if (!strcmp(cmd, "sweep")) return sweep_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "materials")) return material_library_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "render")) return render_main(argc - 2, argv + 2);
   if (!strcmp(cmd, "measure")) return remeasure_main(argc - 2, argv + 2);

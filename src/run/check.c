@@ -31,7 +31,6 @@
  * layers of 1.26 mm a 2 mm backwall was "perforated" by a 2 mm sphere, "not perforated"
  * by 3 mm and perforated again by 4 mm (issue 71); the paper's cases give their plates
  * 4-5 layers at the impact point (examples/paper/wp1.yaml). */
-#define CHECK_LAYERS_MIN 4
 
 /* Steps timed for the wall-time estimate (after one untimed warm-up step, which builds
  * the grid and caches), and the wall time after which timing stops early: a case of
@@ -178,6 +177,15 @@ static int body_planes(const struct sim *s, const int *bodies, int nb, int ax, d
   int planes = count_planes(u, n, 0.25 * sp);
   *thick = n ? u[n - 1] - u[0] + sp : 0.0;
   free(u);
+  return planes;
+}
+
+int check_plate_layers(const struct sim *s, const int *bodies, int nb, double r, double axis_y)
+{
+  double sp = HUGE_VAL, thick;
+  for (int j = 0; j < nb; j++) sp = fmin(sp, s->body[bodies[j]].spacing);
+  int planes = body_planes(s, bodies, nb, 0, fmax(r, 2.0 * sp), axis_y, &thick);
+  if (planes == 0) planes = body_planes(s, bodies, nb, 0, 0.0, axis_y, &thick);
   return planes;
 }
 
