@@ -178,8 +178,9 @@ static int check_value(struct cfg *c, const char *key, const char *what, struct 
                         cfg_where(c, key, where, sizeof where));
   if (*bu && !*vu)
     return hv_error_set(err, HV_EXIT_INPUT, "hvsph sweep: %s: %s = %s has no unit, where the "
-                        "case writes %s (%s): give the unit, e.g. '%s %s'", what, key, v->text,
-                        base, cfg_where(c, key, where, sizeof where), v->text, bu);
+                        "case writes %s (%s): give the value with its unit (a bare number "
+                        "would be SI)", what, key, v->text, base,
+                        cfg_where(c, key, where, sizeof where));
   char msg[256];
   if (*bu) {
     const int d = text_dim(base);
@@ -729,6 +730,7 @@ static int run_all(struct sweep *w)
       struct point old = *p;
       if (!read_done(w, &old)) p->wall += old.wall;
       p->state = 2;
+      p->wall = round(p->wall * 1e3) / 1e3;   /* as .done keeps it: a resumed sweep.csv is the same */
       write_done(w, p);
       read_point(w, p);
       if (!w->quiet)
@@ -810,38 +812,41 @@ static int write_sweep_csv(const struct sweep *w, struct hv_error *err)
 }
 
 /* The speed [m/s] and obliquity [deg] of a grid point: its varied values of keys named
- * `speed`, `obliquity` or `impact_angle` (90° − obliquity), else the case's values of the
- * bisected body's keys. */
+ * `speed`, `obliquity` or `impact_angle` (90° − obliquity), else those of the case's
+ * projectile, the body of the largest `speed` (or `velocity`). */
 static void speed_angle(const struct sweep *w, struct cfg *c, const struct combo *co,
                         double *speed, double *obl)
 {
+  const double deg = 180 / 3.14159265358979323846;
   *speed = NAN;
   *obl = 0.0;
-  char prefix[256], key[320];
-  snprintf(prefix, sizeof prefix, "%s", w->b.key);
-  char *br = strstr(prefix, "].");
-  if (br) br[1] = '\0';
+  char key[320];
   struct hv_error e = {0};
-  double v;
-  snprintf(key, sizeof key, "%s.speed", prefix);
-  if (cfg_has(c, key) && !cfg_get_quantity(c, key, UNIT_VELOCITY, NULL, 0, HUGE_VAL, &v, &e))
+  const int nb = cfg_len(c, "bodies");
+  for (int b = 0; b < nb; b++) {
+    double v = NAN, vel[3], a;
+    snprintf(key, sizeof key, "bodies[%d].speed", b);
+    if (cfg_has(c, key) && cfg_get_quantity(c, key, UNIT_VELOCITY, NULL, 0, HUGE_VAL, &v, &e))
+      v = NAN;
+    snprintf(key, sizeof key, "bodies[%d].velocity", b);
+    if (isnan(v) && cfg_has(c, key) && !cfg_get_vec3(c, key, UNIT_VELOCITY, NULL, vel, &e))
+      v = sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
+    if (isnan(v) || (!isnan(*speed) && v <= *speed)) continue;
     *speed = v;
-  snprintf(key, sizeof key, "%s.velocity", prefix);
-  double vel[3];
-  if (isnan(*speed) && cfg_has(c, key) && !cfg_get_vec3(c, key, UNIT_VELOCITY, NULL, vel, &e))
-    *speed = sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
-  snprintf(key, sizeof key, "%s.obliquity", prefix);
-  if (cfg_has(c, key) && !cfg_get_quantity(c, key, UNIT_ANGLE, NULL, -HUGE_VAL, HUGE_VAL, &v, &e))
-    *obl = v * 180 / 3.14159265358979323846;
-  snprintf(key, sizeof key, "%s.impact_angle", prefix);
-  if (cfg_has(c, key) && !cfg_get_quantity(c, key, UNIT_ANGLE, NULL, -HUGE_VAL, HUGE_VAL, &v, &e))
-    *obl = 90.0 - v * 180 / 3.14159265358979323846;
+    *obl = 0.0;
+    snprintf(key, sizeof key, "bodies[%d].obliquity", b);
+    if (cfg_has(c, key) && !cfg_get_quantity(c, key, UNIT_ANGLE, NULL, -HUGE_VAL, HUGE_VAL, &a, &e))
+      *obl = a * deg;
+    snprintf(key, sizeof key, "bodies[%d].impact_angle", b);
+    if (cfg_has(c, key) && !cfg_get_quantity(c, key, UNIT_ANGLE, NULL, -HUGE_VAL, HUGE_VAL, &a, &e))
+      *obl = 90.0 - a * deg;
+  }
   for (int k = 0; k < w->nvary; k++) {
     const char *s = short_key(w->vary[k].key);
     const double x = w->vary[k].v[co->idx[k]].si;
     if (!strcmp(s, "speed")) *speed = x;
-    else if (!strcmp(s, "obliquity")) *obl = x * 180 / 3.14159265358979323846;
-    else if (!strcmp(s, "impact_angle")) *obl = 90.0 - x * 180 / 3.14159265358979323846;
+    else if (!strcmp(s, "obliquity")) *obl = x * deg;
+    else if (!strcmp(s, "impact_angle")) *obl = 90.0 - x * deg;
   }
 }
 
