@@ -2,7 +2,8 @@
  * render module's canvas and font.
  *
  * Layout: a plot area with a left margin for the diameter ticks and a bottom band for
- * the speed ticks; a legend in the top left of the plot. Speeds span 0 to the larger of
+ * the speed ticks; a legend in the bottom right of the plot; the case file's name at
+ * the top right. Speeds span 0 to the larger of
  * 8 km/s and 1.1 × the fastest point (so both regime boundaries of a normal impact show);
  * diameters 0 to 1.15 × the largest of the brackets and the curve over that span.
  */
@@ -147,9 +148,11 @@ int ble_plot_write(const struct ble_plot *bp, const char *path, struct hv_error 
     }
   }
   ticks(&c, &f);
-  /* legend */
-  int ly = f.y0 + 8;
-  const int lx = f.x0 + 14;
+  /* legend: bottom right, under the curve's shatter and hypervelocity branches, where
+     no bracket of a shield's usual sweep falls (the equation's d_c there is some mm) */
+  const int nleg = (bp->has_ble ? nang + 1 : 0) + 2;
+  int ly = f.y1 - 10 - 22 * nleg;
+  const int lx = f.x0 + (f.x1 - f.x0) / 2;
   char text[200];
   if (bp->has_ble)
     for (int a = 0; a < nang; a++) {
@@ -168,7 +171,9 @@ int ble_plot_write(const struct ble_plot *bp, const char *path, struct hv_error 
   ly += 22;
   canvas_rect(&c, lx + 11, ly, lx + 14, ly + 16, red);
   canvas_text(&c, lx + 32, ly, 2, ink, "limit outside the range");
-  canvas_text(&c, PLOT_W - MR - canvas_text_width(1, bp->title), 4, 1, ink, bp->title);
+  const char *slash = strrchr(bp->title, '/');
+  const char *title = slash ? slash + 1 : bp->title;
+  canvas_text(&c, PLOT_W - MR - canvas_text_width(2, title), 4, 2, ink, title);
   const int rc = canvas_write_png(&c, path, "hvsph sweep: ballistic-limit curve", err);
   canvas_free(&c);
   return rc;

@@ -514,6 +514,33 @@ static void read_point(const struct sweep *w, struct point *p)
   meas_table_free(&t);
 }
 
+/* The wall time [s] of a run folder over all its segments (run and restarts): the sum
+ * of run_segments.csv's wall_s column; 0 when it cannot be read. */
+static double segments_wall(const struct sweep *w, const struct point *p)
+{
+  char path[5200], line[1024];
+  snprintf(path, sizeof path, "%s/points/%s/run_segments.csv", w->dir, p->name);
+  FILE *f = fopen(path, "r");
+  if (!f) return 0.0;
+  int col = -1;
+  double sum = 0.0;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#') continue;
+    int k = 0;
+    char *save = NULL;
+    if (col < 0) {   /* the header: find wall_s */
+      for (char *t = strtok_r(line, ",\n", &save); t; t = strtok_r(NULL, ",\n", &save), k++)
+        if (!strcmp(t, "wall_s")) col = k;
+      if (col < 0) break;
+      continue;
+    }
+    for (char *t = strtok_r(line, ",\n", &save); t; t = strtok_r(NULL, ",\n", &save), k++)
+      if (k == col) sum += strtod(t, NULL);
+  }
+  fclose(f);
+  return sum;
+}
+
 /* ---- running points ------------------------------------------------------------- */
 
 static void format_value(const struct bisect *b, double si, char *buf, size_t len)
@@ -610,6 +637,8 @@ static struct point *add_point(const struct sweep *w, struct combo *co, double v
   if (!p->name[0]) snprintf(p->name, sizeof p->name, "case");
   if (!read_done(w, p)) {
     p->state = 2;
+    const double segs = segments_wall(w, p);   /* the run's record, over its segments */
+    if (segs > 0) p->wall = round(segs * 1e3) / 1e3;
     read_point(w, p);
   }
   return p;
@@ -726,9 +755,10 @@ static int run_all(struct sweep *w)
         p->state = 0;
         break;
       }
-      /* an earlier segment's wall time (a restarted run) is added */
-      struct point old = *p;
-      if (!read_done(w, &old)) p->wall += old.wall;
+      /* the run's own record of every segment (a stopped and continued point), else
+         the time this process waited for it */
+      const double segs = segments_wall(w, p);
+      if (segs > 0) p->wall = segs;
       p->state = 2;
       p->wall = round(p->wall * 1e3) / 1e3;   /* as .done keeps it: a resumed sweep.csv is the same */
       write_done(w, p);
