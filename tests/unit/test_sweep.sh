@@ -9,7 +9,8 @@
 # the critical radius is 0.3536 mm exactly, whatever the sphere's speed.
 #  1. bad input exits 2 before any run and leaves no folder: a key the case does not
 #     have (--vary, --bisect), an empty range, a bare number where the case writes a unit;
-#  2. --vary (2 speeds) with --bisect of the hole's radius, 0.1..1 mm to 0.1 mm: exit 0,
+#  2. --vary (2 speeds) with --bisect of the hole's radius, 0.1..1 mm to 0.1 mm, --jobs 2:
+#     exit 0,
 #     ballistic_limit.csv's critical_diameter (the radius doubled) within half its bracket
 #     of 2 x 0.3536 mm and the bracket no wider than the tolerance; sweep.csv's rows; the
 #     PNG;
@@ -68,8 +69,8 @@ done
 
 # 2. vary and bisect
 "$BIN" sweep tiny-shield.yaml -o s --vary "$SPEED=1 km/s,2 km/s" --bisect "$HOLE=0.1 mm..1 mm" \
-    --tol "0.1 mm" --threads 1 > s.out 2>&1
-check $? "vary + bisect: exit 0"
+    --tol "0.1 mm" --jobs 2 --threads 2 > s.out 2>&1
+check $? "vary + bisect, two grid points side by side (--jobs 2): exit 0"
 check $([ "$(grep -c '^[0-9]' s/ballistic_limit.csv)" = 2 ] && echo 0 || echo 1) \
   "ballistic_limit.csv: one row per grid point"
 check $(head -2 s/ballistic_limit.csv | tail -1 | grep -q '^speed,obliquity,critical_diameter,' && echo 0 || echo 1) \
