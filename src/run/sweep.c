@@ -652,7 +652,7 @@ static void advance(const struct sweep *w, struct combo *co)
     struct point *p = &co->pts[co->npts - 1];
     if (p->state != 2) return;
     if (p->status != 0 || p->answer < 0) {
-      co->failed = 1;
+      co->failed = p->status != 0 ? 1 : 2;   /* 2: ran, but without the measurement */
       co->done = 1;
       return;
     }
@@ -912,6 +912,7 @@ static int write_limits(const struct sweep *w, struct cfg *c, struct hv_error *e
     const char *note = "";
     double dc = NAN, half = NAN;
     if (!co->done) note = "unfinished";
+    else if (co->failed == 2) note = "a point has no such measurement (see --measure)";
     else if (co->failed) note = "a point failed";
     else if (co->outside)
       note = co->alo ? "outside the range: yes at both ends (the limit lies below LO)"
@@ -1139,7 +1140,13 @@ int sweep_main(int argc, char **argv)
     fprintf(stderr, "hvsph sweep: %s: %s\n", w.case_abs, strerror(errno));
     return HV_EXIT_INPUT;
   }
-  snprintf(w.dir, sizeof w.dir, "%s", out);
+  /* the folder as an absolute path too: a job array's tasks may start elsewhere */
+  if (out[0] == '/') snprintf(w.dir, sizeof w.dir, "%s", out);
+  else {
+    char cwd[2048];
+    if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
+    snprintf(w.dir, sizeof w.dir, "%s/%s", cwd, out);
+  }
 
   /* the case, with the --set overrides, to check the keys against */
   struct cfg *c = cfg_load(w.case_path, &err);
@@ -1209,12 +1216,15 @@ int sweep_main(int argc, char **argv)
         const struct combo *co = &w.combos[k];
         char name[512];
         combo_name(&w, co, name, sizeof name);
-        char lo[64], hi[64];
+        char lo[160], hi[160];
         format_value(&w.b, co->lo, lo, sizeof lo);
         format_value(&w.b, co->hi, hi, sizeof hi);
         if (co->outside)
           printf("  %s: %s at both ends: the limit lies outside %s..%s\n", name[0] ? name : "case",
                  co->alo ? "yes" : "no", w.b.lo.text, w.b.hi.text);
+        else if (co->failed == 2)
+          printf("  %s: a point's measurements.csv has no %s%s%s at its last time\n",
+                 name[0] ? name : "case", w.measure, w.object[0] ? " of " : "", w.object);
         else if (co->failed) printf("  %s: a point failed\n", name[0] ? name : "case");
         else if (!co->done) printf("  %s: unfinished, bracket %s..%s\n", name[0] ? name : "case",
                                    lo, hi);

@@ -18,6 +18,7 @@
 #     point's .done removed, that point alone runs again;
 #  4. a range whose two ends agree says the limit lies outside it;
 #  5. a failed point (exit 3) is marked failed, the other point runs, the sweep exits 3;
+#     a --measure that no run writes is named (exit 3);
 #  6. --emit slurm writes a job array of the grid points; its tasks run by hand (as Slurm
 #     would) and `hvsph sweep --collect` gather the same limits as (2);
 #  7. a case holding its own `sweep:` runs with no options, and `hvsph run` takes it.
@@ -119,6 +120,13 @@ st=$?
 check $(( st == 3 ? 0 : 1 )) "a failed point: the sweep exits 3 (got $st)"
 check $(grep -q ',failed,3,' f/sweep.csv && grep -q ',ok,0,' f/sweep.csv && echo 0 || echo 1) \
   "a failed point: marked failed (exit 3), the other ok"
+
+# a measurement no run writes: the points run, the sweep says which is missing, exit 3
+"$BIN" sweep tiny-shield.yaml -o m --bisect "$HOLE=0.1 mm..1 mm" --measure perforatd --threads 1 > m.out 2>&1
+st=$?
+check $(( st == 3 ? 0 : 1 )) "an unknown --measure: exit 3 (got $st)"
+check $(grep -q 'no perforatd of plate' m.out && grep -q 'no such measurement' m/ballistic_limit.csv && echo 0 || echo 1) \
+  "an unknown --measure: named in the output and ballistic_limit.csv"
 
 # 6. Slurm job array and --collect
 "$BIN" sweep tiny-shield.yaml -o a --vary "$SPEED=1 km/s,2 km/s" --bisect "$HOLE=0.1 mm..1 mm" \
