@@ -275,12 +275,49 @@ static int parse_bisect(struct sweep *w, const char *arg, struct hv_error *err)
 
 /* ---- the case's own sweep (a `sweep:` section) ----------------------------------- */
 
+/* A key of the mapping at path that is not among `known` (NULL-terminated) is bad input
+ * naming its line: a misspelt `tolerence` would otherwise be ignored. */
+static int known_keys(struct cfg *c, const char *path, const char *const *known,
+                      struct hv_error *err)
+{
+  const char *const *names;
+  char where[256];
+  if (!cfg_is_map(c, path))
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a mapping expected",
+                        cfg_where(c, path, where, sizeof where), path);
+  const int n = cfg_keys(c, path, &names);
+  for (int k = 0; k < n; k++) {
+    int ok = 0;
+    for (const char *const *q = known; *q && !ok; q++) ok = !strcmp(names[k], *q);
+    if (!ok) {
+      char full[400];
+      snprintf(full, sizeof full, "%s.%s", path, names[k]);
+      return hv_error_set(err, HV_EXIT_INPUT, "%s: unknown key '%s' (docs/cli.md, \"hvsph "
+                          "sweep\")", cfg_where(c, full, where, sizeof where), full);
+    }
+  }
+  return 0;
+}
+
 static int read_case_sweep(struct sweep *w, struct cfg *c, int cli_vary, int cli_bisect,
                            struct hv_error *err)
 {
   char key[320], arg[1024];
   const char *s;
   if (!cfg_has(c, "sweep")) return 0;
+  static const char *const top[] = {"vary", "bisect", "measure", "ble", NULL};
+  static const char *const bis[] = {"key", "low", "high", "tolerance", NULL};
+  static const char *const var[] = {"key", "values", NULL};
+  static const char *const ble[] = {"type", "bumper", "bumper_density", "standoff", "wall",
+                                    "wall_yield", "projectile_density", NULL};
+  if (known_keys(c, "sweep", top, err) ||
+      (cfg_has(c, "sweep.bisect") && known_keys(c, "sweep.bisect", bis, err)) ||
+      (cfg_has(c, "sweep.ble") && known_keys(c, "sweep.ble", ble, err)))
+    return -1;
+  for (int k = 0; k < cfg_len(c, "sweep.vary"); k++) {
+    snprintf(key, sizeof key, "sweep.vary[%d]", k);
+    if (known_keys(c, key, var, err)) return -1;
+  }
   if (!cli_vary && cfg_has(c, "sweep.vary")) {
     const int n = cfg_len(c, "sweep.vary");
     if (n <= 0)

@@ -158,6 +158,11 @@ check $(diff <(grep '^1000,' s/ballistic_limit.csv) <(grep '^[0-9]' w/ballistic_
   "the case's own sweep: the same limit"
 "$BIN" run own.yaml -o r --threads 1 --quiet > r.out 2>&1
 check $? "hvsph run takes a case with a sweep: section"
+sed 's/tolerance:/tolerence:/' own.yaml > typo.yaml
+out=$("$BIN" sweep typo.yaml -o typo 2>&1); st=$?
+check $(( st == 2 ? 0 : 1 )) "a misspelt key of sweep: exit 2 (got $st: $out)"
+check $(echo "$out" | grep -q "typo.yaml:[0-9]*: unknown key 'sweep.bisect.tolerence'" && [ ! -e typo ] && echo 0 || echo 1) \
+  "a misspelt key of sweep: named with its line, nothing run"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
