@@ -410,8 +410,9 @@ static int measure_all(struct measure_run *mr, const struct sim *s, struct hv_er
     meas_table_add(&mr->table, t, "through_velocity", thr.velocity, "m/s", name);
     meas_table_add(&mr->table, t, "through_wall_mass", thr.wall_mass, "kg", name);
     meas_table_add(&mr->table, t, "wall_failed", hole.perforated || thr.through, "", name);
-    /* the layers at the start: fewer than 4 and the answers follow the lattice */
-    if (s->step == 0) {
+    /* the layers at the start (t = 0: a run's first output, or hvsph measure's first
+       snapshot, whose step is not kept): fewer than 4 and the answers follow the lattice */
+    if (s->t == 0.0) {
       const int layers = check_plate_layers(s, mr->backwall, mr->nbackwall, 0.0, mr->axis_y);
       meas_table_add(&mr->table, t, "wall_layers", layers, "", name);
       if (layers < CHECK_LAYERS_MIN)
