@@ -645,14 +645,13 @@ static pid_t start_point(const struct sweep *w, const struct combo *co, const st
 }
 
 /* The next point combo co needs, or NULL (waiting for one that runs, or done). */
-static struct point *next_point(const struct sweep *w, struct combo *co)
+static struct point *next_point(struct combo *co)
 {
   if (co->done) return NULL;
   for (int k = 0; k < co->npts; k++)
     if (co->pts[k].state == 1) return NULL;  /* one at a time per grid point */
   if (co->npts > 0 && co->pts[co->npts - 1].state == 0) return &co->pts[co->npts - 1];
   return NULL;
-  (void)w;
 }
 
 static struct point *add_point(const struct sweep *w, struct combo *co, double v)
@@ -752,7 +751,7 @@ static int run_all(struct sweep *w)
   for (;;) {
     for (int c = 0; c < w->ncombos && nrun < w->jobs && !stop_signal; c++) {
       if (w->only >= 0 && c != w->only) continue;
-      struct point *p = next_point(w, &w->combos[c]);
+      struct point *p = next_point(&w->combos[c]);
       if (!p) continue;
       int slot = 0;
       while (pids[slot]) slot++;
