@@ -45,6 +45,13 @@ static const struct {
     {"measure", "  hvsph measure RUNDIR [--case FILE] [--skip-missing] [--quiet]\n"
                 "      take a run's measurements again from its particle snapshots\n"
                 "      (rewrites RUNDIR/measurements.csv; docs/measurements.md)\n"},
+    {"sweep", "  hvsph sweep CASE.yaml -o DIR [--vary KEY=V1,V2,...]... [--bisect KEY=LO..HI]\n"
+              "            [--tol DT] [--measure QUANTITY[@OBJECT]] [--jobs N] [--threads T]\n"
+              "            [--set KEY=VALUE]... [--emit slurm] [--only I] [--quiet]\n"
+              "  hvsph sweep --collect DIR\n"
+              "      run a case over a grid of values and bisect one key at each grid point\n"
+              "      on a yes/no measurement (perforated): DIR/sweep.csv, ballistic_limit.csv\n"
+              "      and .png; resumable; the case's own `sweep:` section needs no options\n"},
     {"validate",
      "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
      "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
@@ -82,9 +89,15 @@ static const struct {
   int (*main)(int argc, char **argv);
   int own_help;
 } commands[] = {
-    {"run", cli_run, 0},       {"check", cli_check, 0},       {"restart", cli_restart, 0},
-    {"bench", cli_bench, 0},   {"validate", cli_validate, 0}, {"materials", cli_materials, 1},
-    {"render", cli_render, 1}, {"measure", cli_measure, 1},
+    {"run", cli_run, 0},
+    {"check", cli_check, 0},
+    {"restart", cli_restart, 0},
+    {"bench", cli_bench, 0},
+    {"validate", cli_validate, 0},
+    {"sweep", cli_sweep, 0},
+    {"materials", cli_materials, 1},
+    {"render", cli_render, 1},
+    {"measure", cli_measure, 1},
 };
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose

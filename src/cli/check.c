@@ -32,30 +32,12 @@
  * layers of 1.26 mm a 2 mm backwall was "perforated" by a 2 mm sphere, "not perforated"
  * by 3 mm and perforated again by 4 mm (issue 71); the paper's cases give their plates
  * 4-5 layers at the impact point (examples/paper/wp1.yaml). */
-#define CHECK_LAYERS_MIN 4
 
 /* Steps timed for the wall-time estimate (after one untimed warm-up step, which builds
  * the grid and caches), and the wall time after which timing stops early: a case of
  * 1e7 particles takes seconds a step on 2 cores. */
 #define CHECK_CALIB_STEPS 3
 #define CHECK_CALIB_WALL  10.0 /* [s] */
-
-static int cmp_double(const void *a, const void *b)
-{
-  const double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-/* Planes of particles along axis ax among n coordinates u (sorted here): runs of values
- * closer than tol (a quarter spacing: a cubic lattice's layers are a spacing apart). */
-static int count_planes(double *u, size_t n, double tol)
-{
-  if (n == 0) return 0;
-  qsort(u, n, sizeof *u, cmp_double);
-  int planes = 1;
-  for (size_t i = 1; i < n; i++) planes += u[i] - u[i - 1] > tol;
-  return planes;
-}
 
 /* The axis a body is thin along (its plate normal), or -1: its extent along it at most
  * half its extent across (a half model's bodies cut at z = 0 counted whole). */
@@ -72,29 +54,6 @@ static int plate_axis(const struct sim *s, int b, double *thick)
     if (d != ax && !(ext[ax] <= 0.5 * ext[d])) return -1;
   *thick = ext[ax];
   return ax;
-}
-
-/* Planes through body b's thickness along ax: all its particles (r <= 0), or those
- * within r of the line y = axis_y, z = 0 along x (the measurements' impact axis). */
-static int body_planes(const struct sim *s, const int *bodies, int nb, int ax, double r,
-                       double axis_y, double *thick)
-{
-  double *u = hv_malloc((s->p.n + 1) * sizeof *u, "check planes");
-  size_t n = 0;
-  double sp = HUGE_VAL;
-  for (int k = 0; k < nb; k++) sp = fmin(sp, s->body[bodies[k]].spacing);
-  for (size_t i = 0; i < s->p.n; i++) {
-    int in = 0;
-    for (int k = 0; k < nb && !in; k++) in = s->p.body[i] == bodies[k];
-    if (!in) continue;
-    const double dy = s->p.x[1][i] - axis_y, dz = s->p.x[2][i];
-    if (r > 0 && dy * dy + dz * dz > r * r) continue;
-    u[n++] = s->p.x[ax][i];
-  }
-  int planes = count_planes(u, n, 0.25 * sp);
-  *thick = n ? u[n - 1] - u[0] + sp : 0.0;
-  free(u);
-  return planes;
 }
 
 /* The fastest body (its mean speed), or -1 when nothing moves or there is one body
@@ -158,7 +117,7 @@ static void report_bodies(const struct sim *s, const size_t *first)
     } else if (ax >= 0) {
       const int one = b;
       double t;
-      const int planes = body_planes(s, &one, 1, ax, 0.0, 0.0, &t);
+      const int planes = plate_body_planes(s, &one, 1, ax, 0.0, 0.0, &t);
       snprintf(note, sizeof note, "plate %.4g mm thick along %c: %d particle layer%s", 1e3 * thick,
                "xyz"[ax], planes, planes == 1 ? "" : "s");
     }
@@ -187,8 +146,8 @@ static void report_measured(const struct sim *s, const struct measure_run *mr, c
     for (int j = 0; j < nb; j++) sp = fmin(sp, s->body[bodies[j]].spacing);
     /* the column the projectile punches: its radius, at least two spacings */
     const double r = fmax(rp, 2.0 * sp);
-    int planes = body_planes(s, bodies, nb, 0, r, mr->axis_y, &thick);
-    if (planes == 0) planes = body_planes(s, bodies, nb, 0, 0.0, mr->axis_y, &thick);
+    int planes = plate_body_planes(s, bodies, nb, 0, r, mr->axis_y, &thick);
+    if (planes == 0) planes = plate_body_planes(s, bodies, nb, 0, 0.0, mr->axis_y, &thick);
     printf("%-16s perforation measured (%s): %d particle layer%s through %.4g mm at the "
            "impact point\n",
            s->body[bodies[0]].name, what, planes, planes == 1 ? "" : "s", 1e3 * thick);

@@ -12,6 +12,7 @@ int cli_bench(int argc, char **argv);     /* bench.c: hvsph bench */
 int cli_measure(int argc, char **argv);   /* measure.c: hvsph measure RUNDIR */
 int cli_validate(int argc, char **argv);  /* validate.c: hvsph validate */
 int cli_render(int argc, char **argv);    /* render.c: hvsph render SNAPSHOT|RUNDIR */
+int cli_sweep(int argc, char **argv);     /* sweep.c: hvsph sweep CASE -o DIR */
 int cli_materials(int argc, char **argv); /* materials.c: hvsph materials [NAME] */
 
 #endif

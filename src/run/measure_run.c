@@ -8,6 +8,8 @@
 
 #include "diag/fof.h"
 #include "diag/measure.h"
+#include "diag/through.h"
+#include "run/plausible.h"
 #include "version.h"
 
 static int body_by_name(const struct sim *s, struct cfg *c, const char *path, int *out,
@@ -364,7 +366,52 @@ static int measure_clouds(struct measure_run *mr, const struct sim *s, double t,
   return 0;
 }
 
-/* The backwall: its crater, damage and perforation, and the peak pressure at its centre. */
+/* What went through the backwall (diag/through.h): solid material behind its far face,
+ * moving away, not the attached wall, within the wall's shadow (its extent across, less
+ * two spacings). */
+static int measure_wall_through(struct measure_run *mr, const struct sim *s,
+                                const struct meas_geom *g, const unsigned char *mask,
+                                const double *bscale, struct meas_through *thr,
+                                struct hv_error *err)
+{
+  struct meas_through_params tp;
+  meas_through_defaults(&tp, g);
+  unsigned char *solid = hv_malloc(s->p.n + 1, "through mask");
+  for (size_t i = 0; i < s->p.n; i++) {
+    const struct material *m = &s->mat[s->p.mat[i]];
+    solid[i] = m->str.enabled || m->frac.kind != FRACTURE_NONE;
+  }
+  tp.solid = solid;
+  tp.wall = mask;
+  tp.scale = bscale;
+  double rw = HUGE_VAL;
+  for (int j = 0; j < mr->nbackwall; j++) {
+    const struct body_info *bi = &s->body[mr->backwall[j]];
+    rw = fmin(rw, fmin(mr->axis_y - bi->lo[1], bi->hi[1] - mr->axis_y));
+  }
+  tp.r_max = fmax(rw - 2.0 * g->spacing, g->spacing);
+  const int rc = measure_through(&s->p, g, &tp, thr, err);
+  free(solid);
+  return rc;
+}
+
+/* The backwall's layers at the start (t = 0: a run's first output, or hvsph measure's
+ * first snapshot, whose step is not kept): with fewer than 4 the answers follow the
+ * lattice. */
+static void measure_wall_layers(struct measure_run *mr, const struct sim *s, double t,
+                                const char *name)
+{
+  const int layers = check_plate_layers(s, mr->backwall, mr->nbackwall, 0.0, mr->axis_y);
+  meas_table_add(&mr->table, t, "wall_layers", layers, "", name);
+  if (layers < CHECK_LAYERS_MIN)
+    hv_warn("backwall '%s': only %d particle layer%s through it at the impact point: its "
+            "perforation (and wall_failed) follows the lattice more than the physics "
+            "below %d layers (docs/measurements.md)",
+            name, layers, layers == 1 ? "" : "s", CHECK_LAYERS_MIN);
+}
+
+/* The backwall: its crater, damage, perforation and what went through, and the peak
+ * pressure at its centre. */
 static int measure_rear_wall(struct measure_run *mr, const struct sim *s, double t,
                              struct hv_error *err)
 {
@@ -397,13 +444,21 @@ static int measure_rear_wall(struct measure_run *mr, const struct sim *s, double
   for (size_t i = 0; i < s->p.n; i++)
     if ((mask ? mask[i] : s->p.body[i] == g.body) && isfinite(s->p.x[0][i]))
       pp.slab_rear = fmax(pp.slab_rear, s->p.x[0][i] - (g.x0 + g.thickness) + g.spacing);
-  const int brc =
-      measure_backwall(&s->p, &g, &bp, &bw, err) || measure_plate(&s->p, &g, &pp, &hole, err);
+  struct meas_through thr;
+  const int brc = measure_backwall(&s->p, &g, &bp, &bw, err) ||
+                  measure_plate(&s->p, &g, &pp, &hole, err) ||
+                  measure_wall_through(mr, s, &g, mask, bscale, &thr, err);
   free(mask);
   free(bscale);
   if (brc) return -1;
   meas_table_add_backwall(&mr->table, t, name, &bw);
   meas_table_add_plate(&mr->table, t, name, &hole); /* perforated, and the hole if any */
+  meas_table_add(&mr->table, t, "through", thr.through, "", name);
+  meas_table_add(&mr->table, t, "through_mass", thr.mass, "kg", name);
+  meas_table_add(&mr->table, t, "through_velocity", thr.velocity, "m/s", name);
+  meas_table_add(&mr->table, t, "through_wall_mass", thr.wall_mass, "kg", name);
+  meas_table_add(&mr->table, t, "wall_failed", hole.perforated || thr.through, "", name);
+  if (s->t == 0.0) measure_wall_layers(mr, s, t, name);
   meas_table_add(&mr->table, t, "peak_pressure_center",
                  mr->peak_pressure > -HUGE_VAL ? mr->peak_pressure : (double)NAN, "Pa", name);
   return 0;

@@ -6,7 +6,9 @@
 #include "run/plausible.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "core/error.h"
 #include "sim/sim.h"
 
 /* The particles' own smallest limit at the start (CFL and acceleration), before
@@ -97,4 +99,53 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
           "run may take very long (hvsph check estimates its wall time)",
           where, s->tp.end, steps, dt);
   return 0;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* Planes of particles along axis ax among n coordinates u (sorted here): runs of values
+ * closer than tol (a quarter spacing: a cubic lattice's layers are a spacing apart). */
+static int count_planes(double *u, size_t n, double tol)
+{
+  if (n == 0) return 0;
+  qsort(u, n, sizeof *u, cmp_double);
+  int planes = 1;
+  for (size_t i = 1; i < n; i++) planes += u[i] - u[i - 1] > tol;
+  return planes;
+}
+
+/* Planes through body b's thickness along ax: all its particles (r <= 0), or those
+ * within r of the line y = axis_y, z = 0 along x (the measurements' impact axis). */
+int plate_body_planes(const struct sim *s, const int *bodies, int nb, int ax, double r,
+                      double axis_y, double *thick)
+{
+  double *u = hv_malloc((s->p.n + 1) * sizeof *u, "check planes");
+  size_t n = 0;
+  double sp = HUGE_VAL;
+  for (int k = 0; k < nb; k++) sp = fmin(sp, s->body[bodies[k]].spacing);
+  for (size_t i = 0; i < s->p.n; i++) {
+    int in = 0;
+    for (int k = 0; k < nb && !in; k++) in = s->p.body[i] == bodies[k];
+    if (!in) continue;
+    const double dy = s->p.x[1][i] - axis_y, dz = s->p.x[2][i];
+    if (r > 0 && dy * dy + dz * dz > r * r) continue;
+    u[n++] = s->p.x[ax][i];
+  }
+  int planes = count_planes(u, n, 0.25 * sp);
+  *thick = n ? u[n - 1] - u[0] + sp : 0.0;
+  free(u);
+  return planes;
+}
+
+int check_plate_layers(const struct sim *s, const int *bodies, int nb, double r, double axis_y)
+{
+  double sp = HUGE_VAL, thick;
+  for (int j = 0; j < nb; j++) sp = fmin(sp, s->body[bodies[j]].spacing);
+  int planes = plate_body_planes(s, bodies, nb, 0, fmax(r, 2.0 * sp), axis_y, &thick);
+  if (planes == 0) planes = plate_body_planes(s, bodies, nb, 0, 0.0, axis_y, &thick);
+  return planes;
 }

@@ -25,4 +25,15 @@ int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err
  * are estimated from, time.dt_init aside (the growth limit hands over to it at once). */
 double check_first_stable_step(const struct sim *s);
 
+/* The particle layers through a plate of bodies[0..nb-1] (thin along x) at the impact
+ * point: the planes of its particles within r (at least two spacings) of the line
+ * y = axis_y, z = 0, as `hvsph check` counts them; of the whole plate when none lies
+ * there. Perforation with fewer than CHECK_LAYERS_MIN (4) is a lattice effect. */
+#define CHECK_LAYERS_MIN 4
+int check_plate_layers(const struct sim *s, const int *bodies, int nb, double r, double axis_y);
+
+/* Planes of particles through bodies[0..nb-1] along ax: all their particles (r <= 0),
+ * or those within r of the line y = axis_y, z = 0; *thick the extent they span. */
+int plate_body_planes(const struct sim *s, const int *bodies, int nb, int ax, double r,
+                      double axis_y, double *thick);
 #endif

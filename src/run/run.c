@@ -250,6 +250,8 @@ int run_setup(struct sim *s, struct cfg *c, struct hv_error *err)
   nbr_grid_init(&s->grid);
   boundary_init(&s->bnd);
   s->cfg = c;
+  /* the case's own sweep (hvsph sweep reads it; a run takes the case as it stands) */
+  cfg_mark_used(c, "sweep");
   if (sim_read_params(s, c, err) || setup_bodies(s, c, err)) return -1;
   /* bounds on h: by default 1/10 to 10 times the initial range */
   double hmin = HUGE_VAL, hmax = 0.0;

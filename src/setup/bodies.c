@@ -15,7 +15,9 @@
  * exact volume of the shape (so a projectile has its true mass), or ρ × lattice volume
  * when the exact volume is unknown; h = η (m/ρ)^(1/3).
  * Velocity: `velocity`, or `speed` with `impact_angle` α measured from the target
- * surface in the x–y plane, v = speed (sin α, −cos α, 0) (α = 90°: along +x); plus
+ * surface in the x–y plane, v = speed (sin α, −cos α, 0) (α = 90°: along +x), or with
+ * `obliquity` θ = 90° − α measured from the target's normal (the ballistic-limit
+ * equations' angle; θ = 0: along +x); plus
  * `radial_velocity` r̂ about the shape's centre.
  * `damage` (0 to 1) starts a body damaged; 1: split material (docs/models.md).
  * `energy_deposit` adds energy E within a radius R about a point, shared with the
@@ -174,7 +176,22 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
                         "%s: body '%s': give velocity or speed (with "
                         "impact_angle), not both",
                         cfg_where(c, key2, where, sizeof where), name);
+  /* obliquity θ, measured from the plate's normal as the ballistic-limit equations
+     measure it: the same direction as impact_angle α = 90° − θ */
+  char okey[256];
+  snprintf(okey, sizeof okey, "%s.obliquity", path);
   snprintf(key, sizeof key, "%s.impact_angle", path);
+  if (cfg_has(c, okey) && cfg_has(c, key))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': give impact_angle (from the plate's "
+                        "surface) or obliquity (from its normal), not both",
+                        cfg_where(c, okey, where, sizeof where), name);
+  if (cfg_has(c, okey) && !cfg_has(c, key2))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: body '%s': obliquity applies with speed "
+                        "(v = speed (cos t, -sin t, 0)); with velocity, the vector's components "
+                        "give the direction",
+                        cfg_where(c, okey, where, sizeof where), name);
   if (cfg_has(c, key) && !cfg_has(c, key2))
     return hv_error_set(err, HV_EXIT_INPUT,
                         "%s: body '%s': impact_angle applies with speed "
@@ -186,7 +203,19 @@ static int read_velocity(struct cfg *c, const char *path, const char *name, stru
     double speed, angle;
     if (cfg_get_quantity(c, key2, UNIT_VELOCITY, NULL, 0.0, HUGE_VAL, &speed, err)) return -1;
     snprintf(key, sizeof key, "%s.impact_angle", path);
-    if (cfg_get_quantity(c, key, UNIT_ANGLE, &right, -HUGE_VAL, HUGE_VAL, &angle, err)) return -1;
+    if (cfg_has(c, okey)) {
+      double obl;
+      if (cfg_get_quantity(c, okey, UNIT_ANGLE, NULL, -HUGE_VAL, HUGE_VAL, &obl, err)) return -1;
+      if (!(obl >= 0.0 && obl < HV_KERNEL_PI / 2))
+        return hv_error_set(err, HV_EXIT_INPUT,
+                            "%s: body '%s': obliquity %g deg is outside "
+                            "[0, 90) deg (0 is a normal impact)",
+                            cfg_where(c, okey, where, sizeof where), name,
+                            obl * 180 / HV_KERNEL_PI);
+      angle = HV_KERNEL_PI / 2 - obl;
+    } else if (cfg_get_quantity(c, key, UNIT_ANGLE, &right, -HUGE_VAL, HUGE_VAL, &angle, err)) {
+      return -1;
+    }
     if (!(angle > 0.0 && angle <= HV_KERNEL_PI / 2 * (1 + 1e-12)))
       return hv_error_set(err, HV_EXIT_INPUT,
                           "%s: body '%s': impact_angle %g deg is outside "

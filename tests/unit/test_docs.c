@@ -2,7 +2,7 @@
  *
  *   1. docs/case-files.md has every key a run reads. Every example case
  *      (examples/verification/ and examples/getting-started/ as they are,
- *      examples/paper/ at resolution 0.01) and a case of materials (each of the
+ *      examples/paper/ and examples/sweeps/ at resolution 0.01) and a case of materials (each of the
  *      library's, and a few that no example has) is set up with --set time.end=0, and
  *      every key of its used_parameters.yaml (defaults included) must be a key of the
  *      table where case-files.md puts it: `sph.viscosity.alpha` is
@@ -448,9 +448,9 @@ static int example_cmp(const void *a, const void *b)
 
 static int list_examples(struct example *ex, int max)
 {
-  static const char *const folders[] = {"verification", "paper", "getting-started"};
+  static const char *const folders[] = {"verification", "paper", "getting-started", "sweeps"};
   int n = 0;
-  for (int f = 0; f < 3; f++) {
+  for (int f = 0; f < 4; f++) {
     char dir[4200];
     snprintf(dir, sizeof dir, "%s/examples/%s", test_source_dir(), folders[f]);
     DIR *d = opendir(dir);
@@ -543,7 +543,9 @@ static int set_up_examples(struct example *ex, int max)
     else
       text_add(&cmd, "run '%s/examples/%s/%s.yaml' -o '%s' --quiet --set time.end=0%s",
                test_source_dir(), ex[i].folder, ex[i].name, run_dir(&ex[i]),
-               strcmp(ex[i].folder, "paper") ? "" : " --set resolution=0.01");
+               strcmp(ex[i].folder, "paper") && strcmp(ex[i].folder, "sweeps")
+                   ? ""
+                   : " --set resolution=0.01");
     int rc = hvsph(text_str(&cmd), out, sizeof out);
     if (rc != 0) {
       nfailed++;
@@ -607,8 +609,8 @@ static void test_case_keys(const struct example *ex, int n)
 
 /* -------------------------------------------------------- 2. command-line options */
 
-static const char *const commands[] = {"run",    "restart", "bench",   "materials",
-                                       "render", "measure", "validate"};
+static const char *const commands[] = {"run",    "restart", "bench",    "materials",
+                                       "render", "measure", "validate", "sweep"};
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 
 /* Adds to set every long option ("--set", "--no-mirror") in s[0, len). */
@@ -654,6 +656,7 @@ static const struct {
     {"render", "render @/none.csv -o @/none.png"},                    /* 2: no snapshot */
     {"measure", "measure @/none"},                                    /* 2: no run there */
     {"validate", "validate --only wp1 --cases @/none -o @/validate"}, /* 2: no case file */
+    {"sweep", "sweep @/none.yaml -o @/sweep"},                        /* 2: no case file */
 };
 
 /* A value for each option that takes one (the option is tried alone when it is not
@@ -688,6 +691,18 @@ static const struct {
     {"validate", "--cases @/none"},
     {"validate", "--set time.end=0"},
     {"validate", "--material gas=nitrogen"},
+    {"sweep", "--output @/sweep"},
+    {"sweep", "--vary time.end=1us,2us"},
+    {"sweep", "--bisect time.end=1us..2us"},
+    {"sweep", "--tol 0.1us"},
+    {"sweep", "--measure perforated"},
+    {"sweep", "--jobs 2"},
+    {"sweep", "--threads 1"},
+    {"sweep", "--set time.end=0"},
+    {"sweep", "--emit slurm"},
+    {"sweep", "--only 0"},
+    {"sweep", "--collect @/none"},
+    {"sweep", "--args-from @/none"},
 };
 
 /* s with each '@' replaced by the quoted scratch folder. */

@@ -72,6 +72,45 @@ static const struct paper_mg paper[] = {
  * the same EOS and shear modulus as steel-target, the published A, B, N, C, M, T_melt,
  * and the yield the model gives from them: A + B at eps_p = 1 (1.302 GPa), A + B 0.5^0.26
  * at eps_p = 0.5, nothing at the melting temperature. */
+/* The shielding materials (issue 75): each reads, with the values of its source
+ * (shared/reference/shielding.md §4; Murnaghan n = 4 s - 1 from the Hugoniot slope s),
+ * Johnson-Cook strength, a Tresca spall stress, and a source naming what was read and
+ * what is from memory ([read: ...], [mem]). */
+static void test_shield_library(struct cfg *lib)
+{
+  static const struct {
+    const char *name;
+    double rho0, c0, s, Gamma, G, A, B, T_melt, cv, sigma_c;
+  } want[] = {
+      {"al-6061-t6", 2703, 5240, 1.40, 1.97, 27.6e9, 324e6, 114e6, 925, 885, -1.2e9},
+      {"al-2024-t3", 2785, 5328, 1.338, 2.00, 28.6e9, 369e6, 684e6, 775, 863, -1.3e9},
+      {"al-7075-t6", 2803, 5200, 1.36, 2.20, 26.7e9, 546e6, 678e6, 893, 848, -1.4e9},
+      {"ti-6al-4v", 4419, 5130, 1.028, 1.23, 41.9e9, 1098e6, 1092e6, 1878, 525, -4e9},
+      {"copper-ofhc", 8930, 3940, 1.489, 2.02, 47.7e9, 90e6, 292e6, 1356, 383, -1.3e9},
+      {"steel-4340", 7830, 4569, 1.49, 2.17, 81.8e9, 792e6, 510e6, 1793, 477, -3.5e9},
+      {"tungsten-wha", 18167, 4030, 1.237, 1.67, 145e9, 1506e6, 177e6, 1723, 143, -3.5e9},
+  };
+  for (size_t k = 0; k < sizeof want / sizeof want[0]; k++) {
+    struct hv_error err = {0};
+    struct material m;
+    const int rc = material_read(lib, want[k].name, want[k].name, &m, &err);
+    CHECK(rc == 0, "%s read (%s)", want[k].name, rc ? err.msg : "ok");
+    if (rc) continue;
+    const struct eos_mie_gruneisen *mg = &m.eosp.mg;
+    CHECK(m.eos == EOS_MIE_GRUNEISEN && mg->rho0 == want[k].rho0 && mg->c0 == want[k].c0 &&
+              fabs(mg->n - (4 * want[k].s - 1)) < 1e-12 && mg->Gamma == want[k].Gamma &&
+              m.str.G == want[k].G,
+          "%s: rho0, c0, n = 4 s - 1, Gamma, G of its source", want[k].name);
+    CHECK(m.str.yield == YIELD_JOHNSON_COOK && m.str.jc_A == want[k].A && m.str.jc_B == want[k].B &&
+              m.str.T_melt == want[k].T_melt && m.str.cv == want[k].cv && m.str.jc_rate0 == 1.0 &&
+              m.frac.kind == FRACTURE_TRESCA && m.frac.sigma_c == want[k].sigma_c,
+          "%s: Johnson-Cook A, B, T_melt, cv, rate0 1/s; spall sigma_c", want[k].name);
+    CHECK(strstr(m.source, "[read") && strstr(m.source, "[mem"), "%s: source tags what was "
+          "read and what is from memory: %s", want[k].name, m.source);
+    material_free(&m);
+  }
+}
+
 static void test_jc_library(struct cfg *lib)
 {
   struct hv_error err = {0};
@@ -167,6 +206,7 @@ static void test_paper_values(void)
   eos_evaluate(&m, 1.1, 0.0, &st);
   CHECK(fabs(st.p - 0.1) <= 1e-15, "rubber-ring: p = c0^2 (rho - rho0) = %.17g at rho = 1.1", st.p);
   test_jc_library(lib);
+  test_shield_library(lib);
   /* every entry reads and no key is left unread */
   CHECK(cfg_check_unused(lib, &err) == 0, "no unknown key in the library (%s)",
         err.code ? err.msg : "ok");
