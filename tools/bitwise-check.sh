@@ -36,8 +36,11 @@ for c in "${cases[@]}"; do
   case "$c" in */paper/*) sets+=(--set resolution=0.2) ;; esac
   for side in ref new; do
     bin=$ref; [ $side = new ] && bin=$new
+    # builds before 2026-12-07 take neither --overwrite nor --force (nor need them)
+    extra=()
+    "$bin" --help 2>&1 | grep -q -- '--overwrite' && extra=(--overwrite --force)
     (cd "$(dirname "$c")" && "$bin" run "$c" -o "$scratch/$side/$name" "${sets[@]}" \
-      --threads 2 --quiet --overwrite --force) > "$scratch/$side-$name.log" 2>&1
+      --threads 2 --quiet "${extra[@]}") > "$scratch/$side-$name.log" 2>&1
     echo $? > "$scratch/$side-$name.rc"
   done
   n=$((n + 1))
