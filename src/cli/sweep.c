@@ -29,6 +29,7 @@
  * another dimension than the case's, a tolerance that is not positive.
  */
 #include "cli/cli.h"
+#include "cli/options.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -1037,6 +1038,107 @@ static int emit_slurm(const struct sweep *w, struct hv_error *err)
   return 0;
 }
 
+/* ---- options -------------------------------------------------------------------- */
+
+/* What the command line gives besides struct sweep's fields, read before the case. */
+struct sweep_cli {
+  struct sweep *w;
+  struct hv_error *err;
+  const char *out, *tol, *emit;
+  int vary, bisect; /* given on the command line: replaces the `sweep:` section's own */
+  struct cli_list sets;
+};
+
+/* Every mistake on sweep's command line reads the same, exit status 1: an unknown
+ * option, an option without its value at the end, a second case, a --set beyond
+ * SWEEP_MAX_SETS (the wording the hand-written walk over argv had). */
+static int sweep_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
+{
+  (void)c;
+  (void)e;
+  fprintf(stderr, "hvsph sweep: unexpected argument '%s' (see hvsph sweep --help)\n", arg);
+  return HV_EXIT_USAGE;
+}
+
+/* A mistake found in a value (a --vary or --bisect): its message, exit status 2. */
+static int sweep_bad(const struct hv_error *err)
+{
+  fprintf(stderr, "%s\n", err->msg);
+  return err->code ? err->code : HV_EXIT_INPUT;
+}
+
+static int vary_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                    const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct sweep_cli *s = o->dest;
+  if (parse_vary(s->w, val, s->err)) return sweep_bad(s->err);
+  s->vary = 1;
+  return CLI_GO_ON;
+}
+
+static int bisect_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                      const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct sweep_cli *s = o->dest;
+  if (parse_bisect(s->w, val, s->err)) return sweep_bad(s->err);
+  s->bisect = 1;
+  return CLI_GO_ON;
+}
+
+/* --tol: checked against the bisected key's unit once the case is read */
+static int tol_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                   const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct sweep_cli *s = o->dest;
+  s->tol = val;
+  s->w->b.tol_given = 1;
+  return CLI_GO_ON;
+}
+
+static int measure_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                       const char *val)
+{
+  (void)c;
+  (void)opt;
+  struct sweep *w = o->dest;
+  snprintf(w->measure, sizeof w->measure, "%s", val);
+  return CLI_GO_ON;
+}
+
+/* --jobs, --threads: a count in [o->lo, o->hi], decimal digits, into an int */
+static int count_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                     const char *val)
+{
+  (void)c;
+  long v;
+  if (cli_decimal(val, o->lo, o->hi, &v)) {
+    fprintf(stderr, "hvsph sweep: %s needs a positive integer, not '%s'\n", opt, val);
+    return HV_EXIT_USAGE;
+  }
+  *(int *)o->dest = (int)v;
+  return CLI_GO_ON;
+}
+
+/* --only: a grid point's index; whether the grid has it is known once the case is read */
+static int index_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                     const char *val)
+{
+  (void)c;
+  long v;
+  if (cli_decimal(val, o->lo, o->hi, &v)) {
+    fprintf(stderr, "hvsph sweep: %s needs a grid point's index, not '%s'\n", opt, val);
+    return HV_EXIT_USAGE;
+  }
+  *(int *)o->dest = (int)v;
+  return CLI_GO_ON;
+}
+
 /* ---- command line --------------------------------------------------------------- */
 
 static int write_args(const struct sweep *w, int argc, char **argv, struct hv_error *err)
@@ -1092,13 +1194,281 @@ static char **read_args(const char *path, int *argc, struct hv_error *err)
   return v;
 }
 
-static int parse_int(const char *s, int lo, int hi, int *out)
+/* Where --collect DIR or --args-from FILE sends the parse: the stored command line. */
+struct stored {
+  const char *file; /* NULL: none */
+  int collect;
+};
+
+static int collect_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                       const char *val)
 {
-  char *end;
-  const long v = strtol(s, &end, 10);
-  if (end == s || *end || v < lo || v > hi) return -1;
-  *out = (int)v;
+  (void)c;
+  (void)opt;
+  static char path[4200]; /* lives as long as the program, as the arguments do */
+  struct stored *s = o->dest;
+  snprintf(path, sizeof path, "%s/sweep_args.txt", val);
+  s->file = path;
+  s->collect = 1;
+  return CLI_GO_ON;
+}
+
+static int args_from_opt(const struct cli_cmd *c, const struct cli_opt *o, const char *opt,
+                         const char *val)
+{
+  (void)c;
+  (void)opt;
+  ((struct stored *)o->dest)->file = val;
+  return CLI_GO_ON;
+}
+
+/* The first look: only --collect and --args-from, wherever they stand; everything else
+ * waits for the second, whole parse (a mistake there is told there). */
+static int skip_fail(const struct cli_cmd *c, enum cli_error e, const char *arg)
+{
+  (void)c;
+  (void)e;
+  (void)arg;
+  return CLI_GO_ON;
+}
+
+/* Finds --collect DIR or --args-from FILE (the last one given) in argv. */
+static struct stored find_stored(int argc, char **argv)
+{
+  struct stored s = {0};
+  const struct cli_opt opts[] = {
+      {"--collect", NULL, CLI_VALUE, .dest = &s, .convert = collect_opt},
+      {"--args-from", NULL, CLI_VALUE, .dest = &s, .convert = args_from_opt},
+  };
+  const struct cli_cmd cmd = {.name = "sweep",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .fail = skip_fail};
+  cli_parse(&cmd, argc, argv);
+  return s;
+}
+
+/* The command line to parse: argv itself, or the stored one from s->file followed by
+ * argv's own options less --collect and --args-from with their values. Returns NULL
+ * after the message when the file cannot be read. */
+static char **with_stored(const struct stored *s, int argc, char **argv, int *nall)
+{
+  *nall = argc;
+  if (!s->file) return argv;
+  struct hv_error err = {0};
+  int na;
+  char **a = read_args(s->file, &na, &err);
+  if (!a) {
+    fprintf(stderr, "%s\n", err.msg);
+    return NULL;
+  }
+  char **all = hv_malloc((size_t)(na + argc + 1) * sizeof *all, "sweep args");
+  int n = 0;
+  for (int i = 0; i < na; i++) all[n++] = a[i];
+  for (int i = 0; i < argc; i++) {
+    if (!strcmp(argv[i], "--collect") || !strcmp(argv[i], "--args-from")) {
+      i++;
+      continue;
+    }
+    all[n++] = argv[i];
+  }
+  all[n] = NULL;
+  *nall = n;
+  return all;
+}
+
+/* Parses the whole command line (after with_stored) into w and s, in order, stopping at
+ * the first mistake. --collect and --args-from are not in the table: with their value
+ * with_stored has taken them out, and without it (the last argument, or a line of the
+ * stored file) they are an unexpected argument, as any other. --help never arrives:
+ * main answers it with the usage lines before calling cli_sweep. */
+static int parse_options(struct sweep *w, struct sweep_cli *s, int argc, char **argv)
+{
+  s->sets = (struct cli_list){.v = w->sets, .max = SWEEP_MAX_SETS};
+  const struct cli_opt opts[] = {
+      {"--output", "-o", CLI_VALUE, .dest = &s->out},
+      {"--vary", NULL, CLI_VALUE, .dest = s, .convert = vary_opt},
+      {"--bisect", NULL, CLI_VALUE, .dest = s, .convert = bisect_opt},
+      {"--tol", NULL, CLI_VALUE, .dest = s, .convert = tol_opt},
+      {"--measure", NULL, CLI_VALUE, .dest = w, .convert = measure_opt},
+      {"--set", NULL, CLI_LIST, .dest = &s->sets},
+      {"--jobs", NULL, CLI_VALUE, .dest = &w->jobs, .convert = count_opt, .lo = 1, .hi = 4096},
+      {"--threads", NULL, CLI_VALUE, .dest = &w->threads, .convert = count_opt, .lo = 1,
+       .hi = 4096},
+      {"--only", NULL, CLI_VALUE, .dest = &w->only, .convert = index_opt, .lo = 0, .hi = 1 << 30},
+      {"--emit", NULL, CLI_VALUE, .dest = &s->emit},
+      {"--quiet", "-q", CLI_FLAG, .dest = &w->quiet, .flag = 1},
+  };
+  const struct cli_cmd cmd = {.name = "sweep",
+                              .opts = opts,
+                              .nopts = (int)(sizeof opts / sizeof opts[0]),
+                              .positional = &w->case_abs,
+                              .fail = sweep_fail};
+  const int st = cli_parse(&cmd, argc, argv);
+  w->nsets = s->sets.n;
+  return st;
+}
+
+/* path made absolute against the working folder: the points and a job array's tasks
+ * run from anywhere. */
+static void absolute(const char *path, char *out, size_t len)
+{
+  if (path[0] == '/') {
+    snprintf(out, len, "%s", path);
+    return;
+  }
+  char cwd[2048];
+  if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
+  snprintf(out, len, "%s/%s", cwd, path);
+}
+
+/* The options that need no case: a case and a folder given, a known --emit, the case
+ * readable. Returns CLI_GO_ON or the exit status after the message. */
+static int check_options(struct sweep *w, const struct sweep_cli *s)
+{
+  if (!w->case_abs || !s->out) {
+    fprintf(stderr, "hvsph sweep: %s (see hvsph sweep --help)\n",
+            !w->case_abs ? "missing case file" : "missing -o DIR");
+    return HV_EXIT_USAGE;
+  }
+  if (s->emit && strcmp(s->emit, "slurm")) {
+    fprintf(stderr, "hvsph sweep: --emit %s: only 'slurm' is known\n", s->emit);
+    return HV_EXIT_USAGE;
+  }
+  w->emit_slurm = s->emit != NULL;
+  if (w->threads == 0) w->threads = omp_get_max_threads();
+  absolute(w->case_abs, w->case_path, sizeof w->case_path);
+  if (access(w->case_path, R_OK)) {
+    fprintf(stderr, "hvsph sweep: %s: %s\n", w->case_abs, strerror(errno));
+    return HV_EXIT_INPUT;
+  }
+  absolute(s->out, w->dir, sizeof w->dir);
+  return CLI_GO_ON;
+}
+
+/* The sweep checked against the case c (with the --set overrides): its section read
+ * where the command line has no --vary or --bisect, every key present, every value of
+ * the key's dimension, the bisection's range and tolerance. Returns 0 or -1 (err). */
+static int check_against_case(struct sweep *w, struct cfg *c, const struct sweep_cli *s,
+                              struct hv_error *err)
+{
+  const char *tol = s->tol;
+  for (int k = 0; k < w->nsets; k++)
+    if (cfg_apply_set(c, w->sets[k], err)) return -1;
+  if (read_case_sweep(w, c, s->vary, s->bisect, err)) return -1;
+  if (w->b.tol_given == 2) tol = w->tol_text;
+  if (!w->measure[0]) snprintf(w->measure, sizeof w->measure, "perforated");
+  default_object(w, c);
+  if (w->nvary == 0 && !w->has_bisect) {
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "hvsph sweep: nothing to sweep: give --vary or --bisect, "
+                 "or a `sweep:` section in %s",
+                 w->case_path);
+    return -1;
+  }
+  for (int k = 0; k < w->nvary; k++) {
+    if (case_has(c, w->vary[k].key, "--vary", err)) return -1;
+    for (int j = 0; j < w->vary[k].n; j++)
+      if (check_value(c, w->vary[k].key, "--vary", &w->vary[k].v[j], err)) return -1;
+    if (w->has_bisect && !strcmp(w->vary[k].key, w->b.key)) {
+      hv_error_set(err, HV_EXIT_INPUT, "hvsph sweep: %s is both varied and bisected", w->b.key);
+      return -1;
+    }
+  }
+  if (w->has_bisect && check_bisect(w, c, tol, err)) return -1;
   return 0;
+}
+
+/* The grid points, every combination of the --vary values (the last key fastest), and
+ * --only checked against their number. Returns 0 or -1 (err). */
+static int make_grid(struct sweep *w, struct hv_error *err)
+{
+  w->ncombos = 1;
+  for (int k = 0; k < w->nvary; k++) w->ncombos *= w->vary[k].n;
+  if (w->only >= w->ncombos) {
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "hvsph sweep: --only %d: the sweep has %d grid points "
+                 "(0 to %d)",
+                 w->only, w->ncombos, w->ncombos - 1);
+    return -1;
+  }
+  w->combos = calloc((size_t)w->ncombos, sizeof *w->combos);
+  for (int c0 = 0; c0 < w->ncombos; c0++) {
+    w->combos[c0].idx = calloc((size_t)w->nvary + 1, sizeof(int));
+    int r = c0;
+    for (int k = w->nvary - 1; k >= 0; k--) {
+      w->combos[c0].idx[k] = r % w->vary[k].n;
+      r /= w->vary[k].n;
+    }
+  }
+  return 0;
+}
+
+/* Prints each grid point's bisection outcome (the limit's bracket, or why none). */
+static void print_limits(const struct sweep *w)
+{
+  for (int k = 0; k < w->ncombos; k++) {
+    const struct combo *co = &w->combos[k];
+    char name[512];
+    combo_name(w, co, name, sizeof name);
+    const char *nm = name[0] ? name : "case";
+    char lo[160], hi[160];
+    format_value(&w->b, co->lo, lo, sizeof lo);
+    format_value(&w->b, co->hi, hi, sizeof hi);
+    if (co->outside)
+      printf("  %s: %s at both ends: the limit lies outside %s..%s\n", nm, co->alo ? "yes" : "no",
+             w->b.lo.text, w->b.hi.text);
+    else if (co->failed == 2)
+      printf("  %s: a point's measurements.csv has no %s%s%s at its last time\n", nm, w->measure,
+             w->object[0] ? " of " : "", w->object);
+    else if (co->failed)
+      printf("  %s: a point failed\n", nm);
+    else if (!co->done)
+      printf("  %s: unfinished, bracket %s..%s\n", nm, lo, hi);
+    else
+      printf("  %s: %s between %s and %s\n", nm, w->b.key, lo, hi);
+  }
+}
+
+/* Writes the sweep's tables of the whole grid (not of one --only task) and says where.
+ * Returns the sweep's exit status, run_all's unless the writing fails. */
+static int write_results(struct sweep *w, struct cfg *c, int status)
+{
+  struct hv_error err = {0};
+  if (w->only >= 0 && !w->collect) return status;
+  if (write_sweep_csv(w, &err) || (w->has_bisect && write_limits(w, c, &err))) {
+    fprintf(stderr, "%s\n", err.msg);
+    return err.code ? err.code : HV_EXIT_RUN;
+  }
+  if (w->quiet) return status;
+  printf("hvsph sweep: %s/sweep.csv%s\n", w->dir,
+         w->has_bisect ? ", ballistic_limit.csv, ballistic_limit.png" : "");
+  if (w->has_bisect) print_limits(w);
+  return status;
+}
+
+/* Writes the job array instead of running: DIR/sweep.slurm. Returns the exit status. */
+static int emit_job_array(struct sweep *w)
+{
+  struct hv_error err = {0};
+  if (emit_slurm(w, &err)) return sweep_bad(&err);
+  printf("hvsph sweep: wrote %s/sweep.slurm (%d task%s); after the job, run hvsph "
+         "sweep --collect %s\n",
+         w->dir, w->ncombos, w->ncombos == 1 ? "" : "s", w->dir);
+  return 0;
+}
+
+/* Runs, or writes the job array of, the checked sweep w of case c: the points folder
+ * and sweep_args.txt first. Returns the exit status. */
+static int run_sweep(struct sweep *w, struct cfg *c, int nall, char **all)
+{
+  struct hv_error err = {0};
+  char pdir[4200];
+  snprintf(pdir, sizeof pdir, "%s/points", w->dir);
+  if (io_mkdir_p(pdir, &err)) return sweep_bad(&err);
+  if (!w->collect && write_args(w, nall, all, &err)) return sweep_bad(&err);
+  if (w->emit_slurm) return emit_job_array(w);
+  return write_results(w, c, run_all(w));
 }
 
 int cli_sweep(int argc, char **argv)
@@ -1109,213 +1479,22 @@ int cli_sweep(int argc, char **argv)
   w.jobs = 1;
   w.threads = 0;
   w.only = -1;
-  const char *out = NULL, *tol = NULL, *args_from = NULL, *emit = NULL;
-  int cli_vary = 0, cli_bisect = 0;
+  struct sweep_cli s = {.w = &w, .err = &err};
   /* --collect DIR and --args-from FILE read the command line a sweep wrote */
-  for (int i = 0; i < argc; i++) {
-    if (!strcmp(argv[i], "--collect") && i + 1 < argc) {
-      static char p[4200];
-      snprintf(p, sizeof p, "%s/sweep_args.txt", argv[i + 1]);
-      args_from = p;
-      w.collect = 1;
-    } else if (!strcmp(argv[i], "--args-from") && i + 1 < argc) {
-      args_from = argv[i + 1];
-    }
-  }
-  char **all = argv;
-  int nall = argc;
-  if (args_from) {
-    int na;
-    char **a = read_args(args_from, &na, &err);
-    if (!a) {
-      fprintf(stderr, "%s\n", err.msg);
-      return HV_EXIT_INPUT;
-    }
-    /* the stored command line first, then this one's own options */
-    all = hv_malloc((size_t)(na + argc + 1) * sizeof *all, "sweep args");
-    nall = 0;
-    for (int i = 0; i < na; i++) all[nall++] = a[i];
-    for (int i = 0; i < argc; i++) {
-      if (!strcmp(argv[i], "--collect") || !strcmp(argv[i], "--args-from")) {
-        i++;
-        continue;
-      }
-      all[nall++] = argv[i];
-    }
-    all[nall] = NULL;
-  }
-  for (int i = 0; i < nall; i++) {
-    const char *a = all[i];
-    const int more = i + 1 < nall;
-    if ((!strcmp(a, "-o") || !strcmp(a, "--output")) && more)
-      out = all[++i];
-    else if (!strcmp(a, "--vary") && more) {
-      if (parse_vary(&w, all[++i], &err)) goto bad;
-      cli_vary = 1;
-    } else if (!strcmp(a, "--bisect") && more) {
-      if (parse_bisect(&w, all[++i], &err)) goto bad;
-      cli_bisect = 1;
-    } else if (!strcmp(a, "--tol") && more) {
-      tol = all[++i];
-      w.b.tol_given = 1;
-    } else if (!strcmp(a, "--measure") && more)
-      snprintf(w.measure, sizeof w.measure, "%s", all[++i]);
-    else if (!strcmp(a, "--set") && more && w.nsets < SWEEP_MAX_SETS)
-      w.sets[w.nsets++] = all[++i];
-    else if (!strcmp(a, "--jobs") && more) {
-      if (parse_int(all[++i], 1, 4096, &w.jobs)) {
-        fprintf(stderr, "hvsph sweep: --jobs needs a positive integer, not '%s'\n", all[i]);
-        return HV_EXIT_USAGE;
-      }
-    } else if (!strcmp(a, "--threads") && more) {
-      if (parse_int(all[++i], 1, 4096, &w.threads)) {
-        fprintf(stderr, "hvsph sweep: --threads needs a positive integer, not '%s'\n", all[i]);
-        return HV_EXIT_USAGE;
-      }
-    } else if (!strcmp(a, "--only") && more) {
-      if (parse_int(all[++i], 0, 1 << 30, &w.only)) {
-        fprintf(stderr, "hvsph sweep: --only needs a grid point's index, not '%s'\n", all[i]);
-        return HV_EXIT_USAGE;
-      }
-    } else if (!strcmp(a, "--emit") && more)
-      emit = all[++i];
-    else if (!strcmp(a, "--quiet") || !strcmp(a, "-q"))
-      w.quiet = 1;
-    else if (a[0] == '-' || w.case_abs) {
-      fprintf(stderr, "hvsph sweep: unexpected argument '%s' (see hvsph sweep --help)\n", a);
-      return HV_EXIT_USAGE;
-    } else
-      w.case_abs = a;
-  }
-  if (!w.case_abs || !out) {
-    fprintf(stderr, "hvsph sweep: %s (see hvsph sweep --help)\n",
-            !w.case_abs ? "missing case file" : "missing -o DIR");
-    return HV_EXIT_USAGE;
-  }
-  if (emit && strcmp(emit, "slurm")) {
-    fprintf(stderr, "hvsph sweep: --emit %s: only 'slurm' is known\n", emit);
-    return HV_EXIT_USAGE;
-  }
-  w.emit_slurm = emit != NULL;
-  if (w.threads == 0) w.threads = omp_get_max_threads();
-  /* the case as an absolute path: the points and a job array run it from anywhere */
-  if (w.case_abs[0] == '/')
-    snprintf(w.case_path, sizeof w.case_path, "%s", w.case_abs);
-  else {
-    char cwd[2048];
-    if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
-    snprintf(w.case_path, sizeof w.case_path, "%s/%s", cwd, w.case_abs);
-  }
-  if (access(w.case_path, R_OK)) {
-    fprintf(stderr, "hvsph sweep: %s: %s\n", w.case_abs, strerror(errno));
-    return HV_EXIT_INPUT;
-  }
-  /* the folder as an absolute path too: a job array's tasks may start elsewhere */
-  if (out[0] == '/')
-    snprintf(w.dir, sizeof w.dir, "%s", out);
-  else {
-    char cwd[2048];
-    if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
-    snprintf(w.dir, sizeof w.dir, "%s/%s", cwd, out);
-  }
-
-  /* the case, with the --set overrides, to check the keys against */
+  const struct stored st = find_stored(argc, argv);
+  w.collect = st.collect;
+  int nall;
+  char **all = with_stored(&st, argc, argv, &nall);
+  if (!all) return HV_EXIT_INPUT;
+  int rc = parse_options(&w, &s, nall, all);
+  if (rc == CLI_GO_ON) rc = check_options(&w, &s);
+  if (rc != CLI_GO_ON) return rc;
   struct cfg *c = cfg_load(w.case_path, &err);
-  if (!c) goto bad;
-  for (int k = 0; k < w.nsets; k++)
-    if (cfg_apply_set(c, w.sets[k], &err)) goto bad_cfg;
-  if (read_case_sweep(&w, c, cli_vary, cli_bisect, &err)) goto bad_cfg;
-  if (w.b.tol_given == 2) tol = w.tol_text;
-  if (!w.measure[0]) snprintf(w.measure, sizeof w.measure, "perforated");
-  default_object(&w, c);
-  if (w.nvary == 0 && !w.has_bisect) {
-    hv_error_set(&err, HV_EXIT_INPUT,
-                 "hvsph sweep: nothing to sweep: give --vary or --bisect, "
-                 "or a `sweep:` section in %s",
-                 w.case_path);
-    goto bad_cfg;
-  }
-  for (int k = 0; k < w.nvary; k++) {
-    if (case_has(c, w.vary[k].key, "--vary", &err)) goto bad_cfg;
-    for (int j = 0; j < w.vary[k].n; j++)
-      if (check_value(c, w.vary[k].key, "--vary", &w.vary[k].v[j], &err)) goto bad_cfg;
-    if (w.has_bisect && !strcmp(w.vary[k].key, w.b.key)) {
-      hv_error_set(&err, HV_EXIT_INPUT, "hvsph sweep: %s is both varied and bisected", w.b.key);
-      goto bad_cfg;
-    }
-  }
-  if (w.has_bisect && check_bisect(&w, c, tol, &err)) goto bad_cfg;
-
-  /* the grid */
-  w.ncombos = 1;
-  for (int k = 0; k < w.nvary; k++) w.ncombos *= w.vary[k].n;
-  if (w.only >= w.ncombos) {
-    hv_error_set(&err, HV_EXIT_INPUT,
-                 "hvsph sweep: --only %d: the sweep has %d grid points "
-                 "(0 to %d)",
-                 w.only, w.ncombos, w.ncombos - 1);
-    goto bad_cfg;
-  }
-  w.combos = calloc((size_t)w.ncombos, sizeof *w.combos);
-  for (int c0 = 0; c0 < w.ncombos; c0++) {
-    w.combos[c0].idx = calloc((size_t)w.nvary + 1, sizeof(int));
-    int r = c0;
-    for (int k = w.nvary - 1; k >= 0; k--) {
-      w.combos[c0].idx[k] = r % w.vary[k].n;
-      r /= w.vary[k].n;
-    }
-  }
-
-  char pdir[4200];
-  snprintf(pdir, sizeof pdir, "%s/points", w.dir);
-  if (io_mkdir_p(pdir, &err)) goto bad_cfg;
-  if (!w.collect && write_args(&w, nall, all, &err)) goto bad_cfg;
-  if (w.emit_slurm) {
-    const int rc = emit_slurm(&w, &err);
-    if (!rc)
-      printf("hvsph sweep: wrote %s/sweep.slurm (%d task%s); after the job, run hvsph "
-             "sweep --collect %s\n",
-             w.dir, w.ncombos, w.ncombos == 1 ? "" : "s", w.dir);
-    cfg_free(c);
-    if (rc) goto bad;
-    return 0;
-  }
-  int status = run_all(&w);
-  if (w.only < 0 || w.collect) {
-    if (write_sweep_csv(&w, &err) || (w.has_bisect && write_limits(&w, c, &err))) {
-      fprintf(stderr, "%s\n", err.msg);
-      status = err.code ? err.code : HV_EXIT_RUN;
-    } else if (!w.quiet) {
-      printf("hvsph sweep: %s/sweep.csv%s\n", w.dir,
-             w.has_bisect ? ", ballistic_limit.csv, ballistic_limit.png" : "");
-      for (int k = 0; k < w.ncombos && w.has_bisect; k++) {
-        const struct combo *co = &w.combos[k];
-        char name[512];
-        combo_name(&w, co, name, sizeof name);
-        char lo[160], hi[160];
-        format_value(&w.b, co->lo, lo, sizeof lo);
-        format_value(&w.b, co->hi, hi, sizeof hi);
-        if (co->outside)
-          printf("  %s: %s at both ends: the limit lies outside %s..%s\n", name[0] ? name : "case",
-                 co->alo ? "yes" : "no", w.b.lo.text, w.b.hi.text);
-        else if (co->failed == 2)
-          printf("  %s: a point's measurements.csv has no %s%s%s at its last time\n",
-                 name[0] ? name : "case", w.measure, w.object[0] ? " of " : "", w.object);
-        else if (co->failed)
-          printf("  %s: a point failed\n", name[0] ? name : "case");
-        else if (!co->done)
-          printf("  %s: unfinished, bracket %s..%s\n", name[0] ? name : "case", lo, hi);
-        else
-          printf("  %s: %s between %s and %s\n", name[0] ? name : "case", w.b.key, lo, hi);
-      }
-    }
-  }
+  if (!c) return sweep_bad(&err);
+  if (check_against_case(&w, c, &s, &err) || make_grid(&w, &err))
+    rc = sweep_bad(&err);
+  else
+    rc = run_sweep(&w, c, nall, all);
   cfg_free(c);
-  return status;
-
-bad_cfg:
-  cfg_free(c);
-bad:
-  fprintf(stderr, "%s\n", err.msg);
-  return err.code ? err.code : HV_EXIT_INPUT;
+  return rc;
 }

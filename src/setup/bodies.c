@@ -525,16 +525,16 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
   return 0;
 }
 
-static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, double resolution,
-                     struct hv_error *err)
+/* Body b's name (bodies[b].name, else "body<b>") into s->body[b].name and *name, refused
+ * when an earlier body has it. */
+static int read_body_name(struct sim *s, struct cfg *c, int b, const char *path, const char **name,
+                          struct hv_error *err)
 {
-  char key[256], path[64], defname[32];
-  const char *name, *mname;
-  snprintf(path, sizeof path, "bodies[%d]", b);
+  char key[256], defname[32];
   snprintf(defname, sizeof defname, "body%d", b);
   snprintf(key, sizeof key, "%s.name", path);
-  if (cfg_get_string(c, key, defname, &name, err)) return -1;
-  snprintf(s->body[b].name, sizeof s->body[b].name, "%s", name);
+  if (cfg_get_string(c, key, defname, name, err)) return -1;
+  snprintf(s->body[b].name, sizeof s->body[b].name, "%s", *name);
   /* names pick bodies out (part_of, measure:, the render's labels, messages): two
      bodies of one name would leave it to the order which is meant */
   for (int a = 0; a < b; a++)
@@ -548,6 +548,84 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
                           cfg_where(c, cfg_has(c, key) ? key : path, where, sizeof where), key,
                           s->body[b].name, a, cfg_where(c, akey, first, sizeof first));
     }
+  return 0;
+}
+
+/* bs->fit: the axes along which the lattice's step is fitted to the box's length. */
+static void fit_to_faces(const struct sim *s, struct body_spec *bs)
+{
+  /* A box's lattice starts Δ/2 inside its min face and ends wherever its length
+     leaves it — anywhere from 0 to Δ from its max face. Next to a wall or symmetry face
+     the gap matters: the mirror ghosts stand twice the gap from the last layer, not Δ,
+     and the layer is pushed (the §3 vessel's nitrogen, 148.5 mm long on a 3 mm lattice,
+     ended 3 mm from the rigid wall at x = 150 mm, rushed at it at 110–136 m/s and thinned
+     to 0.88 ρ₁ by 10 µs). Along an axis on which a box of gas touches such a face its
+     step is fitted to its length, within Δ/(2n) of Δ for n layers (the mass follows
+     from the exact volume, h from the mass). Condensed bodies start at zero pressure,
+     where the gap exerts no force, and keep their lattice. */
+  for (int k = 0; k < 3; k++) {
+    const double tol = 1e-9 * fmax(1.0, fabs(s->bnd.hi[k] - s->bnd.lo[k]));
+    const int kh = s->bnd.kind[k][1], kl = s->bnd.kind[k][0];
+    const int on_hi =
+        (kh == BND_WALL || kh == BND_SYMMETRY) && fabs(bs->shape.max[k] - s->bnd.hi[k]) <= tol;
+    const int on_lo =
+        (kl == BND_WALL || kl == BND_SYMMETRY) && fabs(bs->shape.min[k] - s->bnd.lo[k]) <= tol;
+    bs->fit[k] = s->bnd.has_box && bs->shape.kind == SHAPE_BOX &&
+                 s->mat[bs->mat].eos == EOS_IDEAL_GAS && bs->lattice == LATTICE_CUBIC &&
+                 (on_hi || on_lo) && !(k == 2 && s->bnd.half_model && bs->shape.min[2] > 0.0);
+  }
+}
+
+/* Warns of a bare length that reads as a metre or more in a solid body. */
+static void warn_bare_length(const struct sim *s, struct cfg *c, const char *path, const char *name,
+                             const struct body_spec *bs)
+{
+  /* wrong units that still fit in memory: a body of a condensed material at a real
+     density (the range of the density check, so not a case in scaled units like the
+     rubber rings') with a bare length of a metre or more. The bodies of examples/ measure
+     0.3 to 300 mm; a bare "radius: 1.5" there is far more often 1.5 mm without its unit
+     than a sphere of 3 m, but one can be meant and it runs: a warning */
+  if (s->mat[bs->mat].eos != EOS_IDEAL_GAS && bs->rho >= HV_RHO_CONDENSED_LO &&
+      bs->rho <= HV_RHO_CONDENSED_HI) {
+    char lkey[96], where[256];
+    double v;
+    if (bare_length(c, path, &bs->shape, BARE_LENGTH_WARN, lkey, sizeof lkey, &v))
+      hv_warn("%s: %s: body '%s': the bare number %g is read as %g m (a number without a unit "
+              "is SI), large for a solid body of this code's cases; was it %g mm? (write the "
+              "value with its unit: '%g m' keeps this one)",
+              cfg_where(c, lkey, where, sizeof where), lkey, name, v, v, v, v);
+  }
+}
+
+/* bs->damage, the body's initial damage, refused without a fracture model. */
+static int read_damage(const struct sim *s, struct cfg *c, const char *path, const char *name,
+                       struct body_spec *bs, struct hv_error *err)
+{
+  char key[256];
+  /* initial damage: 1 makes a body of broken (split) material, e.g. to test the
+     fracture.friction of split material or to start from a rubble target */
+  const double zero = 0.0;
+  snprintf(key, sizeof key, "%s.damage", path);
+  if (cfg_get_quantity(c, key, UNIT_NONE, &zero, 0.0, 1.0, &bs->damage, err)) return -1;
+  if (bs->damage > 0.0 && s->mat[bs->mat].frac.kind == FRACTURE_NONE) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: body '%s': damage = %g needs a material "
+                        "with fracture (material '%s' has fracture: none)",
+                        cfg_where(c, key, where, sizeof where), key, name, bs->damage,
+                        s->mat[bs->mat].name);
+  }
+  return 0;
+}
+
+/* Body b of the case: name, material, shape, lattice, spacing, state, velocity, damage. */
+static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, double resolution,
+                     struct hv_error *err)
+{
+  char key[256], path[64];
+  const char *name, *mname;
+  snprintf(path, sizeof path, "bodies[%d]", b);
+  if (read_body_name(s, c, b, path, &name, err)) return -1;
   snprintf(key, sizeof key, "%s.material", path);
   if (cfg_get_string(c, key, NULL, &mname, err)) return -1;
   bs->mat = material_find_or_load(c, key, mname, s->mat, &s->nmat, HV_MAX_MATERIALS, err);
@@ -569,26 +647,7 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
                         "model",
                         cfg_where(c, key, where, sizeof where), key, name);
   }
-  /* A box's lattice starts Δ/2 inside its min face and ends wherever its length
-     leaves it — anywhere from 0 to Δ from its max face. Next to a wall or symmetry face
-     the gap matters: the mirror ghosts stand twice the gap from the last layer, not Δ,
-     and the layer is pushed (the §3 vessel's nitrogen, 148.5 mm long on a 3 mm lattice,
-     ended 3 mm from the rigid wall at x = 150 mm, rushed at it at 110–136 m/s and thinned
-     to 0.88 ρ₁ by 10 µs). Along an axis on which a box of gas touches such a face its
-     step is fitted to its length, within Δ/(2n) of Δ for n layers (the mass follows
-     from the exact volume, h from the mass). Condensed bodies start at zero pressure,
-     where the gap exerts no force, and keep their lattice. */
-  for (int k = 0; k < 3; k++) {
-    const double tol = 1e-9 * fmax(1.0, fabs(s->bnd.hi[k] - s->bnd.lo[k]));
-    const int kh = s->bnd.kind[k][1], kl = s->bnd.kind[k][0];
-    const int on_hi =
-        (kh == BND_WALL || kh == BND_SYMMETRY) && fabs(bs->shape.max[k] - s->bnd.hi[k]) <= tol;
-    const int on_lo =
-        (kl == BND_WALL || kl == BND_SYMMETRY) && fabs(bs->shape.min[k] - s->bnd.lo[k]) <= tol;
-    bs->fit[k] = s->bnd.has_box && bs->shape.kind == SHAPE_BOX &&
-                 s->mat[bs->mat].eos == EOS_IDEAL_GAS && bs->lattice == LATTICE_CUBIC &&
-                 (on_hi || on_lo) && !(k == 2 && s->bnd.half_model && bs->shape.min[2] > 0.0);
-  }
+  fit_to_faces(s, bs);
   bs->vol = shape_volume(&bs->shape);
   if (s->bnd.half_model && bs->vol > 0) {
     /* a half model keeps z > 0: exact when the shape is symmetric about z = 0 */
@@ -598,34 +657,8 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
   if (read_spacing(s, c, path, name, bs, resolution, err) ||
       read_state(c, path, name, &s->mat[bs->mat], bs, err) || read_velocity(c, path, name, bs, err))
     return -1;
-  /* wrong units that still fit in memory: a body of a condensed material at a real
-     density (the range of the density check, so not a case in scaled units like the
-     rubber rings') with a bare length of a metre or more. The bodies of examples/ measure
-     0.3 to 300 mm; a bare "radius: 1.5" there is far more often 1.5 mm without its unit
-     than a sphere of 3 m, but one can be meant and it runs: a warning */
-  if (s->mat[bs->mat].eos != EOS_IDEAL_GAS && bs->rho >= HV_RHO_CONDENSED_LO &&
-      bs->rho <= HV_RHO_CONDENSED_HI) {
-    char lkey[96], where[256];
-    double v;
-    if (bare_length(c, path, &bs->shape, BARE_LENGTH_WARN, lkey, sizeof lkey, &v))
-      hv_warn("%s: %s: body '%s': the bare number %g is read as %g m (a number without a unit "
-              "is SI), large for a solid body of this code's cases; was it %g mm? (write the "
-              "value with its unit: '%g m' keeps this one)",
-              cfg_where(c, lkey, where, sizeof where), lkey, name, v, v, v, v);
-  }
-  /* initial damage: 1 makes a body of broken (split) material, e.g. to test the
-     fracture.friction of split material or to start from a rubble target */
-  const double zero = 0.0;
-  snprintf(key, sizeof key, "%s.damage", path);
-  if (cfg_get_quantity(c, key, UNIT_NONE, &zero, 0.0, 1.0, &bs->damage, err)) return -1;
-  if (bs->damage > 0.0 && s->mat[bs->mat].frac.kind == FRACTURE_NONE) {
-    char where[256];
-    return hv_error_set(err, HV_EXIT_INPUT,
-                        "%s: %s: body '%s': damage = %g needs a material "
-                        "with fracture (material '%s' has fracture: none)",
-                        cfg_where(c, key, where, sizeof where), key, name, bs->damage,
-                        s->mat[bs->mat].name);
-  }
+  warn_bare_length(s, c, path, name, bs);
+  if (read_damage(s, c, path, name, bs, err)) return -1;
   return 0;
 }
 

@@ -22,6 +22,7 @@
 #  6. --emit slurm writes a job array of the grid points; its tasks run by hand (as Slurm
 #     would) and `hvsph sweep --collect` gather the same limits as (2);
 #  7. a case holding its own `sweep:` runs with no options, and `hvsph run` takes it.
+#  8. command-line mistakes exit 1 (2 for a stored command line that cannot be read).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 T=${HVSPH_TMP:-/tmp/hvsph_test_sweep}
@@ -163,6 +164,35 @@ out=$("$BIN" sweep typo.yaml -o typo 2>&1); st=$?
 check $(( st == 2 ? 0 : 1 )) "a misspelt key of sweep: exit 2 (got $st: $out)"
 check $(echo "$out" | grep -q "typo.yaml:[0-9]*: unknown key 'sweep.bisect.tolerence'" && [ ! -e typo ] && echo 0 || echo 1) \
   "a misspelt key of sweep: named with its line, nothing run"
+
+# 8. command-line mistakes: exit 1 before anything is read or written, the argument named
+#    as the hand-written walk over argv named it before the options went through
+#    cli_parse (a value missing at the end, a --set beyond the 256 kept, "--name=value",
+#    a second case, a line of a stored command line that is no sweep option); a stored
+#    command line that cannot be read exits 2
+usage() {  # usage "MESSAGE" ARGS...
+  local want=$1; shift
+  out=$("$BIN" sweep "$@" 2>&1); st=$?
+  check $(( st == 1 ? 0 : 1 )) "command line '$*': exit 1 (got $st: $out)"
+  check $(echo "$out" | grep -qF -- "$want" && [ ! -e u ] && echo 0 || echo 1) \
+    "command line '$*': says $want, no folder"
+}
+printf '%s\n' "$T/tiny-shield.yaml" -o u --help > help-args.txt
+sets=$(for i in $(seq 257); do printf -- '--set a=%d ' "$i"; done)
+usage "unexpected argument '--jobs'" tiny-shield.yaml -o u --jobs
+usage "--jobs needs a positive integer, not '0'" tiny-shield.yaml -o u --jobs 0
+usage "--only needs a grid point's index, not 'x'" tiny-shield.yaml -o u --only x
+usage "--emit pbs: only 'slurm' is known" tiny-shield.yaml -o u --emit pbs
+usage "unexpected argument '--output=u'" tiny-shield.yaml --output=u
+usage "unexpected argument 'own.yaml'" tiny-shield.yaml -o u own.yaml
+usage "unexpected argument '--collect'" tiny-shield.yaml -o u --collect
+usage "unexpected argument '--help'" --args-from help-args.txt
+# shellcheck disable=SC2086
+usage "unexpected argument '--set'" tiny-shield.yaml -o u $sets
+out=$("$BIN" sweep --collect nowhere 2>&1); st=$?
+check $(( st == 2 ? 0 : 1 )) "--collect of a folder without sweep_args.txt: exit 2 (got $st: $out)"
+check $(echo "$out" | grep -qF "nowhere/sweep_args.txt: No such file or directory (not a sweep folder?)" \
+  && echo 0 || echo 1) "--collect of a folder without sweep_args.txt: named"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
