@@ -13,4 +13,8 @@ int cli_measure(int argc, char **argv);  /* measure.c: hvsph measure RUNDIR */
 int cli_validate(int argc, char **argv); /* validate.c: hvsph validate */
 int cli_render(int argc, char **argv);   /* render.c: hvsph render SNAPSHOT|RUNDIR */
 
+/* The process's peak resident memory in KiB (VmHWM of /proc/self/status), -1 where it
+ * cannot be read (bench.c; also hvsph check's estimate). */
+long cli_peak_rss_kib(void);
+
 #endif
