@@ -26,7 +26,8 @@ struct bench_options {
   int nsets;
 };
 
-static long peak_rss_kib(void)
+/* cli.h: VmHWM, the peak resident memory */
+long cli_peak_rss_kib(void)
 {
   FILE *f = fopen("/proc/self/status", "r");
   if (!f) return -1;
@@ -107,7 +108,7 @@ static int bench_main(const struct bench_options *o)
   size_t arrays = s.p.touched * particles_bytes_per_particle(&s.p) + nbr_grid_bytes(&s.grid) +
                   s.bnd.cap * (sizeof *s.bnd.src + sizeof *s.bnd.flip + sizeof *s.bnd.side) +
                   sph_cache_bytes(&s.cache);
-  long rss = peak_rss_kib();
+  long rss = cli_peak_rss_kib();
   printf("particles            %zu (%ld^3 lattice, periodic, %s)\n", n, side,
          o->solid ? "al-alloy with strength and fracture" : "ideal gas");
   printf("threads              %d\n", omp_get_max_threads());

@@ -78,18 +78,6 @@ static int projectile(const struct sim *s, const size_t *first, double *speed, d
   return best;
 }
 
-static long peak_rss_kib(void)
-{
-  FILE *f = fopen("/proc/self/status", "r");
-  if (!f) return -1;
-  char line[256];
-  long kib = -1;
-  while (fgets(line, sizeof line, f))
-    if (!strncmp(line, "VmHWM:", 6)) kib = strtol(line + 6, NULL, 10);
-  fclose(f);
-  return kib;
-}
-
 /* The bodies' rows, the projectile and the plates. */
 static void report_bodies(const struct sim *s, const size_t *first)
 {
@@ -222,7 +210,7 @@ static int report_cost(struct sim *s, struct hv_error *err)
       s->p.touched * particles_bytes_per_particle(&s->p) + nbr_grid_bytes(&s->grid) +
       s->bnd.cap * (sizeof *s->bnd.src + sizeof *s->bnd.flip + sizeof *s->bnd.side) +
       sph_cache_bytes(&s->cache);
-  const long rss = peak_rss_kib();
+  const long rss = cli_peak_rss_kib();
   printf("memory           %.1f MiB in the solver's arrays (%.0f bytes per particle, ghosts and "
          "neighbour grid\n                 included, after %d step%s); peak resident %.1f MiB\n",
          (double)arrays / 1048576.0, (double)arrays / (double)(s->p.n ? s->p.n : 1), timed + 1,

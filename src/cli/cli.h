@@ -15,4 +15,8 @@ int cli_render(int argc, char **argv);    /* render.c: hvsph render SNAPSHOT|RUN
 int cli_sweep(int argc, char **argv);     /* sweep.c: hvsph sweep CASE -o DIR */
 int cli_materials(int argc, char **argv); /* materials.c: hvsph materials [NAME] */
 
+/* The process's peak resident memory in KiB (VmHWM of /proc/self/status), -1 where it
+ * cannot be read (bench.c; also hvsph check's estimate). */
+long cli_peak_rss_kib(void);
+
 #endif

@@ -92,15 +92,15 @@ int fracture_read_energy(struct cfg *c, const char *fp, struct material *m, stru
   struct fracture_params *f = &m->frac;
   const double zero = 0.0;
   char k[320];
-  if (fracture_get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy, err))
+  if (material_get_q(c, fp, "energy", UNIT_FRACTURE_ENERGY, &zero, 0.0, HUGE_VAL, &f->energy, err))
     return -1;
   if (f->energy > 0.0 && !m->str.enabled)
-    return fracture_key_error(c, fracture_key(k, sizeof k, fp, "energy"), err,
+    return material_key_error(c, material_key(k, sizeof k, fp, "energy"), err,
                               "the cohesive opening (energy > 0) acts on the stress of a "
                               "solid, but the material has no strength (give strength with "
                               "shear modulus and yield > 0)");
   if (f->energy > 0.0 && !(m->rho0 > 0.0))
-    return fracture_key_error(c, fracture_key(k, sizeof k, fp, "energy"), err,
+    return material_key_error(c, material_key(k, sizeof k, fp, "energy"), err,
                               "the cohesive opening (energy > 0) takes each particle's "
                               "spacing from its mass and the material's rho0, which this "
                               "material does not give");

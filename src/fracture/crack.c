@@ -101,20 +101,20 @@ int fracture_read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_par
                               struct hv_error *err)
 {
   char k[320];
-  fracture_key(k, sizeof k, fp, "crack_eps_f");
+  material_key(k, sizeof k, fp, "crack_eps_f");
   if (!cfg_has(c, k)) return 0;
   const double zero = 0.0;
   if (!cfg_is_map(c, k)) {
     if (cfg_get_quantity(c, k, UNIT_NONE, NULL, 0.0, HUGE_VAL, &f->crack_d[0], err)) return -1;
     if (!(f->crack_d[0] > 0.0))
-      return fracture_key_error(c, k, err,
+      return material_key_error(c, k, err,
                                 "the strain to failure must be > 0 (leave "
                                 "crack_eps_f out for none)");
   } else {
     static const char *const dn[3] = {"d1", "d2", "d3"};
     for (int j = 0; j < 3; j++) {
       char kd[340];
-      if (cfg_get_quantity(c, fracture_key(kd, sizeof kd, k, dn[j]), UNIT_NONE, j ? &zero : NULL,
+      if (cfg_get_quantity(c, material_key(kd, sizeof kd, k, dn[j]), UNIT_NONE, j ? &zero : NULL,
                            -HUGE_VAL, HUGE_VAL, &f->crack_d[j], err))
         return -1;
     }
@@ -122,7 +122,7 @@ int fracture_read_crack_eps_f(struct cfg *c, const char *fp, struct fracture_par
     for (int e = -1; e <= 1; e += 2) {
       const double ef = f->crack_d[0] + f->crack_d[1] * exp(f->crack_d[2] * 1.5 * e);
       if (!(ef > 0.0))
-        return fracture_key_error(c, k, err,
+        return material_key_error(c, k, err,
                                   "d1 + d2 exp(d3 sigma*) = %.6g at sigma* = %g: "
                                   "the strain to failure must be > 0 for sigma* in [-1.5, 1.5]",
                                   ef, 1.5 * e);

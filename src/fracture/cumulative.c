@@ -32,16 +32,16 @@ int fracture_read_cumulative(struct cfg *c, const char *fp, struct material *m,
   struct fracture_params *f = &m->frac;
   const double zero = 0.0;
   char k[320];
-  if (fracture_not_used_here(c, fp, "energy",
+  if (material_not_used_here(c, fp, "energy",
                              "energy (a cohesive opening before the split) "
                              "applies to model: tresca only",
                              err) ||
       fracture_read_sigma_c(c, fp, &zero, 1, &f->sigma_c, err) ||
-      fracture_get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
-      fracture_get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))
+      material_get_q(c, fp, "eps_f", UNIT_NONE, &zero, 0.0, HUGE_VAL, &f->eps_f, err) ||
+      material_get_q(c, fp, "tau", UNIT_TIME, &zero, 0.0, HUGE_VAL, &f->tau, err))
     return -1;
   if (!(f->eps_f > 0.0) && !(f->sigma_c < 0.0))
-    return fracture_key_error(c, fracture_key(k, sizeof k, fp, "model"), err,
+    return material_key_error(c, material_key(k, sizeof k, fp, "model"), err,
                               "cumulative damage needs eps_f > 0 (plastic strain to failure) "
                               "or sigma_c < 0 (with tau, the time under tension to failure)");
   return 0;

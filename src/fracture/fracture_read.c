@@ -4,47 +4,11 @@
  * and the key path, as material.c's. */
 #include "fracture/read.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 static const char *const fracture_names[] = {"none", "tresca", "cumulative", NULL};
 static const char *const split_names[] = {"fluid", "no-tension", "crack", NULL};
-
-const char *fracture_key(char *buf, size_t len, const char *path, const char *key)
-{
-  snprintf(buf, len, "%s.%s", path, key);
-  return buf;
-}
-
-int fracture_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt, ...)
-{
-  char where[512], msg[1200];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(msg, sizeof msg, fmt, ap);
-  va_end(ap);
-  return hv_error_set(err, HV_EXIT_INPUT, "%s: %s: %s", cfg_where(c, key, where, sizeof where), key,
-                      msg);
-}
-
-int fracture_get_q(struct cfg *c, const char *path, const char *key, enum unit_dim dim,
-                   const double *def, double lo, double hi, double *out, struct hv_error *err)
-{
-  char k[320];
-  return cfg_get_quantity(c, fracture_key(k, sizeof k, path, key), dim, def, lo, hi, out, err);
-}
-
-int fracture_not_used_here(struct cfg *c, const char *path, const char *key, const char *why,
-                           struct hv_error *err)
-{
-  char k[320];
-  fracture_key(k, sizeof k, path, key);
-  /* written in the document itself, not grafted from the library (material.c's header) */
-  if (cfg_has(c, k) && !strcmp(cfg_node_file(c, k), cfg_file(c)))
-    return fracture_key_error(c, k, err, "%s", why);
-  return 0;
-}
 
 /* The split (any model but none) and its checks against the other rules' keys. */
 static int read_split(struct cfg *c, const char *fp, struct material *m, struct hv_error *err)
@@ -52,29 +16,29 @@ static int read_split(struct cfg *c, const char *fp, struct material *m, struct 
   struct fracture_params *f = &m->frac;
   char k[320];
   int split;
-  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
+  if (cfg_get_choice(c, material_key(k, sizeof k, fp, "split"), "fluid", split_names, &split, err))
     return -1;
   f->split = (enum split_kind)split;
   const char *sname = split_names[f->split];
   if (f->split != SPLIT_FLUID && !m->str.enabled)
-    return fracture_key_error(c, k, err,
+    return material_key_error(c, k, err,
                               "split: %s keeps the deviatoric stress of split "
                               "material, but the material has no strength (give strength "
                               "with shear modulus and yield > 0)",
                               sname);
   if (f->split != SPLIT_FLUID && f->energy > 0.0)
-    return fracture_key_error(c, fracture_key(k, sizeof k, fp, "energy"), err,
+    return material_key_error(c, material_key(k, sizeof k, fp, "energy"), err,
                               "energy (a cohesive opening before the split) ends in the "
                               "paper's split (split: fluid); with split: %s leave it out",
                               sname);
   if (f->split != SPLIT_FLUID && f->friction > 0.0)
-    return fracture_key_error(c, k, err,
+    return material_key_error(c, k, err,
                               "split: %s keeps the yield stress of split "
                               "material; friction (which limits it to min(Y, mu p)) applies "
                               "to split: fluid only",
                               sname);
   if (f->split != SPLIT_CRACK)
-    return fracture_not_used_here(c, fp, "crack_eps_f",
+    return material_not_used_here(c, fp, "crack_eps_f",
                                   "crack_eps_f is the strain to "
                                   "failure of a cracked particle: it applies to split: crack "
                                   "only",
@@ -90,27 +54,27 @@ int fracture_read(struct cfg *c, const char *path, struct material *m, struct hv
   memset(f, 0, sizeof *f);
   if (!cfg_has(c, fp)) return 0;
   if (!cfg_is_map(c, fp))
-    return fracture_key_error(c, fp, err,
+    return material_key_error(c, fp, err,
                               "expected a mapping like {model: tresca, sigma_c: -0.39 GPa}");
   int model;
-  if (cfg_get_choice(c, fracture_key(k, sizeof k, fp, "model"), NULL, fracture_names, &model, err))
+  if (cfg_get_choice(c, material_key(k, sizeof k, fp, "model"), NULL, fracture_names, &model, err))
     return -1;
   f->kind = (enum fracture_kind)model;
   switch (f->kind) {
   case FRACTURE_NONE:
-    if (fracture_not_used_here(c, fp, "friction",
+    if (material_not_used_here(c, fp, "friction",
                                "friction applies to split material: model "
                                "tresca or cumulative",
                                err) ||
-        fracture_not_used_here(c, fp, "split",
+        material_not_used_here(c, fp, "split",
                                "split applies to split material: model "
                                "tresca or cumulative",
                                err) ||
-        fracture_not_used_here(c, fp, "energy",
+        material_not_used_here(c, fp, "energy",
                                "energy (a cohesive opening before the "
                                "split) applies to model: tresca",
                                err) ||
-        fracture_not_used_here(c, fp, "crack_eps_f",
+        material_not_used_here(c, fp, "crack_eps_f",
                                "crack_eps_f applies to split: crack "
                                "(model tresca or cumulative)",
                                err))

@@ -1,23 +1,13 @@
 /* read.h — what the fracture rules' readers share (fracture_read.c), and each rule's
  * reader of its own keys (in the rule's file). fp is the mapping's key path
- * ("materials.NAME.fracture"). */
+ * ("materials.NAME.fracture"). The key helpers (material_key, material_key_error,
+ * material_get_q, material_not_used_here) are the materials' own, so that a fracture key
+ * is read, and its error written, as any other material key's. */
 #ifndef HV_FRACTURE_READ_RULES_H
 #define HV_FRACTURE_READ_RULES_H
 
 #include "fracture/fracture_read.h"
-
-/* "path.key" into buf. */
-const char *fracture_key(char *buf, size_t len, const char *path, const char *key);
-/* "file:line: key: message" (the line of the key, or of the deepest node present);
- * HV_EXIT_INPUT, returns -1. */
-int fracture_key_error(struct cfg *c, const char *key, struct hv_error *err, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-/* A quantity path.key; def NULL: required. */
-int fracture_get_q(struct cfg *c, const char *path, const char *key, enum unit_dim dim,
-                   const double *def, double lo, double hi, double *out, struct hv_error *err);
-/* A key the chosen model does not use: an error if the case wrote it. */
-int fracture_not_used_here(struct cfg *c, const char *path, const char *key, const char *why,
-                           struct hv_error *err);
+#include "material/material_read.h"
 
 /* tresca.c: sigma_c (required; zero_off: 0 accepted, "no tensile criterion", with the
  * default def). */

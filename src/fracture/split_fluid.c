@@ -31,10 +31,10 @@ int fracture_read_friction(struct cfg *c, const char *fp, struct material *m, st
 {
   const double zero = 0.0;
   char k[320];
-  if (fracture_get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &m->frac.friction, err))
+  if (material_get_q(c, fp, "friction", UNIT_NONE, &zero, 0.0, HUGE_VAL, &m->frac.friction, err))
     return -1;
   if (m->frac.friction > 0.0 && !m->str.enabled)
-    return fracture_key_error(c, fracture_key(k, sizeof k, fp, "friction"), err,
+    return material_key_error(c, material_key(k, sizeof k, fp, "friction"), err,
                               "friction limits the deviatoric stress of split material, but "
                               "the material has no strength (give strength with shear "
                               "modulus and yield > 0)");

@@ -31,10 +31,10 @@ int fracture_read_sigma_c(struct cfg *c, const char *fp, const double *def, int 
                           double *out, struct hv_error *err)
 {
   char k[320];
-  fracture_key(k, sizeof k, fp, "sigma_c");
+  material_key(k, sizeof k, fp, "sigma_c");
   if (cfg_get_quantity(c, k, UNIT_PRESSURE, def, -HUGE_VAL, HUGE_VAL, out, err)) return -1;
   if (cfg_has(c, k) && !(*out < 0.0) && !(zero_off && *out == 0.0))
-    return fracture_key_error(c, k, err,
+    return material_key_error(c, k, err,
                               "sigma_c = %.9g Pa must be negative (tension is "
                               "negative, as in the paper's tables)%s",
                               *out, zero_off ? "; 0 switches the tensile criterion off" : "");
@@ -43,8 +43,8 @@ int fracture_read_sigma_c(struct cfg *c, const char *fp, const double *def, int 
 
 int fracture_read_tresca(struct cfg *c, const char *fp, struct material *m, struct hv_error *err)
 {
-  if (fracture_not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
-      fracture_not_used_here(c, fp, "tau", "tau applies to model: cumulative only", err) ||
+  if (material_not_used_here(c, fp, "eps_f", "eps_f applies to model: cumulative only", err) ||
+      material_not_used_here(c, fp, "tau", "tau applies to model: cumulative only", err) ||
       fracture_read_sigma_c(c, fp, NULL, 0, &m->frac.sigma_c, err))
     return -1;
   return fracture_read_energy(c, fp, m, err);

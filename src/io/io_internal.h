@@ -19,6 +19,14 @@ void io_clean_text(char *dst, size_t len, const char *src, const char *fallback,
 int io_put_materials(struct atomic_file *af, const struct snapshot_meta *meta, const char *prefix,
                      const char *suffix, int xml_comment, struct hv_error *err);
 
+/* Writes the first two lines of a VTU or PVD file: the XML declaration and the comment
+ * "<!-- hvsph VERSION case NAME -->" (both cleaned by io_clean_text); -1 on a write error. */
+int io_put_xml_prologue(struct atomic_file *af, const struct snapshot_meta *meta,
+                        struct hv_error *err);
+
+/* This machine's byte order as a VTKFile's byte_order attribute names it. */
+const char *io_byte_order(void);
+
 /* Writes s as the value of an XML attribute (escaping & < > " '); -1 on a write error. */
 int io_put_xml_attr(struct atomic_file *af, const char *s, struct hv_error *err);
 

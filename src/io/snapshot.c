@@ -84,20 +84,32 @@ int io_put_xml_attr(struct atomic_file *af, const char *s, struct hv_error *err)
   return 0;
 }
 
-static int pvd_body(struct atomic_file *af, const double *times, const char *const *files, int n,
-                    const struct snapshot_meta *meta, struct hv_error *err)
+int io_put_xml_prologue(struct atomic_file *af, const struct snapshot_meta *meta,
+                        struct hv_error *err)
+{
+  char ver[256], name[1024];
+  io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
+  io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
+  return atomic_file_printf(af, err, "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n", ver,
+                            name);
+}
+
+const char *io_byte_order(void)
 {
   const unsigned short one = 1;
   unsigned char first;
   memcpy(&first, &one, 1);
-  char ver[256], name[1024];
-  io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
-  io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
-  if (atomic_file_printf(af, err,
-                         "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n"
+  return first ? "LittleEndian" : "BigEndian";
+}
+
+static int pvd_body(struct atomic_file *af, const double *times, const char *const *files, int n,
+                    const struct snapshot_meta *meta, struct hv_error *err)
+{
+  if (io_put_xml_prologue(af, meta, err) ||
+      atomic_file_printf(af, err,
                          "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"%s\">\n"
                          "  <Collection>\n",
-                         ver, name, first ? "LittleEndian" : "BigEndian"))
+                         io_byte_order()))
     return -1;
   for (int k = 0; k < n; k++) {
     if (atomic_file_printf(af, err, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"",

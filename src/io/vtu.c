@@ -196,15 +196,7 @@ static int put_array_tag(struct atomic_file *af, const struct vtu_array *a, stru
 static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int na, int npd,
                       size_t n, const struct snapshot_meta *meta, struct hv_error *err)
 {
-  const unsigned short one = 1;
-  unsigned char first;
-  memcpy(&first, &one, 1);
-  char ver[256], name[1024];
-  io_clean_text(ver, sizeof ver, meta ? meta->version : NULL, "unknown", 1);
-  io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 1);
-  if (atomic_file_printf(af, err, "<?xml version=\"1.0\"?>\n<!-- hvsph %s case %s -->\n", ver,
-                         name) ||
-      io_put_materials(af, meta, "<!-- ", " -->\n", 1, err) ||
+  if (io_put_xml_prologue(af, meta, err) || io_put_materials(af, meta, "<!-- ", " -->\n", 1, err) ||
       atomic_file_printf(af, err,
                          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
                          " header_type=\"UInt64\"%s>\n  <UnstructuredGrid>\n    <FieldData>\n"
@@ -212,7 +204,7 @@ static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int n
                          " format=\"ascii\">%.17g</DataArray>\n"
                          "      <DataArray type=\"Int64\" Name=\"STEP\" NumberOfTuples=\"1\""
                          " format=\"ascii\">%ld</DataArray>\n",
-                         first ? "LittleEndian" : "BigEndian",
+                         io_byte_order(),
                          meta && meta->vtu_zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
                          meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
       (meta && put_names(af, "mat", meta->material_names, meta->nmat, err)) ||

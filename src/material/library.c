@@ -156,9 +156,6 @@ void material_print_quantity(FILE *f, const char *name, double v, const char *un
   fprintf(f, "    %-15s %-14.9g %-7s %s\n", name, v, unit, extra);
 }
 
-/* The short name the listing below uses. */
-#define pq material_print_quantity
-
 /* The EOS's and the yield model's parameters are listed by their rows (material.h). */
 void material_print(FILE *f, const struct material *m)
 {
@@ -174,19 +171,22 @@ void material_print(FILE *f, const struct material *m)
   } else {
     fprintf(f, "  strength: von Mises, model %s%s\n", yield_models[s->yield]->name,
             s->enabled ? "" : " (G = 0 or Y = 0: treated as a fluid)");
-    pq(f, "shear_modulus", s->G, "Pa");
-    if (s->nu != 0.0) pq(f, "poisson", s->nu, "");
+    material_print_quantity(f, "shear_modulus", s->G, "Pa");
+    if (s->nu != 0.0) material_print_quantity(f, "poisson", s->nu, "");
     yield_models[s->yield]->print(f, s);
   }
   const struct fracture_params *fr = &m->frac;
   fprintf(f, "  fracture: %s\n", fracs[fr->kind]);
-  if (fr->kind != FRACTURE_NONE && fr->sigma_c != 0.0) pq(f, "sigma_c", fr->sigma_c, "Pa");
+  if (fr->kind != FRACTURE_NONE && fr->sigma_c != 0.0)
+    material_print_quantity(f, "sigma_c", fr->sigma_c, "Pa");
   if (fr->kind == FRACTURE_CUMULATIVE) {
-    pq(f, "eps_f", fr->eps_f, "");
-    pq(f, "tau", fr->tau, "s");
+    material_print_quantity(f, "eps_f", fr->eps_f, "");
+    material_print_quantity(f, "tau", fr->tau, "s");
   }
-  if (fr->kind == FRACTURE_TRESCA && fr->energy > 0.0) pq(f, "energy", fr->energy, "J/m2");
-  if (fr->kind != FRACTURE_NONE && fr->friction > 0.0) pq(f, "friction", fr->friction, "");
+  if (fr->kind == FRACTURE_TRESCA && fr->energy > 0.0)
+    material_print_quantity(f, "energy", fr->energy, "J/m2");
+  if (fr->kind != FRACTURE_NONE && fr->friction > 0.0)
+    material_print_quantity(f, "friction", fr->friction, "");
   if (fr->kind != FRACTURE_NONE && fr->split != SPLIT_FLUID)
     fprintf(f, "  split: %s\n", fr->split == SPLIT_NO_TENSION ? "no-tension" : "crack");
   if (fr->split == SPLIT_CRACK && fr->crack_eps_f_on)

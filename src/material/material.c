@@ -67,13 +67,6 @@ static void yield_names(const char *names[YIELD_KIND_COUNT + 1])
 
 /* ---------------------------------------------------------------- helpers for readers */
 
-/* The short names this file's readers use; the models' files use material_read.h's. */
-#define key_of        material_key
-#define key_error     material_key_error
-#define from_case     material_from_case
-#define get_q         material_get_q
-#define not_used_here material_not_used_here
-
 const char *material_key(char *buf, size_t len, const char *path, const char *key)
 {
   snprintf(buf, len, "%s.%s", path, key);
@@ -112,13 +105,15 @@ static int pick_alternative(struct cfg *c, const char *ka, const char *kb, struc
   if (ha && !hb) return 1;
   if (hb && !ha) return 2;
   if (!ha) {
-    key_error(c, ka, err, "missing: give %s or %s", strrchr(ka, '.') + 1, strrchr(kb, '.') + 1);
+    material_key_error(c, ka, err, "missing: give %s or %s", strrchr(ka, '.') + 1,
+                       strrchr(kb, '.') + 1);
     return 0;
   }
-  const int ca = from_case(c, ka), cb = from_case(c, kb);
+  const int ca = material_from_case(c, ka), cb = material_from_case(c, kb);
   if (ca && !cb) return 1; /* the case overrides the library's alternative */
   if (cb && !ca) return 2;
-  key_error(c, kb, err, "give %s or %s, not both", strrchr(ka, '.') + 1, strrchr(kb, '.') + 1);
+  material_key_error(c, kb, err, "give %s or %s, not both", strrchr(ka, '.') + 1,
+                     strrchr(kb, '.') + 1);
   return 0;
 }
 
@@ -126,8 +121,8 @@ int material_not_used_here(struct cfg *c, const char *path, const char *key, con
                            struct hv_error *err)
 {
   char k[320];
-  key_of(k, sizeof k, path, key);
-  if (from_case(c, k)) return key_error(c, k, err, "%s", why);
+  material_key(k, sizeof k, path, key);
+  if (material_from_case(c, k)) return material_key_error(c, k, err, "%s", why);
   return 0;
 }
 
@@ -136,22 +131,22 @@ static int read_shear_modulus(struct cfg *c, const char *sp, struct material *m,
 {
   struct strength_params *s = &m->str;
   char kg[320], kn[320], ke[320];
-  key_of(kg, sizeof kg, sp, "shear_modulus");
-  key_of(kn, sizeof kn, sp, "poisson");
-  key_of(ke, sizeof ke, sp, "youngs_modulus");
+  material_key(kg, sizeof kg, sp, "shear_modulus");
+  material_key(kn, sizeof kn, sp, "poisson");
+  material_key(ke, sizeof ke, sp, "youngs_modulus");
   const int which = pick_alternative(c, kg, kn, err);
   if (!which) return -1;
   if (which == 1) {
-    if (not_used_here(c, sp, "youngs_modulus",
-                      "youngs_modulus goes with poisson, not with "
-                      "shear_modulus",
-                      err))
+    if (material_not_used_here(c, sp, "youngs_modulus",
+                               "youngs_modulus goes with poisson, not with "
+                               "shear_modulus",
+                               err))
       return -1;
     return cfg_get_quantity(c, kg, UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &s->G, err);
   }
   if (cfg_get_quantity(c, kn, UNIT_NONE, NULL, -HUGE_VAL, HUGE_VAL, &s->nu, err)) return -1;
   if (!(s->nu > -1.0 && s->nu < 0.5))
-    return key_error(c, kn, err, "Poisson's ratio %g is outside (-1, 0.5)", s->nu);
+    return material_key_error(c, kn, err, "Poisson's ratio %g is outside (-1, 0.5)", s->nu);
   if (cfg_has(c, ke)) { /* G = E / (2(1 + ν)) */
     double E;
     if (cfg_get_quantity(c, ke, UNIT_PRESSURE, NULL, 0.0, HUGE_VAL, &E, err)) return -1;
@@ -159,11 +154,12 @@ static int read_shear_modulus(struct cfg *c, const char *sp, struct material *m,
     return 0;
   }
   if (!(m->K0 > 0.0))
-    return key_error(c, kn, err,
-                     "G from Poisson's ratio needs the bulk modulus K = rho0 c0^2 "
-                     "(mie-gruneisen) or A (tillotson); EOS '%s' has none: give shear_modulus "
-                     "or youngs_modulus",
-                     eos_models[m->eos]->name);
+    return material_key_error(
+        c, kn, err,
+        "G from Poisson's ratio needs the bulk modulus K = rho0 c0^2 "
+        "(mie-gruneisen) or A (tillotson); EOS '%s' has none: give shear_modulus "
+        "or youngs_modulus",
+        eos_models[m->eos]->name);
   s->G = 3.0 * m->K0 * (1.0 - 2.0 * s->nu) / (2.0 * (1.0 + s->nu));
   return 0;
 }
@@ -176,11 +172,12 @@ static int read_strength(struct cfg *c, const char *path, struct material *m, st
   memset(s, 0, sizeof *s);
   if (!cfg_has(c, sp)) return 0; /* a fluid */
   if (!cfg_is_map(c, sp))
-    return key_error(c, sp, err, "expected a mapping like {shear_modulus: 80 GPa, yield: 1 GPa}");
+    return material_key_error(c, sp, err,
+                              "expected a mapping like {shear_modulus: 80 GPa, yield: 1 GPa}");
   int model;
   const char *names[YIELD_KIND_COUNT + 1];
   yield_names(names);
-  if (cfg_get_choice(c, key_of(k, sizeof k, sp, "model"), "constant", names, &model, err) ||
+  if (cfg_get_choice(c, material_key(k, sizeof k, sp, "model"), "constant", names, &model, err) ||
       read_shear_modulus(c, sp, m, err))
     return -1;
   s->yield = (enum yield_kind)model;
@@ -210,9 +207,9 @@ static int graft_library(struct cfg *c, const char *path, const char *key, const
     list[0] = '\0';
     for (int i = 0; i < n && k < sizeof list; i++)
       k += (size_t)snprintf(list + k, sizeof list - k, "%s%s", i ? ", " : "", names[i]);
-    rc = key_error(c, key, err, "unknown library material '%s' (%s has: %s)", lname, cfg_file(lib),
-                   list);
-  } else if (cfg_has(lib, key_of(sub, sizeof sub, lname, "library"))) {
+    rc = material_key_error(c, key, err, "unknown library material '%s' (%s has: %s)", lname,
+                            cfg_file(lib), list);
+  } else if (cfg_has(lib, material_key(sub, sizeof sub, lname, "library"))) {
     rc = hv_error_set(err, HV_EXIT_INPUT, "%s: %s: a library entry cannot name another",
                       cfg_where(lib, sub, where, sizeof where), sub);
   } else {
@@ -228,8 +225,8 @@ static int check_typical(struct cfg *c, const char *path, const struct material_
 {
   for (const struct material_typical *t = list; t->key; t++) {
     char k[340];
-    key_of(k, sizeof k, path, t->key);
-    if (from_case(c, k) &&
+    material_key(k, sizeof k, path, t->key);
+    if (material_from_case(c, k) &&
         cfg_check_typical(c, k, (enum unit_dim)t->dim, t->lo, t->hi, t->what, err))
       return -1;
   }
@@ -267,11 +264,11 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
   memset(m, 0, sizeof *m);
   snprintf(m->name, sizeof m->name, "%s", name);
   if (!cfg_is_map(c, path))
-    return key_error(c, path, err,
-                     "material '%s' must be a mapping of its parameters "
-                     "(eos: ..., or library: NAME)",
-                     name);
-  key_of(key, sizeof key, path, "library");
+    return material_key_error(c, path, err,
+                              "material '%s' must be a mapping of its parameters "
+                              "(eos: ..., or library: NAME)",
+                              name);
+  material_key(key, sizeof key, path, "library");
   if (cfg_has(c, key)) {
     const char *lname;
     if (cfg_get_string(c, key, NULL, &lname, err) || graft_library(c, path, key, lname, err))
@@ -279,16 +276,18 @@ int material_read(struct cfg *c, const char *path, const char *name, struct mate
     snprintf(m->library, sizeof m->library, "%s", lname);
   }
   const char *text;
-  if (cfg_has(c, key_of(key, sizeof key, path, "source"))) {
+  if (cfg_has(c, material_key(key, sizeof key, path, "source"))) {
     if (cfg_get_string(c, key, NULL, &text, err)) return -1;
     snprintf(m->source, sizeof m->source, "%s", text);
   }
-  if (cfg_has(c, key_of(key, sizeof key, path, "note")) && cfg_get_string(c, key, NULL, &text, err))
+  if (cfg_has(c, material_key(key, sizeof key, path, "note")) &&
+      cfg_get_string(c, key, NULL, &text, err))
     return -1;
   int kind;
   const char *names[EOS_KIND_COUNT + 1];
   eos_names(names);
-  if (cfg_get_choice(c, key_of(key, sizeof key, path, "eos"), NULL, names, &kind, err)) return -1;
+  if (cfg_get_choice(c, material_key(key, sizeof key, path, "eos"), NULL, names, &kind, err))
+    return -1;
   m->eos = (enum eos_kind)kind;
   if (eos_models[m->eos]->read(c, path, m, err) || read_strength(c, path, m, err) ||
       fracture_read(c, path, m, err) || check_units(c, path, m, err)) {

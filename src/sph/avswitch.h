@@ -61,10 +61,11 @@ static inline void sph_correct_gradient(double L[9], const double A[9])
   for (int k = 0; k < 9; k++) L[k] = M[k];
 }
 
-/* Accumulates one neighbour into the switch's sums: w = Vⱼ f (∇ᵢWᵢⱼ = f (xᵢ − xⱼ)),
- * d = xᵢ − xⱼ, u = vⱼ − vᵢ. */
-static inline void avsw_add(double L[9], double A[9], double w, double dx, double dy, double dz,
-                            double ux, double uy, double uz)
+/* Adds one neighbour to L = Σ Vⱼ (vⱼ − vᵢ) ⊗ ∇ᵢWᵢⱼ: w = Vⱼ f (∇ᵢWᵢⱼ = f (xᵢ − xⱼ)),
+ * d = xᵢ − xⱼ, u = vⱼ − vᵢ. The one place these sums are written (the switch's and the
+ * strength's gradients), so that both add the same terms in the same order. */
+static inline void sph_grad_add_L(double L[9], double w, double dx, double dy, double dz, double ux,
+                                  double uy, double uz)
 {
   L[0] += w * ux * dx;
   L[1] += w * ux * dy;
@@ -75,6 +76,11 @@ static inline void avsw_add(double L[9], double A[9], double w, double dx, doubl
   L[6] += w * uz * dx;
   L[7] += w * uz * dy;
   L[8] += w * uz * dz;
+}
+
+/* Adds one neighbour to A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ (w and d as sph_grad_add_L). */
+static inline void sph_grad_add_A(double A[9], double w, double dx, double dy, double dz)
+{
   A[0] -= w * dx * dx;
   A[1] -= w * dx * dy;
   A[2] -= w * dx * dz;
@@ -84,6 +90,14 @@ static inline void avsw_add(double L[9], double A[9], double w, double dx, doubl
   A[6] -= w * dz * dx;
   A[7] -= w * dz * dy;
   A[8] -= w * dz * dz;
+}
+
+/* Accumulates one neighbour into the switch's sums L and A (as sph_grad_add_L). */
+static inline void avsw_add(double L[9], double A[9], double w, double dx, double dy, double dz,
+                            double ux, double uy, double uz)
+{
+  sph_grad_add_L(L, w, dx, dy, dz, ux, uy, uz);
+  sph_grad_add_A(A, w, dx, dy, dz);
 }
 
 /* The limiter ξ of a velocity gradient G (row-major, G[3a+b] = ∂v_a/∂x_b). */

@@ -188,27 +188,9 @@ static inline void density_pair_sums(const struct density_pass *dp, const struct
       ddiff -= w * 2.0 * (rho[j] - rho[i]) * 0.5 * (I->h + ns->h[q]);
     if (I->sw) avsw_add(s->Lsw, s->Asw, w, dx, dy, dz, ux, uy, uz);
     if (I->strong && bj == I->piece) {
-      double *L = s->L, *A = s->A;
-      L[0] += w * ux * dx;
-      L[1] += w * ux * dy;
-      L[2] += w * ux * dz;
-      L[3] += w * uy * dx;
-      L[4] += w * uy * dy;
-      L[5] += w * uy * dz;
-      L[6] += w * uz * dx;
-      L[7] += w * uz * dy;
-      L[8] += w * uz * dz;
-      if (I->corr) { /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
-        A[0] -= w * dx * dx;
-        A[1] -= w * dx * dy;
-        A[2] -= w * dx * dz;
-        A[3] -= w * dy * dx;
-        A[4] -= w * dy * dy;
-        A[5] -= w * dy * dz;
-        A[6] -= w * dz * dx;
-        A[7] -= w * dz * dy;
-        A[8] -= w * dz * dz;
-      }
+      sph_grad_add_L(s->L, w, dx, dy, dz, ux, uy, uz);
+      if (I->corr) /* A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ; I for a complete neighbourhood */
+        sph_grad_add_A(s->A, w, dx, dy, dz);
     }
   }
   s->sum = sum;

@@ -10,7 +10,9 @@
 #  3. only the scripts named run (the others' pictures untouched), and with no failure
 #     the driver exits 0; an unknown name exits 2 and runs nothing;
 #  4. HVSPH, RUNS and OUT reach the scripts, relative paths taken from where the
-#     driver was started.
+#     driver was started;
+#  5. val-NAME.sh draws NAME.png and counts as made; fig_need_done skips a run whose
+#     run_segments.csv does not end in a finished row, naming `validate --resume`.
 set -u
 src=${HVSPH_SOURCE_DIR:-.}
 tmp=${HVSPH_TMP:-/tmp/hvsph-test}/test_figures
@@ -19,6 +21,9 @@ mkdir -p "$tmp/tree/tools/figures/lib" "$tmp/runs/present" "$tmp/out" || exit 1
 cp "$src/tools/figures/make-figures.sh" "$tmp/tree/tools/figures/" || exit 1
 cp "$src/tools/figures/lib/common.sh" "$tmp/tree/tools/figures/lib/" || exit 1
 touch "$tmp/runs/present/measurements.csv"
+mkdir -p "$tmp/runs/finished" "$tmp/runs/stopped" || exit 1
+echo '1,v,a,b,c,d,e,f,g,done' > "$tmp/runs/finished/run_segments.csv"
+echo '1,v,a,b,c,d,e,f,g,stopped' > "$tmp/runs/stopped/run_segments.csv"
 fail=0
 check() { # check CONDITION-STATUS MESSAGE
   if [ "$1" -eq 0 ]; then echo "  ok    $2"; else echo "  FAIL  $2"; fail=1; fi
@@ -31,6 +36,8 @@ fig drawn 'fig_need_run "$RUNS/present"; echo "$HVSPH" > "$FIG_TMP"; fig_done'
 fig skipped 'fig_need_run "$RUNS/absent"; echo drawn > "$FIG_TMP"; fig_done'
 fig broken 'echo half > "$FIG_TMP"; exit 3'
 fig silent 'echo "drew nothing"'
+fig val-finished 'fig_need_done finished; echo drawn > "$FIG_TMP"; fig_done'
+fig unfinished 'fig_need_done finished stopped; echo drawn > "$FIG_TMP"; fig_done'
 echo old > "$tmp/out/broken.png"
 
 # 1. and 4.: from $tmp, with relative paths
@@ -38,8 +45,8 @@ out=$(cd "$tmp" && HVSPH=bin/hvsph RUNS=runs OUT=out bash tree/tools/figures/mak
 rc=$?
 echo "$out" | sed 's/^/    /'
 check $((rc != 1)) "one failed: exit status 1 (got $rc)"
-echo "$out" | grep -q '^make-figures: 1 made, 1 skipped, 2 failed'
-check $? "the summary counts 1 made, 1 skipped, 2 failed"
+echo "$out" | grep -q '^make-figures: 2 made, 2 skipped, 2 failed'
+check $? "the summary counts 2 made, 2 skipped, 2 failed"
 echo "$out" | grep -q '^  skip: skipped: no run in'
 check $? "the skipped script says why"
 echo "$out" | grep -q 'FAILED  silent (exit status 0, but it wrote no'
@@ -48,6 +55,10 @@ check $? "a script that exits 0 without its picture counts as failed"
 check $? "the picture is written, and HVSPH reached the script as an absolute path"
 [ ! -e "$tmp/out/skipped.png" ]
 check $? "a skipped script writes nothing"
+[ "$(cat "$tmp/out/finished.png" 2>/dev/null)" = drawn ]
+check $? "val-finished.sh draws finished.png (5.)"
+echo "$out" | grep -q 'skip: unfinished: needs .*/runs/stopped run to its end (.* validate --resume --scale 1 --only stopped'
+check $? "an unfinished run is skipped, naming validate --resume (5.)"
 
 # 2.
 [ "$(cat "$tmp/out/broken.png")" = old ]

@@ -3,7 +3,8 @@
 # tools/figures/*.sh but this one (or only those named: make-figures.sh sod-shock-tube
 # taylor-bar ...), each with the environment HVSPH (the hvsph binary, default
 # build/hvsph), RUNS (the folder of `hvsph validate` run folders, default
-# out/validation) and OUT (default docs/img); each writes $OUT/<its name>.png, or prints
+# out/validation) and OUT (default docs/img); each writes $OUT/<its name>.png (val-NAME.sh
+# writes NAME.png), or prints
 # "skip: ..." when its input runs are missing (tools/README.md, "Figures").
 # Counts what was made, skipped and failed; exits 1 if any failed, 0 otherwise. A script
 # counts as failed when it exits non-zero, and also when it exits 0 without a skip line
@@ -41,6 +42,7 @@ made=0 skipped=0 failed=0 failures=""
 echo "make-figures: ${#scripts[@]} scripts; HVSPH=$HVSPH RUNS=$RUNS OUT=$OUT"
 for s in "${scripts[@]}"; do
   name=$(basename "$s" .sh)
+  pic=$OUT/${name#val-}.png # lib/common.sh: val-NAME.sh draws NAME.png
   start=$(date +%s)
   touch "$stamp"
   # the script's lines as they come (a run can take minutes), and kept for the skip check
@@ -53,12 +55,12 @@ for s in "${scripts[@]}"; do
   elif grep -q '^skip: ' "$log"; then
     skipped=$((skipped + 1))
     echo "skipped $name"
-  elif [ ! -f "$OUT/$name.png" ] || [ "$stamp" -nt "$OUT/$name.png" ]; then
+  elif [ ! -f "$pic" ] || [ "$stamp" -nt "$pic" ]; then
     failed=$((failed + 1)); failures="$failures $name"
-    echo "FAILED  $name (exit status 0, but it wrote no $OUT/$name.png)"
+    echo "FAILED  $name (exit status 0, but it wrote no $pic)"
   else
     made=$((made + 1))
-    echo "made    $name.png (${took} s)"
+    echo "made    $(basename "$pic") (${took} s)"
   fi
 done
 echo "make-figures: $made made, $skipped skipped, $failed failed${failures:+ (failed:$failures)}"

@@ -3,7 +3,8 @@
 # tests (the paper's Tables 1-3) over impact speed, hvsph beside the experiments and
 # KERNEL. Made from the six runs of `hvsph validate --scale 1 --only rod-1929 rod-5835
 # rod-5839 rod-5841 rod-5842 rod-5844` (the paper's particle counts): `hvsph validate
-# --no-run` tabulates them in a scratch folder and plot_rods.py draws the table.
+# --no-run` tabulates them in the scratch folder $WORK/rods-depth (default
+# out/figures/rods-depth) and plot_rods.py draws the table.
 #
 # Environment: HVSPH (the hvsph binary, default build/hvsph), RUNS (the folder of
 # `hvsph validate` run folders, default out/validation), OUT (default docs/img), PY (the
@@ -11,39 +12,20 @@
 # relative paths are taken from the directory the script is started in. Writes
 # $OUT/rods-depth.png; with a rod's run folder missing or not run to its end it says
 # "skip: ..." and exits 0.
-set -eu
-abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-HVSPH=$(abs "${HVSPH:-$root/build/hvsph}")
-RUNS=$(abs "${RUNS:-$root/out/validation}")
-OUT=$(abs "${OUT:-$root/docs/img}")
-PY=${PY:-/usr/bin/python3}
-name="rods-depth"
+. "$(dirname "$0")/lib/common.sh"
 rods="rod-1929 rod-5835 rod-5839 rod-5841 rod-5842 rod-5844"
-for case in $rods; do
-  run=$RUNS/$case
-  if [ ! -f "$run/run_segments.csv" ]; then
-    echo "skip: $name needs $run (hvsph validate --scale 1 --only $case -o $RUNS)"
-    exit 0
-  fi
-  if [ "$(tail -n 1 "$run/run_segments.csv" | cut -d, -f10)" != "done" ]; then
-    echo "skip: $name needs $run run to its end (hvsph validate --resume --scale 1 --only $case -o $RUNS)"
-    exit 0
-  fi
-done
-plot=$here/plot_rods.py   # where tools/figures keeps it; else its older place
-[ -f "$plot" ] || plot=$root/tools/plot_rods.py
-work=$(mktemp -d)
-tmp=$OUT/.$name.tmp.png
-trap 'rm -rf "$work" "$tmp"' EXIT
-# the rods' folders seen from a scratch folder, so that the table --no-run writes
-# there leaves $RUNS/validation.md and .csv as they are
-for case in $rods; do ln -s "$RUNS/$case" "$work/$case"; done
 # shellcheck disable=SC2086  # $rods is a list of names
-"$HVSPH" validate --no-run --only $rods -o "$work" > "$work/validate.log" 2>&1 ||
-  { cat "$work/validate.log" >&2; exit 1; }
-mkdir -p "$OUT"
-"$PY" "$plot" "$work/validation.csv" --label "hvsph (paper's counts)" -o "$tmp"
-mv "$tmp" "$OUT/$name.png"
-echo "$OUT/$name.png from $RUNS/{$(echo "$rods" | tr ' ' ,)}"
+fig_need_done $rods
+fig_need_hvsph
+fig_need_python
+plot=$ROOT/tools/figures/plot_rods.py
+fig_fresh_work
+# the rods' folders seen from the scratch folder, so that the table --no-run writes
+# there leaves $RUNS/validation.md and .csv as they are
+for case in $rods; do ln -s "$RUNS/$case" "$FIG_WORK/$case"; done
+# shellcheck disable=SC2086
+"$HVSPH" validate --no-run --only $rods -o "$FIG_WORK" > "$FIG_WORK/validate.log" 2>&1 ||
+  { cat "$FIG_WORK/validate.log" >&2; exit 1; }
+"$PY" "$plot" "$FIG_WORK/validation.csv" --label "hvsph (paper's counts)" -o "$FIG_TMP"
+echo "$FIG_NAME: from $RUNS/{$(echo "$rods" | tr ' ' ,)}"
+fig_done

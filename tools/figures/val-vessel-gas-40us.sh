@@ -10,29 +10,9 @@
 # tools/install-deps.sh --docs); relative paths are taken from the directory the script
 # is started in. Writes $OUT/vessel-gas-40us.png; without the run folder $RUNS/vessel, or
 # with a run that has not reached the case's end, it says "skip: ..." and exits 0.
-set -eu
-abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-RUNS=$(abs "${RUNS:-$root/out/validation}")
-OUT=$(abs "${OUT:-$root/docs/img}")
-PY=${PY:-/usr/bin/python3}
-name=vessel-gas-40us
-case=vessel
-run=$RUNS/$case
-if [ ! -f "$run/run_segments.csv" ]; then
-  echo "skip: $name needs $run (hvsph validate --scale 1 --only $case -o $RUNS)"
-  exit 0
-fi
-if [ "$(tail -n 1 "$run/run_segments.csv" | cut -d, -f10)" != "done" ]; then
-  echo "skip: $name needs $run run to its end (hvsph validate --resume --scale 1 --only $case -o $RUNS)"
-  exit 0
-fi
-plot=$here/plot_vessel.py   # where tools/figures keeps it; else its older place
-[ -f "$plot" ] || plot=$root/tools/plot_vessel.py
-mkdir -p "$OUT"
-tmp=$OUT/.$name.tmp.png
-trap 'rm -f "$tmp"' EXIT
-"$PY" "$plot" "$run" -o "$tmp" --times 10,20,30,40
-mv "$tmp" "$OUT/$name.png"
-echo "$OUT/$name.png from $run"
+. "$(dirname "$0")/lib/common.sh"
+fig_need_done vessel
+fig_need_python
+"$PY" "$ROOT/tools/figures/plot_vessel.py" "$RUNS/vessel" -o "$FIG_TMP" --times 10,20,30,40
+echo "$FIG_NAME: from $RUNS/vessel"
+fig_done

@@ -9,29 +9,5 @@
 # paths are taken from the directory the script is started in. Writes $OUT/wp1-100us.png;
 # without the run folder $RUNS/wp1, or with a run that has not reached the case's end, it
 # says "skip: ..." and exits 0.
-set -eu
-abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
-root=$(cd "$(dirname "$0")/../.." && pwd)
-HVSPH=$(abs "${HVSPH:-$root/build/hvsph}")
-RUNS=$(abs "${RUNS:-$root/out/validation}")
-OUT=$(abs "${OUT:-$root/docs/img}")
-name=wp1-100us
-case=wp1
-run=$RUNS/$case
-if [ ! -f "$run/run_segments.csv" ]; then
-  echo "skip: $name needs $run (hvsph validate --scale 1 --only $case -o $RUNS)"
-  exit 0
-fi
-if [ "$(tail -n 1 "$run/run_segments.csv" | cut -d, -f10)" != "done" ]; then
-  echo "skip: $name needs $run run to its end (hvsph validate --resume --scale 1 --only $case -o $RUNS)"
-  exit 0
-fi
-snaps=("$run"/particles_*.vtu)   # in time order: the names are numbered
-snap=${snaps[${#snaps[@]} - 1]}
-[ -f "$snap" ] || { echo "$name: no snapshot in $run" >&2; exit 1; }
-mkdir -p "$OUT"
-tmp=$OUT/.$name.tmp.png
-trap 'rm -f "$tmp"' EXIT
-"$HVSPH" render "$snap" -o "$tmp" --quiet --mode radiograph --axis z --size 900
-mv "$tmp" "$OUT/$name.png"
-echo "$OUT/$name.png from $snap"
+. "$(dirname "$0")/lib/common.sh"
+fig_render_last wp1 --mode radiograph --axis z --size 900

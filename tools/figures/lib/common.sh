@@ -25,7 +25,10 @@ OUT=$(fig_abs "${OUT:-$ROOT/docs/img}")
 WORK=$(fig_abs "${WORK:-$ROOT/out/figures}")
 THREADS=${THREADS:-2}
 PY=${PY:-/usr/bin/python3}
+# the pictures of docs/validation.md are named without their scripts' "val-" prefix
+# (val-wp1-100us.sh draws wp1-100us.png); make-figures.sh looks for them by the same rule
 FIG_NAME=$(basename "$0" .sh)
+FIG_NAME=${FIG_NAME#val-}
 FIG_PNG=$OUT/$FIG_NAME.png
 FIG_TMP=$OUT/.$FIG_NAME.tmp.png
 FIG_WORK=$WORK/$FIG_NAME
@@ -55,6 +58,36 @@ fig_need_python() {
 fig_need_run() {
   [ -f "$1/measurements.csv" ] ||
     fig_skip "no run in $1 (make it with: $HVSPH validate --scale 1 -o $RUNS)"
+}
+
+# fig_need_done CASE...: each $RUNS/CASE must be a run of `hvsph validate` that reached
+# the case's end (the last row of its run_segments.csv says done in its 10th field);
+# otherwise skip, naming the validate command that makes the run, or resumes it.
+fig_need_done() {
+  local case run
+  for case in "$@"; do
+    run=$RUNS/$case
+    [ -f "$run/run_segments.csv" ] ||
+      fig_skip "needs $run ($HVSPH validate --scale 1 --only $case -o $RUNS)"
+    [ "$(tail -n 1 "$run/run_segments.csv" | cut -d, -f10)" = done ] ||
+      fig_skip "needs $run run to its end ($HVSPH validate --resume --scale 1 --only $case -o $RUNS)"
+  done
+}
+
+# fig_render_last CASE RENDER-OPTION...: the picture is `hvsph render` of the last
+# particle snapshot of the finished run $RUNS/CASE (skipped without it, as
+# fig_need_done), with the options given.
+fig_render_last() {
+  local case=$1
+  shift
+  fig_need_done "$case"
+  local snaps=("$RUNS/$case"/particles_*.vtu) # in time order: the names are numbered
+  local snap=${snaps[${#snaps[@]} - 1]}
+  [ -f "$snap" ] || fig_fail "no snapshot in $RUNS/$case"
+  fig_need_hvsph
+  "$HVSPH" render "$snap" -o "$FIG_TMP" --quiet "$@"
+  echo "$FIG_NAME: from $snap"
+  fig_done
 }
 
 # fig_fresh_work: an empty scratch folder FIG_WORK (the script's own; nothing else).
