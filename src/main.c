@@ -101,11 +101,11 @@ static const struct {
 };
 
 /* OpenMP threads that wait for work sleep instead of spinning, unless the user chose
- * otherwise: on this project's 2-core machine a spinning run beside any other busy
- * process (a second run, a build) became 20 to 30 times slower (bumper-1 at resolution
- * 0.08: 34 s instead of 1 s beside a 2-thread run), while alone the two policies measure
- * the same (docs/performance.md). libgomp reads the variable when it is loaded, so it
- * is set and the program executed again once, before anything else. */
+ * otherwise: when the threads outnumber the free cores (another run, a build), spinning
+ * threads hold the cores the working ones need and a run becomes many times slower,
+ * while alone the two policies are equally fast (docs/performance.md, "OpenMP wait
+ * policy"). libgomp reads the variable when it is loaded, so it is set and the program
+ * executed again once, before anything else. */
 static void wait_policy(char **argv)
 {
   if (getenv("OMP_WAIT_POLICY")) return;

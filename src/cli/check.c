@@ -29,9 +29,9 @@
 #include "sim/sim.h"
 
 /* Perforation with fewer layers than this through a plate is a lattice effect: with two
- * layers of 1.26 mm a 2 mm backwall was "perforated" by a 2 mm sphere, "not perforated"
- * by 3 mm and perforated again by 4 mm (issue 71); the paper's cases give their plates
- * 4-5 layers at the impact point (examples/paper/wp1.yaml). */
+ * layers the answer did not even grow with the sphere's size (issue 71; docs/cli.md,
+ * "hvsph check", and docs/measurements.md, "Wall: what went through"); the paper's
+ * cases give their plates 4-5 layers at the impact point (examples/paper/wp1.yaml). */
 
 /* Steps timed for the wall-time estimate (after one untimed warm-up step, which builds
  * the grid and caches), and the wall time after which timing stops early: a case of

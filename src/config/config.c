@@ -500,11 +500,11 @@ struct cfg *cfg_load_string(const char *yaml, const char *name, struct hv_error 
  * 1-7 kB (the largest in the tree, data/paper_results.yaml, 7 kB); the most a case can
  * describe (64 bodies and 64 materials, each key on a line of its own, with comments)
  * stays under 100 kB, a tenth of the limit. Above it lies no case but a wrong file
- * (`hvsph run /dev/zero` read 23 GiB before the kernel stopped it; infile.h refuses
- * devices and FIFOs, this the regular file that is too large), and a time: the parser's
- * duplicate-key check is quadratic in the keys of one mapping, and a 1 MiB mapping of
- * 95,000 keys took 41 s to refuse (measured 2026-12-07 at d88c065), 16 MiB would take
- * hours. */
+ * (`hvsph run /dev/zero` read until the kernel stopped it; infile.h refuses devices and
+ * FIFOs, this the regular file that is too large), and a time: the parser's
+ * duplicate-key check is quadratic in the keys of one mapping, so the time to refuse a
+ * file of one huge mapping grows with the square of its size: tens of seconds at this
+ * limit, hours at 16 times it (docs/case-files.md, "The rules"). */
 #define CFG_MAX_FILE_BYTES (1LL << 20)
 
 /* Reads a whole file into a malloc'ed, NUL-terminated buffer. */

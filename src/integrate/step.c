@@ -30,12 +30,11 @@ static int cmp_double(const void *a, const void *b)
  * the cells of everything else small: each particle's search visits cells out to its
  * own reach, so small cells cost the large particles many cells holding one or two
  * particles each, while large cells cost the small particles more candidates, which
- * are cheaper. Measured (docs/performance.md): the 10th percentile → the median made
- * the §3 vessel 2.2 times faster, bumper-1 1.34, Noh 1.2, W.P.1 1.1, a rod 1.07. The
- * 10 % margin keeps a pair's support h_i + h_j within one cell edge (2 × this) for the
- * particles just above it: without it, the largest h of almost every cell exceeded it
- * a little and each cell also searched the cells two away (125 instead of 27; the
- * uniform benchmark: 2.33 → 1.97 µs per particle-step for gas, 1 thread). */
+ * are cheaper; the median was faster than a low percentile in every paper case
+ * (docs/design.md, "Neighbour search"). The 10 % margin keeps a pair's support
+ * h_i + h_j within one cell edge (2 × this) for the particles just above it: without
+ * it, the largest h of almost every cell exceeded it a little and each cell also
+ * searched the cells two away (125 instead of 27), a slower search (same section). */
 static double cell_h_reals(const struct particles *p)
 {
   enum { NS = 4096 };
@@ -266,15 +265,14 @@ static long end_stress(struct sim *s, double dt)
 /* sph.rest_tolerance. The SPH stencil carries a disturbance one kernel support per step,
  * much faster than sound (2h per step against c·dt ≈ 0.14 h): ahead of a wave, material
  * the wave has not reached takes values that decay by orders of magnitude per support
- * but are not zero (§2.4's backwall at 35.9 µs: median |v| 1e-21 m/s, |S| 1e-14 Pa,
- * e 3e-41 J/kg, over all of its 240 mm while the debris had struck its centre), and
- * sph.skip_resting, which needs exact zeros, then skips nothing. A particle of a
- * condensed material whose velocity, acceleration, energy, energy rate, density
- * offset and deviatoric stress are all within rest_tol of their scales is put exactly
- * at rest: v = a = 0, e = ė = 0, ρ = ρ₀, S₁ = 0 (p then follows from the EOS). With
- * the default 1e-14 this changes nothing above that fraction of the material's own
- * scales; a particle that any physical signal has reached is far above it. Before the
- * end-of-step EOS, so that p is the EOS's at (ρ₀, 0). */
+ * but are not zero (a whole backwall ahead of the debris; docs/case-files.md,
+ * `rest_tolerance`), and sph.skip_resting, which needs exact zeros, then skips nothing.
+ * A particle of a condensed material whose velocity, acceleration, energy, energy
+ * rate, density offset and deviatoric stress are all within rest_tol of their scales
+ * is put exactly at rest: v = a = 0, e = ė = 0, ρ = ρ₀, S₁ = 0 (p then follows from
+ * the EOS). With the default 1e-14 this changes nothing above that fraction of the
+ * material's own scales; a particle that any physical signal has reached is far above
+ * it. Before the end-of-step EOS, so that p is the EOS's at (ρ₀, 0). */
 static void clamp_to_rest(struct sim *s, double dt)
 {
   struct particles *p = &s->p;

@@ -56,7 +56,7 @@ static inline double kernel_w_h3(enum kernel_kind k, double q)
 /* (1/r) dW/dr (r, h) [1/m⁵]: ∇ᵢWᵢⱼ = (xᵢ − xⱼ) · kernel_f(r, h). Finite at r = 0
  * (the quadratic kernel's is 0 there: see above).
  * One division, two in the outer shell 1 ≤ q < 2 (h/r); computing 1/h and 1/r
- * from one 1/(r h) was measured slower (docs/performance.md). */
+ * from one 1/(r h) was measured slower (docs/performance.md, "Where the time goes"). */
 static inline double kernel_f(enum kernel_kind k, double r, double h)
 {
   const double ih = 1.0 / h, q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;

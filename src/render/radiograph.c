@@ -32,8 +32,8 @@
  *     must not decide the exposure of a picture that is mostly debris.
  *   - The lower quartile, not the median: the thin material is what a fixed exposure
  *     loses and what the picture is for (debris); the dense parts are dark at any
- *     exposure. In the demo's W.P.1 at 10 us, seen from the side, 41 % of the occupied
- *     pixels are the two plates seen edge on (over 30 kg/m2): a median would jump onto
+ *     exposure. Plates seen edge on can fill nearly half of the occupied pixels (the
+ *     demo's W.P.1: docs/rendering.md, "Radiograph mode"): a median would jump onto
  *     them where they fill over half, the lower quartile stays in the debris until they
  *     fill three quarters.
  *   - Pixels, not particles, so that a plate seen edge on, many particles deep, counts

@@ -54,11 +54,11 @@ static int check_step_keys(const struct sim *s, struct cfg *c, double dt, struct
   return 0;
 }
 
-/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes about 3e4 steps at
- * its first stable step (wp2: 250 us, 34 201; the rods 1.1e4-1.8e4; `hvsph check` on
- * each, 2026-12-07), a run at four times the resolution some 1e5; 1e8 steps of even a
- * thousand particles are 1e11 particle-steps, more than a day at this code's 1e6
- * particle-steps per second on two cores (docs/performance.md).
+/* HV_CHECK_STEPS_MAX, argued: the longest case of examples/ takes a few times 1e4 steps
+ * at its first stable step (wp2; docs/units.md, "The rules"), a run at four times the
+ * resolution some 1e5; 1e8 steps of even a thousand particles are 1e11 particle-steps,
+ * more than a day at this code's speed on two cores (docs/performance.md, "The
+ * benchmark").
  * Beyond it a bare time.end is a unit left out: `end: 20` (20 s) for 20 us. */
 int check_plausible_end(const struct sim *s, struct cfg *c, struct hv_error *err)
 {

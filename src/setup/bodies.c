@@ -85,7 +85,7 @@ static int particles_fit(double n, int solid)
 
 /* The most lattice points lattice_points scans (its shape's bounding box in lattice
  * steps): 64 times the gas particles this machine's memory holds, at least 1e9 (a scan
- * of 1e9 points takes about 4 s here). A long body lying across the axes scans more
+ * of 1e9 points takes seconds). A long body lying across the axes scans more
  * points than it holds (a rod 20 diameters long along a diagonal, about 120 times); a
  * scan beyond this is a shape far larger than meant (a length in metres where
  * millimetres were meant), and would take hours. */
@@ -421,8 +421,8 @@ static double box_thickness(const struct sim *s, const struct body_spec *bs)
  * shape's volume per particle, then made finer until the body has at least n
  * particles (a lattice cut by a shape's surface holds a few per cent fewer points than
  * the volume suggests); a box's thinnest side gets a whole number of layers, rounded
- * up (rounding to the nearest gave §2.4's 1 mm bumper one layer of 7 200 particles
- * where 20 000 were asked). */
+ * up (rounding to the nearest could give a thin plate one layer and a fraction of the
+ * particles asked for, as it did §2.4's bumper). */
 static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key,
                              struct body_spec *bs, const char *name, double n, struct hv_error *err)
 {
@@ -557,12 +557,12 @@ static void fit_to_faces(const struct sim *s, struct body_spec *bs)
   /* A box's lattice starts Δ/2 inside its min face and ends wherever its length
      leaves it — anywhere from 0 to Δ from its max face. Next to a wall or symmetry face
      the gap matters: the mirror ghosts stand twice the gap from the last layer, not Δ,
-     and the layer is pushed (the §3 vessel's nitrogen, 148.5 mm long on a 3 mm lattice,
-     ended 3 mm from the rigid wall at x = 150 mm, rushed at it at 110–136 m/s and thinned
-     to 0.88 ρ₁ by 10 µs). Along an axis on which a box of gas touches such a face its
-     step is fitted to its length, within Δ/(2n) of Δ for n layers (the mass follows
-     from the exact volume, h from the mass). Condensed bodies start at zero pressure,
-     where the gap exerts no force, and keep their lattice. */
+     and a gas at rest under pressure is pushed across the gap (the §3 vessel's nitrogen
+     was: docs/design.md, "Where hvsph departs from its design brief, and why"). Along
+     an axis on which a box of gas touches such a face its step is fitted to its length,
+     within Δ/(2n) of Δ for n layers (the mass follows from the exact volume, h from the
+     mass). Condensed bodies start at zero pressure, where the gap exerts no force, and
+     keep their lattice. */
   for (int k = 0; k < 3; k++) {
     const double tol = 1e-9 * fmax(1.0, fabs(s->bnd.hi[k] - s->bnd.lo[k]));
     const int kh = s->bnd.kind[k][1], kl = s->bnd.kind[k][0];
@@ -777,10 +777,10 @@ static int check_memory(struct sim *s, struct cfg *c, int b, const struct body_s
   return 0;
 }
 
-/* Bodies whose particle masses differ more than this many times get a warning: a planar
- * steel slab of 0.175-0.21 mm particles at 6.2 km/s onto aluminium stays at rho/rho0 <=
- * 1.61 (shocked state 1.30-1.41) up to a mass ratio of 28, reaches 1.84 at 37 and
- * 2.2-2.8 from 52 on (docs/validation.md, "Light debris on a heavy backwall"). */
+/* Bodies whose particle masses differ more than this many times get a warning: light
+ * particles striking heavy ones at a few km/s stay near their shocked density up to
+ * about this ratio and are over-compressed well beyond it (measured on a planar slab;
+ * docs/case-files.md, "bodies", gives the figures). */
 #define MASS_RATIO_WARN 30.0
 
 #define MEET_MAX_COLUMNS 4000000.0
@@ -932,10 +932,9 @@ static int bodies_can_meet(const struct sim *s, const size_t *first_of, int a, i
 
 /* Where bodies of very different particle masses meet, the light particles' continuity
  * density is dominated by their few heavy neighbours: they are over-compressed and set
- * a tiny time step (the §3 vessel at the paper's counts: a 0.25 mm projectile lattice
- * against a 1.3 mm wall, masses 140 times apart, 32 projectile particles at 3.6 times
- * aluminium's density and Δt 6.5e-10 s). Said once per heavy body, naming every body
- * that much lighter that it can meet (bodies_can_meet: a rod aimed at a block's finer
+ * a tiny time step (the §3 vessel at the paper's counts, a fine projectile against a
+ * coarse wall: docs/case-files.md, "bodies"). Said once per heavy body, naming every
+ * body that much lighter that it can meet (bodies_can_meet: a rod aimed at a block's finer
  * core does not meet the coarse block around it), with the remedy. */
 static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb)
 {
@@ -971,11 +970,12 @@ static void warn_mass_ratios(const struct sim *s, const size_t *first_of, int nb
 }
 
 /* A body whose lattice cells fill more than this share of its exact volume gets a
- * warning. Its masses ρV/N are then lighter than ρΔ³: the free tungsten-on-tungsten
- * penetration at 4.46 km/s (docs/validation.md, "The floor without strength at 4.46
- * km/s") lost 0.5-1.3 % of the floor's speed with rods whose lattices filled 0.93-1.004
- * of the rod, 3.0-4.8 % with 1.024-1.119. The warning offers the spacing nearest the
- * body's (within ±10 %, in steps of 0.25 %) whose lattice fills COVER_LO to 1. */
+ * warning. Its masses ρV/N are then lighter than ρΔ³ and its SPH sums read low by
+ * that ratio: an overfilled rod's crater floor trails the exact speed several times
+ * further than that of a rod whose lattice fills at most its volume (docs/case-files.md,
+ * "bodies", gives the figures; docs/validation.md, "Two short checks", the case). The
+ * warning offers the spacing nearest the body's (within ±10 %, in steps of 0.25 %)
+ * whose lattice fills COVER_LO to 1. */
 #define COVER_WARN 1.02
 #define COVER_LO   0.95
 #define COVER_SEARCH_MAX                                                                           \
