@@ -27,7 +27,7 @@ def fmt(v):
 # splitting at once; the library's materials as they are), with the artificial
 # viscosity's reconstruction (sph.viscosity.reconstruct, adopted 2026-11-22 at
 # 074b587: the rods' crater floor then depends far less on the particle spacing;
-# docs/validation.md, "The viscosity reconstruction"). Two switches:
+# docs/validation.md at d88c065, "The viscosity reconstruction"). Two switches:
 # - FRACTURE_TAU (e.g. "1 us"): every material with fracture uses the library's cumulative
 #   criterion as a time to failure, a particle splitting after that much (cumulated) time
 #   beyond the paper's |sigma_c|; None: the paper's rule (tried 2026-11-22, not adopted);
@@ -50,7 +50,7 @@ PLATE_LAYERS = 5
 #   Adopted 2026-11-23 at e93bb96: behind the refined bumpers the backwalls of 2.4 and
 #   W.P.2 were 237 and 72 times heavier; in 2.4 the fine debris reached rho/rho0 = 2.25 and 920 GPa
 #   on the backwall and held the time step at 1.6 ns. A planar steel slab at 6.2 km/s
-#   onto aluminium (docs/validation.md, "Light debris on a heavy backwall") stays at
+#   onto aluminium (docs/validation.md at d88c065, "Light debris on a heavy backwall") stays at
 #   rho/rho0 <= 1.61 up to a mass ratio of 28, reaches 1.84 at 37 and 2.2-2.8 from 52
 #   on; the solver warns from 30. None: the paper's counts.
 BACKWALL_MASS_RATIO = 30
@@ -66,7 +66,7 @@ BACKWALL_DISC = (40, 4)
 #   the plate it strikes gets the count that makes them as heavy (never fewer than the
 #   paper's): the two bodies meet with particles of one mass (one size where the two
 #   densities are one).
-#   Adopted 2026-12-05 at 9268410 (docs/validation.md, "The projectile's spacing against the
+#   Adopted 2026-12-05 at 9268410 (docs/validation.md at d88c065, "The projectile's spacing against the
 #   plate's disc"): at the paper's counts the projectiles of 2.4, W.P.2 and W.P.3 were
 #   1.8, 1.27 and 1.27 times coarser than the discs; matched, the holes at 12 us move
 #   from 12.60 to 12.13 mm (2.4), 17.33 to 16.63 (W.P.2) and 8.20 to 8.15 (W.P.3).
@@ -186,7 +186,7 @@ RODS = {  # test: v0 km/s, l cm, r cm, m g, L_exp cm
 # the cavity and stop its afterflow: rod-5844 at resolution 0.3 (2026-11-23) penetrates
 # 142 mm with them, 158 mm inside a shell of the same steel at twice the spacing out to
 # 150 mm, 163 mm with free faces at 50 mm; but its cavity widens from 35 to 45 and 69 mm
-# (docs/validation.md, "The target's box"). ROD_SHELL = (half-width mm, spacing factor)
+# (docs/validation.md at d88c065, "The target's box"). ROD_SHELL = (half-width mm, spacing factor)
 # puts that shell around the paper's block, the rigid walls at its faces; None: the
 # paper's box (the cases as committed, until the paper's counts have run with the shell).
 ROD_SHELL = None

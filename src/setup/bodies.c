@@ -1016,7 +1016,7 @@ static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, 
             "so each particle (mass from the exact volume) is %.1f %% lighter than density "
             "x lattice cell and the SPH sums inside it read low; in a free penetration test, "
             "rods whose lattices filled 1.02-1.12 of their volume had crater floors 3-5 %% "
-            "slow (docs/validation.md, \"The floor without strength at 4.46 km/s\"). "
+            "slow (docs/case-files.md, \"bodies\"). "
             "Nearest fit: %s",
             s->body[b].name, s->body[b].count, 1e3 * bs[b].spacing, cover,
             100.0 * (1.0 - 1.0 / cover), fix);

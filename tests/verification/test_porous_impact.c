@@ -31,7 +31,7 @@
  *     made false, for neighbours of either body) the test fails six checks: the force
  *     +86 % at f = 0.03 and +5.7 % at f = 0.1, the f = 0.03 shock speed +10.9 %, and
  *     180, 324 and 504 plate particles above 2 ρ₀ (up to 16 ρ₀). W.P.3's second bumper
- *     ran without it until a033786, 2026-11-25 (docs/validation.md, "W.P.3's second cloud and
+ *     ran without it until a033786, 2026-11-25 (docs/validation.md at d88c065, "W.P.3's second cloud and
  *     backwall: the contact's density rate");
  *   - the shock speed relative to the plate ahead (layer means, the front where the mean
  *     velocity crosses half way, fitted by a line from T_FIT_START on): within
