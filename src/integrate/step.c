@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
 #include "eos/eos.h"
 #include "fracture/fracture.h"
 

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
 #include "kernel/kernel.h"
 #include "setup/setup.h"
 

@@ -4,17 +4,27 @@
  * The physics (EOS, strength, fracture, kernels, particles, neighbours, the pair loops,
  * boundaries) takes parameters already read; reading a case file is the config layer's,
  * reached through material/material_read.h and the like from .c files only
- * (docs/design.md). A physics header that included config/config.h, directly or through
- * another header, would define its guard here. */
+ * (docs/design.md). The simulation (sim/sim.h) and the integrator (integrate/step.h) hold
+ * the case file only as an opaque struct cfg. A physics header that included
+ * config/config.h, directly or through another header, would define its guard here. */
 #include <string.h>
 
 #include "boundary/boundary.h"
 #include "eos/eos.h"
 #include "fracture/fracture.h"
+#include "fracture/rules.h"
+#include "integrate/step.h"
 #include "kernel/kernel.h"
 #include "material/material.h"
 #include "neighbours/grid.h"
 #include "particles/particles.h"
+#include "sim/sim.h"
+#include "sph/avswitch.h"
+#include "sph/nsearch.h"
+#include "sph/pair.h"
+#include "sph/partner.h"
+#include "sph/recon.h"
+#include "sph/rest.h"
 #include "sph/sph.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
