@@ -82,6 +82,10 @@ struct particles {
   int solid;      /* the PF_SOLID fields are allocated */
   int av;         /* the PF_AV fields are allocated */
   int cracks;     /* the PF_CRACK fields are allocated */
+  int axisym;     /* axisymmetric (domain.geometry: axisymmetric): x is the axis, y the
+                     radius r >= 0, z = 0 and v_z = 0 for every particle; m is the ring's
+                     (the true 3D) mass, rho the true density; tensor component zz is
+                     the hoop (theta-theta) one, xy the axial-radial shear, yz = xz = 0 */
   size_t n;       /* real particles */
   size_t n_ghost; /* ghosts after the reals */
   size_t cap;     /* allocated length of every array */
