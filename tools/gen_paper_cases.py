@@ -584,6 +584,12 @@ RZ_PLATE_LAYERS = 5
 # odd multiples of half their spacing) meet with the mean of their spacings between
 # them at resolution 1, 4, 16 and 0.16.
 RZ_ROD_CORE = (25, 2)
+# The viscosity's reconstruction (sph.viscosity.reconstruct, the 3D cases' since 074b587)
+# has no axisymmetric form in hvsph (its 3x3 correction matrix): the RZ cases run the
+# standard viscosity, with the same alpha and beta (RZ_SPH; said in each header).
+RZ_SPH = SPH.replace(", reconstruct: true", "")
+RZ_SPH_NOTE = ("The artificial viscosity is the standard one (alpha 1, beta 2): the 3D cases' "
+               "reconstruction (sph.viscosity.reconstruct) has no axisymmetric form in hvsph.")
 # The vessel's gas: RZ_GAS_FACTOR times the projectile's spacing (the 3D case's 150 000
 # particles in the half model are 3.05 mm apart; at 1 mm the gas has 18 000 rings).
 RZ_GAS_FACTOR = 4
@@ -642,7 +648,7 @@ def write_rz(name, title, section, notes, body):
     """As write(), into OUT_RZ; notes longer than a line are wrapped (not a command
     line, which is indented to be copied whole)."""
     lines = []
-    for n in [n.format(name=name) for n in RZ_COMMON] + notes:
+    for n in [n.format(name=name) for n in RZ_COMMON] + notes + [RZ_SPH_NOTE]:
         lines += [n] if n.startswith("  ") else textwrap.wrap(n, 86) or [""]
     write(name, title + " (axisymmetric)", section, lines, body, out=OUT_RZ)
 
@@ -695,7 +701,7 @@ def rz_rods():
             minus: [{{{core}}}]}}
     spacing: {fmt(round(k * dp, 6))} mm
     part_of: target
-{SPH}time:
+{RZ_SPH}time:
   end: {t_end:.0f} us
 output:
   every: 25 us
@@ -737,7 +743,7 @@ def rz_bumpers():
     material: steel-bumper
     shape: {{{rz_cyl(0, h, 50)}}}
     spacing: {fmt(round(dplate, 6))} mm
-{SPH}time:
+{RZ_SPH}time:
   end: {fmt(tx)} us
 output:
   every: {fmt(tx / 4)} us
@@ -780,7 +786,7 @@ def rz_whipple(name, title, section, notes, proj, d, v0, plates, domain, t_end, 
 {RZ_RESOLUTION.format(n=RZ_PER_RADIUS)}{RZ_DOMAIN.format(x0=fmt(x0), x1=fmt(x1), r1=fmt(rmax),
                         bnd="x_min: wall, x_max: absorbing, r_max: wall")}bodies:
 """ + "\n".join(lines) + f"""
-{SPH}time:
+{RZ_SPH}time:
   end: {fmt(t_end)} us
 output:
   every: {fmt(every)} us
@@ -867,7 +873,7 @@ def rz_vessel():
     spacing: {fmt(round(dg, 6))} mm
     density: 13.125 kg/m3
     energy: 0.2 kJ/g
-{SPH}time:
+{RZ_SPH}time:
   end: 40 us
 output:
   every: 5 us
