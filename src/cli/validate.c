@@ -270,10 +270,10 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   if (atomic_file_open(&af, path, err)) return -1;
   if (norun)
     atomic_file_printf(&af, err,
-                       "# Validation against the seed paper\n\nTables re-read by hvsph %s "
+                       "# Validation against the seed paper\n\nTables%s re-read by hvsph %s "
                        "(`--no-run`) from earlier runs; the version, resolution and thread count "
                        "of each run are in its `used_parameters.yaml` and log.\n\n",
-                       HVSPH_VERSION);
+                       rz ? " of the axisymmetric (RZ) cases" : "", HVSPH_VERSION);
   else if (rz)
     atomic_file_printf(&af, err,
                        "# Validation against the seed paper\n\nhvsph %s, the axisymmetric (RZ) "

@@ -1137,6 +1137,16 @@ static void test_validate_rz(void)
   CHECK(rc == 2 && stat(fresh, &st) != 0, "validate --rz --cases EMPTY: exit %d (want 2)", rc);
   check_message("validate --rz --cases EMPTY", out,
                 (const char *const[]){"no case file", "valrz_empty", NULL});
+  /* --no-run over a folder without runs: the RZ tables say which cases they are */
+  const char *dir = prepare_valdir("valrz_norun");
+  snprintf(cmd, sizeof cmd, "validate --rz --no-run --only wp1 -o '%s'", dir);
+  rc = hvsph(cmd, out, sizeof out);
+  char p[4500];
+  snprintf(p, sizeof p, "%s/validation.md", dir);
+  char *md = test_slurp(p, NULL);
+  CHECK(rc == 0 && md && strstr(md, "axisymmetric (RZ)") && strstr(md, "| wp1 | -1 |"),
+        "validate --rz --no-run: RZ tables, wp1 not run (exit %d)", rc);
+  free(md);
   /* flags take no value */
   rc = hvsph("validate --rz=1 --list", out, sizeof out);
   CHECK(rc == 1, "validate --rz=1: a usage error (exit %d, want 1)", rc);
