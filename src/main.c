@@ -53,10 +53,12 @@ static const struct {
               "      on a yes/no measurement (perforated): DIR/sweep.csv, ballistic_limit.csv\n"
               "      and .png; resumable; the case's own `sweep:` section needs no options\n"},
     {"validate",
-     "  hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] [--cases DIR]\n"
-     "                 [--no-run] [--resume] [--set KEY=VALUE]... [--material OLD=NEW]...\n"
+     "  hvsph validate [--rz] [--scale S] [--only NAME...] [-o DIR] [--threads N]\n"
+     "                 [--cases DIR] [--no-run] [--resume] [--list] [--set KEY=VALUE]...\n"
+     "                 [--material OLD=NEW]...\n"
      "      run the paper's cases (examples/paper, or --cases DIR; particle counts x S)\n"
-     "      and compare with its experiments and simulations: DIR/validation.md and .csv\n"},
+     "      and compare with its experiments and simulations: DIR/validation.md and .csv;\n"
+     "      --rz: the axisymmetric cases of examples/paper/rz; --list: only list them\n"},
 };
 
 static const char usage_tail[] =

@@ -1,5 +1,5 @@
-/* validate.c — `hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N]
- * [--cases DIR] [--no-run]`.
+/* validate.c — `hvsph validate [--rz] [--scale S] [--only NAME...] [-o DIR] [--threads N]
+ * [--cases DIR] [--no-run] [--list]`.
  *
  * Runs each case of examples/paper/ (or --cases DIR) with its particle counts times S
  * (resolution = S), into DIR/<case>/, then puts the final value of each measured
@@ -15,6 +15,13 @@
  * A case's folder is validate's own: a new run of a case replaces the earlier one there
  * (hvsph run --overwrite). DIR is locked for the whole validation and each case's folder
  * while it runs (run/runfolder.h), so that two validations do not write one DIR.
+ * --rz takes the axisymmetric cases of examples/paper/rz/ (the paper's normal impacts;
+ * issue 74) instead, into out/validation-rz by default: the cases are the reference's
+ * that have a file there, compared with the same rows; their resolution 1 is ten
+ * particles per projectile radius, S scaling the ring counts (the spacing as S^-1/2).
+ * --list prints the cases that would run (name, case file, the quantities compared)
+ * and runs nothing, writes nothing; its --material swaps are checked on the case files
+ * as before a run (a dry check of a material set).
  */
 #include "cli/cli.h"
 
@@ -253,7 +260,7 @@ static int write_csv(const char *dir, const struct val_row *rows, int nrows, int
 }
 
 static int write_reports(const char *dir, const struct val_row *rows, int nrows,
-                         const struct val_case *cs, int ncase, double scale, int norun,
+                         const struct val_case *cs, int ncase, double scale, int norun, int rz,
                          const struct val_overrides *ov, struct hv_error *err)
 {
   char path[4200];
@@ -263,10 +270,17 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
   if (atomic_file_open(&af, path, err)) return -1;
   if (norun)
     atomic_file_printf(&af, err,
-                       "# Validation against the seed paper\n\nTables re-read by hvsph %s "
+                       "# Validation against the seed paper\n\nTables%s re-read by hvsph %s "
                        "(`--no-run`) from earlier runs; the version, resolution and thread count "
                        "of each run are in its `used_parameters.yaml` and log.\n\n",
-                       HVSPH_VERSION);
+                       rz ? " of the axisymmetric (RZ) cases" : "", HVSPH_VERSION);
+  else if (rz)
+    atomic_file_printf(&af, err,
+                       "# Validation against the seed paper\n\nhvsph %s, the axisymmetric (RZ) "
+                       "cases of examples/paper/rz/ at resolution %g (%.3g particles per "
+                       "projectile radius), %d thread%s.\n\n",
+                       HVSPH_VERSION, scale, 10.0 * sqrt(scale), omp_get_max_threads(),
+                       omp_get_max_threads() == 1 ? "" : "s");
   else
     atomic_file_printf(&af, err,
                        "# Validation against the seed paper\n\nhvsph %s, particle counts × %g "
@@ -353,9 +367,9 @@ static int write_reports(const char *dir, const struct val_row *rows, int nrows,
 
 static int usage(void)
 {
-  fprintf(stderr, "usage: hvsph validate [--scale S] [--only NAME...] [-o DIR] [--threads N] "
-                  "[--cases DIR] [--no-run] [--resume] [--set KEY=VALUE]... "
-                  "[--material OLD=NEW]...\n");
+  fprintf(stderr, "usage: hvsph validate [--rz] [--scale S] [--only NAME...] [-o DIR] "
+                  "[--threads N] [--cases DIR] [--no-run] [--resume] [--list] "
+                  "[--set KEY=VALUE]... [--material OLD=NEW]...\n");
   return HV_EXIT_USAGE;
 }
 
@@ -366,6 +380,8 @@ struct val_args {
   const char *only[VAL_MAX_CASES]; /* --only: the cases run (none: all) */
   int nonly;
   int threads, norun, resume;
+  int rz;   /* the axisymmetric cases (examples/paper/rz/) */
+  int list; /* print the cases, run nothing */
   struct val_overrides ov;
 };
 
@@ -417,6 +433,8 @@ static int parse_args(int argc, char **argv, struct val_args *a)
       {"--cases", NULL, CLI_VALUE, .dest = &a->cases},
       {"--no-run", NULL, CLI_FLAG, .dest = &a->norun, .flag = 1},
       {"--resume", NULL, CLI_FLAG, .dest = &a->resume, .flag = 1},
+      {"--rz", NULL, CLI_FLAG, .dest = &a->rz, .flag = 1},
+      {"--list", NULL, CLI_FLAG, .dest = &a->list, .flag = 1},
       {"--set", NULL, CLI_LIST, .dest = &sets},
       {"--material", NULL, CLI_LIST, .dest = &swaps},
       {"--only", NULL, CLI_WORDS, .dest = &only}, /* no name: not every case */
@@ -446,17 +464,65 @@ static int wanted(const struct val_args *a, const char *name)
   return want;
 }
 
-/* Every --only name is a case of refpath's. */
+/* Every --only name is a case of refpath's (with --rz: one that has a file in casedir). */
 static int check_only(const struct val_args *a, const char *const *names, int nnames,
-                      const char *refpath, struct hv_error *err)
+                      const char *refpath, const char *casedir, struct hv_error *err)
 {
   for (int k = 0; k < a->nonly; k++) {
     int found = 0;
     for (int j = 0; j < nnames; j++) found |= !strcmp(names[j], a->only[k]);
-    if (!found)
-      return hv_error_set(err, HV_EXIT_INPUT, "validate: no case '%s' in %s", a->only[k], refpath);
+    if (found) continue;
+    if (a->rz)
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "validate --rz: no case '%s' in %s (the axisymmetric cases are the "
+                          "paper's normal impacts of %s that have a file there)",
+                          a->only[k], casedir, refpath);
+    return hv_error_set(err, HV_EXIT_INPUT, "validate: no case '%s' in %s", a->only[k], refpath);
   }
   return 0;
+}
+
+/* With --rz, the reference's cases that have a file in casedir (the oblique bumper tests
+ * have none: an axisymmetric case is a normal impact), into rz[]; returns their number,
+ * or -1 with err set when there is none (no RZ folder). Without --rz, all of them. */
+static int select_cases(const struct val_args *a, const char *const *names, int nnames,
+                        const char *casedir, const char **sel, struct hv_error *err)
+{
+  int n = 0;
+  for (int j = 0; j < nnames && n < VAL_MAX_CASES; j++) {
+    char cf[8400];
+    snprintf(cf, sizeof cf, "%s/%s.yaml", casedir, names[j]);
+    if (!a->rz || access(cf, R_OK) == 0) sel[n++] = names[j];
+  }
+  if (a->rz && n == 0)
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "validate --rz: no case file of the paper's cases in %s "
+                        "(examples/paper/rz/, written by tools/gen_paper_cases.py)",
+                        casedir);
+  return n;
+}
+
+/* --list: each case that would run, its case file and the rows compared; to stdout. */
+static int list_cases(const struct val_args *a, struct cfg *ref, const char *const *names,
+                      int nnames, const char *casedir, struct hv_error *err)
+{
+  for (int j = 0; j < nnames; j++) {
+    if (!wanted(a, names[j])) continue;
+    printf("%-14s %s/%s.yaml ", names[j], casedir, names[j]);
+    const int nq = cfg_len(ref, names[j]);
+    for (int q = 0; q < nq; q++) {
+      char key[256];
+      const char *qty, *obj;
+      snprintf(key, sizeof key, "%s[%d].quantity", names[j], q);
+      if (cfg_get_string(ref, key, NULL, &qty, err)) return -1;
+      snprintf(key, sizeof key, "%s[%d].object", names[j], q);
+      if (cfg_get_string(ref, key, "", &obj, err)) return -1;
+      printf("%s%s(%s)", q ? " " : "", qty, obj);
+    }
+    printf("\n");
+  }
+  return fflush(stdout) ? hv_error_set(err, HV_EXIT_RUN, "validate --list: cannot write the list")
+                        : 0;
 }
 
 /* Each --material swap is taken by a body of some selected case: checked on the case
@@ -623,15 +689,28 @@ static int validate(struct val_args *a, struct runfolder_lock *lock)
   char *slash = strrchr(lib, '/');
   if (slash) *slash = 0;
   snprintf(refpath, sizeof refpath, "%s/paper_results.yaml", lib);
-  snprintf(v.casedir, sizeof v.casedir, "%s", a->cases ? a->cases : "examples/paper");
-  if (!a->cases && slash) snprintf(v.casedir, sizeof v.casedir, "%s/../examples/paper", lib);
+  const char *sub = a->rz ? "examples/paper/rz" : "examples/paper";
+  snprintf(v.casedir, sizeof v.casedir, "%s", a->cases ? a->cases : sub);
+  if (!a->cases && slash) snprintf(v.casedir, sizeof v.casedir, "%s/../%s", lib, sub);
   v.ref = cfg_load(refpath, &err);
   if (!v.ref) goto fail;
-  const char *const *names;
-  const int nnames = cfg_keys(v.ref, NULL, &names);
+  const char *const *all;
+  const int nall = cfg_keys(v.ref, NULL, &all);
+  static const char *names[VAL_MAX_CASES];
+  const int nnames = select_cases(a, all, nall, v.casedir, names, &err);
+  if (nnames < 0 || check_only(a, names, nnames, refpath, v.casedir, &err)) {
+    cfg_free(v.ref);
+    goto fail;
+  }
+  if (a->list) { /* the swaps checked on the case files as for a run (a dry check of a set) */
+    const int rc = (a->ov.nswaps && check_swaps(a, names, nnames, v.casedir, &err)) ||
+                   list_cases(a, v.ref, names, nnames, v.casedir, &err);
+    cfg_free(v.ref);
+    if (rc) goto fail;
+    return 0;
+  }
   /* the folder only once the options are known to be good */
-  if (check_only(a, names, nnames, refpath, &err) ||
-      (a->ov.nswaps && !a->norun && check_swaps(a, names, nnames, v.casedir, &err)) ||
+  if ((a->ov.nswaps && !a->norun && check_swaps(a, names, nnames, v.casedir, &err)) ||
       io_mkdir_p(a->outdir, &err) || runfolder_lock(lock, a->outdir, "validate", 0, &err)) {
     cfg_free(v.ref);
     goto fail;
@@ -643,7 +722,8 @@ static int validate(struct val_args *a, struct runfolder_lock *lock)
   meas_table_free(&v.mt);
   cfg_free(v.ref);
   if (st == HV_EXIT_INPUT) return HV_EXIT_INPUT;
-  if (st || write_reports(a->outdir, rows, v.nrows, cs, v.ncase, a->scale, a->norun, &a->ov, &err))
+  if (st ||
+      write_reports(a->outdir, rows, v.nrows, cs, v.ncase, a->scale, a->norun, a->rz, &a->ov, &err))
     goto fail;
 
   fprintf(stderr,
@@ -659,9 +739,10 @@ fail:
 
 int cli_validate(int argc, char **argv)
 {
-  struct val_args a = {.scale = 1.0, .outdir = "out/validation"};
+  struct val_args a = {.scale = 1.0};
   const int st = parse_args(argc, argv, &a);
   if (st != CLI_GO_ON) return st;
+  if (!a.outdir) a.outdir = a.rz ? "out/validation-rz" : "out/validation";
   struct runfolder_lock lock;
   runfolder_lock_init(&lock);
   const int status = validate(&a, &lock);

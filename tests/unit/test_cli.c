@@ -1067,6 +1067,91 @@ static void test_validate(void)
   free(md);
 }
 
+/* hvsph validate --rz (issue 74): the axisymmetric cases of examples/paper/rz/, the
+ * paper's normal impacts. Nothing runs: --list prints the cases (name, case file, the
+ * rows compared) and writes nothing; its --material swaps are checked on the case files
+ * as before a run, so the sourced material set of the rods is checked here. */
+static void test_validate_rz(void)
+{
+  char out[16384], cmd[9000];
+  const char *fresh = path_of("valrz_fresh");
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", fresh);
+  test_run(cmd, NULL, 0);
+  snprintf(cmd, sizeof cmd, "'%s' validate --rz --list -o '%s' 2>&1", test_bin(), fresh);
+  int rc = test_run(cmd, out, sizeof out);
+  static const char *const normal[] = {
+      "rod-1929", "rod-5835",      "rod-5839", "rod-5841", "rod-5842", "rod-5844", "bumper-1",
+      "bumper-3", "whipple-steel", "wp1",      "wp2",      "wp3",      "vessel"};
+  int lines = 0, listed = 0;
+  for (const char *c = out; *c; c++) lines += *c == '\n';
+  for (int k = 0; k < 13; k++) {
+    char want[256];
+    snprintf(want, sizeof want, "examples/paper/rz/%s.yaml ", normal[k]);
+    const char *at = strstr(out, want);
+    listed += at != NULL && (at == out || at[-1] != '-'); /* not rod-5841 inside x-rod-5841 */
+  }
+  struct stat st;
+  CHECK(rc == 0 && lines == 13 && listed == 13 && !strstr(out, "bumper-17") &&
+            strstr(out, "penetration_depth(target)") && stat(fresh, &st) != 0,
+        "validate --rz --list: the 13 normal impacts of examples/paper/rz/ with their rows, "
+        "no oblique case, nothing written (exit %d, %d lines): %.300s",
+        rc, lines, out);
+  /* the 3D list still has the oblique cases */
+  snprintf(cmd, sizeof cmd, "'%s' validate --list --only bumper-17 2>&1", test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "examples/paper/bumper-17.yaml") && !strstr(out, "/rz/"),
+        "validate --list --only bumper-17: the 3D case (exit %d): %.200s", rc, out);
+  /* an oblique case asked for in RZ: bad input naming it and the folder */
+  snprintf(cmd, sizeof cmd, "validate --rz --list --only bumper-17 -o '%s'", fresh);
+  rc = hvsph(cmd, out, sizeof out);
+  CHECK(rc == 2 && stat(fresh, &st) != 0, "validate --rz --only bumper-17: exit %d (want 2)", rc);
+  check_message("validate --rz --only bumper-17", out,
+                (const char *const[]){"no case 'bumper-17'", "examples/paper/rz", "normal", NULL});
+  /* the sourced set of the rods: both swaps taken, both library names known */
+  snprintf(cmd, sizeof cmd,
+           "'%s' validate --rz --list --material steel-target=steel-4340 "
+           "--material tungsten-alloy=tungsten-wha-rod 2>&1",
+           test_bin());
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0 && strstr(out, "rz/rod-5841.yaml"),
+        "validate --rz --list with the sourced set's two --material: taken (exit %d): %.200s", rc,
+        out);
+  /* a swap that no selected RZ case takes, a misspelt library name: bad input */
+  snprintf(cmd, sizeof cmd, "validate --rz --list --only wp1 --material steel-target=steel-4340");
+  rc = hvsph(cmd, out, sizeof out);
+  CHECK(rc == 2, "validate --rz --list --only wp1 --material steel-target=...: exit %d (want 2)",
+        rc);
+  check_message("validate --rz, a swap no case takes", out,
+                (const char *const[]){"steel-target=steel-4340", "no body", NULL});
+  snprintf(cmd, sizeof cmd, "validate --rz --list --material tungsten-alloy=tungsten-wha-rd");
+  rc = hvsph(cmd, out, sizeof out);
+  CHECK(rc == 2, "validate --rz --list --material ...=tungsten-wha-rd: exit %d (want 2)", rc);
+  check_message("validate --rz, an unknown material", out,
+                (const char *const[]){"unknown material 'tungsten-wha-rd'", NULL});
+  /* --rz over a folder without the cases: bad input, nothing made */
+  const char *empty = path_of("valrz_empty");
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", empty, empty);
+  test_run(cmd, NULL, 0);
+  snprintf(cmd, sizeof cmd, "validate --rz --cases '%s' --only wp1 -o '%s'", empty, fresh);
+  rc = hvsph(cmd, out, sizeof out);
+  CHECK(rc == 2 && stat(fresh, &st) != 0, "validate --rz --cases EMPTY: exit %d (want 2)", rc);
+  check_message("validate --rz --cases EMPTY", out,
+                (const char *const[]){"no case file", "valrz_empty", NULL});
+  /* --no-run over a folder without runs: the RZ tables say which cases they are */
+  const char *dir = prepare_valdir("valrz_norun");
+  snprintf(cmd, sizeof cmd, "validate --rz --no-run --only wp1 -o '%s'", dir);
+  rc = hvsph(cmd, out, sizeof out);
+  char p[4500];
+  snprintf(p, sizeof p, "%s/validation.md", dir);
+  char *md = test_slurp(p, NULL);
+  CHECK(rc == 0 && md && strstr(md, "axisymmetric (RZ)") && strstr(md, "| wp1 | -1 |"),
+        "validate --rz --no-run: RZ tables, wp1 not run (exit %d)", rc);
+  free(md);
+  /* flags take no value */
+  rc = hvsph("validate --rz=1 --list", out, sizeof out);
+  CHECK(rc == 1, "validate --rz=1: a usage error (exit %d, want 1)", rc);
+}
+
 /* hvsph measure over a tiny run with measurements: it rewrites measurements.csv (the same
  * rows, the definitions unchanged); a snapshot that cannot be read is bad input (exit 2)
  * and leaves the run's measurements.csv and fragment files as they were */
@@ -1564,6 +1649,7 @@ int main(void)
   test_mass_ratio_warning();
   test_lattice_cover_warning();
   test_validate();
+  test_validate_rz();
   test_measure();
   test_measure_damaged();
   test_not_regular();
