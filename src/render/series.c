@@ -70,6 +70,11 @@ static int load(const char *path, struct particles *p, double *t, struct hv_erro
   *t = NAN;
   if (io_read_particles(path, p, t, err)) return -1;
   if (p->n == 0) return hv_error_set(err, HV_EXIT_INPUT, "'%s' holds no particles", path);
+  if (p->axisym) /* the frames' shared extent and exposure are made for 3D points only */
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s' is axisymmetric: a series of an axisymmetric run is not drawn "
+                        "yet; render its snapshots one by one (hvsph render SNAPSHOT)",
+                        path);
   char names[RENDER_MAX_MATERIALS][64] = {{0}};
   return render_check_particles(p, io_read_material_names(path, names, RENDER_MAX_MATERIALS), path,
                                 err);
