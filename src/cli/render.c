@@ -39,6 +39,8 @@ static void render_usage(FILE *f)
       "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
       "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
       "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
+      "  an axisymmetric snapshot (rings) is seen across its axis, x right and r up, both\n"
+      "  halves (--no-mirror: r >= 0 only); its radiograph is through the body revolved\n"
       "  --mu M|auto                   film mass attenuation [m2/kg] (default auto: the lower\n"
       "                                quartile of the material's areal densities at T = 1/2)\n"
       "  --range LO,HI                 colour range of the quantity (units allowed)\n"
