@@ -15,6 +15,7 @@
 #include <dirent.h>
 #include <unistd.h>
 
+#include "io/atomic_file.h"
 #include "io/snapshot.h"
 #include "render/render.h"
 #include "render/render_internal.h"
@@ -1502,6 +1503,50 @@ static void test_axisym_png(void)
   particles_free(&p);
 }
 
+/* A series of an axisymmetric run's snapshots (CSV rings, no summary.csv): every frame of
+ * one size, both halves framed (the picture's extent reaches −r), in both modes. */
+static void test_axisym_series(void)
+{
+  char dir[4200], frames[4200], f0[4300], f1[4300];
+  snprintf(dir, sizeof dir, "%s/rz_run", test_tmpdir());
+  snprintf(frames, sizeof frames, "%s/rz_frames", test_tmpdir());
+  struct hv_error err;
+  hv_error_clear(&err);
+  CHECK(io_mkdir_p(dir, &err) == 0, "run folder made: %s", err.msg);
+  for (int k = 0; k < 2; k++) {
+    struct particles p;
+    particles_init(&p);
+    add_ring_cylinder(&p, 5e-3 * k, 20, 8, 1e-3, RHO_STEEL, 1.3); /* moving along x */
+    char path[4400];
+    snprintf(path, sizeof path, "%s/particles_%05d.csv", dir, k);
+    const struct snapshot_meta m = {.time = 1e-6 * k, .step = k, .version = "test"};
+    CHECK(io_write_particles_csv(path, &p, &m, &err) == 0, "RZ snapshot %d written: %s", k,
+          err.msg);
+    particles_free(&p);
+  }
+  for (int mode = 0; mode < 2; mode++) {
+    struct render_options o;
+    render_options_default(&o);
+    o.mode = mode ? RENDER_PARTICLES : RENDER_RADIOGRAPH;
+    o.width = 300;
+    CHECK(render_series(dir, frames, &o, &err) == 0, "series of an RZ run (%s): %s",
+          mode ? "particles" : "radiograph", err.msg);
+    snprintf(f0, sizeof f0, "%s/frame_00000.png", frames);
+    snprintf(f1, sizeof f1, "%s/frame_00001.png", frames);
+    int w0 = 0, h0 = 0, w1 = 0, h1 = 0;
+    unsigned char *a = read_png(f0, &w0, &h0), *b = read_png(f1, &w1, &h1);
+    CHECK(a && b && w0 == 300 && w1 == w0 && h1 == h0 && h0 > 150,
+          "RZ frames of one size (%dx%d, %dx%d): the extent spans both halves", w0, h0, w1, h1);
+    free(a);
+    free(b);
+  }
+  struct render_options o;
+  render_options_default(&o);
+  o.axis = 0;
+  CHECK(render_series(dir, frames, &o, &err) != 0 && strstr(err.msg, "--axis y or z"),
+        "a series along the axis refused: %s", err.msg);
+}
+
 int main(void)
 {
   test_kernel_column();
@@ -1520,5 +1565,6 @@ int main(void)
   test_series();
   test_axisym_radiograph();
   test_axisym_png();
+  test_axisym_series();
   return test_finish();
 }
