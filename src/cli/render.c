@@ -243,7 +243,7 @@ static int check_args(const char *in, const char *out, const char *range, struct
     hv_info("note: --color applies to --mode particles only");
   if (o->mode == RENDER_PARTICLES && o->axis == 2 && o->mirror == 1)
     hv_info("note: particles seen along z are not mirrored (the view shows the cut at "
-            "z = 0)");
+            "z = 0; an axisymmetric snapshot's rings are, both halves of the cut)");
   return CLI_GO_ON;
 }
 
@@ -266,7 +266,7 @@ static int render_one(const char *in, const char *out, const struct render_optio
     struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
     rc = render_check_particles(&p, nm, in, &err);
     if (!rc) rc = render_png(out, &p, o, &info, &err);
-    if (!rc) hv_info("wrote %s (%zu particles)", out, p.n);
+    if (!rc) hv_info("wrote %s (%zu %s)", out, p.n, p.axisym ? "rings" : "particles");
   }
   particles_free(&p);
   if (rc) {

@@ -1500,6 +1500,21 @@ static void test_axisym_png(void)
   CHECK(render_rz_options(&o, &orz, &err) == 0 && orz.axis == 2 && orz.box[2] == -12e-3 &&
             orz.box[3] == 12e-3 && orz.box[4] == -HUGE_VAL,
         "--axis y: the box's z range is the radius shown");
+  /* the command on an RZ CSV snapshot (its geometry line read back) */
+  char csv[4200], args[9000], out[4096];
+  snprintf(csv, sizeof csv, "%s/rz_rings.csv", test_tmpdir());
+  CHECK(io_write_particles_csv(csv, &p, NULL, &err) == 0, "RZ CSV written: %s", err.msg);
+  snprintf(args, sizeof args, "'%s' -o '%s/rz_cli.png' --size 400x300", csv, test_tmpdir());
+  int st = run(args, out, sizeof out);
+  CHECK(st == 0 && strstr(out, "(300 rings)"), "hvsph render of an RZ CSV: exit %d %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/rz_cli.png' --mode particles --axis y", csv,
+           test_tmpdir());
+  st = run(args, out, sizeof out);
+  CHECK(st == 0, "hvsph render --mode particles --axis y of rings: exit %d %s", st, out);
+  snprintf(args, sizeof args, "'%s' -o '%s/rz_cli.png' --axis x", csv, test_tmpdir());
+  st = run(args, out, sizeof out);
+  CHECK(st == HV_EXIT_USAGE && strstr(out, "--axis y or z"),
+        "hvsph render --axis x of rings: exit %d (usage) %s", st, out);
   particles_free(&p);
 }
 
