@@ -19,17 +19,24 @@
  *  - through-wall: detached spall rings behind a wall, with the mass and velocity of
  *    the rings; the wall's own rings not;
  *  - a backwall with a crater 2Δ deep within 3Δ of the axis: the crater depth 2Δ
- *    (revolved rings), n_wall counting rings.
+ *    (revolved rings), n_wall counting rings;
+ *  - the run's shadow of a wall of rings 30Δ in radius (what went through is counted
+ *    within it): 28Δ, not the one spacing that the 3D rule (the nearer edge across y,
+ *    here the axis itself) would leave; and measure.axis_y off the axis refused in an RZ
+ *    case (its file, line and key named), accepted in 3D.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
 #include "diag/fof.h"
 #include "diag/measure.h"
 #include "diag/through.h"
 #include "particles/particles.h"
+#include "run/measure_run.h"
+#include "sim/sim.h"
 #include "testlib.h"
 #include "testparticles.h"
 
@@ -205,11 +212,39 @@ static void test_backwall(void)
   particles_free(&p);
 }
 
+static void test_shadow(void)
+{
+  static struct sim s;
+  particles_init(&s.p);
+  s.nbody = 1;
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
+  const int b = 0;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - D) < 1e-15, "3D reading: one spacing");
+  s.p.axisym = 1;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 28 * D) < 1e-15,
+        "RZ: the wall's shadow is its radius less two spacings (%g mm)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) * 1e3);
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct cfg *c = cfg_load_string("measure:\n  axis_y: 2 mm\n", "rz.yaml", &err);
+  struct measure_run mr;
+  CHECK(c && measure_run_read(&mr, &s, c, &err) != 0 && err.code == HV_EXIT_INPUT &&
+            strstr(err.msg, "rz.yaml:2") && strstr(err.msg, "measure.axis_y"),
+        "RZ: measure.axis_y off the axis refused: %s", err.msg);
+  measure_run_free(&mr);
+  s.p.axisym = 0;
+  CHECK(measure_run_read(&mr, &s, c, &err) == 0 && mr.axis_y == 2e-3, "3D: measure.axis_y taken");
+  measure_run_free(&mr);
+  cfg_free(c);
+}
+
 int main(void)
 {
   test_cavity();
   test_plate();
   test_cloud_fragments();
   test_backwall();
+  test_shadow();
   return test_finish();
 }
