@@ -15,7 +15,12 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   static const char *const switches[] = {"none", "cullen-dehnen", NULL};
   int k, dens, form, sw, no = 0, yes = 1;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, decay = 0.05;
+  static const char *const geometries[] = {"3d", "axisymmetric", NULL};
   double as_eps = 0.3, as_n = 4.0, rest_tol = 1e-14;
+  int geometry = 0;
+  /* an axisymmetric case runs without the artificial stress (setup/rz.c) */
+  if (cfg_get_choice(c, "domain.geometry", geometries[0], geometries, &geometry, err)) return -1;
+  if (geometry == 1) as_eps = 0.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_choice(c, "sph.density", "continuity", densities, &dens, err) ||
       cfg_get_choice(c, "sph.continuity", "volume", forms, &form, err) ||
@@ -188,7 +193,8 @@ int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
   snprintf(s->case_name, sizeof s->case_name, "%s", name);
   if (read_sph(&s->sph, c, err) || read_time(&s->tp, c, err) || read_output(&s->out, c, err) ||
       read_materials(s, c, err) || boundary_read(&s->bnd, c, err) ||
-      cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err))
+      cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err) ||
+      sim_axisym_params(s, c, err))
     return -1;
   s->reorder_every = (int)reorder;
   /* a bare interval longer than the run: a number meant in us (`every: 5`); not one
