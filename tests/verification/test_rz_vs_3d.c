@@ -13,26 +13,28 @@
  * the debris cloud behind it: cloud_velocity_mean (mass mean of v_x), cloud_mass, and
  * cloud_velocity_lead (the 0.99 mass quantile of v_x).
  *
- * Tolerances, from each quantity's own resolution error (each run pair at Δ = 0.5,
- * 0.375, 0.3, 0.25, 0.1875, 0.125 mm in RZ and 0.5, 0.375, 0.3 mm in 3D, 1 thread,
- * measured 2026-12-07 on rz-engine at ef270e1 merged into main at d48fb4c):
+ * Tolerances, from each quantity's own resolution error (RZ at Δ = 0.5, 0.375, 0.3,
+ * 0.25, 0.1875, 0.125 mm: 130-2069 rings; 3D at 0.5, 0.375, 0.3, 0.25 mm: 4 518-36 000
+ * particles; 1 thread, measured 2026-12-07 with rz-engine at a89cdb0 merged, 15ba0c8):
  *  - hole_diameter: |RZ - 3D| <= 0.8 mm (7 %). The RZ hole scatters without trend over
- *    the six spacings, 10.45-11.23 mm (a spread of 0.78 mm: the hole's edge is a ring of
+ *    its six spacings, 10.45-11.23 mm (a spread of 0.78 mm: the hole's edge is a ring of
  *    particles whose place is known to about Δ/2 on each side, measurements.md); the 3D
- *    hole moves 11.03 -> 10.83 -> 10.79 mm. Measured: 11.23 vs 11.03 mm (Δ 0.5) and
- *    10.45 vs 10.83 mm (Δ 0.375).
- *  - cloud_velocity_mean: within 5 % of the 3D value. 3D over three spacings spans
- *    3269-3369 m/s (3 %), RZ over six 3205-3442 m/s (7 %, +-3.5 % about its mean):
- *    5 % is about the two combined. Measured: 3279 vs 3269 m/s, 3366 vs 3369 m/s.
- *  - cloud_mass: within 5 % of the 3D value (3D spans 0.386-0.399 g, 3 %; RZ rises with
- *    resolution 0.376 -> 0.414 g over its six, 0.38-0.39 g at these two). Measured:
- *    0.392 vs 0.399 g, 0.382 vs 0.387 g.
+ *    hole reads 11.03, 10.83, 10.79, 10.86 mm. Measured: 11.23 vs 11.03 mm (Δ 0.5) and
+ *    10.45 vs 10.83 mm (Δ 0.375); at 0.25 mm 10.54 vs 10.86.
+ *  - cloud_velocity_mean: within 5 % of the 3D value. 3D over its four spacings spans
+ *    3269-3369 m/s (3 %), RZ over its six 3213-3440 m/s (7 %, +-3.5 % about its mean):
+ *    5 % is about the two combined. Measured: 3279 vs 3269 m/s, 3366 vs 3369 m/s; at
+ *    0.25 mm 3399 vs 3310 (+2.7 %).
+ *  - cloud_mass: within 5 % of the 3D value (3D spans 0.387-0.399 g, 3 %; RZ 0.376-0.413 g,
+ *    rising with resolution from 0.25 mm on, 0.38-0.39 g at these two). Measured: 0.392
+ *    vs 0.399 g, 0.382 vs 0.387 g; at 0.25 mm 0.382 vs 0.397 (-3.7 %).
  *  - cloud_velocity_lead: at Δ = 0.375 only, within 4 % of the 3D value. At Δ = 0.5 the
- *    3D lead, the fastest 1 % of 588 particles' mass, is 5825 m/s, 4.7 % above its value
- *    at the finer spacings (5549, 5570 m/s), where RZ reads 5464-5567 m/s at all six:
- *    the coarse 3D quantile, not the RZ solver, is off there, and it is printed, not
- *    checked. 4 %: the RZ spread (1.9 %) and 3D's change 0.375 -> 0.3 mm (0.4 %), twice.
- *    Measured: 5465 vs 5825 m/s (Δ 0.5, -6.2 %), 5465 vs 5549 m/s (Δ 0.375, -1.5 %).
+ *    3D lead, the fastest 1 % of 588 particles' mass, is 5825 m/s, 4-5 % above its value
+ *    at the finer spacings (5549, 5570, 5612 m/s), where RZ reads 5464-5570 m/s at all
+ *    six: the coarse 3D quantile, not the RZ solver, is off there, and it is printed, not
+ *    checked. 4 %: the RZ spread (1.9 %) and 3D's spread from 0.375 mm on (1.1 %), plus
+ *    a margin. Measured: 5465 vs 5825 m/s (Δ 0.5, -6.2 %), 5464 vs 5549 m/s (Δ 0.375,
+ *    -1.5 %); at 0.25 mm 5536 vs 5612 (-1.3 %).
  * Also: both plates perforated; the RZ total mass equals twice the half model's (each
  * ring carries its true 3D mass) within 1 %: the bodies are the same. */
 #include <math.h>
