@@ -15,7 +15,7 @@
  * summary.csv kept within 0.5 % (ENERGY_TOL: the η-form with the pair forces' own
  * deviatoric work keeps it to round-off and time integration; the first version's area
  * weights gained 5 %).
- * Measured (2026-12-07, cdd7dd4, 1 thread, about 40 s of CPU): L = 21.84 mm (+1.8 %),
+ * Measured (2026-12-07, cdd7dd4, 1 thread, 21 s of CPU): L = 21.84 mm (+1.8 %),
  * R = 6.64 mm (−5.8 %), mean v_x +5.9 m/s (2.6 %), energy +8e-6; the 3D quarter model at
  * 0.54 mm: 22.04 mm (+2.7 %), 6.90 mm (−2.2 %). At 0.54 mm in RZ: 22.33 mm (+4.1 %),
  * 6.18 mm (−12.4 %); with the artificial stress (ε = 0.3, as in 3D): 22.92 mm (+6.8 %),
