@@ -39,15 +39,15 @@
 #include "profile.h"
 #include "testlib.h"
 
-#define T_END      0.6
-#define GAMMA      (5.0 / 3.0)
-#define DR         0.01
-#define NB         60
+#define T_END       0.6
+#define GAMMA       (5.0 / 3.0)
+#define DR          0.01
+#define NB          60
 #define PLATEAU_TOL 0.10
-#define AXIS_TOL   0.14
-#define SHOCK_TOL  0.06
-#define INFLOW_TOL 0.03
-#define ENERGY_TOL 1e-3
+#define AXIS_TOL    0.14
+#define SHOCK_TOL   0.06
+#define INFLOW_TOL  0.03
+#define ENERGY_TOL  1e-3
 
 /* First and last e_total of $HVSPH_TMP/<dir>/summary.csv (column 11). */
 static int energy_span(const char *dir, double *e0, double *e1)
