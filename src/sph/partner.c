@@ -63,7 +63,26 @@ void partner_pack(const struct particles *p, const struct sph_params *sp,
       w[PR_AS + t] = p->R[t][j];
       rany |= p->R[t][j] != 0.0;
     }
-    w[PR_AS + 6] = w[PR_AS + 7] = 0.0;
     tag[j] = 2 * (sph_piece_of(sp->piece, p->body[j])) + rany;
+    w[PR_C] = p->cs[j];
+    w[PR_KIND] = 2.0 * tag[j] + (mat[p->mat[j]].eos == EOS_IDEAL_GAS);
+  }
+}
+
+/* Packs every slot's density record into rec. */
+void partner_pack_density(const struct particles *p, const struct sph_params *sp,
+                          const struct material *mat, double *restrict rec)
+{
+  const size_t nt = p->n + p->n_ghost;
+#pragma omp parallel for schedule(static)
+  for (size_t j = 0; j < nt; j++) {
+    double *w = rec + PR_LEN * j;
+    const struct material *mj = &mat[p->mat[j]];
+    for (int a = 0; a < 3; a++) w[DR_V + a] = p->v[a][j];
+    w[DR_M] = p->m[j];
+    w[DR_RHO] = p->rho[j];
+    w[DR_RHO0] = mj->rho0;
+    w[DR_KIND] = 2.0 * sph_piece_of(sp->piece, p->body[j]) + (mj->eos == EOS_IDEAL_GAS);
+    w[DR_MAT] = p->mat[j];
   }
 }
