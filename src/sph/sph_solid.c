@@ -210,6 +210,38 @@ static inline __attribute__((always_inline)) double tile_kernel_w_h3(enum kernel
   return q >= 2.0 ? 0.0 : w;
 }
 
+/* A real particle's selected neighbours, js[0..n): candidate indices of its cell's
+ * search (first pass) or partner slots (second pass). */
+struct partners {
+  uint32_t i;
+  size_t n, cap;
+  uint32_t *js;
+};
+
+/* Takes the nsel neighbours of real i selected in ns into l (candidate indices when
+ * slots is 0, else their slots), and asks for their records' first `lines` lines in rec:
+ * the records are scattered over the slots, and the copy into a tile waited on each in
+ * turn; asked for one particle ahead, they arrive while the previous particle's pairs
+ * are computed. */
+static void partners_take(const double *rec, int lines, int slots, const struct nsearch *ns,
+                          size_t nsel, uint32_t i, struct partners *l)
+{
+  if (nsel > l->cap) {
+    free(l->js);
+    l->cap = nsel + nsel / 2 + 64;
+    l->js = malloc(l->cap * sizeof *l->js);
+    if (!l->js) HV_FATAL("out of memory: %zu bytes for a neighbour list", l->cap * sizeof *l->js);
+  }
+  l->i = i;
+  l->n = nsel;
+  for (size_t k = 0; k < nsel; k++) {
+    const uint32_t q = ns->sel[k], j = ns->j[q];
+    const double *wj = rec + PR_LEN * (size_t)j;
+    l->js[k] = slots ? j : q;
+    for (int c = 0; c < lines; c++) __builtin_prefetch(wj + 8 * c);
+  }
+}
+
 /* The first pass's tile fields: the candidate's x, h (from the search), the density
  * record's v, m, ρ (partner.h); 2mⱼ/ρ₀ⱼ; and per pair, as 0/1, the contact rules of
  * density_contact worked out once: never counted (a condensed particle and a gas),
@@ -233,18 +265,18 @@ enum {
 /* Fills the density tile with the nsel neighbours of i selected in ns from the density
  * records drec, padded to whole vectors; returns the padded count. */
 static size_t density_tile_fill(const struct density_pass *dp, const struct density_i *I,
-                                uint32_t i, const struct nsearch *ns, size_t nsel,
+                                uint32_t i, const struct nsearch *ns, const struct partners *l,
                                 const double *drec, struct tile *t)
 {
+  const size_t nsel = l->n;
   const struct particles *p = dp->p;
   tile_reserve(t, nsel, FD_N);
   const size_t cap = t->cap, n = tile_round(nsel);
   double *restrict a = t->a;
   const int sep = p->rho[i] <= I->m->rho0, mati = p->mat[i];
   for (size_t k = 0; k < nsel; k++) {
-    const uint32_t q = ns->sel[k];
+    const uint32_t q = l->js[k];
     const double *wj = drec + PR_LEN * (size_t)ns->j[q];
-    __builtin_prefetch(drec + PR_LEN * (size_t)ns->j[ns->sel[k + 8 < nsel ? k + 8 : k]]);
     a[FD_X * cap + k] = ns->x[q];
     a[(FD_X + 1) * cap + k] = ns->y[q];
     a[(FD_X + 2) * cap + k] = ns->z[q];
@@ -425,10 +457,12 @@ static inline void density_gradient(const struct density_pass *dp, uint32_t i,
   }
 }
 
-/* The first pass for real i with its nsel neighbours in ns, through tile t. */
+/* The first pass for real l->i with its neighbours l (candidates in ns), through tile
+ * t. */
 static inline void density_rate_particle(const struct density_pass *dp, const struct nsearch *ns,
-                                         size_t nsel, uint32_t i, struct tile *t)
+                                         const struct partners *l, struct tile *t)
 {
+  const uint32_t i = l->i;
   struct particles *p = dp->p;
   const struct sph_params *sp = dp->sp;
   const struct material *mi = &dp->mat[p->mat[i]];
@@ -455,7 +489,7 @@ static inline void density_rate_particle(const struct density_pass *dp, const st
   I.dd_rho = 0.5 * mi->rho0;
   I.dd = sp->density_diffusion > 0.0 && I.cond && p->rho[i] >= I.dd_rho;
   struct density_sums s = {0};
-  const size_t n = density_tile_fill(dp, &I, i, ns, nsel, dp->drec, t);
+  const size_t n = density_tile_fill(dp, &I, i, ns, l, dp->drec, t);
   density_sums(dp, &I, p->rho[i], t, n, &s);
   p->drho[i] = p->rho[i] * s.sum + (I.dd ? sp->density_diffusion * p->cs[i] * s.ddiff : 0.0);
   if (I.sw)
@@ -502,22 +536,30 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
   {
     struct nsearch ns = {0};
     struct tile t = {0};
+    struct partners l[2] = {{0}};
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       if (skip && cache->rest[c]) { /* at rest: what the pass would write */
         rest_write_first(p, g, c, dp.gradv);
         continue;
       }
-      int gathered = 0;
+      int gathered = 0, have = 0, cur = 0;
+      /* one particle behind the search (partners_take) */
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
         if (i >= p->n) continue;
         const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, NULL, cache);
-        density_rate_particle(&dp, &ns, nsel, i, &t);
+        partners_take(rec, 1, 0, &ns, nsel, i, &l[cur ^ 1]);
+        if (have) density_rate_particle(&dp, &ns, &l[cur], &t);
+        cur ^= 1;
+        have = 1;
       }
+      if (have) density_rate_particle(&dp, &ns, &l[cur], &t);
     }
     nsearch_free(&ns);
     tile_free(&t);
+    free(l[0].js);
+    free(l[1].js);
   }
   if (cache) cache->valid = 1;
   if (!cache) {
@@ -850,38 +892,6 @@ static void force_sums(const struct force_pass *fp, const struct force_i *I, con
 }
 #undef FORCE_SUMS_KK
 
-/* A real particle's partners, the slots js[0..n). */
-struct partners {
-  uint32_t i;
-  size_t n, cap;
-  uint32_t *js;
-};
-
-/* Takes the nsel neighbours of real i selected in ns into l, and asks for their partner
- * records' lines: the records are scattered over the slots, and the copy into the tile
- * (force_tile_fill) waited on each in turn; asked for one particle ahead, they arrive
- * while the previous particle's pairs are computed. */
-static void partners_take(const struct force_pass *fp, const struct nsearch *ns, size_t nsel,
-                          uint32_t i, struct partners *l)
-{
-  if (nsel > l->cap) {
-    free(l->js);
-    l->cap = nsel + nsel / 2 + 64;
-    l->js = malloc(l->cap * sizeof *l->js);
-    if (!l->js) HV_FATAL("out of memory: %zu bytes for a neighbour list", l->cap * sizeof *l->js);
-  }
-  l->i = i;
-  l->n = nsel;
-  for (size_t k = 0; k < nsel; k++) {
-    const uint32_t j = ns->j[ns->sel[k]];
-    const double *wj = fp->rec + PR_LEN * (size_t)j;
-    l->js[k] = j;
-    __builtin_prefetch(wj);
-    __builtin_prefetch(wj + 8);
-    __builtin_prefetch(wj + 16);
-  }
-}
-
 /* The second pass for real l->i with its partners l, through tile t. */
 static inline void forces_particle(const struct force_pass *fp, const struct partners *l,
                                    struct tile *t)
@@ -976,7 +986,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struc
         const uint32_t i = g->order[ii];
         if (i >= p->n) continue;
         const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, load, NULL);
-        partners_take(&fp, &ns, nsel, i, &l[cur ^ 1]);
+        partners_take(rec, 3, 1, &ns, nsel, i, &l[cur ^ 1]);
         if (have) forces_particle(&fp, &l[cur], &t);
         cur ^= 1;
         have = 1;
