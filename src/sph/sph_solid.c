@@ -21,10 +21,12 @@
  * Tensors are 6-component, VTK order (particles.h).
  *
  * Layout: each pass is a loop over cells (resting cells left to rest.c) calling a
- * per-particle function, whose loop over pairs takes the pair's geometry and viscosity
- * from pair.h (shared with the gas loops, sph.c) and its physics with the contact rules
- * from density_contact (first pass) and pair_force (second pass); the second pass reads
- * its partners from the records of partner.c.
+ * per-particle function, which copies the particle's neighbours from the records of
+ * partner.c into a structure-of-arrays tile (the contact rules worked out per pair where
+ * they do not depend on the pair's motion: density_tile_fill, force_tile_fill) and sums
+ * the pair physics in one vector loop (density_tile_sums, force_tile_sums): pair.h's
+ * geometry and viscosity (shared with the gas loops, sph.c) with their branches as
+ * selects.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -243,8 +245,8 @@ static void partners_take(const double *rec, int lines, int slots, const struct 
 }
 
 /* The first pass's tile fields: the candidate's x, h (from the search), the density
- * record's v, m, ρ (partner.h); 2mⱼ/ρ₀ⱼ; and per pair, as 0/1, the contact rules of
- * density_contact worked out once: never counted (a condensed particle and a gas),
+ * record's v, m, ρ (partner.h); 2mⱼ/ρ₀ⱼ; and per pair, as 0/1, the contact rules
+ * (density_tile_fill): never counted (a condensed particle and a gas),
  * not counted while separating (two pieces with ρᵢ ≤ ρ₀ᵢ), weighed by 2mⱼ/ρ₀ⱼ instead of
  * Vⱼ, in the density diffusion, in L and A (same piece, strength). */
 enum {
@@ -274,6 +276,24 @@ static size_t density_tile_fill(const struct density_pass *dp, const struct dens
   const size_t cap = t->cap, n = tile_round(nsel);
   double *restrict a = t->a;
   const int sep = p->rho[i] <= I->m->rho0, mati = p->mat[i];
+  /* The contact rules of the continuity sum, per pair:
+     - a pair of different bodies separating may unload a compressed particle back to its
+       reference density, but not stretch it beyond: contact carries no tension, in the
+       density as in the forces (FD_SEP, with the pair's motion in the vector loop);
+     - a condensed particle's density follows condensed neighbours only: a gas particle's
+       volume mⱼ/ρⱼ is hundreds of times its own, and its velocity would set the
+       compression of a fragment flying through the gas; the gas still pushes it through
+       the pressure force (docs/models.md) (FD_NEVER);
+     - a neighbour counts with at most twice its reference volume, 2mⱼ/ρ₀ⱼ: sprayed debris
+       of another body far below ρ₀ would otherwise weigh a lone particle's compression by
+       many times its mass's volume, and within a body of condensed material a cluster of
+       expanding debris whose volumes mⱼ/ρⱼ overlap would feed its own expansion
+       (docs/models.md, "Contact between bodies"). Above ρ₀/2 nothing changes (FD_REF);
+     - sph.density_diffusion (Molteni & Colagrossi 2009): ψᵢⱼ·∇ᵢWᵢⱼ =
+       2(ρⱼ − ρᵢ)(xⱼ − xᵢ)·(xᵢ − xⱼ) f/r² = −2(ρⱼ − ρᵢ) f (f < 0): the particle's density
+       relaxes towards its neighbours' — a discrete Laplacian of ρ, zero in a uniform or
+       linear density field; never across two pieces or two materials, whose densities
+       differ by right, nor with expanded material (FD_DD). */
   for (size_t k = 0; k < nsel; k++) {
     const uint32_t q = l->js[k];
     const double *wj = drec + PR_LEN * (size_t)ns->j[q];
@@ -339,7 +359,7 @@ density_tile_sums(const struct density_i *I, double rhoi, const struct tile *t, 
     const double f = tile_kernel_f(kk, r, hij);
     const double ux = VX[k] - vxi, uy = VY[k] - vyi, uz = VZ[k] - vzi;
     const double w = M[k] / RHO[k] * f, udx = ux * dx + uy * dy + uz * dz;
-    /* density_contact: whether j counts, and its weight */
+    /* the contact rules (density_tile_fill): whether j counts, and its weight */
     const int in = !(NEVER[k] != 0.0 || (SEP[k] != 0.0 && udx <= 0.0));
     const double wd = REF[k] != 0.0 ? WREF[k] * f : w;
     sum -= in ? wd * udx : 0.0;
@@ -583,7 +603,8 @@ void sph_artificial_stress(struct particles *p, const struct sph_params *sp,
     sig[2] -= p->p[i];
     const struct material *mi = &mat[p->mat[i]];
     if (eps > 0 && has_strength(mi, p->fstate[i]) &&
-        !fracture_no_tension(&mi->frac, p->fstate[i]) && sym3_max_bound(sig) > 0.0) {
+        !fracture_no_tension(&mi->frac, p->fstate[i]) && sym3_max_bound(sig) > 0.0 &&
+        !sym3_negative_definite(sig)) { /* no tension: R = 0, the same bits */
       double lam[3], Q[9], d[3];
       sym3_eigen(sig, lam, Q);
       const double r2 = p->rho[i] * p->rho[i];
