@@ -79,10 +79,11 @@ void partner_pack_density(const struct particles *p, const struct sph_params *sp
     double *w = rec + PR_LEN * j;
     const struct material *mj = &mat[p->mat[j]];
     for (int a = 0; a < 3; a++) w[DR_V + a] = p->v[a][j];
-    w[DR_M] = p->m[j];
+    w[DR_VOL] = p->m[j] / p->rho[j];
     w[DR_RHO] = p->rho[j];
-    w[DR_RHO0] = mj->rho0;
-    w[DR_KIND] = 2.0 * sph_piece_of(sp->piece, p->body[j]) + (mj->eos == EOS_IDEAL_GAS);
+    w[DR_WREF] = 2.0 * p->m[j] / mj->rho0;
+    w[DR_KIND] = 4.0 * sph_piece_of(sp->piece, p->body[j]) + 2.0 * (p->rho[j] < 0.5 * mj->rho0) +
+                 (mj->eos == EOS_IDEAL_GAS);
     w[DR_MAT] = p->mat[j];
   }
 }

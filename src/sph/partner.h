@@ -28,11 +28,13 @@ enum {
 };
 
 /* The first pass's density record of a slot, in the first line of its partner record
- * (the force pass packs the partner records afresh): v, m, ρ, the reference density
- * ρ₀ of its material, its kind (2 × piece + 1 for a gas) and its material's index
- * (integers held exactly in doubles): the neighbour's side of the continuity sum and of
- * L read from one line instead of from eight arrays. */
-enum { DR_V = 0, DR_M = 3, DR_RHO = 4, DR_RHO0 = 5, DR_KIND = 6, DR_MAT = 7 };
+ * (the force pass packs the partner records afresh): v, its volume m/ρ (one division
+ * per slot instead of one per pair: the same operation, so the same bits), ρ, 2m/ρ₀
+ * (ρ₀ its material's reference density), its kind (4 × piece, + 2 below ρ₀/2, + 1 for
+ * a gas) and its material's index (integers held exactly in doubles): the neighbour's
+ * side of the continuity sum and of L read from one line instead of from eight
+ * arrays. */
+enum { DR_V = 0, DR_VOL = 3, DR_RHO = 4, DR_WREF = 5, DR_KIND = 6, DR_MAT = 7 };
 
 /* The piece of body b (bodies[i].part_of; every body its own without a table). */
 static inline int32_t sph_piece_of(const int32_t *piece, int32_t b) { return piece ? piece[b] : b; }

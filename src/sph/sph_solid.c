@@ -172,23 +172,28 @@ static void tile_free(struct tile *t)
 /* The count n padded to whole vectors. */
 static inline size_t tile_round(size_t n) { return (n + TILE_W - 1) / TILE_W * TILE_W; }
 
-/* kernel_f (kernel.h) with its pieces as selects, for a constant k: the same
- * expressions, so the same bits, without the branches that stop vectorisation. */
+/* kernel_f (kernel.h) with its pieces as selects, for a constant k, without the
+ * branches that stop vectorisation; 1/h and h/r from one division 1/(r h) (r = 0 taken as
+ * h there: no outer shell at q = 0). Division is the vector loops' scarcest unit (an
+ * AVX-512 division of 8 doubles takes as long as about 30 multiplications), so this
+ * saves; in the scalar loops it did not (kernel.h). The same values to rounding. */
 static inline __attribute__((always_inline)) double tile_kernel_f(enum kernel_kind k, double r,
                                                                   double h)
 {
-  const double ih = 1.0 / h, q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;
+  const double rs = r > 0.0 ? r : h, inv = 1.0 / (rs * h);
+  const double ih = rs * inv, hr = h * h * inv; /* 1/h, h/r */
+  const double q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;
   double f;
   if (k == KERNEL_WENDLAND_C2) {
     const double t = 1.0 - 0.5 * q;
     f = (-5.0 * 21.0 / (16.0 * HV_KERNEL_PI)) * ih5 * t * t * t;
   } else if (k == KERNEL_QUADRATIC) {
-    const double fq = 5.0 / (4.0 * HV_KERNEL_PI) * ih5 * (0.375 - 0.75 * h / r);
+    const double fq = 5.0 / (4.0 * HV_KERNEL_PI) * ih5 * (0.375 - 0.75 * hr);
     f = q < 1e-12 ? 0.0 : fq;
   } else {
     const double fi = (-3.0 + 2.25 * q) * (1.0 / HV_KERNEL_PI) * ih5;
     const double t = 2.0 - q;
-    const double fo = (-0.75 / HV_KERNEL_PI) * t * t * ih5 * (h / r);
+    const double fo = (-0.75 / HV_KERNEL_PI) * t * t * ih5 * hr;
     f = q < 1.0 ? fi : fo;
   }
   return q >= 2.0 ? 0.0 : f;
@@ -245,7 +250,7 @@ static void partners_take(const double *rec, int lines, int slots, const struct 
 }
 
 /* The first pass's tile fields: the candidate's x, h (from the search), the density
- * record's v, m, ρ (partner.h); 2mⱼ/ρ₀ⱼ; and per pair, as 0/1, the contact rules
+ * record's v, mⱼ/ρⱼ, ρ (partner.h); 2mⱼ/ρ₀ⱼ; and per pair, as 0/1, the contact rules
  * (density_tile_fill): never counted (a condensed particle and a gas),
  * not counted while separating (two pieces with ρᵢ ≤ ρ₀ᵢ), weighed by 2mⱼ/ρ₀ⱼ instead of
  * Vⱼ, in the density diffusion, in L and A (same piece, strength). */
@@ -253,7 +258,7 @@ enum {
   FD_X = 0,
   FD_H = 3,
   FD_V = 4,
-  FD_M = 7,
+  FD_VOL = 7,
   FD_RHO,
   FD_WREF,
   FD_NEVER,
@@ -301,14 +306,14 @@ static size_t density_tile_fill(const struct density_pass *dp, const struct dens
     a[(FD_X + 1) * cap + k] = ns->y[q];
     a[(FD_X + 2) * cap + k] = ns->z[q];
     a[FD_H * cap + k] = ns->h[q];
-    for (int f = 0; f < 5; f++) a[(FD_V + f) * cap + k] = wj[DR_V + f]; /* v, m, ρ */
+    for (int f = 0; f < 5; f++) a[(FD_V + f) * cap + k] = wj[DR_V + f]; /* v, m/ρ, ρ */
     const int32_t kind = (int32_t)wj[DR_KIND];
-    const int same = (kind >> 1) == I->piece, gas = kind & 1;
-    const double rhoj = wj[DR_RHO], rho0j = wj[DR_RHO0];
-    a[FD_WREF * cap + k] = 2.0 * wj[DR_M] / rho0j;
+    const int same = (kind >> 2) == I->piece, gas = kind & 1, below = (kind >> 1) & 1;
+    const double rhoj = wj[DR_RHO];
+    a[FD_WREF * cap + k] = wj[DR_WREF];
     a[FD_NEVER * cap + k] = I->cond && gas;
     a[FD_SEP * cap + k] = !same && sep;
-    a[FD_REF * cap + k] = (!same || I->cond) && rhoj < 0.5 * rho0j;
+    a[FD_REF * cap + k] = (!same || I->cond) && below;
     a[FD_DD * cap + k] = I->dd && same && (int)wj[DR_MAT] == mati && rhoj >= I->dd_rho;
     a[FD_L * cap + k] = I->strong && same;
   }
@@ -319,7 +324,7 @@ static size_t density_tile_fill(const struct density_pass *dp, const struct dens
     a[(FD_X + 1) * cap + k] = I->y;
     a[(FD_X + 2) * cap + k] = I->z;
     a[FD_H * cap + k] = I->h;
-    a[FD_M * cap + k] = 0.0;
+    a[FD_VOL * cap + k] = 0.0;
     a[FD_RHO * cap + k] = 1.0;
     a[FD_NEVER * cap + k] = 1.0;
   }
@@ -339,90 +344,89 @@ density_tile_sums(const struct density_i *I, double rhoi, const struct tile *t, 
   const double *restrict X = a + FD_X * cap, *restrict Y = a + (FD_X + 1) * cap,
                          *restrict Z = a + (FD_X + 2) * cap, *restrict H = a + FD_H * cap;
   const double *restrict VX = a + FD_V * cap, *restrict VY = a + (FD_V + 1) * cap,
-                         *restrict VZ = a + (FD_V + 2) * cap, *restrict M = a + FD_M * cap,
+                         *restrict VZ = a + (FD_V + 2) * cap, *restrict VOL = a + FD_VOL * cap,
                          *restrict RHO = a + FD_RHO * cap, *restrict WREF = a + FD_WREF * cap;
   const double *restrict NEVER = a + FD_NEVER * cap, *restrict SEP = a + FD_SEP * cap,
                          *restrict REF = a + FD_REF * cap, *restrict DD = a + FD_DD * cap,
                          *restrict LM = a + FD_L * cap;
   const double xi = I->x, yi = I->y, zi = I->z, hi = I->h, vxi = I->vx, vyi = I->vy, vzi = I->vz;
-  double sum = 0.0, ddiff = 0.0;
-  double L0 = 0, L1 = 0, L2 = 0, L3 = 0, L4 = 0, L5 = 0, L6 = 0, L7 = 0, L8 = 0;
-  double A0 = 0, A1 = 0, A2 = 0, A3 = 0, A4 = 0, A5 = 0, A6 = 0, A7 = 0, A8 = 0;
-  double W0 = 0, W1 = 0, W2 = 0, W3 = 0, W4 = 0, W5 = 0, W6 = 0, W7 = 0, W8 = 0;
-  double B0 = 0, B1 = 0, B2 = 0, B3 = 0, B4 = 0, B5 = 0, B6 = 0, B7 = 0, B8 = 0;
-#pragma omp simd reduction(+ : sum, ddiff, L0, L1, L2, L3, L4, L5, L6, L7, L8, A0, A1, A2, A3,  \
-                               A4, A5, A6, A7, A8, W0, W1, W2, W3, W4, W5, W6, W7, W8, B0, B1, \
-                               B2, B3, B4, B5, B6, B7, B8)
-  for (size_t k = 0; k < n; k++) {
-    const double dx = xi - X[k], dy = yi - Y[k], dz = zi - Z[k];
-    const double r = sqrt(dx * dx + dy * dy + dz * dz), hij = 0.5 * (hi + H[k]);
-    const double f = tile_kernel_f(kk, r, hij);
-    const double ux = VX[k] - vxi, uy = VY[k] - vyi, uz = VZ[k] - vzi;
-    const double w = M[k] / RHO[k] * f, udx = ux * dx + uy * dy + uz * dz;
-    /* the contact rules (density_tile_fill): whether j counts, and its weight */
-    const int in = !(NEVER[k] != 0.0 || (SEP[k] != 0.0 && udx <= 0.0));
-    const double wd = REF[k] != 0.0 ? WREF[k] * f : w;
-    sum -= in ? wd * udx : 0.0;
-    if (dd) {
-      const double dterm = w * 2.0 * (RHO[k] - rhoi) * 0.5 * (hi + H[k]);
-      ddiff -= in && DD[k] != 0.0 ? dterm : 0.0;
-    }
-    if (sw) { /* avsw_add */
-      const double v = in ? w : 0.0;
-      W0 += v * ux * dx;
-      W1 += v * ux * dy;
-      W2 += v * ux * dz;
-      W3 += v * uy * dx;
-      W4 += v * uy * dy;
-      W5 += v * uy * dz;
-      W6 += v * uz * dx;
-      W7 += v * uz * dy;
-      W8 += v * uz * dz;
-      B0 -= v * dx * dx;
-      B1 -= v * dx * dy;
-      B2 -= v * dx * dz;
-      B3 -= v * dy * dx;
-      B4 -= v * dy * dy;
-      B5 -= v * dy * dz;
-      B6 -= v * dz * dx;
-      B7 -= v * dz * dy;
-      B8 -= v * dz * dz;
-    }
-    if (lsum) { /* sph_grad_add_L, and sph_grad_add_A: A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ */
-      const double v = in && LM[k] != 0.0 ? w : 0.0;
-      L0 += v * ux * dx;
-      L1 += v * ux * dy;
-      L2 += v * ux * dz;
-      L3 += v * uy * dx;
-      L4 += v * uy * dy;
-      L5 += v * uy * dz;
-      L6 += v * uz * dx;
-      L7 += v * uz * dy;
-      L8 += v * uz * dz;
-      if (asum) {
-        A0 -= v * dx * dx;
-        A1 -= v * dx * dy;
-        A2 -= v * dx * dz;
-        A3 -= v * dy * dx;
-        A4 -= v * dy * dy;
-        A5 -= v * dy * dz;
-        A6 -= v * dz * dx;
-        A7 -= v * dz * dy;
-        A8 -= v * dz * dz;
+  /* each lane's sums, added in lane order at the end (as force_tile_sums) */
+  double acc[38][TILE_W] = {{0}};
+  for (size_t b = 0; b < n; b += TILE_W)
+#pragma omp simd
+    for (size_t l = 0; l < TILE_W; l++) {
+      const size_t k = b + l;
+      const double dx = xi - X[k], dy = yi - Y[k], dz = zi - Z[k];
+      const double r = sqrt(dx * dx + dy * dy + dz * dz), hij = 0.5 * (hi + H[k]);
+      const double f = tile_kernel_f(kk, r, hij);
+      const double ux = VX[k] - vxi, uy = VY[k] - vyi, uz = VZ[k] - vzi;
+      const double w = VOL[k] * f, udx = ux * dx + uy * dy + uz * dz; /* mⱼ/ρⱼ f */
+      /* the contact rules (density_tile_fill): whether j counts, and its weight */
+      const int64_t in = !((int64_t)(NEVER[k] != 0.0) | ((int64_t)(SEP[k] != 0.0) & (udx <= 0.0)));
+      const double wd = REF[k] != 0.0 ? WREF[k] * f : w;
+      const double wi = in ? wd : 0.0;
+      acc[0][l] -= wi * udx;
+      if (dd) {
+        const double dterm = w * 2.0 * (RHO[k] - rhoi) * 0.5 * (hi + H[k]);
+        const double ddm = in ? DD[k] : 0.0;
+        acc[1][l] -= ddm != 0.0 ? dterm : 0.0;
+      }
+      if (sw) { /* avsw_add */
+        const double v = in ? w : 0.0;
+        acc[20][l] += v * ux * dx;
+        acc[21][l] += v * ux * dy;
+        acc[22][l] += v * ux * dz;
+        acc[23][l] += v * uy * dx;
+        acc[24][l] += v * uy * dy;
+        acc[25][l] += v * uy * dz;
+        acc[26][l] += v * uz * dx;
+        acc[27][l] += v * uz * dy;
+        acc[28][l] += v * uz * dz;
+        acc[29][l] -= v * dx * dx;
+        acc[30][l] -= v * dx * dy;
+        acc[31][l] -= v * dx * dz;
+        acc[32][l] -= v * dy * dx;
+        acc[33][l] -= v * dy * dy;
+        acc[34][l] -= v * dy * dz;
+        acc[35][l] -= v * dz * dx;
+        acc[36][l] -= v * dz * dy;
+        acc[37][l] -= v * dz * dz;
+      }
+      if (lsum) { /* sph_grad_add_L, and sph_grad_add_A: A = Σ Vⱼ (xⱼ − xᵢ) ⊗ ∇ᵢWᵢⱼ */
+        const double lm = in ? LM[k] : 0.0;
+        const double v = lm != 0.0 ? w : 0.0;
+        acc[2][l] += v * ux * dx;
+        acc[3][l] += v * ux * dy;
+        acc[4][l] += v * ux * dz;
+        acc[5][l] += v * uy * dx;
+        acc[6][l] += v * uy * dy;
+        acc[7][l] += v * uy * dz;
+        acc[8][l] += v * uz * dx;
+        acc[9][l] += v * uz * dy;
+        acc[10][l] += v * uz * dz;
+        if (asum) {
+          acc[11][l] -= v * dx * dx;
+          acc[12][l] -= v * dx * dy;
+          acc[13][l] -= v * dx * dz;
+          acc[14][l] -= v * dy * dx;
+          acc[15][l] -= v * dy * dy;
+          acc[16][l] -= v * dy * dz;
+          acc[17][l] -= v * dz * dx;
+          acc[18][l] -= v * dz * dy;
+          acc[19][l] -= v * dz * dz;
+        }
       }
     }
-  }
-  s->sum = sum;
-  s->ddiff = ddiff;
-  const double Ls[9] = {L0, L1, L2, L3, L4, L5, L6, L7, L8},
-               As[9] = {A0, A1, A2, A3, A4, A5, A6, A7, A8},
-               Ws[9] = {W0, W1, W2, W3, W4, W5, W6, W7, W8},
-               Bs[9] = {B0, B1, B2, B3, B4, B5, B6, B7, B8};
+  double tot[38] = {0};
+  for (int q = 0; q < 38; q++)
+    for (int l = 0; l < TILE_W; l++) tot[q] += acc[q][l];
+  s->sum = tot[0];
+  s->ddiff = tot[1];
   for (int k = 0; k < 9; k++) {
-    s->L[k] = Ls[k];
-    s->A[k] = As[k];
-    s->Lsw[k] = Ws[k];
-    s->Asw[k] = Bs[k];
+    s->L[k] = tot[2 + k];
+    s->A[k] = tot[11 + k];
+    s->Lsw[k] = tot[20 + k];
+    s->Asw[k] = tot[29 + k];
   }
 }
 
@@ -646,7 +650,8 @@ struct force_i {
 /* The force tile's fields: the partner record's x, h, v, m, p/ρ², S/ρ², ρ; the sound
  * speed; the pair's kind as 0/1 (same piece; the partner a gas; the artificial stress
  * applies; the reconstruction applies); the partner's α, R and velocity gradient G; the
- * artificial stress's fⁿ when n ≠ 4. */
+ * artificial stress's fⁿ when n ≠ 4; the gas interface pressure term (0 unless the pair
+ * is a gas against condensed material). */
 enum {
   FT_X = 0,
   FT_H = 3,
@@ -664,6 +669,7 @@ enum {
   FT_R,
   FT_G = FT_R + 6,
   FT_FN = FT_G + 9,
+  FT_PGC,
   FT_N
 };
 
@@ -685,6 +691,15 @@ static size_t force_tile_fill(const struct force_pass *fp, const struct force_i 
     const int same = (tj >> 1) == I->piece;
     a[FT_SAME * cap + k] = same;
     a[FT_GAS * cap + k] = kind & 1;
+    /* a gas against condensed material: the gas's interface pressure 2 p̂_gas/(ρᵢρⱼ)
+       (force_tile_sums), here: rare, and its division would cost every lane */
+    double pgc = 0.0;
+    if (!same && I->gas != (kind & 1)) {
+      const double rr = 1.0 / (I->rho * wj[PR_RHO]);
+      const double pg = I->gas ? I->pr : wj[PR_P] * wj[PR_RHO] * wj[PR_RHO];
+      pgc = pg > 0.0 ? 2.0 * pg * rr : 0.0;
+    }
+    a[FT_PGC * cap + k] = pgc;
     if (fp->use_as) {
       const int on = same && (I->R_any | (tj & 1));
       a[FT_AS * cap + k] = on;
@@ -770,7 +785,8 @@ force_tile_sums(const struct force_pass *fp, const struct force_i *I, const stru
                          *restrict S4 = a + (FT_S + 4) * cap, *restrict S5 = a + (FT_S + 5) * cap;
   const double *restrict SAME = a + FT_SAME * cap, *restrict GAS = a + FT_GAS * cap,
                          *restrict AS = a + FT_AS * cap, *restrict REC = a + FT_REC * cap,
-                         *restrict AV = a + FT_AV * cap, *restrict FN = a + FT_FN * cap;
+                         *restrict AV = a + FT_AV * cap, *restrict FN = a + FT_FN * cap,
+                         *restrict PGC = a + FT_PGC * cap;
   const double *restrict R0 = a + FT_R * cap, *restrict R1 = a + (FT_R + 1) * cap,
                          *restrict R2 = a + (FT_R + 2) * cap, *restrict R3 = a + (FT_R + 3) * cap,
                          *restrict R4 = a + (FT_R + 4) * cap, *restrict R5 = a + (FT_R + 5) * cap;
@@ -780,7 +796,7 @@ force_tile_sums(const struct force_pass *fp, const struct force_i *I, const stru
                          *restrict G6 = a + (FT_G + 6) * cap, *restrict G7 = a + (FT_G + 7) * cap,
                          *restrict G8 = a + (FT_G + 8) * cap;
   const double xi = I->x, yi = I->y, zi = I->z, hi = I->h, vxi = I->vx, vyi = I->vy, vzi = I->vz;
-  const double ci = I->c, rhoi = I->rho, Pi = I->P, Pic = I->Pic, pri = I->pr, avi = I->alpha;
+  const double ci = I->c, rhoi = I->rho, Pi = I->P, Pic = I->Pic, avi = I->alpha;
   const double Si0 = I->S[0], Si1 = I->S[1], Si2 = I->S[2], Si3 = I->S[3], Si4 = I->S[4],
                Si5 = I->S[5];
   const double Ri0 = I->R[0], Ri1 = I->R[1], Ri2 = I->R[2], Ri3 = I->R[3], Ri4 = I->R[4],
@@ -788,95 +804,112 @@ force_tile_sums(const struct force_pass *fp, const struct force_i *I, const stru
   const double *Gi = I->G;
   const double eps = fp->pv.eps, alpha = fp->pv.alpha, beta = fp->pv.beta, bfac = fp->pv.bfac;
   const double inv_w_dp = fp->inv_w_dp;
-  const int gasi = I->gas;
+  /* 64-bit flags: a 32-bit type in the loop would make gcc take 16 lanes, more than a
+     block */
+  const int64_t gasi = I->gas;
   const double c4 = fp->as_n == 4.0 ? 1.0 : 0.0;
-  double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0, amax = 0.0;
-#pragma omp simd reduction(+ : sx, sy, sz, se) reduction(max : mumax, amax)
-  for (size_t k = 0; k < n; k++) {
-    const double dx = xi - X[k], dy = yi - Y[k], dz = zi - Z[k];
-    const double r2 = dx * dx + dy * dy + dz * dz, r = sqrt(r2), hij = 0.5 * (hi + H[k]);
-    const double f = tile_kernel_f(kk, r, hij);
-    const double dvx = vxi - VX[k], dvy = vyi - VY[k], dvz = vzi - VZ[k];
-    const double vdx = dvx * dx + dvy * dy + dvz * dz;
-    /* Πᵢⱼ, pair.h's pair_viscosity with its branches as selects */
-    const int app = vdx < 0.0;
-    const double den = r2 + eps * hij * hij;
-    const double mu0 = hij * vdx / den;
-    mumax = app && -mu0 > mumax ? -mu0 : mumax;
-    double mu = mu0;
-    if (recon) { /* sph_recon_approach (recon.h) */
-      const double gi = dx * (Gi[0] * dx + Gi[1] * dy + Gi[2] * dz) +
-                        dy * (Gi[3] * dx + Gi[4] * dy + Gi[5] * dz) +
-                        dz * (Gi[6] * dx + Gi[7] * dy + Gi[8] * dz);
-      const double gj = dx * (G0[k] * dx + G1[k] * dy + G2[k] * dz) +
-                        dy * (G3[k] * dx + G4[k] * dy + G5[k] * dz) +
-                        dz * (G6[k] * dx + G7[k] * dy + G8[k] * dz);
-      const double prod = gi * gj, sum = gi + gj;
-      const double w = vdx - 0.5 * (4.0 * prod / (sum * sum)) * sum;
-      const double wc = w > 0.0 ? 0.0 : (w < vdx ? vdx : w);
-      const double ap = prod > 0.0 ? wc : vdx;
-      const double mur = hij * ap / den;
-      mu = REC[k] != 0.0 ? mur : mu0;
-    }
-    double visc;
-    if (sw) {
-      const double aij = 0.5 * (avi + AV[k]);
-      amax = app && aij > amax ? aij : amax;
-      visc = aij * (-0.5 * (ci + C[k]) * mu + bfac * mu * mu) / (0.5 * (rhoi + RHO[k]));
-    } else {
-      visc = (-alpha * 0.5 * (ci + C[k]) * mu + beta * mu * mu) / (0.5 * (rhoi + RHO[k]));
-    }
-    visc = app ? visc : 0.0;
-    const double gx = f * dx, gy = f * dy, gz = f * dz; /* ∇ᵢWᵢⱼ */
-    /* same piece */
-    double T0 = Si0 + S0[k], T1 = Si1 + S1[k], T2 = Si2 + S2[k], T3 = Si3 + S3[k], T4 = Si4 + S4[k],
-           T5 = Si5 + S5[k];
-    double eas = 0.0;
-    if (use_as) {
-      const double Rs0 = Ri0 + R0[k], Rs1 = Ri1 + R1[k], Rs2 = Ri2 + R2[k], Rs3 = Ri3 + R3[k],
-                   Rs4 = Ri4 + R4[k], Rs5 = Ri5 + R5[k];
-      const double fr = tile_kernel_w_h3(kk, r * (1.0 / hij)) * inv_w_dp;
-      /* fⁿ: (f²)² for n = 4 (FN is 0 then), else FN (c4 = 0); arithmetic, not a select
+  /* each lane's sums, added in lane order at the end: whole vectors of TILE_W lanes (n
+     is a multiple), no remainder loop, and one sum per lane instead of a vector sum per
+     block */
+  double lx[TILE_W] = {0}, ly[TILE_W] = {0}, lz[TILE_W] = {0}, le[TILE_W] = {0}, lmu[TILE_W] = {0},
+         lam[TILE_W] = {0};
+  for (size_t b = 0; b < n; b += TILE_W)
+#pragma omp simd
+    for (size_t l = 0; l < TILE_W; l++) {
+      const size_t k = b + l;
+      const double dx = xi - X[k], dy = yi - Y[k], dz = zi - Z[k];
+      const double r2 = dx * dx + dy * dy + dz * dz, r = sqrt(r2), hij = 0.5 * (hi + H[k]);
+      const double f = tile_kernel_f(kk, r, hij);
+      const double dvx = vxi - VX[k], dvy = vyi - VY[k], dvz = vzi - VZ[k];
+      const double vdx = dvx * dx + dvy * dy + dvz * dz;
+      /* Πᵢⱼ, pair.h's pair_viscosity with its branches as selects */
+      const int64_t app = vdx < 0.0;
+      /* one division for 1/(r² + ε h²) and 1/ρ̄ᵢⱼ (as the kernel's) */
+      const double den = r2 + eps * hij * hij, rhoij = 0.5 * (rhoi + RHO[k]);
+      const double inv = 1.0 / (den * rhoij), iden = rhoij * inv, irho = den * inv;
+      const double mu0 = hij * vdx * iden;
+      lmu[l] = app && -mu0 > lmu[l] ? -mu0 : lmu[l];
+      double mu = mu0;
+      if (recon) { /* sph_recon_approach (recon.h) */
+        const double gi = dx * (Gi[0] * dx + Gi[1] * dy + Gi[2] * dz) +
+                          dy * (Gi[3] * dx + Gi[4] * dy + Gi[5] * dz) +
+                          dz * (Gi[6] * dx + Gi[7] * dy + Gi[8] * dz);
+        const double gj = dx * (G0[k] * dx + G1[k] * dy + G2[k] * dz) +
+                          dy * (G3[k] * dx + G4[k] * dy + G5[k] * dz) +
+                          dz * (G6[k] * dx + G7[k] * dy + G8[k] * dz);
+        const double prod = gi * gj, sum = gi + gj;
+        const double w = vdx - 0.5 * (4.0 * prod / (sum * sum)) * sum;
+        const double wc = w > 0.0 ? 0.0 : (w < vdx ? vdx : w);
+        const double ap = prod > 0.0 ? wc : vdx;
+        const double mur = hij * ap * iden;
+        mu = REC[k] != 0.0 ? mur : mu0;
+      }
+      double visc;
+      if (sw) {
+        const double aij = 0.5 * (avi + AV[k]);
+        lam[l] = app && aij > lam[l] ? aij : lam[l];
+        visc = aij * (-0.5 * (ci + C[k]) * mu + bfac * mu * mu) * irho;
+      } else {
+        visc = (-alpha * 0.5 * (ci + C[k]) * mu + beta * mu * mu) * irho;
+      }
+      visc = app ? visc : 0.0;
+      const double gx = f * dx, gy = f * dy, gz = f * dz; /* ∇ᵢWᵢⱼ */
+      /* same piece */
+      double T0 = Si0 + S0[k], T1 = Si1 + S1[k], T2 = Si2 + S2[k], T3 = Si3 + S3[k],
+             T4 = Si4 + S4[k], T5 = Si5 + S5[k];
+      double eas = 0.0;
+      if (use_as) {
+        const double Rs0 = Ri0 + R0[k], Rs1 = Ri1 + R1[k], Rs2 = Ri2 + R2[k], Rs3 = Ri3 + R3[k],
+                     Rs4 = Ri4 + R4[k], Rs5 = Ri5 + R5[k];
+        const double fr = tile_kernel_w_h3(kk, r * (1.0 / hij)) * inv_w_dp;
+        /* fⁿ: (f²)² for n = 4 (FN is 0 then), else FN (c4 = 0); arithmetic, not a select
          on the loop-invariant n4, which gcc 12 does not vectorise */
-      const double fn = (fr * fr) * (fr * fr) * c4 + FN[k];
-      const int on = AS[k] != 0.0;
-      T0 = on ? T0 + Rs0 * fn : T0;
-      T1 = on ? T1 + Rs1 * fn : T1;
-      T2 = on ? T2 + Rs2 * fn : T2;
-      T3 = on ? T3 + Rs3 * fn : T3;
-      T4 = on ? T4 + Rs4 * fn : T4;
-      T5 = on ? T5 + Rs5 * fn : T5;
-      const double rx = (Rs0 * gx + Rs3 * gy + Rs5 * gz) * fn;
-      const double ry = (Rs3 * gx + Rs1 * gy + Rs4 * gz) * fn;
-      const double rz = (Rs5 * gx + Rs4 * gy + Rs2 * gz) * fn;
-      eas = on ? -0.5 * (dvx * rx + dvy * ry + dvz * rz) : 0.0;
+        const double fn = (fr * fr) * (fr * fr) * c4 + FN[k];
+        const int64_t on = AS[k] != 0.0;
+        T0 = on ? T0 + Rs0 * fn : T0;
+        T1 = on ? T1 + Rs1 * fn : T1;
+        T2 = on ? T2 + Rs2 * fn : T2;
+        T3 = on ? T3 + Rs3 * fn : T3;
+        T4 = on ? T4 + Rs4 * fn : T4;
+        T5 = on ? T5 + Rs5 * fn : T5;
+        const double rx = (Rs0 * gx + Rs3 * gy + Rs5 * gz) * fn;
+        const double ry = (Rs3 * gx + Rs1 * gy + Rs4 * gz) * fn;
+        const double rz = (Rs5 * gx + Rs4 * gy + Rs2 * gz) * fn;
+        eas = on ? -0.5 * (dvx * rx + dvy * ry + dvz * rz) : 0.0;
+      }
+      const double Psame = Pi + PJ[k] + visc;
+      /* gas against condensed material */
+      const double pgc = PGC[k]; /* (force_tile_fill) */
+      /* contact: compression only */
+      const double Pcon = Pic + (PJ[k] > 0 ? PJ[k] : 0.0) + visc;
+      const int64_t same = SAME[k] != 0.0, mixed = gasi != (int64_t)(GAS[k] != 0.0);
+      const double P = same ? Psame : (mixed ? pgc + visc : Pcon);
+      const double Pme = same ? Pi : (mixed ? (gasi ? pgc : 0.0) : Pic);
+      const double vw = same ? 0.5 : (mixed ? (gasi ? 1.0 : 0.0) : 0.5);
+      T0 = same ? T0 : 0.0;
+      T1 = same ? T1 : 0.0;
+      T2 = same ? T2 : 0.0;
+      T3 = same ? T3 : 0.0;
+      T4 = same ? T4 : 0.0;
+      T5 = same ? T5 : 0.0;
+      const double ax = (T0 - P) * gx + T3 * gy + T5 * gz;
+      const double ay = T3 * gx + (T1 - P) * gy + T4 * gz;
+      const double az = T5 * gx + T4 * gy + (T2 - P) * gz;
+      const double e = (Pme + vw * visc) * vdx * f + eas;
+      const double mj = M[k];
+      lx[l] += mj * ax;
+      ly[l] += mj * ay;
+      lz[l] += mj * az;
+      le[l] += mj * e;
     }
-    const double Psame = Pi + PJ[k] + visc;
-    /* gas against condensed material */
-    const double rr = 1.0 / (rhoi * RHO[k]);
-    const double pg = gasi ? pri : PJ[k] * RHO[k] * RHO[k];
-    const double pgc = pg > 0.0 ? 2.0 * pg * rr : 0.0;
-    /* contact: compression only */
-    const double Pcon = Pic + (PJ[k] > 0 ? PJ[k] : 0.0) + visc;
-    const int same = SAME[k] != 0.0, mixed = gasi != (GAS[k] != 0.0);
-    const double P = same ? Psame : (mixed ? pgc + visc : Pcon);
-    const double Pme = same ? Pi : (mixed ? (gasi ? pgc : 0.0) : Pic);
-    const double vw = same ? 0.5 : (mixed ? (gasi ? 1.0 : 0.0) : 0.5);
-    T0 = same ? T0 : 0.0;
-    T1 = same ? T1 : 0.0;
-    T2 = same ? T2 : 0.0;
-    T3 = same ? T3 : 0.0;
-    T4 = same ? T4 : 0.0;
-    T5 = same ? T5 : 0.0;
-    const double ax = (T0 - P) * gx + T3 * gy + T5 * gz;
-    const double ay = T3 * gx + (T1 - P) * gy + T4 * gz;
-    const double az = T5 * gx + T4 * gy + (T2 - P) * gz;
-    const double e = (Pme + vw * visc) * vdx * f + eas;
-    const double mj = M[k];
-    sx += mj * ax;
-    sy += mj * ay;
-    sz += mj * az;
-    se += mj * e;
+  double sx = 0.0, sy = 0.0, sz = 0.0, se = 0.0, mumax = 0.0, amax = 0.0;
+  for (int l = 0; l < TILE_W; l++) {
+    sx += lx[l];
+    sy += ly[l];
+    sz += lz[l];
+    se += le[l];
+    mumax = lmu[l] > mumax ? lmu[l] : mumax;
+    amax = lam[l] > amax ? lam[l] : amax;
   }
   out[0] = sx;
   out[1] = sy;
