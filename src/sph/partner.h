@@ -5,6 +5,7 @@
 #define HV_SPH_PARTNER_H
 
 #include "material/material.h"
+#include "neighbours/grid.h"
 #include "sph/sph.h"
 
 /* A partner's record in the force pass: each particle's data as a partner (ghosts
@@ -45,8 +46,10 @@ void partner_reserve(struct sph_cache *cache, size_t nt, double **rec, int32_t *
 /* Packs every slot's partner record and its tag, piece × 2 + 1 when R ≠ 0. */
 void partner_pack(const struct particles *p, const struct sph_params *sp,
                   const struct material *mat, double *restrict rec, int32_t *restrict tag);
-/* Packs every slot's density record into rec. */
+/* Packs the density records of the slots of grid g that the first pass reads (all, or
+ * with sph.skip_resting's marks rest those next to a cell it does not skip) into rec. */
 void partner_pack_density(const struct particles *p, const struct sph_params *sp,
-                          const struct material *mat, double *restrict rec);
+                          const struct material *mat, const struct nbr_grid *g, const uint8_t *rest,
+                          double *restrict rec);
 
 #endif

@@ -552,10 +552,10 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
   double *rec;
   int32_t *tag;
   partner_reserve(cache, p->n + p->n_ghost, &rec, &tag);
-  partner_pack_density(p, sp, mat, rec);
   const struct density_pass dp = {p, sp, mat, gradv_reserve(p, sp, cache), dt, rec};
   const int skip = sp->skip_resting && cache && !p->av;
   if (skip) rest_mark_first(p, g, cache);
+  partner_pack_density(p, sp, mat, g, skip ? cache->rest : NULL, rec);
 #pragma omp parallel
   {
     struct nsearch ns = {0};
