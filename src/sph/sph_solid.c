@@ -184,11 +184,12 @@ static inline __attribute__((always_inline)) double tile_kernel_f(enum kernel_ki
   const double rs = r > 0.0 ? r : h, inv = 1.0 / (rs * h);
   const double ih = rs * inv, hr = h * h * inv; /* 1/h, h/r */
   const double q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;
+  const enum kernel_kind b = KERNEL_BASE(k);
   double f;
-  if (k == KERNEL_WENDLAND_C2) {
+  if (b == KERNEL_WENDLAND_C2) {
     const double t = 1.0 - 0.5 * q;
     f = (-5.0 * 21.0 / (16.0 * HV_KERNEL_PI)) * ih5 * t * t * t;
-  } else if (k == KERNEL_QUADRATIC) {
+  } else if (b == KERNEL_QUADRATIC) {
     const double fq = 5.0 / (4.0 * HV_KERNEL_PI) * ih5 * (0.375 - 0.75 * hr);
     f = q < 1e-12 ? 0.0 : fq;
   } else {
@@ -197,17 +198,19 @@ static inline __attribute__((always_inline)) double tile_kernel_f(enum kernel_ki
     const double fo = (-0.75 / HV_KERNEL_PI) * t * t * ih5 * hr;
     f = q < 1.0 ? fi : fo;
   }
+  if ((int)k & KERNEL_2D) f *= kernel_to_2d(k, h); /* the meridional plane's normalisation */
   return q >= 2.0 ? 0.0 : f;
 }
 
 /* kernel_w_h3 (kernel.h) with its pieces as selects, for a constant k. */
 static inline __attribute__((always_inline)) double tile_kernel_w_h3(enum kernel_kind k, double q)
 {
+  const enum kernel_kind b = KERNEL_BASE(k);
   double w;
-  if (k == KERNEL_WENDLAND_C2) {
+  if (b == KERNEL_WENDLAND_C2) {
     const double t = 1.0 - 0.5 * q;
     w = 21.0 / (16.0 * HV_KERNEL_PI) * t * t * t * t * (2.0 * q + 1.0);
-  } else if (k == KERNEL_QUADRATIC) {
+  } else if (b == KERNEL_QUADRATIC) {
     w = 5.0 / (4.0 * HV_KERNEL_PI) * (0.1875 * q * q - 0.75 * q + 0.75);
   } else {
     const double wi = (1.0 - 1.5 * q * q + 0.75 * q * q * q) * (1.0 / HV_KERNEL_PI);
@@ -215,6 +218,7 @@ static inline __attribute__((always_inline)) double tile_kernel_w_h3(enum kernel
     const double wo = 0.25 / HV_KERNEL_PI * t * t * t;
     w = q < 1.0 ? wi : wo;
   }
+  if ((int)k & KERNEL_2D) w *= kernel_to_2d(k, 1.0); /* h² W in the meridional plane */
   return q >= 2.0 ? 0.0 : w;
 }
 
@@ -452,10 +456,17 @@ density_tile_sums(const struct density_i *I, double rhoi, const struct tile *t, 
 static void density_sums(const struct density_pass *dp, const struct density_i *I, double rhoi,
                          const struct tile *t, size_t n, struct density_sums *s)
 {
-  switch (dp->sp->kernel) {
+  switch ((int)dp->sp->kernel) { /* a constant kind in each, 2D (KERNEL_2D: axisymmetric) or 3D */
   case KERNEL_WENDLAND_C2: DENSITY_SUMS_KK(KERNEL_WENDLAND_C2); break;
   case KERNEL_QUADRATIC: DENSITY_SUMS_KK(KERNEL_QUADRATIC); break;
-  default: DENSITY_SUMS_KK(KERNEL_CUBIC_SPLINE); break;
+  case KERNEL_CUBIC_SPLINE: DENSITY_SUMS_KK(KERNEL_CUBIC_SPLINE); break;
+  case KERNEL_WENDLAND_C2 | KERNEL_2D:
+    DENSITY_SUMS_KK((enum kernel_kind)(KERNEL_WENDLAND_C2 | KERNEL_2D));
+    break;
+  case KERNEL_QUADRATIC | KERNEL_2D:
+    DENSITY_SUMS_KK((enum kernel_kind)(KERNEL_QUADRATIC | KERNEL_2D));
+    break;
+  default: DENSITY_SUMS_KK((enum kernel_kind)(KERNEL_CUBIC_SPLINE | KERNEL_2D)); break;
   }
 }
 #undef DENSITY_SUMS_KK
@@ -940,10 +951,17 @@ force_tile_sums(const struct force_pass *fp, const struct force_i *I, const stru
 static void force_sums(const struct force_pass *fp, const struct force_i *I, const struct tile *t,
                        size_t n, double s[6])
 {
-  switch (fp->kk) {
+  switch ((int)fp->kk) { /* a constant kind in each, 2D (KERNEL_2D: axisymmetric) or 3D */
   case KERNEL_WENDLAND_C2: FORCE_SUMS_KK(KERNEL_WENDLAND_C2); break;
   case KERNEL_QUADRATIC: FORCE_SUMS_KK(KERNEL_QUADRATIC); break;
-  default: FORCE_SUMS_KK(KERNEL_CUBIC_SPLINE); break;
+  case KERNEL_CUBIC_SPLINE: FORCE_SUMS_KK(KERNEL_CUBIC_SPLINE); break;
+  case KERNEL_WENDLAND_C2 | KERNEL_2D:
+    FORCE_SUMS_KK((enum kernel_kind)(KERNEL_WENDLAND_C2 | KERNEL_2D));
+    break;
+  case KERNEL_QUADRATIC | KERNEL_2D:
+    FORCE_SUMS_KK((enum kernel_kind)(KERNEL_QUADRATIC | KERNEL_2D));
+    break;
+  default: FORCE_SUMS_KK((enum kernel_kind)(KERNEL_CUBIC_SPLINE | KERNEL_2D)); break;
   }
 }
 #undef FORCE_SUMS_KK
