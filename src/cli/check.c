@@ -39,14 +39,22 @@
 #define CHECK_CALIB_STEPS 3
 #define CHECK_CALIB_WALL  10.0 /* [s] */
 
-/* The axis a body is thin along (its plate normal), or -1: its extent along it at most
- * half its extent across (a half model's bodies cut at z = 0 counted whole). */
-static int plate_axis(const struct sim *s, int b, double *thick)
+/* Body b's extents along x, y, z, a half model's bodies cut at z = 0 (a quarter model's
+ * at y = 0 too) counted whole. */
+static void body_extent(const struct sim *s, int b, double ext[3])
 {
   const struct body_info *bi = &s->body[b];
-  double ext[3];
   for (int d = 0; d < 3; d++) ext[d] = bi->hi[d] - bi->lo[d];
   if (s->bnd.half_model && bi->lo[2] >= -0.5 * bi->spacing) ext[2] = 2.0 * bi->hi[2];
+  if (s->bnd.quarter_model && bi->lo[1] >= -0.5 * bi->spacing) ext[1] = 2.0 * bi->hi[1];
+}
+
+/* The axis a body is thin along (its plate normal), or -1: its extent along it at most
+ * half its extent across (body_extent). */
+static int plate_axis(const struct sim *s, int b, double *thick)
+{
+  double ext[3];
+  body_extent(s, b, ext);
   int ax = 0;
   for (int d = 1; d < 3; d++)
     if (ext[d] < ext[ax]) ax = d;
@@ -95,9 +103,10 @@ static void report_bodies(const struct sim *s, const size_t *first)
       int fa = 0;
       for (int d = 1; d < 3; d++)
         if (fabs(v[d]) > fabs(v[fa])) fa = d;
-      double r = 0.0;
+      double r = 0.0, ext[3];
+      body_extent(s, b, ext);
       for (int d = 0; d < 3; d++)
-        if (d != fa) r = fmax(r, 0.5 * (bi->hi[d] - bi->lo[d]));
+        if (d != fa) r = fmax(r, 0.5 * ext[d]);
       snprintf(note, sizeof note,
                "projectile: %.3g km/s, radius %.4g mm, %.1f particles per "
                "radius",
@@ -293,8 +302,11 @@ int cli_check(int argc, char **argv)
   for (int b = 1; b < s.nbody; b++) first[b] = first[b - 1] + s.body[b - 1].count;
   const int threads = omp_get_max_threads();
   printf("case %s (%s): %d bod%s, %zu particles%s, %d thread%s\n", case_path, s.case_name, s.nbody,
-         s.nbody == 1 ? "y" : "ies", s.p.n, s.bnd.half_model ? ", half model" : "", threads,
-         threads == 1 ? "" : "s");
+         s.nbody == 1 ? "y" : "ies", s.p.n,
+         s.bnd.quarter_model ? ", quarter model"
+         : s.bnd.half_model  ? ", half model"
+                             : "",
+         threads, threads == 1 ? "" : "s");
   report_bodies(&s, first);
   if (mr.nplate > 0 || mr.nbackwall > 0) {
     printf("\n");

@@ -127,7 +127,7 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
         spread(vol + (size_t)kd * nb, nb, dr, fmax(0.0, r - 0.5 * w), r + 0.5 * w, v * in / w);
     }
   }
-  const double share = g->half_model ? 0.5 : 1.0;
+  const double share = 1.0 / meas_images(g->half_model, g->quarter_model);
   double sum = 0.0;
   for (size_t k = 0; k < ns; k++) {
     double *f = vol + k * nb;
@@ -257,6 +257,7 @@ void meas_debris_defaults(struct meas_debris_params *par, const struct meas_geom
   par->q_angle = 0.90;
   par->front_fraction = 0.5;
   par->half_model = g->half_model;
+  par->quarter_model = g->quarter_model;
   par->mask = NULL;
 }
 
@@ -323,7 +324,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
     k++;
   }
   out->count = n;
-  out->m = par->half_model ? 2.0 * m : m;
+  out->m = meas_images(par->half_model, par->quarter_model) * m;
   out->v_mean = m > 0 ? mv / m : (double)NAN;
   out->v_max = vmax;
   out->v_lead = wquantile(vx, n, par->q_lead);
@@ -378,7 +379,8 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
                           .b_particle = b,
                           .mask = sel,
                           .nmat = 0,
-                          .half_model = g->half_model};
+                          .half_model = g->half_model,
+                          .quarter_model = g->quarter_model};
   struct fof_result fr;
   fof_result_init(&fr);
   const int rc = fof_find(p, &fp, &fr, err);
@@ -394,7 +396,8 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  * those of the body/mask at x >= xlo) within tol of column k's axis, among those whose
  * x − footprint >= xmin; hit[k] (when not NULL) set where a damaged one lies.
  * In a half model a column with centre w >= 0 is never nearer a mirrored particle
- * (u, −z) than the particle itself, so the mirror images add nothing. */
+ * (u, −z) than the particle itself, so the mirror images add nothing (nor, in a quarter
+ * model, (−u, z) or (−u, −z) to a column with u >= 0). */
 static void fill_columns(const struct particles *p, const struct meas_geom *g,
                          const struct meas_backwall_params *par, const unsigned char *col,
                          double xlo, double xmin, const double lo[2], double c, int nu, int nw,
@@ -429,7 +432,8 @@ static void fill_columns(const struct particles *p, const struct meas_geom *g,
 /* crater_depth_local (measure.h): each column cratered below the far wall against the
  * lower median front of the columns local_inner to local_outer from it. The ring is
  * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric
- * about the column), mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
+ * about the column), mirrored at z = 0 in a half model (there lo[1] = 0), and at y = 0
+ * too in a quarter model (lo[0] = 0); a column whose ring holds less
  * than a quarter of its samples (the wall's edge, a hole) is skipped. */
 static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
                          const double lo[2], double c, int nu, int nw, const double *xf,
@@ -457,9 +461,10 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
       if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
       size_t n = 0;
       for (size_t k = 0; k < noff; k++) {
-        const int aa = a + off[2 * k];
+        int aa = a + off[2 * k];
         int bb = b + off[2 * k + 1];
         if (bb < 0 && g->half_model) bb = -bb - 1;
+        if (aa < 0 && g->quarter_model) aa = -aa - 1;
         if (aa < 0 || aa >= nu || bb < 0 || bb >= nw) continue;
         const double v = xf[(size_t)bb * (size_t)nu + (size_t)aa];
         if (isfinite(v)) ring[n++] = (struct wval){v, 1.0};
@@ -522,7 +527,8 @@ static double far_wall_front(const struct meas_geom *g, const struct meas_backwa
                              const double *xf)
 {
   double shift = 0.0;
-  double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
+  double r_in = fmin(hi[0], hi[1]);
+  if (!g->quarter_model) r_in = fmin(r_in, -lo[0]);
   if (!g->half_model) r_in = fmin(r_in, -lo[1]);
   struct wval *far = NULL;
   size_t nfar = 0;
@@ -609,7 +615,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   const double xlo = g->x0 - par->margin_front, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   scan_wall(p, g, par, xlo, lo, hi, out);
-  if (g->half_model) out->m_damaged *= 2.0;
+  out->m_damaged *= meas_images(g->half_model, g->quarter_model);
   if (!out->n_wall) return 0;
   /* the columns see the wall's particles, or with attached_only its largest piece */
   unsigned char *col = NULL;
@@ -622,6 +628,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     }
   }
   if (g->half_model) lo[1] = 0.0; /* columns on the simulated side suffice: see below */
+  if (g->quarter_model) lo[0] = 0.0;
   double c = par->cell;
   const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
   if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;

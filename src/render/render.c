@@ -47,6 +47,15 @@ static const char *color_name(enum render_color c)
 }
 
 /* Radiograph into the plot canvas; fills the key and the description; returns μ. */
+/* The mirroring in words, for a picture's description. */
+static const char *mirror_text(const struct render_view *v)
+{
+  return v->mirror && v->mirror_y ? ", mirrored at y = 0 and z = 0"
+         : v->mirror              ? ", mirrored at z = 0"
+         : v->mirror_y            ? ", mirrored at y = 0"
+                                  : "";
+}
+
 static double draw_radiograph(struct canvas *c, const struct particles *p,
                               const struct render_view *v, const struct render_options *o,
                               struct caption_key *key, char *desc, size_t dlen)
@@ -85,7 +94,7 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
            "simulated flash radiograph along %c%s: areal density, film T = "
            "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg, peak areal density "
            "%.6g kg/m2",
-           "xyz"[v->axis], v -> mirror ? ", mirrored at z = 0" : "", mu, how, mass, smax);
+           "xyz"[v->axis], mirror_text(v), mu, how, mass, smax);
   return mu;
 }
 
@@ -169,7 +178,7 @@ int render_png(const char *path, const struct particles *p, const struct render_
     snprintf(desc, sizeof desc,
              "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
              "SI), %zu discs",
-             axis, v.mirror ? ", mirrored at z = 0" : "", color_name(o->color), lo, hi, nd);
+             axis, mirror_text(&v), color_name(o->color), lo, hi, nd);
   }
   if (o->labels && info && !info->body_names && info->source) {
     /* names not given: the run's, next to the snapshot (validate's pictures, say) */

@@ -124,6 +124,13 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) || plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
+  if (s->bnd.quarter_model && mr->axis_y != 0.0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: measure.axis_y: a quarter model's impact axis is its planes' "
+                        "line y = 0, z = 0, not y = %g m",
+                        cfg_where(c, "measure.axis_y", where, sizeof where), mr->axis_y);
+  }
   if (body_or_list(s, c, "measure.thick_target", "the target's", mr->target, &mr->ntarget, err) ||
       body_or_list(s, c, "measure.backwall", "the backwall's", mr->backwall, &mr->nbackwall, err))
     return -1;
@@ -178,7 +185,8 @@ static struct meas_geom geom(const struct measure_run *mr, const struct sim *s, 
                             .thickness = bi->hi[0] - bi->lo[0],
                             .yc = mr->axis_y,
                             .spacing = bi->spacing,
-                            .half_model = s->bnd.half_model};
+                            .half_model = s->bnd.half_model,
+                            .quarter_model = s->bnd.quarter_model};
 }
 
 /* The geometry of n bodies taken as one (a target or plate refined near the impact
@@ -387,7 +395,9 @@ static int measure_wall_through(struct measure_run *mr, const struct sim *s,
   double rw = HUGE_VAL;
   for (int j = 0; j < mr->nbackwall; j++) {
     const struct body_info *bi = &s->body[mr->backwall[j]];
-    rw = fmin(rw, fmin(mr->axis_y - bi->lo[1], bi->hi[1] - mr->axis_y));
+    /* a quarter model's wall starts at the plane y = 0, its mirror beyond it */
+    const double below = s->bnd.quarter_model ? HUGE_VAL : mr->axis_y - bi->lo[1];
+    rw = fmin(rw, fmin(below, bi->hi[1] - mr->axis_y));
   }
   tp.r_max = fmax(rw - 2.0 * g->spacing, g->spacing);
   const int rc = measure_through(&s->p, g, &tp, thr, err);
@@ -505,8 +515,12 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
       mask[i] = m->str.enabled || m->frac.kind != FRACTURE_NONE;
       b[i] = FOF_B_FACTOR * s->body[s->p.body[i]].spacing;
     }
-    struct fof_params fp = {
-        .b = b[0], .b_particle = b, .mask = mask, .nmat = s->nmat, .half_model = s->bnd.half_model};
+    struct fof_params fp = {.b = b[0],
+                            .b_particle = b,
+                            .mask = mask,
+                            .nmat = s->nmat,
+                            .half_model = s->bnd.half_model,
+                            .quarter_model = s->bnd.quarter_model};
     struct fof_result fr;
     fof_result_init(&fr);
     int frc = fof_find(&s->p, &fp, &fr, err);
