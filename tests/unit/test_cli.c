@@ -585,6 +585,12 @@ static void test_bad_input(void)
                                   "10000",
                                   "--force", NULL});
 
+  /* a quarter model of a body that is not symmetric about its planes y = 0 and z = 0 */
+  bad_input("quarter_body", variant(7, "  boundary: {x: wall}\n  symmetry: quarter"), NULL,
+            (const char *const[]){"quarter_body.yaml:12: bodies[0].shape: body 'slab' is not "
+                                  "mirror-symmetric about the plane y = 0",
+                                  "use symmetry: half or none", NULL});
+
   /* malformed YAML: line and column of the fault */
   bad_input("malformed", variant(7, "  boundary: {x: wall, y: periodic, z: periodic}}"), NULL,
             (const char *const[]){"malformed.yaml:7:", "YAML syntax error", NULL});
