@@ -396,18 +396,22 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  * those of the body/mask at x >= xlo) within tol of column k's axis, among those whose
  * x − footprint >= xmin; hit[k] (when not NULL) set where a damaged one lies.
  * In a half model a column with centre w >= 0 is never nearer a mirrored particle
- * (u, −z) than the particle itself, so the mirror images add nothing (nor, in a quarter
- * model, (−u, z) or (−u, −z) to a column with u >= 0). */
+ * (u, −z) than the particle itself, so the mirror images add nothing. A quarter model's
+ * columns span −u as well, as the half model's do (measure_backwall), and each particle
+ * is taken with its image (−u, w) across the plane y = 0: the half model's columns. */
 static void fill_columns(const struct particles *p, const struct meas_geom *g,
                          const struct meas_backwall_params *par, const unsigned char *col,
                          double xlo, double xmin, const double lo[2], double c, int nu, int nw,
                          double *xf, unsigned char *hit)
 {
   const double fp = par->footprint, tol = par->tol;
-  for (size_t i = 0; i < p->n; i++) {
+  const size_t nimg = g->quarter_model ? 2 : 1; /* the image (−u, w) second */
+  for (size_t q = 0; q < nimg * p->n; q++) {
+    const size_t i = q / nimg;
     if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
     const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
-    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
+    const double u = (q % nimg ? -1.0 : 1.0) * (p->x[1][i] - g->yc), w = p->x[2][i],
+                 x = p->x[0][i] - si * fp;
     if (x < xmin) continue;
     const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
     int a0 = (int)ceil((u - ti - lo[0]) / c - 0.5), a1 = (int)floor((u + ti - lo[0]) / c - 0.5);
@@ -432,8 +436,7 @@ static void fill_columns(const struct particles *p, const struct meas_geom *g,
 /* crater_depth_local (measure.h): each column cratered below the far wall against the
  * lower median front of the columns local_inner to local_outer from it. The ring is
  * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric
- * about the column), mirrored at z = 0 in a half model (there lo[1] = 0), and at y = 0
- * too in a quarter model (lo[0] = 0); a column whose ring holds less
+ * about the column), mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
  * than a quarter of its samples (the wall's edge, a hole) is skipped. */
 static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
                          const double lo[2], double c, int nu, int nw, const double *xf,
@@ -461,10 +464,9 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
       if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
       size_t n = 0;
       for (size_t k = 0; k < noff; k++) {
-        int aa = a + off[2 * k];
+        const int aa = a + off[2 * k];
         int bb = b + off[2 * k + 1];
         if (bb < 0 && g->half_model) bb = -bb - 1;
-        if (aa < 0 && g->quarter_model) aa = -aa - 1;
         if (aa < 0 || aa >= nu || bb < 0 || bb >= nw) continue;
         const double v = xf[(size_t)bb * (size_t)nu + (size_t)aa];
         if (isfinite(v)) ring[n++] = (struct wval){v, 1.0};
@@ -527,8 +529,7 @@ static double far_wall_front(const struct meas_geom *g, const struct meas_backwa
                              const double *xf)
 {
   double shift = 0.0;
-  double r_in = fmin(hi[0], hi[1]);
-  if (!g->quarter_model) r_in = fmin(r_in, -lo[0]);
+  double r_in = fmin(fmin(-lo[0], hi[0]), hi[1]);
   if (!g->half_model) r_in = fmin(r_in, -lo[1]);
   struct wval *far = NULL;
   size_t nfar = 0;
@@ -627,8 +628,8 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       return -1;
     }
   }
-  if (g->half_model) lo[1] = 0.0; /* columns on the simulated side suffice: see below */
-  if (g->quarter_model) lo[0] = 0.0;
+  if (g->half_model) lo[1] = 0.0;       /* columns on the simulated side suffice: see below */
+  if (g->quarter_model) lo[0] = -hi[0]; /* the half model's columns: see fill_columns */
   double c = par->cell;
   const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
   if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;

@@ -1,12 +1,13 @@
 /* test_quarter_model.c — a quarter model (domain.symmetry: quarter: symmetry planes
  * y = 0 and z = 0 through the impact axis) against the half model of the same coarse
  * normal impact: an al-alloy sphere (radius 1 mm) at 5 km/s onto a 1 mm al-alloy plate
- * at 0.25 mm spacing (strength, fracture, contact, artificial stress all on), run to
- * 3 µs, when the plate is perforated and the debris cloud is 10 mm behind it.
+ * and a 1 mm wall 3 mm behind it, at 0.25 mm spacing (strength, fracture, contact,
+ * artificial stress all on), run to 3 µs, when the plate is perforated and its debris
+ * has cratered the wall.
  *
  * 1. At t = 0 the quarter's lattices are mirror-symmetric about both planes: every
  *    particle at y, z >= Δ/2 on the lattice (y/Δ − ½ and z/Δ − ½ whole numbers), and its
- *    four mirror images are exactly the full model's particles (a sphere, a plate and a
+ *    four mirror images are exactly the full model's particles (a sphere, plates and a
  *    rod along x), so that the mirror ghosts stand where the full model's particles do.
  * 2. The half model's lattice is mirror-symmetric about y = 0 as well (the plate spans
  *    ±5 mm, 40 spacings; the sphere's lattice is centred on it), so the quarter holds
@@ -17,15 +18,15 @@
  *    (562 steps) on every quantity below. The tolerances: QM_SUM_TOL = 1e-9 for the
  *    totals (momentum, kinetic and internal energy, × 4 against × 2) and QM_MEAS_TOL =
  *    1e-6 for the measurements (hole diameters, cloud mean and leading-edge velocity,
- *    cloud mass), whose grids and quantiles turn a round-off shift into a step only when
+ *    cloud mass, the wall's crater depths, crater and damage radii, damaged mass; the
+ *    quarter's wall columns are the half model's, measure_backwall), whose grids and quantiles turn a round-off shift into a step only when
  *    a particle sits on a cell edge; both far below what a broken quarter gives: a
  *    mirror without the shear reversal or the corner ghosts moves the totals by 1e-6 and
  *    more (test_half_model), a lattice off the planes changes the particle count, a
  *    measurement that counts the quarter's particles twice, not four times, is off by a
  *    factor 2.
- * The figures of the run are printed, with the wall time of each (1 thread: about 15 s
- * for the half model's 3340 particles, 9 s for the quarter's 1670 on the machine of
- * 2026-12-07; docs/case-files.md, domain).
+ * The figures of the run are printed, with the wall time of each (docs/case-files.md,
+ * domain, gives the measured cost).
  */
 #include <math.h>
 #include <stdio.h>
@@ -50,7 +51,9 @@ static const char *bodies =
     "  - {name: ball, material: al-alloy, spacing: 0.25 mm, velocity: [5 km/s, 0, 0],\n"
     "     shape: {type: sphere, center: [-1.25 mm, 0, 0], radius: 1 mm}}\n"
     "  - {name: plate, material: al-alloy, spacing: 0.25 mm,\n"
-    "     shape: {type: box, min: [0, -5 mm, -5 mm], max: [1 mm, 5 mm, 5 mm]}}\n";
+    "     shape: {type: box, min: [0, -5 mm, -5 mm], max: [1 mm, 5 mm, 5 mm]}}\n"
+    "  - {name: wall, material: al-alloy, spacing: 0.25 mm,\n"
+    "     shape: {type: box, min: [4 mm, -5 mm, -5 mm], max: [5 mm, 5 mm, 5 mm]}}\n";
 
 /* The case: 0 full, 1 half, 2 quarter model; `rod` adds a rod along x behind the plate
  * (for the lattice check only). */
@@ -61,7 +64,7 @@ static void make_case(char *buf, size_t len, int model, int rod)
       "domain: {min: [-4 mm, 0, 0], max: [12 mm, 8 mm, 8 mm], symmetry: quarter}\n"};
   snprintf(buf, len, "time: {end: 3 us}\n%s%s%s", dom[model], bodies,
            rod ? "  - {name: rod, material: al-alloy, spacing: 0.2 mm,\n"
-                 "     shape: {type: cylinder, center: [6 mm, 0, 0], axis: [1, 0, 0],\n"
+                 "     shape: {type: cylinder, center: [8 mm, 0, 0], axis: [1, 0, 0],\n"
                  "             radius: 0.9 mm, length: 3.1 mm}}\n"
                : "");
 }
@@ -152,9 +155,10 @@ static void test_lattice(void)
 
 struct result {
   size_t n;
-  double px, ekin, eint, wall;
+  double px, ekin, eint, secs;
   struct meas_plate plate;
   struct meas_debris cloud;
+  struct meas_backwall wall;
 };
 
 /* Runs the half (model 1) or quarter (2) model to QM_T_END and measures the plate. */
@@ -174,7 +178,7 @@ static int run_model(int model, struct result *out)
     rc = step_advance(&s, &err);
   }
   clock_gettime(CLOCK_MONOTONIC, &t1);
-  out->wall = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+  out->secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
   if (!rc) {
     out->n = s.p.n;
     for (size_t i = 0; i < s.p.n; i++) {
@@ -194,9 +198,20 @@ static int run_model(int model, struct result *out)
     meas_plate_defaults(&pp, &g);
     struct meas_debris_params dp;
     meas_debris_defaults(&dp, &g);
-    dp.body = -1; /* the cloud: both bodies' debris */
+    dp.body = -1;      /* the cloud: the ball's and the plate's debris */
+    dp.x_limit = 4e-3; /* up to the wall */
+    const struct meas_geom gw = {.body = 2,
+                                 .x0 = 4e-3,
+                                 .thickness = 1e-3,
+                                 .yc = 0.0,
+                                 .spacing = QM_SPACING,
+                                 .half_model = s.bnd.half_model,
+                                 .quarter_model = s.bnd.quarter_model};
+    struct meas_backwall_params bp;
+    meas_backwall_defaults(&bp, &gw);
     rc = measure_plate(&s.p, &g, &pp, &out->plate, &err) ||
-         measure_debris(&s.p, &dp, &out->cloud, &err);
+         measure_debris(&s.p, &dp, &out->cloud, &err) ||
+         measure_backwall(&s.p, &gw, &bp, &out->wall, &err);
   }
   if (rc) printf("  the %s model failed: %s\n", model == 1 ? "half" : "quarter", err.msg);
   sim_free(&s);
@@ -218,7 +233,7 @@ static void test_impact(void)
   CHECK(rh == 0 && rq == 0, "half and quarter ran to %g us", 1e6 * QM_T_END);
   if (rh || rq) return;
   printf("  half model: %zu particles, %.1f s; quarter: %zu particles, %.1f s (1 run each)\n", h.n,
-         h.wall, q.n, q.wall);
+         h.secs, q.n, q.secs);
   CHECK(h.n == 2 * q.n, "particles: half %zu = 2 x quarter %zu", h.n, q.n);
   CHECK(h.plate.perforated && q.plate.perforated && h.cloud.count > 0,
         "the plate is perforated and a cloud is behind it (half %d, quarter %d, %zu particles)",
@@ -235,6 +250,15 @@ static void test_impact(void)
   compare("cloud mean velocity", h.cloud.v_mean, q.cloud.v_mean, fabs(h.cloud.v_mean), QM_MEAS_TOL);
   compare("cloud leading-edge velocity", h.cloud.v_lead, q.cloud.v_lead, fabs(h.cloud.v_lead),
           QM_MEAS_TOL);
+  CHECK(h.wall.crater_depth > QM_SPACING, "the wall is cratered (%.3g mm)",
+        1e3 * h.wall.crater_depth);
+  compare("wall crater depth", h.wall.crater_depth, q.wall.crater_depth, h.wall.crater_depth,
+          QM_MEAS_TOL);
+  compare("wall local crater depth", h.wall.crater_depth_local, q.wall.crater_depth_local,
+          h.wall.crater_depth, QM_MEAS_TOL);
+  compare("wall crater radius", h.wall.r_crater, q.wall.r_crater, h.wall.r_crater, QM_MEAS_TOL);
+  compare("wall damage radius", h.wall.r_damage, q.wall.r_damage, h.wall.r_damage, QM_MEAS_TOL);
+  compare("wall damaged mass", h.wall.m_damaged, q.wall.m_damaged, h.wall.m_damaged, QM_MEAS_TOL);
 }
 
 int main(void)
