@@ -6,9 +6,9 @@
  * and a 4 % margin) is grown about its centre until its aspect matches the plot area's.
  * Mirroring is automatic for a half model: on when every particle lies at z >= -h/2;
  * a quarter model (render_quarter_model) is mirrored across y = 0 as well.
- * In particles mode along z (y) the mirror across z = 0 (y = 0) stays off: the viewer
- * looks at the symmetry plane, where the model shows its cut through the middle of the
- * body.
+ * In particles mode along z no mirror is drawn, and along y not the one across y = 0:
+ * the viewer looks at a symmetry plane, where the model shows its cut through the middle
+ * of the body.
  */
 #include <math.h>
 
@@ -74,7 +74,7 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
   v.iv = o->axis == 2 ? 1 : 2;
   v.mirror = o->mirror < 0 ? render_half_model(p) : o->mirror;
   v.mirror_y = v.mirror && render_quarter_model(p);
-  if (o->mode == RENDER_PARTICLES && o->axis == 2) v.mirror = 0;
+  if (o->mode == RENDER_PARTICLES && o->axis == 2) v.mirror = v.mirror_y = 0;
   if (o->mode == RENDER_PARTICLES && o->axis == 1) v.mirror_y = 0;
   v.d0 = -HUGE_VAL;
   v.d1 = HUGE_VAL;
