@@ -243,7 +243,8 @@ static void fof_sum(const struct particles *p, const struct fof_params *par, str
         q->multiplicity *= 2; /* a mirror twin across this plane */
         continue;
       }
-      q->m *= 2.0; /* one fragment with its mirror image across this plane */
+      q->m *= 2.0;               /* one fragment with its mirror image across this plane */
+      if (d == 1) q->count *= 2; /* the half model's particles: its image's too */
       q->x[d] = 0.0;
       q->v[d] = 0.0;
       for (int k = 0; k < par->nmat; k++) mm[f * (size_t)par->nmat + (size_t)k] *= 2.0;

@@ -52,7 +52,8 @@ struct fof_fragment {
   double m;         /* [kg] mass of the fragment (full picture; see multiplicity) */
   double x[3];      /* [m] centre of mass */
   double v[3];      /* [m/s] mass-weighted mean velocity (momentum / mass) */
-  size_t count;     /* simulated particles in it (the half model's particles) */
+  size_t count;     /* simulated particles in it (the half model's particles: a quarter
+                       model's fragment on y = 0 counts its image's there too) */
   size_t root;      /* smallest particle slot in it */
   int64_t root_id;  /* id of that particle */
   int multiplicity; /* fragments of the full picture it stands for: 1, 2 (mirror twin) or 4

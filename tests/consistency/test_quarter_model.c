@@ -19,7 +19,8 @@
  *    totals (momentum, kinetic and internal energy, × 4 against × 2) and QM_MEAS_TOL =
  *    1e-6 for the measurements (hole diameters, cloud mean and leading-edge velocity,
  *    cloud mass, the wall's crater depths, crater and damage radii, damaged mass; the
- *    quarter's wall columns are the half model's, measure_backwall), whose grids and quantiles turn a round-off shift into a step only when
+ *    quarter's wall columns are the half model's, measure_backwall; the largest
+ *    fragment), and the fragment counts exactly equal, whose grids and quantiles turn a round-off shift into a step only when
  *    a particle sits on a cell edge; both far below what a broken quarter gives: a
  *    mirror without the shear reversal or the corner ghosts moves the totals by 1e-6 and
  *    more (test_half_model), a lattice off the planes changes the particle count, a
@@ -35,6 +36,7 @@
 #include <time.h>
 
 #include "config/config.h"
+#include "diag/fof.h"
 #include "diag/measure.h"
 #include "integrate/step.h"
 #include "run/run.h"
@@ -159,6 +161,8 @@ struct result {
   struct meas_plate plate;
   struct meas_debris cloud;
   struct meas_backwall wall;
+  size_t frag_n, frag_multi; /* fragments of the full picture; of >= 2 particles */
+  double frag_m1;            /* [kg] the largest */
 };
 
 /* Runs the half (model 1) or quarter (2) model to QM_T_END and measures the plate. */
@@ -212,6 +216,19 @@ static int run_model(int model, struct result *out)
     rc = measure_plate(&s.p, &g, &pp, &out->plate, &err) ||
          measure_debris(&s.p, &dp, &out->cloud, &err) ||
          measure_backwall(&s.p, &gw, &bp, &out->wall, &err);
+    struct fof_params fp = {.b = FOF_B_FACTOR * QM_SPACING,
+                            .nmat = s.nmat,
+                            .half_model = s.bnd.half_model,
+                            .quarter_model = s.bnd.quarter_model};
+    struct fof_result fr;
+    fof_result_init(&fr);
+    if (!rc) rc = fof_find(&s.p, &fp, &fr, &err);
+    if (!rc) {
+      out->frag_n = fr.n_full;
+      out->frag_multi = fof_count_min(&fr, 2);
+      out->frag_m1 = fr.nfrag ? fr.frag[0].m : 0.0;
+    }
+    fof_result_free(&fr);
   }
   if (rc) printf("  the %s model failed: %s\n", model == 1 ? "half" : "quarter", err.msg);
   sim_free(&s);
@@ -259,6 +276,10 @@ static void test_impact(void)
   compare("wall crater radius", h.wall.r_crater, q.wall.r_crater, h.wall.r_crater, QM_MEAS_TOL);
   compare("wall damage radius", h.wall.r_damage, q.wall.r_damage, h.wall.r_damage, QM_MEAS_TOL);
   compare("wall damaged mass", h.wall.m_damaged, q.wall.m_damaged, h.wall.m_damaged, QM_MEAS_TOL);
+  CHECK(h.frag_n == q.frag_n && h.frag_multi == q.frag_multi && h.frag_multi > 0,
+        "fragments of the full picture: half %zu (%zu of >= 2 particles), quarter %zu (%zu)",
+        h.frag_n, h.frag_multi, q.frag_n, q.frag_multi);
+  compare("largest fragment's mass", h.frag_m1, q.frag_m1, h.frag_m1, QM_MEAS_TOL);
 }
 
 int main(void)

@@ -175,7 +175,10 @@ static void test_quarter_model(void)
               r.frag[0].v[2] == 0.0,
           "on both planes: on the axis, moving along it");
     CHECK_CLOSE(r.frag[1].m, 2 * 27e-3, 1e-15, "on y = 0 only: mass x 2");
-    CHECK(r.frag[1].multiplicity == 2, "on y = 0 only: multiplicity 2");
+    CHECK(r.frag[1].multiplicity == 2 && r.frag[1].count == 54,
+          "on y = 0 only: multiplicity 2, the half model's 54 particles (%zu)", r.frag[1].count);
+    CHECK(r.frag[0].count == 54 && r.frag[2].count == 8,
+          "counts: the half model's particles (%zu, %zu)", r.frag[0].count, r.frag[2].count);
     CHECK(r.frag[1].x[1] == 0.0 && r.frag[1].v[1] == 0.0 && fabs(r.frag[1].v[2] - 5.0) < 1e-12,
           "on y = 0 only: y = 0, vy = 0, its own vz");
     CHECK_CLOSE(r.frag[2].m, 8e-3, 1e-15, "clear of both: one image's mass");
