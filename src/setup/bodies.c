@@ -440,7 +440,7 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
                              struct body_spec *bs, const char *name, double n, struct hv_error *err)
 {
   const double d0 = bs->spacing, t = box_thickness(s, bs);
-  const int half = sym_planes(s);
+  const int planes = sym_planes(s);
   double layers = 0.0;
   if (t > 0) { /* whole layers, rounded up, then a layer more while short */
     layers = fmax(1.0, ceil(t / d0 * (1.0 - 1e-9)));
@@ -464,22 +464,22 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
                           cfg_where(c, key, where, sizeof where), name, n, 1e3 * t,
                           1e3 * bs->spacing, bs->vol, est);
     }
-    for (int it = 0; it < 60 && (double)lattice_points(bs, half, NULL, 0) < n; it++) {
+    for (int it = 0; it < 60 && (double)lattice_points(bs, planes, NULL, 0) < n; it++) {
       layers += 1.0;
       bs->spacing = t / layers;
     }
   } else { /* the coarsest spacing that gives n: bracket, then bisect */
     double hi = bs->spacing, lo = hi;
-    double cnt = (double)lattice_points(bs, half, NULL, 0);
+    double cnt = (double)lattice_points(bs, planes, NULL, 0);
     for (int it = 0; it < 60 && cnt < n; it++) {
       hi = lo;
       lo *= fmin(0.99, cbrt(fmax(cnt, 1.0) / n));
       bs->spacing = lo;
-      cnt = (double)lattice_points(bs, half, NULL, 0);
+      cnt = (double)lattice_points(bs, planes, NULL, 0);
     }
     for (int it = 0; it < 40 && hi > lo * (1.0 + 1e-6); it++) {
       bs->spacing = 0.5 * (lo + hi);
-      if ((double)lattice_points(bs, half, NULL, 0) >= n)
+      if ((double)lattice_points(bs, planes, NULL, 0) >= n)
         lo = bs->spacing;
       else
         hi = bs->spacing;
@@ -717,7 +717,7 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
   fit_to_faces(s, bs);
   bs->vol = shape_volume(&bs->shape);
   if (s->bnd.quarter_model && bs->vol > 0) {
-    bs->vol *= 0.25; /* symmetric about both planes (check_quarter) */
+    bs->vol *= 0.25; /* symmetric about both planes (quarter_shape) */
   } else if (s->bnd.half_model && bs->vol > 0) {
     /* a half model keeps z > 0: exact when the shape is symmetric about z = 0 */
     bs->vol = symmetric_about(&bs->shape, 2) ? 0.5 * bs->vol : -1.0;
@@ -1059,7 +1059,7 @@ static double lattice_cover(const struct body_spec *bs, size_t n)
 
 static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, int nb)
 {
-  const int half = sym_planes(s);
+  const int planes = sym_planes(s);
   for (int b = 0; b < nb; b++) {
     /* a fitted gas box's step is not Δ along its fitted axes */
     if (!(bs[b].vol > 0) || bs[b].fit[0] || bs[b].fit[1] || bs[b].fit[2]) continue;
@@ -1072,7 +1072,7 @@ static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, 
         int found = 0;
         for (int sgn = -1; sgn <= 1 && !found; sgn += 2) {
           t.spacing = bs[b].spacing * (1.0 + sgn * 0.0025 * k);
-          const double c = lattice_cover(&t, lattice_points(&t, half, NULL, 0));
+          const double c = lattice_cover(&t, lattice_points(&t, planes, NULL, 0));
           if (c >= COVER_LO && c <= 1.0) {
             snprintf(fix, sizeof fix, "spacing %.5g mm (its lattice fills %.3f)", 1e3 * t.spacing,
                      c);
