@@ -223,7 +223,6 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         apply_flip(p, g, mflip);
         xd[g] = 2.0 * (s ? hi : lo) - xd[src];
         vd[g] = -vd[src];
-        boundary_axis_ghost_mass(b, p, d, s, g, src);
       }
     }
     p->n_ghost += count;

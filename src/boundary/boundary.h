@@ -59,10 +59,6 @@ void boundary_free(struct boundary *b);
 int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err);
 /* The axisymmetric domain (axis.c), after domain.geometry: axisymmetric. */
 int boundary_read_axisym(struct boundary *b, struct cfg *c, struct hv_error *err);
-/* An axisymmetric domain's mirror ghost g of src across face (d, side): at r_max its ring
- * mass is scaled to keep the source's area mass (axis.c); nothing elsewhere. */
-void boundary_axis_ghost_mass(const struct boundary *b, struct particles *p, int d, int side,
-                              size_t g, size_t src);
 /* 1 if any face is not open. */
 int boundary_any(const struct boundary *b);
 /* Wraps reals through periodic faces and reflects those that crossed a wall. */

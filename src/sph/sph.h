@@ -65,6 +65,9 @@ struct sph_params {
                           whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
                           their scales (c = √(K₀/ρ₀), c², ρ₀, K₀) at the end of a step
                           is set exactly at rest (step.c, clamp_to_rest); 0: never */
+  double rz_rmax;           /* axisymmetric runs: the radius of a mirror face r_max (wall,
+                          symmetry), HUGE_VAL without one: its ghosts weigh as their
+                          sources, at 2 r_max − r (sph_rz.c) */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
