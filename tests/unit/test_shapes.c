@@ -348,6 +348,25 @@ static void test_errors(void)
                "     impact_angle: 45 deg, shape: {type: box, min: [0, 0, 0], max: [1, 1, 1]}}\n"
                "time: {end: 1}\n",
                "body 'a': impact_angle applies with speed");
+  /* a normal impact given by speed (impact_angle 90 deg, or obliquity 0) is exactly
+     along x: cos(90 deg) = 6e-17 left a lateral 4e-13 m/s at 7 km/s, which an
+     axisymmetric domain refused as breaking its symmetry (2026-12-07 at 5f709a4) */
+  static const char *const rz_normal[] = {"obliquity: 0 deg", "impact_angle: 90 deg",
+                                          "impact_angle: 1.5707963267948966"};
+  for (size_t k = 0; k < sizeof rz_normal / sizeof rz_normal[0]; k++) {
+    char yz[1024];
+    snprintf(yz, sizeof yz,
+             "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+             "domain: {geometry: axisymmetric, min: [-1, 0], max: [1, 1]}\n"
+             "bodies:\n"
+             "  - {name: a, material: gas, density: 1, pressure: 1, spacing: 0.1,\n"
+             "     speed: 7 km/s, %s, shape: {type: sphere, center: [0, 0, 0], radius: 0.3}}\n"
+             "time: {end: 1}\n",
+             rz_normal[k]);
+    struct setup_result rz = setup_case(yz);
+    CHECK(rz.rc == 0 && rz.n > 0, "an axisymmetric sphere at speed 7 km/s, %s, sets up (%s)",
+          rz_normal[k], rz.msg);
+  }
   expect_error("too many particles",
                body_case("{type: box, min: [0, 0, 0], max: [1, 1, 1]}", "spacing: 1e-4"),
                "more than this machine");
