@@ -10,6 +10,7 @@
 #include "core/error.h"
 
 const char *const bnd_kind_names[] = {"open", "periodic", "wall", "symmetry", "absorbing", NULL};
+static const char *const geometry_names[] = {"3d", "axisymmetric", NULL};
 
 static int is_mirror(int kind) { return kind == BND_WALL || kind == BND_SYMMETRY; }
 
@@ -42,6 +43,10 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
   static const char *face[3][2] = {{"x_min", "x_max"}, {"y_min", "y_max"}, {"z_min", "z_max"}};
   boundary_init(b);
   char key[128], where[256];
+  int geometry = 0;
+  if (cfg_get_choice(c, "domain.geometry", geometry_names[0], geometry_names, &geometry, err))
+    return -1;
+  if (geometry == 1) return boundary_read_axisym(b, c, err);
   for (int d = 0; d < 3; d++) {
     /* either the shorthand `x: kind` for both faces, or `x_min`/`x_max`; only what
        the case gives is read (and so recorded in used_parameters.yaml) */
@@ -218,6 +223,7 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         apply_flip(p, g, mflip);
         xd[g] = 2.0 * (s ? hi : lo) - xd[src];
         vd[g] = -vd[src];
+        boundary_axis_ghost_mass(b, p, d, s, g, src);
       }
     }
     p->n_ghost += count;

@@ -38,6 +38,9 @@ struct absorbed {
 struct boundary {
   int kind[3][2]; /* [dim][0 = min face, 1 = max face] */
   int half_model; /* bodies cut at z = 0, z_min a symmetry plane */
+  int axisym;     /* domain.geometry: axisymmetric (particles.h): x the axis, y = r ≥ 0;
+                     the axis is the mirror face y_min = 0 (a symmetry plane, made by
+                     the code), y_max is the face r_max, z is open */
   int has_box;    /* domain.min/max given */
   struct absorbed absorbed;
   double lo[3], hi[3]; /* [m] domain box */
@@ -51,8 +54,15 @@ struct boundary {
 
 void boundary_init(struct boundary *b);
 void boundary_free(struct boundary *b);
-/* Reads domain.min, domain.max and domain.boundary.{x,y,z,x_min,...}. */
+/* Reads domain.geometry, domain.min, domain.max and domain.boundary.{x,y,z,x_min,...}
+ * (in an axisymmetric domain: min/max as (x, r), faces x, x_min, x_max, r, r_max). */
 int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err);
+/* The axisymmetric domain (axis.c), after domain.geometry: axisymmetric. */
+int boundary_read_axisym(struct boundary *b, struct cfg *c, struct hv_error *err);
+/* An axisymmetric domain's mirror ghost g of src across face (d, side): at r_max its ring
+ * mass is scaled to keep the source's area mass (axis.c); nothing elsewhere. */
+void boundary_axis_ghost_mass(const struct boundary *b, struct particles *p, int d, int side,
+                              size_t g, size_t src);
 /* 1 if any face is not open. */
 int boundary_any(const struct boundary *b);
 /* Wraps reals through periodic faces and reflects those that crossed a wall. */

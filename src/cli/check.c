@@ -39,23 +39,6 @@
 #define CHECK_CALIB_STEPS 3
 #define CHECK_CALIB_WALL  10.0 /* [s] */
 
-/* The axis a body is thin along (its plate normal), or -1: its extent along it at most
- * half its extent across (a half model's bodies cut at z = 0 counted whole). */
-static int plate_axis(const struct sim *s, int b, double *thick)
-{
-  const struct body_info *bi = &s->body[b];
-  double ext[3];
-  for (int d = 0; d < 3; d++) ext[d] = bi->hi[d] - bi->lo[d];
-  if (s->bnd.half_model && bi->lo[2] >= -0.5 * bi->spacing) ext[2] = 2.0 * bi->hi[2];
-  int ax = 0;
-  for (int d = 1; d < 3; d++)
-    if (ext[d] < ext[ax]) ax = d;
-  for (int d = 0; d < 3; d++)
-    if (d != ax && !(ext[ax] <= 0.5 * ext[d])) return -1;
-  *thick = ext[ax];
-  return ax;
-}
-
 /* The fastest body (its mean speed), or -1 when nothing moves or there is one body
  * (a projectile hits something). */
 static int projectile(const struct sim *s, const size_t *first, double *speed, double v[3])
@@ -83,21 +66,26 @@ static void report_bodies(const struct sim *s, const size_t *first)
 {
   double speed, v[3];
   const int pj = projectile(s, first, &speed, v);
-  printf("\n%-16s %-16s %10s %11s\n", "body", "material", "particles", "spacing");
+  if (s->p.axisym)
+    printf("\naxisymmetric: each particle is a ring about the x axis (its mass the ring's); "
+           "radii and\nthicknesses are of the body revolved\n");
+  printf("\n%-16s %-16s %10s %11s\n", "body", "material", s->p.axisym ? "rings" : "particles",
+         "spacing");
   for (int b = 0; b < s->nbody; b++) {
     const struct body_info *bi = &s->body[b];
     char note[256] = "", sp[32];
     snprintf(sp, sizeof sp, "%.4g mm", 1e3 * bi->spacing);
     double thick;
-    const int ax = plate_axis(s, b, &thick);
+    const int ax = check_plate_axis(s, b, &thick);
     if (b == pj) {
       /* the radius across the flight: half the widest extent across its main axis */
       int fa = 0;
       for (int d = 1; d < 3; d++)
         if (fabs(v[d]) > fabs(v[fa])) fa = d;
-      double r = 0.0;
+      double r = 0.0, ext[3];
+      check_body_extent(s, b, ext);
       for (int d = 0; d < 3; d++)
-        if (d != fa) r = fmax(r, 0.5 * (bi->hi[d] - bi->lo[d]));
+        if (d != fa) r = fmax(r, 0.5 * ext[d]);
       snprintf(note, sizeof note,
                "projectile: %.3g km/s, radius %.4g mm, %.1f particles per "
                "radius",
@@ -123,8 +111,11 @@ static void report_measured(const struct sim *s, const struct measure_run *mr, c
 {
   double speed, v[3], rp = 0.0;
   const int pj = projectile(s, first, &speed, v);
-  if (pj >= 0)
-    for (int d = 1; d < 3; d++) rp = fmax(rp, 0.5 * (s->body[pj].hi[d] - s->body[pj].lo[d]));
+  if (pj >= 0) {
+    double ext[3];
+    check_body_extent(s, pj, ext);
+    for (int d = 1; d < 3; d++) rp = fmax(rp, 0.5 * ext[d]);
+  }
   const int ngroups = mr->nplate + (mr->nbackwall > 0);
   for (int k = 0; k < ngroups; k++) {
     const int *bodies = k < mr->nplate ? mr->plate[k] : mr->backwall;

@@ -151,7 +151,16 @@ static int measure_snapshot(struct sim *s, struct measure_run *mr, const struct 
   snprintf(spath, sizeof spath, "%s/particles_%05d.%s", dir, k, ext);
   s->p.n = 0;
   double t = NAN;
+  const int axisym = s->p.axisym; /* the case's geometry: the snapshot must have it */
   if ((nt < 0 || k < nt) && io_read_particles(spath, &s->p, &t, err)) return -1;
+  if (s->p.axisym != axisym) {
+    s->p.axisym = axisym;
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s is %s, the case %s is %s (domain.geometry): measured with the "
+                        "wrong geometry its numbers would mean nothing",
+                        spath, axisym ? "3D" : "axisymmetric", casefile,
+                        axisym ? "axisymmetric" : "3D");
+  }
   if (!io_snapshot_in_run(k, t, times, nt)) {
     hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
             "folder): skipped",

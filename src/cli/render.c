@@ -39,6 +39,8 @@ static void render_usage(FILE *f)
       "  --size WxH | W                picture size in pixels, caption included (default 1200 wide)\n"
       "  --box xmin,xmax,ymin,ymax,zmin,zmax   region shown; units allowed (\"-50mm\"), bare = m\n"
       "  --mirror | --no-mirror        reflect across z = 0 (default: on for a half model)\n"
+      "  an axisymmetric snapshot (rings) is seen across its axis, x right and r up, both\n"
+      "  halves (--no-mirror: r >= 0 only); its radiograph is through the body revolved\n"
       "  --mu M|auto                   film mass attenuation [m2/kg] (default auto: the lower\n"
       "                                quartile of the material's areal densities at T = 1/2)\n"
       "  --range LO,HI                 colour range of the quantity (units allowed)\n"
@@ -241,7 +243,7 @@ static int check_args(const char *in, const char *out, const char *range, struct
     hv_info("note: --color applies to --mode particles only");
   if (o->mode == RENDER_PARTICLES && o->axis == 2 && o->mirror == 1)
     hv_info("note: particles seen along z are not mirrored (the view shows the cut at "
-            "z = 0)");
+            "z = 0; an axisymmetric snapshot's rings are, both halves of the cut)");
   return CLI_GO_ON;
 }
 
@@ -264,7 +266,7 @@ static int render_one(const char *in, const char *out, const struct render_optio
     struct render_info info = {.time = t, .material_names = ptr, .nmat = nm, .source = in};
     rc = render_check_particles(&p, nm, in, &err);
     if (!rc) rc = render_png(out, &p, o, &info, &err);
-    if (!rc) hv_info("wrote %s (%zu particles)", out, p.n);
+    if (!rc) hv_info("wrote %s (%zu %s)", out, p.n, p.axisym ? "rings" : "particles");
   }
   particles_free(&p);
   if (rc) {

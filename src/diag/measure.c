@@ -11,6 +11,7 @@
 #include "diag/measure.h"
 
 #include "diag/fof.h"
+#include "diag/measure_rz.h"
 
 #define MEAS_MAX_CELLS    4096 /* per side of the backwall's column grid */
 #define CAVITY_MAX_SLICES 100000000
@@ -118,9 +119,11 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
   double *vol = hv_calloc(ns * nb, sizeof *vol, "cavity wall bins");
   for (size_t i = 0; i < p->n; i++) {
     if (!cavity_taken(p, i, g, par) || !(p->rho[i] > 0) || !(p->m[i] > 0)) continue;
-    const double v = p->m[i] / p->rho[i], w = cbrt(v), x = p->x[0][i] - g->x0;
-    if (!isfinite(w)) continue;
-    const double x0 = x - 0.5 * w, x1 = x + 0.5 * w, r = radial(p, i, g->yc);
+    /* the cell's edge: a cube's, or for a ring (volume 2π r A) its section's √A */
+    const double v = p->m[i] / p->rho[i], r = radial(p, i, g->yc), x = p->x[0][i] - g->x0;
+    const double w = p->axisym ? sqrt(v / (2.0 * HV_MEAS_PI * r)) : cbrt(v);
+    if (!(isfinite(w) && w > 0.0)) continue;
+    const double x0 = x - 0.5 * w, x1 = x + 0.5 * w;
     for (double kd = fmax(0.0, floor(x0 / ds)); kd <= floor(x1 / ds) && kd < nsd; kd += 1.0) {
       const double in = fmin(x1, (kd + 1.0) * ds) - fmax(x0, kd * ds);
       if (in > 0)
@@ -606,6 +609,14 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
                         "footprint, margin_front and crater_min (>= 0) must be finite, "
                         "area_fraction and far_fraction in (0, 1] and 0 <= local_inner < "
                         "local_outer finite");
+  if (p->axisym) { /* rings: revolved into points round their circles (measure_rz.c) */
+    if (g->yc != 0.0 || g->half_model)
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "backwall measurement: the rings' axis is r = 0 (yc %g, half model "
+                          "%d)",
+                          g->yc, g->half_model);
+    return measure_backwall_rz(p, g, par, out, err);
+  }
   const double xlo = g->x0 - par->margin_front, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   scan_wall(p, g, par, xlo, lo, hi, out);

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "diag/measure.h"
+#include "diag/measure_rz.h"
 
 #define PLATE_MAX_CELLS  4096 /* per side of the projection grid */
 #define PLATE_CANDIDATES 8    /* starts of the circle search */
@@ -471,8 +472,17 @@ int measure_plate(const struct particles *p, const struct meas_geom *g,
 {
   memset(out, 0, sizeof *out);
   if (check_params(g, par, err)) return -1;
+  if (p->axisym && (g->yc != 0.0 || g->half_model))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "plate measurement: the rings' axis is r = 0 (yc %g, half model %d)", g->yc,
+                        g->half_model);
   unsigned char *sel = select_plate(p, g, par, &out->n_detached, err);
   if (!sel) return hv_error_prefix(err, "plate measurement: ");
+  if (p->axisym) { /* rings: the hole about the axis directly (measure_rz.h) */
+    measure_plate_rz(p, g, par, sel, out);
+    free(sel);
+    return 0;
+  }
   double *pts, *sc;
   const size_t np = project(p, g, sel, par->scale, &pts, &sc, &out->n_plate);
   free(sel);

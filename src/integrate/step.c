@@ -10,6 +10,7 @@
 #include "config/config.h"
 #include "eos/eos.h"
 #include "fracture/fracture.h"
+#include "sph/rz.h"
 
 double step_hmax(const struct particles *p)
 {
@@ -120,9 +121,13 @@ static void update_h(struct sim *s)
 {
   struct particles *p = &s->p;
   const double eta = s->sph.eta, hmin = s->sph.h_min, hmax = s->sph.h_max;
+  const int rz = p->axisym;
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
-    double h = eta * cbrt(p->m[i] / p->rho[i]);
+    /* axisymmetric: from the area mass, h = η (m/(2π r ρ))^(1/2), the in-plane spacing */
+    double h = rz ? eta * sqrt(p->m[i] / (2.0 * HV_KERNEL_PI * sph_rz_radius(p->x[1][i], p->h[i]) *
+                                          p->rho[i]))
+                  : eta * cbrt(p->m[i] / p->rho[i]);
     p->h[i] = h < hmin ? hmin : (h > hmax ? hmax : h);
   }
 }
@@ -188,6 +193,13 @@ static double next_dt(struct sim *s)
         const double dw = fmax(dist - p->h[i], s->tp.cfl * p->h[i]) / u;
         if (dw < d) {
           d = dw;
+          k = DT_CFL;
+        }
+      }
+      if (p->axisym && p->v[1][i] < 0.0) { /* towards the axis: at most half way per step */
+        const double dr = 0.5 * sph_rz_radius(p->x[1][i], p->h[i]) / -p->v[1][i];
+        if (dr < d) {
+          d = dr;
           k = DT_CFL;
         }
       }

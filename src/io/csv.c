@@ -3,6 +3,8 @@
  * File layout:
  *   # hvsph <version> case <name> time <t> s step <k>
  *   # materials 0=<name> 1=<name> ...            (only when materials are known)
+ *   # geometry: axisymmetric                     (only for an axisymmetric run: x the
+ *                                                 axis, y = r >= 0, z = 0, m the ring mass)
  *   id,x,y,z,vx,vy,vz,m,rho,p,e,h,mat,<other PF_OUT fields in list order>
  *   <one row per real particle>
  * Units are SI: x [m], v [m/s], m [kg], rho [kg/m3], p [Pa], e [J/kg], h [m],
@@ -106,7 +108,8 @@ static int csv_body(struct atomic_file *af, struct particles *p, const struct sn
   io_clean_text(name, sizeof name, meta ? meta->case_name : NULL, "unnamed", 0);
   if (atomic_file_printf(af, err, "# hvsph %s case %s time %.17g s step %ld\n", ver, name,
                          meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
-      io_put_materials(af, meta, "# ", "\n", 0, err))
+      io_put_materials(af, meta, "# ", "\n", 0, err) ||
+      (p->axisym && atomic_file_printf(af, err, "# geometry: axisymmetric\n")))
     return -1;
   for (int c = 0; c < nc; c++)
     if (atomic_file_printf(af, err, "%s%s", c ? "," : "", cols[c].name)) return -1;
@@ -148,6 +151,7 @@ struct csv_reader {
   int solid;                   /* the file has solid fields (PF_SOLID) */
   int av;                      /* the file has the viscosity switch's fields (PF_AV) */
   int crack;                   /* the file has the crack normals (PF_CRACK) */
+  int axisym;                  /* "# geometry: axisymmetric" before the header */
   const struct pfield *fields; /* particles_fields_all() view the cols refer to */
   struct csv_col cols[CSV_MAX_COLS];
 };
@@ -265,6 +269,16 @@ static int csv_lines(struct csv_reader *r, FILE *f, struct particles *p, double 
     while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r')) line[--len] = '\0';
     if (line[0] == '#') {
       if (!r->map && time) csv_comment_time(line, time);
+      if (!r->map && !strncmp(line, "# geometry:", 11)) {
+        const char *g = line + 11;
+        while (*g == ' ') g++;
+        if (!strcmp(g, "axisymmetric") || !strcmp(g, "3d"))
+          r->axisym = g[0] == 'a';
+        else
+          rc = hv_error_set(err, HV_EXIT_INPUT,
+                            "'%s' line %ld: geometry '%s' is neither 'axisymmetric' nor '3d'",
+                            r->path, r->lineno, g);
+      }
       continue;
     }
     if (len == 0) continue;
@@ -297,6 +311,7 @@ int io_read_particles_csv(const char *path, struct particles *p, double *time, s
   int rc = csv_lines(r, f, p, time, err);
   if (fclose(f) != 0 && rc == 0)
     rc = hv_error_set(err, HV_EXIT_INPUT, "cannot read '%s': %s", path, strerror(errno));
+  if (rc == 0) rc = io_take_geometry(p, n0, r->axisym, path, err);
   free(r->map);
   free(r->tok);
   free(r);

@@ -36,4 +36,12 @@ int io_put_xml_attr(struct atomic_file *af, const char *s, struct hv_error *err)
  * (hvsph's writers write none). Reads the VTU and PVD files back. */
 int io_xml_attr(const char *s, const char *end, const char *name, char *buf, size_t len);
 
+/* The geometry of a snapshot just read (axisym: 1 axisymmetric, 0 3D) given to the store p,
+ * whose particles [n0, p->n) came from path: p->axisym is set to it. Refused (HV_EXIT_INPUT,
+ * naming the file): a store that already held particles of the other geometry (n0 > 0),
+ * and in an axisymmetric snapshot a particle off the half-plane (r = y < 0 or z != 0),
+ * which no measurement or picture could place; the message names its index and id. */
+int io_take_geometry(struct particles *p, size_t n0, int axisym, const char *path,
+                     struct hv_error *err);
+
 #endif

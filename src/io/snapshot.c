@@ -94,6 +94,24 @@ int io_put_xml_prologue(struct atomic_file *af, const struct snapshot_meta *meta
                             name);
 }
 
+int io_take_geometry(struct particles *p, size_t n0, int axisym, const char *path,
+                     struct hv_error *err)
+{
+  if (n0 > 0 && p->axisym != axisym)
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "'%s' is %s, the particles read before it %s: one picture or "
+                        "measurement cannot mix them",
+                        path, axisym ? "axisymmetric" : "3D", p->axisym ? "axisymmetric" : "3D");
+  for (size_t i = n0; axisym && i < p->n; i++)
+    if (!(p->x[1][i] >= 0.0) || p->x[2][i] != 0.0)
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "'%s': particle %zu (id %lld) lies at y = %.17g m, z = %.17g m; an "
+                          "axisymmetric snapshot holds rings at r = y >= 0, z = 0",
+                          path, i - n0, (long long)p->id[i], p->x[1][i], p->x[2][i]);
+  p->axisym = axisym;
+  return 0;
+}
+
 const char *io_byte_order(void)
 {
   const unsigned short one = 1;

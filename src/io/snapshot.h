@@ -29,13 +29,15 @@ struct snapshot_meta {
  * header_type="UInt64" (no base64; zlib-compressed when meta->vtu_zlib): one
  * VTK_VERTEX cell per particle, Points = x, PointData = every other field flagged
  * PF_OUT (vectors as 3-component arrays named like the field, e.g. "v"; int64 ->
- * Int64, int32 -> Int32, double -> Float64), FieldData TIME [s], STEP and the
- * material and body names ("mat <name>", "body <name>": Int32, the index). */
+ * Int64, int32 -> Int32, double -> Float64), FieldData TIME [s], STEP, GEOMETRY (Int32 1
+ * when p->axisym; absent for 3D) and the material and body names ("mat <name>",
+ * "body <name>": Int32, the index). */
 int io_write_vtu(const char *path, struct particles *p, const struct snapshot_meta *meta,
                  struct hv_error *err);
 
 /* Particle CSV: a comment line "# hvsph <version> case <name> time <t> s step <k>",
- * optionally a "# materials ..." comment line, then the header
+ * optionally a "# materials ..." comment line, "# geometry: axisymmetric" when p->axisym,
+ * then the header
  * id,x,y,z,vx,vy,vz,m,rho,p,e,h,mat followed by the other PF_OUT fields in list
  * order (vectors as name_x,name_y,name_z); values %.17g (round-trip exact). */
 int io_write_particles_csv(const char *path, struct particles *p, const struct snapshot_meta *meta,
@@ -45,13 +47,18 @@ int io_write_particles_csv(const char *path, struct particles *p, const struct s
  * real particles (ghosts are dropped). Columns are matched by name; unknown
  * columns are ignored, missing known columns stay zero; a missing id, x, y or z
  * column is an error (HV_EXIT_INPUT). *time [s] gets the time from the comment
- * line, or NaN when there is none; time may be NULL. On error p->n is restored. */
+ * line, or NaN when there is none; time may be NULL. p->axisym is set from a
+ * "# geometry:" comment before the header (axisymmetric or 3d; none: 3D), as
+ * io_take_geometry in io_internal.h says (a file of the other geometry than the
+ * particles already in p, or an axisymmetric one with r < 0 or z != 0, is refused). On
+ * error p->n is restored. */
 int io_read_particles_csv(const char *path, struct particles *p, double *time,
                           struct hv_error *err);
 
 /* Reads a file written by io_write_vtu the same way: arrays matched by name against
  * the fields (positions from Points), unknown arrays ignored, missing fields zero;
- * *time [s] from FieldData TIME (NaN when absent). Reads only hvsph's own form
+ * *time [s] from FieldData TIME (NaN when absent), p->axisym from FieldData GEOMETRY as
+ * for the CSV. Reads only hvsph's own form
  * (UInt64 headers, appended raw data in this machine's byte order, uncompressed or
  * compressed by vtkZLibDataCompressor); anything else,
  * a block whose byte count does not match NumberOfPoints, or a file cut short is an

@@ -4,7 +4,9 @@
  *   <?xml?>, then two comments: the version and case, the material names
  *   <VTKFile type="UnstructuredGrid" version="1.0" byte_order=".." header_type="UInt64"
  *            [compressor="vtkZLibDataCompressor"]>
- *     FieldData, ascii: TIME [s] (Float64), STEP (Int64), and per material and per body
+ *     FieldData, ascii: TIME [s] (Float64), STEP (Int64), GEOMETRY (Int32 1, only for an
+ *       axisymmetric run: points in the (x, r) half-plane, m the ring mass; absent: 3D,
+ *       read back as p->axisym), and per material and per body
  *       an Int32 array named "mat <name>" or "body <name>" holding its index (the value
  *       of the PointData mat and body): the names, readable in ParaView's Information
  *       panel, by vtk and by meshio (a String array would be more direct, but meshio 7.0
@@ -194,7 +196,7 @@ static int put_array_tag(struct atomic_file *af, const struct vtu_array *a, stru
 }
 
 static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int na, int npd,
-                      size_t n, const struct snapshot_meta *meta, struct hv_error *err)
+                      size_t n, int axisym, const struct snapshot_meta *meta, struct hv_error *err)
 {
   if (io_put_xml_prologue(af, meta, err) || io_put_materials(af, meta, "<!-- ", " -->\n", 1, err) ||
       atomic_file_printf(af, err,
@@ -207,6 +209,9 @@ static int vtu_header(struct atomic_file *af, const struct vtu_array *arr, int n
                          io_byte_order(),
                          meta && meta->vtu_zlib ? " compressor=\"vtkZLibDataCompressor\"" : "",
                          meta ? meta->time : 0.0, meta ? meta->step : 0L) ||
+      (axisym && atomic_file_printf(af, err,
+                                    "      <DataArray type=\"Int32\" Name=\"GEOMETRY\""
+                                    " NumberOfTuples=\"1\" format=\"ascii\">1</DataArray>\n")) ||
       (meta && put_names(af, "mat", meta->material_names, meta->nmat, err)) ||
       (meta && put_names(af, "body", meta->body_names, meta->nbody, err)) ||
       atomic_file_printf(af, err,
@@ -270,7 +275,7 @@ static int vtu_body(struct atomic_file *af, struct particles *p, const struct sn
     arr[k].offset = off;
     off += arr[k].block;
   }
-  if (vtu_header(af, arr, na, npd, p->n, meta, err)) return -1;
+  if (vtu_header(af, arr, na, npd, p->n, p->axisym, meta, err)) return -1;
   for (int k = na - 1; k >= 0; k--)
     if (put_block(af, &arr[k], buf, err)) return -1;
   return atomic_file_printf(af, err, "\n  </AppendedData>\n</VTKFile>\n");

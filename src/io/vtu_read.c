@@ -5,7 +5,8 @@
  * Only hvsph's own form is read: UnstructuredGrid, header_type="UInt64", appended
  * raw data in the byte order of this machine, uncompressed or compressed by
  * vtkZLibDataCompressor. The XML header (everything before the appended block's '_')
- * is parsed for the DataArray elements of PointData and Points and for FieldData TIME;
+ * is parsed for the DataArray elements of PointData and Points and for FieldData TIME and
+ * GEOMETRY (1: an axisymmetric run's rings, which sets p->axisym; io_take_geometry);
  * each array's block is then read at its offset, its byte count (compressed: its block
  * count and sizes) checked against NumberOfPoints × components × type size and
  * against the file's size before anything is stored; a compressed block must inflate
@@ -52,6 +53,7 @@ struct vtu_header {
   size_t n;             /* NumberOfPoints */
   int zlib;             /* compressor="vtkZLibDataCompressor" */
   double time;          /* FieldData TIME, NaN when absent */
+  int axisym;           /* FieldData GEOMETRY 1 (axisymmetric); 0 when absent or 0 */
   long long data_start; /* file position of the byte after '_' */
   int narr;
   struct vtu_array arr[VTU_MAX_ARRAYS]; /* PointData and Points */
@@ -118,6 +120,17 @@ static int parse_header(const char *path, const char *h, size_t len, struct vtu_
       double tv = strtod(gt + 1, &stop);
       if (stop != gt + 1) vh->time = tv;
     }
+  }
+  /* FieldData GEOMETRY (ascii Int32), before the Piece: 1 axisymmetric, 0 or absent 3D */
+  vh->axisym = 0;
+  const char *g = strstr(fe, "Name=\"GEOMETRY\"");
+  if (g && g < piece) {
+    const char *gt = strchr(g, '>');
+    long gv = gt ? strtol(gt + 1, &stop, 10) : -1;
+    if (!gt || stop == gt + 1 || *stop != '<' || (gv != 0 && gv != 1))
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "'%s': FieldData GEOMETRY is not 0 (3D) or 1 (axisymmetric)", path);
+    vh->axisym = (int)gv;
   }
   const char *app = strstr(pe, "<AppendedData");
   if (!app) return bad(err, path, "no <AppendedData> element");
@@ -422,6 +435,7 @@ int io_read_particles_vtu(const char *path, struct particles *p, double *time, s
     for (int k = 0; !rc && k < vh->narr; k++)
       if (match[k] >= 0)
         rc = read_block(fp, path, vh, &vh->arr[k], &f[match[k]], first, fsize, err);
+    if (!rc) rc = io_take_geometry(p, n0, vh->axisym, path, err);
     if (rc) {
       p->n = n0; /* drop what was read */
       p->n_ghost = 0;

@@ -3,7 +3,7 @@
 
 const char *kernel_name(enum kernel_kind k)
 {
-  switch (k) {
+  switch (KERNEL_BASE(k)) {
   case KERNEL_WENDLAND_C2: return "wendland-c2";
   case KERNEL_QUADRATIC: return "quadratic";
   case KERNEL_CUBIC_SPLINE: break;

@@ -21,10 +21,27 @@
 
 enum kernel_kind { KERNEL_CUBIC_SPLINE = 0, KERNEL_WENDLAND_C2 = 1, KERNEL_QUADRATIC = 2 };
 
+/* A kind with this bit set is the same kernel normalised in two dimensions (the
+ * meridional plane of an axisymmetric run, domain.geometry: axisymmetric):
+ * W₂ = σ₂/h² w(q) = W₃ · h σ₂/σ₃, with σ₂ = 10/(7π) (cubic spline), 7/(4π) (Wendland C2,
+ * Dehnen & Aly 2012) and 2/π (quadratic, Johnson, Stryk & Beissel 1996): the 3D value
+ * times h σ₂/σ₃, so that a 3D run computes exactly what it did (the same operations). */
+#define KERNEL_2D      8
+#define KERNEL_BASE(k) ((enum kernel_kind)((int)(k) & (KERNEL_2D - 1)))
+
+/* h σ₂/σ₃ for kind k (KERNEL_2D set): the factor from the 3D to the 2D normalisation. */
+static inline double kernel_to_2d(enum kernel_kind k, double h)
+{
+  const enum kernel_kind b = KERNEL_BASE(k);
+  if (b == KERNEL_WENDLAND_C2) return h * (7.0 / 4.0) * (16.0 / 21.0);
+  if (b == KERNEL_QUADRATIC) return h * 2.0 * (4.0 / 5.0);
+  return h * (10.0 / 7.0);
+}
+
 #define HV_KERNEL_PI 3.14159265358979323846
 
 /* W(r, h) [1/m³] */
-static inline double kernel_w(enum kernel_kind k, double r, double h)
+static inline double kernel_w_3d(enum kernel_kind k, double r, double h)
 {
   double q = r / h, h3 = h * h * h;
   if (q >= 2.0) return 0.0;
@@ -40,7 +57,7 @@ static inline double kernel_w(enum kernel_kind k, double r, double h)
 }
 
 /* h³ W(r, h) as a function of q = r/h: the kernel's shape, dimensionless (no division). */
-static inline double kernel_w_h3(enum kernel_kind k, double q)
+static inline double kernel_w_h3_3d(enum kernel_kind k, double q)
 {
   if (q >= 2.0) return 0.0;
   if (k == KERNEL_WENDLAND_C2) {
@@ -57,7 +74,7 @@ static inline double kernel_w_h3(enum kernel_kind k, double q)
  * (the quadratic kernel's is 0 there: see above).
  * One division, two in the outer shell 1 ≤ q < 2 (h/r); computing 1/h and 1/r
  * from one 1/(r h) was measured slower (docs/performance.md, "Where the time goes"). */
-static inline double kernel_f(enum kernel_kind k, double r, double h)
+static inline double kernel_f_3d(enum kernel_kind k, double r, double h)
 {
   const double ih = 1.0 / h, q = r * ih, ih2 = ih * ih, ih5 = ih2 * ih2 * ih;
   if (q >= 2.0) return 0.0;
@@ -76,6 +93,24 @@ static inline double kernel_f(enum kernel_kind k, double r, double h)
   /* −¾ (2 − q)²/q: with 1/q = h/r, r > h here */
   const double t = 2.0 - q;
   return (-0.75 / HV_KERNEL_PI) * t * t * ih5 * (h / r);
+}
+
+/* The kernels of kind k, in 3D or (KERNEL_2D set) in 2D. */
+static inline double kernel_w(enum kernel_kind k, double r, double h)
+{
+  if (!((int)k & KERNEL_2D)) return kernel_w_3d(k, r, h);
+  return kernel_w_3d(KERNEL_BASE(k), r, h) * kernel_to_2d(k, h);
+}
+/* h^d W as a function of q (d the kind's dimension). */
+static inline double kernel_w_h3(enum kernel_kind k, double q)
+{
+  if (!((int)k & KERNEL_2D)) return kernel_w_h3_3d(k, q);
+  return kernel_w_h3_3d(KERNEL_BASE(k), q) * kernel_to_2d(k, 1.0);
+}
+static inline double kernel_f(enum kernel_kind k, double r, double h)
+{
+  if (!((int)k & KERNEL_2D)) return kernel_f_3d(k, r, h);
+  return kernel_f_3d(KERNEL_BASE(k), r, h) * kernel_to_2d(k, h);
 }
 
 const char *kernel_name(enum kernel_kind k);

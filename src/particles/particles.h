@@ -85,7 +85,8 @@ struct particles {
   int axisym;     /* axisymmetric (domain.geometry: axisymmetric): x is the axis, y the
                      radius r >= 0, z = 0 and v_z = 0 for every particle; m is the ring's
                      (the true 3D) mass, rho the true density; tensor component zz is
-                     the hoop (theta-theta) one, xy the axial-radial shear, yz = xz = 0 */
+                     the hoop (theta-theta) one, xy the axial-radial shear, yz = xz = 0;
+                     2 while the SPH loops run on area masses (src/sph/sph_rz.c) */
   size_t n;       /* real particles */
   size_t n_ghost; /* ghosts after the reals */
   size_t cap;     /* allocated length of every array */

@@ -214,3 +214,22 @@ void render_film(struct canvas *c, const struct render_view *view, const double 
       q[0] = q[1] = q[2] = g;
     }
 }
+
+/* The column table and deposition above, for the axisymmetric radiograph
+ * (radiograph_rz.c), which spreads each ring over the meridional plane with them. */
+struct render_columns {
+  struct column_table t;
+};
+
+struct render_columns *render_columns_new(void)
+{
+  struct render_columns *c = hv_malloc(sizeof *c, "kernel column table");
+  column_table_fill(&c->t);
+  return c;
+}
+
+void render_columns_deposit(const struct render_columns *c, double *acc, int nu, int nv, double fu,
+                            double fv, double hp, double m)
+{
+  deposit(acc, nu, nv, &c->t, fu, fv, hp, m);
+}

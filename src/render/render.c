@@ -48,12 +48,17 @@ static const char *color_name(enum render_color c)
 
 /* Radiograph into the plot canvas; fills the key and the description; returns μ. */
 static double draw_radiograph(struct canvas *c, const struct particles *p,
-                              const struct render_view *v, const struct render_options *o,
-                              struct caption_key *key, char *desc, size_t dlen)
+                              const struct particles *rings, const struct render_view *v,
+                              const struct render_options *o, struct caption_key *key, char *desc,
+                              size_t dlen)
 {
   size_t npix = (size_t)v->nu * (size_t)v->nv;
   double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture");
-  render_areal_density(p, v, sigma);
+  double left_out = 0.0; /* rings: p holds their halves, rings the rings themselves */
+  if (rings)
+    left_out = render_areal_density_rz(rings, v, sigma);
+  else
+    render_areal_density(p, v, sigma);
   double quartile = 0.0, mu = o->mu;
   const int automatic = !(o->mu > 0.0);
   if (automatic) {
@@ -81,11 +86,19 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
              " (automatic: the lower quartile of the areal densities of the "
              "pixels holding a particle, %.6g kg/m2, at T = 1/2)",
              quartile);
+  char lost[128] = "";
+  if (left_out > 0.0)
+    snprintf(lost, sizeof lost, " (%.6g kg of rings beyond the picture's reach left out)",
+             left_out);
   snprintf(desc, dlen,
            "simulated flash radiograph along %c%s: areal density, film T = "
-           "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg, peak areal density "
+           "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg%s, peak areal density "
            "%.6g kg/m2",
-           "xyz"[v->axis], v -> mirror ? ", mirrored at z = 0" : "", mu, how, mass, smax);
+           "xyz"[v->axis],
+           rings       ? ", the axisymmetric rings revolved about the x axis"
+           : v->mirror ? ", mirrored at z = 0"
+                       : "",
+           mu, how, mass, lost, smax);
   return mu;
 }
 
@@ -118,10 +131,12 @@ static int check_input(const struct particles *p, const struct render_options *o
   return 0;
 }
 
-int render_png(const char *path, const struct particles *p, const struct render_options *o,
-               const struct render_info *info, struct hv_error *err)
+/* render_png for the points p; rings: NULL, or the axisymmetric snapshot whose rings p
+ * shows in the plane of its axis (render_rz_halves). */
+static int render_picture(const char *path, const struct particles *p,
+                          const struct particles *rings, const struct render_options *o,
+                          const struct render_info *info, struct hv_error *err)
 {
-  if (check_input(p, o, err)) return -1;
   struct render_view v;
   if (render_view_setup(p, o, &v, err)) return -1;
 
@@ -134,14 +149,15 @@ int render_png(const char *path, const struct particles *p, const struct render_
   unsigned char *present = NULL;
   int *slot = NULL;
   if (o->mode == RENDER_RADIOGRAPH) {
-    const double mu = draw_radiograph(&plot, p, &v, o, &key, desc, sizeof desc);
+    const double mu = draw_radiograph(&plot, p, rings, &v, o, &key, desc, sizeof desc);
     snprintf(mu_label, sizeof mu_label, "σ [kg/m²]  film T = exp(−μσ), μ = %.3g m²/kg%s", mu,
              o->mu > 0.0 ? "" : " (auto)");
     key.label[0] = mu_label;
     key.label[1] = "σ [kg/m²]";
-    snprintf(what[0], sizeof what[0], "x-ray along %c (%c→ %c↑)%s", axis, right, up,
-             v.mirror ? ", mirrored" : "");
-    snprintf(what[1], sizeof what[1], "x-ray along %c%s", axis, v.mirror ? ", mirrored" : "");
+    const char *how = rings ? ", revolved" : v.mirror ? ", mirrored" : "";
+    snprintf(what[0], sizeof what[0], "x-ray along %c (%c→ %c↑)%s", axis, rings ? 'x' : right,
+             rings ? 'r' : up, how);
+    snprintf(what[1], sizeof what[1], "x-ray along %c%s", axis, how);
   } else {
     int nmat = 1;
     for (size_t i = 0; i < p->n; i++)
@@ -163,13 +179,21 @@ int render_png(const char *path, const struct particles *p, const struct render_
     key.slot = slot;
     key.nmat = nmat;
     color_unit(o->color, lo, hi, &key.unit, &key.label[0]);
-    const char *how = v.mirror ? ", mirrored" : v.axis == 2 ? ", cut at z = 0" : "";
-    snprintf(what[0], sizeof what[0], "seen along +%c (%c→ %c↑)%s", axis, right, up, how);
+    const char *how = rings         ? ", rings, cut through the axis"
+                      : v.mirror    ? ", mirrored"
+                      : v.axis == 2 ? ", cut at z = 0"
+                                    : "";
+    snprintf(what[0], sizeof what[0], "seen along +%c (%c→ %c↑)%s", axis, rings ? 'x' : right,
+             rings ? 'r' : up, how);
     snprintf(what[1], sizeof what[1], "along +%c%s", axis, how);
     snprintf(desc, sizeof desc,
              "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
              "SI), %zu discs",
-             axis, v.mirror ? ", mirrored at z = 0" : "", color_name(o->color), lo, hi, nd);
+             axis,
+             rings      ? ", axisymmetric rings at (x, r) and mirrored at (x, -r)"
+             : v.mirror ? ", mirrored at z = 0"
+                        : "",
+             color_name(o->color), lo, hi, nd);
   }
   if (o->labels && info && !info->body_names && info->source) {
     /* names not given: the run's, next to the snapshot (validate's pictures, say) */
@@ -209,5 +233,21 @@ int render_png(const char *path, const struct particles *p, const struct render_
            v.u1, "xyz"[v.iv], v.v0, v.v1, v.pix);
   int rc = canvas_write_png(&c, path, full, err);
   canvas_free(&c);
+  return rc;
+}
+
+int render_png(const char *path, const struct particles *p, const struct render_options *o,
+               const struct render_info *info, struct hv_error *err)
+{
+  if (check_input(p, o, err)) return -1;
+  if (!p->axisym) return render_picture(path, p, NULL, o, info, err);
+  /* axisymmetric: the rings shown in the plane of the axis, both halves unless
+     --no-mirror; the radiograph from the rings themselves (radiograph_rz.c) */
+  struct render_options orz;
+  if (render_rz_options(o, &orz, err)) return -1;
+  struct particles halves;
+  render_rz_halves(p, o->mirror != 0, &halves);
+  const int rc = render_picture(path, &halves, p, &orz, info, err);
+  particles_free(&halves);
   return rc;
 }

@@ -140,6 +140,22 @@ int render_check_particles(const struct particles *p, int nmat, const char *path
  * sigma[j * nu + i]. Σ sigma · pix² equals the mass in the view (mirror copies included). */
 void render_areal_density(const struct particles *p, const struct render_view *view, double *sigma);
 
+/* Axisymmetric snapshots (p->axisym; radiograph_rz.c has the method and its error).
+ * render_rz_options: the options of the picture across the axis (line of sight z, x
+ * right, r up; --axis y read as z, its box's z range as the up range; the depth slab
+ * unbounded; mirroring off, the halves being made by render_rz_halves); --axis x is
+ * refused (HV_EXIT_USAGE). render_rz_halves: q (initialised here; particles_free it)
+ * gets p's rings as points of the plane z = 0 at (x, r) and, with both, their mirror
+ * images at (x, −r) (v_y, S_xy, S_yz negated), with q->axisym 0. render_areal_density_rz:
+ * σ [kg/m²] on the view's pixels through the rings revolved about the x axis (as
+ * render_areal_density); returns the mass [kg] of rings left out beyond the grid's
+ * reach (0 unless a --box far smaller than the body). */
+int render_rz_options(const struct render_options *o, struct render_options *orz,
+                      struct hv_error *err);
+void render_rz_halves(const struct particles *p, int both, struct particles *q);
+double render_areal_density_rz(const struct particles *p, const struct render_view *view,
+                               double *sigma);
+
 /* Particles mode, a quantity: widens [*lo, *hi] to the values (SI) of the particles drawn
  * in the view (start from HUGE_VAL, -HUGE_VAL); non-finite values are left out. */
 void render_color_extend(const struct particles *p, const struct render_view *view,

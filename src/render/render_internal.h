@@ -46,6 +46,16 @@ int font_glyph(unsigned long cp, unsigned char rows[FONT_H]);
  * density wedge. */
 void render_film(struct canvas *c, const struct render_view *view, const double *sigma, double mu);
 
+/* The kernel column table and the mass-conserving deposition of radiograph.c, for the
+ * axisymmetric radiograph (radiograph_rz.c): render_columns_deposit spreads mass m at
+ * (fu, fv) [pixel units, integers at pixel centres] with h = hp pixels into acc
+ * (nu × nv, row-major), as radiograph.c spreads a particle. Freed with free(). */
+struct render_columns;
+struct render_columns *render_columns_new(void);
+void render_columns_deposit(const struct render_columns *c, double *acc, int nu, int nv, double fu,
+                            double fv, double hp, double m);
+#define HV_RENDER_PI 3.14159265358979323846
+
 /* Axes with ticks in mm in the margins of the view: left (v) and bottom (u) edges of the
  * plot area (axes.c). */
 void render_axes(struct canvas *c, const struct render_view *v);

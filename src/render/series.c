@@ -22,6 +22,9 @@
  *     material is thinnest late, when the debris has spread: exposed for it, the cloud
  *     stays visible to the end, and the earlier, denser frames are darker, as they
  *     would be on film.
+ * An axisymmetric run's snapshots (rings) are framed as render_png draws them: across the
+ * axis, both halves unless --no-mirror (render_rz_halves), the radiograph's μ from the
+ * last snapshot's revolved areal density (render_areal_density_rz).
  * The second pass reads each again and writes FRAMEDIR/frame_NNNNN.png (render_png:
  * a temporary file, then renamed), NNNNN = 0, 1, ... in the run's order: contiguous, as
  * ffmpeg's frame_%05d.png pattern wants, also where a snapshot is missing from the folder.
@@ -85,10 +88,40 @@ struct series {
   /* per mirroring (0 off, 1 on) while the automatic choice is not yet known */
   double ext[2][4], lo[2], hi[2];
   int half, nmat, iu, iv;
+  int rz;               /* the snapshots are axisymmetric: o is the view across the axis (axis z) */
   int *first, *slot;    /* per material: its first body; its colour slot */
   struct frame *frames; /* the snapshots that are outputs of the run, nf of them */
   int nf;
 };
+
+/* The first axisymmetric snapshot turns the series' options into those of the picture
+ * across the axis (render_rz_options: axis z, --axis x refused, --axis y's box read with
+ * up = its z range), keeping the mirroring asked for: then the halves. */
+static int rz_options(struct series *s, const struct particles *p, struct hv_error *err)
+{
+  if (!p->axisym || s->rz) return 0;
+  struct render_options orz;
+  if (render_rz_options(&s->o, &orz, err)) return -1;
+  orz.mirror = s->o.mirror;
+  s->o = orz;
+  s->rz = 1;
+  return 0;
+}
+
+/* What a frame of p shows: p, or for an axisymmetric snapshot its rings in the plane of
+ * the axis (both halves with mirror; q holds them, particles_free it), and the options
+ * it is framed with (*o, the mirroring then made by the halves). */
+static const struct particles *shown(const struct particles *p, struct render_options *o,
+                                     struct particles *q)
+{
+  if (!p->axisym) {
+    particles_init(q);
+    return p;
+  }
+  render_rz_halves(p, o->mirror != 0, q); /* initialises q */
+  o->mirror = 0;
+  return q;
+}
 
 /* Pass 1 for one snapshot: whether it is one of the run's outputs, and its extent,
  * colour range, materials and half-model flag added to what the frames share. */
@@ -106,6 +139,7 @@ static int scan_snapshot(struct series *s, const struct frame *f, struct hv_erro
     hv_warn("%s is not one of the outputs in summary.csv (an earlier run's, left in the "
             "folder): skipped",
             path);
+  if (!rc && ours && rz_options(s, &p, err)) rc = hv_error_prefix(err, "%s: ", path);
   if (!rc && ours) {
     s->half = s->half && render_half_model(&p);
     for (int m = 0; m < 2 && !rc; m++) {
@@ -113,7 +147,10 @@ static int scan_snapshot(struct series *s, const struct frame *f, struct hv_erro
       struct render_options om = s->o;
       om.mirror = m;
       struct render_view v;
-      if (render_view_setup(&p, &om, &v, err)) {
+      struct particles q;
+      const struct particles *pts = shown(&p, &om, &q);
+      if (render_view_setup(pts, &om, &v, err)) {
+        particles_free(&q);
         rc = hv_error_prefix(err, "%s: ", path);
         break;
       }
@@ -123,7 +160,8 @@ static int scan_snapshot(struct series *s, const struct frame *f, struct hv_erro
       s->ext[m][1] = fmax(s->ext[m][1], v.ext[1]);
       s->ext[m][2] = fmin(s->ext[m][2], v.ext[2]);
       s->ext[m][3] = fmax(s->ext[m][3], v.ext[3]);
-      if (s->want_range) render_color_extend(&p, &v, &om, &s->lo[m], &s->hi[m]);
+      if (s->want_range) render_color_extend(pts, &v, &om, &s->lo[m], &s->hi[m]);
+      particles_free(&q);
     }
     if (!rc) {
       for (size_t i = 0; i < p.n; i++)
@@ -183,13 +221,24 @@ static int share_mu(struct series *s, struct hv_error *err)
   snapshot_path(path, sizeof path, s->rundir, &s->frames[s->nf - 1]);
   particles_init(&p);
   struct render_view v;
-  const int rc = load(path, &p, &t, err) || render_view_setup(&p, &s->o, &v, err);
+  struct render_options o = s->o;
+  struct particles q;
+  particles_init(&q);
+  const struct particles *pts = &p;
+  int rc = load(path, &p, &t, err);
+  if (!rc) {
+    pts = shown(&p, &o, &q); /* rings: the halves frame it, the rings make σ */
+    rc = render_view_setup(pts, &o, &v, err);
+  }
   if (!rc) {
     const size_t npix = (size_t)v.nu * (size_t)v.nv;
     double *sigma = hv_malloc(npix * sizeof *sigma, "areal density picture"), quartile;
-    render_areal_density(&p, &v, sigma);
+    if (p.axisym)
+      render_areal_density_rz(&p, &v, sigma);
+    else
+      render_areal_density(&p, &v, sigma);
     unsigned char *occ = hv_malloc(npix, "occupied pixels");
-    render_occupied(&p, &v, occ);
+    render_occupied(pts, &v, occ);
     s->o.mu = render_auto_mu(sigma, occ, npix, &quartile);
     free(occ);
     free(sigma);
@@ -197,6 +246,7 @@ static int share_mu(struct series *s, struct hv_error *err)
             "densities of the material in %s, %.3g kg/m2, at T = 1/2)",
             s->o.mu, path, quartile);
   }
+  particles_free(&q);
   particles_free(&p);
   return rc;
 }

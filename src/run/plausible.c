@@ -149,3 +149,26 @@ int check_plate_layers(const struct sim *s, const int *bodies, int nb, double r,
   if (planes == 0) planes = plate_body_planes(s, bodies, nb, 0, 0.0, axis_y, &thick);
   return planes;
 }
+
+void check_body_extent(const struct sim *s, int b, double ext[3])
+{
+  const struct body_info *bi = &s->body[b];
+  for (int d = 0; d < 3; d++) ext[d] = bi->hi[d] - bi->lo[d];
+  if (s->p.axisym) /* rings filling r <= hi[1]: the revolved body's diameter across x */
+    ext[1] = ext[2] = 2.0 * bi->hi[1];
+  else if (s->bnd.half_model && bi->lo[2] >= -0.5 * bi->spacing)
+    ext[2] = 2.0 * bi->hi[2]; /* a half model's body cut at z = 0, counted whole */
+}
+
+int check_plate_axis(const struct sim *s, int b, double *thick)
+{
+  double ext[3];
+  check_body_extent(s, b, ext);
+  int ax = 0;
+  for (int d = 1; d < 3; d++)
+    if (ext[d] < ext[ax]) ax = d;
+  for (int d = 0; d < 3; d++)
+    if (d != ax && !(ext[ax] <= 0.5 * ext[d])) return -1;
+  *thick = ext[ax];
+  return ax;
+}

@@ -36,4 +36,13 @@ int check_plate_layers(const struct sim *s, const int *bodies, int nb, double r,
  * or those within r of the line y = axis_y, z = 0; *thick the extent they span. */
 int plate_body_planes(const struct sim *s, const int *bodies, int nb, int ax, double r,
                       double axis_y, double *thick);
+
+/* Body b's initial extent along x, y and z [m] (hi - lo of its body_info), counted whole:
+ * a half model's body cut at z = 0 twice its z extent; in an axisymmetric run
+ * (s->p.axisym), whose rings fill r <= hi[1], its diameter 2 hi[1] along y and z. */
+void check_body_extent(const struct sim *s, int b, double ext[3]);
+
+/* The axis a body is thin along (its plate normal), or -1: its extent along it
+ * (check_body_extent) at most half its extent across. *thick gets that extent. */
+int check_plate_axis(const struct sim *s, int b, double *thick);
 #endif

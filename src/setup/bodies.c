@@ -507,7 +507,8 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
   if (cfg_has(c, key)) {
     if (cfg_get_quantity(c, key, UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &bs->spacing, err))
       return -1;
-    bs->spacing /= cbrt(resolution);
+    /* a factor on the particle count: rings in an axisymmetric domain */
+    bs->spacing /= s->p.axisym ? sqrt(resolution) : cbrt(resolution);
     return 0;
   }
   long np;
@@ -518,6 +519,10 @@ static int read_spacing(struct sim *s, struct cfg *c, const char *path, const ch
                         "volume; give 'spacing' instead",
                         cfg_where(c, key2, where, sizeof where), name);
   double n = (double)np * resolution, v1 = bs->vol / n; /* volume per particle */
+  if (s->p.axisym) {                                    /* rings */
+    bs->spacing = rz_spacing_for_count(&bs->shape, n);
+    return 0;
+  }
   bs->spacing = bs->lattice == LATTICE_HCP ? cbrt(sqrt(2.0) * v1) : cbrt(v1);
   /* counted only where it could fit (as gas, the least): check_memory refuses the rest
      before anything is allocated, without minutes of counting first */
@@ -657,6 +662,9 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
   if (read_spacing(s, c, path, name, bs, resolution, err) ||
       read_state(c, path, name, &s->mat[bs->mat], bs, err) || read_velocity(c, path, name, bs, err))
     return -1;
+  if (s->p.axisym &&
+      rz_check_body(c, path, name, &bs->shape, bs->lattice == LATTICE_HCP, bs->vel, err))
+    return -1;
   warn_bare_length(s, c, path, name, bs);
   if (read_damage(s, c, path, name, bs, err)) return -1;
   return 0;
@@ -685,6 +693,7 @@ static void init_body(struct sim *s, const struct body_spec *bs, int b, size_t f
     rn = sqrt(rn);
     for (int c = 0; c < 3; c++) p->v[c][q] = bs->vel[c] + (rn > 0 ? bs->vrad * r[c] / rn : 0.0);
   }
+  if (p->axisym) rz_ring_masses(p, first, cnt, bs->rho, bs->vol, bs->spacing, s->sph.eta);
 }
 
 static int energy_deposit(struct sim *s, struct cfg *c, struct hv_error *err)
@@ -696,6 +705,12 @@ static int energy_deposit(struct sim *s, struct cfg *c, struct hv_error *err)
       cfg_get_vec3(c, "energy_deposit.center", UNIT_LENGTH, zero3, ctr, err) ||
       cfg_get_quantity(c, "energy_deposit.radius", UNIT_LENGTH, NULL, DBL_MIN, HUGE_VAL, &R, err))
     return -1;
+  if (s->p.axisym && (ctr[1] != 0.0 || ctr[2] != 0.0))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: energy_deposit.center: a deposit off the axis (r = %g m) breaks "
+                        "the symmetry of an axisymmetric domain; centre it on the axis",
+                        cfg_where(c, "energy_deposit.center", where, sizeof where),
+                        hypot(ctr[1], ctr[2]));
   struct particles *p = &s->p;
   double wsum = 0.0;
   for (size_t i = 0; i < p->n; i++) {
@@ -1100,6 +1115,7 @@ static int enable_fields(struct sim *s, struct cfg *c, struct hv_error *err)
     if (s->mat[m].frac.kind != FRACTURE_NONE &&
         (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
       particles_enable_crack(&s->p);
+  if (s->p.axisym && rz_check_materials(s, c, err)) return -1;
   if (s->sph.summation && s->p.solid)
     return hv_error_set(err, HV_EXIT_INPUT,
                         "%s: sph.density: summation is for cases without "
@@ -1134,10 +1150,13 @@ static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, 
   const struct shape *sh = &bs[b].shape;
   double bound = 1.0;
   for (int d = 0; d < 3; d++) bound *= (sh->max[d] - sh->min[d]) / bs[b].spacing + 2.0;
-  const double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
+  double est = bs[b].vol > 0 ? bs[b].vol / cell_volume(bs[b].lattice, bs[b].spacing) : bound;
+  if (s->p.axisym) est = rz_points_bound(sh, bs[b].spacing); /* rings */
   if (est > 1e8 && check_memory(s, c, b, &bs[b], s->p.n + (size_t)fmin(est, 1e18), err)) return -1;
-  double scan;
-  const size_t cnt = lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
+  double scan = est;
+  const size_t cnt =
+      s->p.axisym ? (est <= lattice_scan_max() ? rz_lattice(sh, bs[b].spacing, NULL, 0) : SIZE_MAX)
+                  : lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
   if (cnt == SIZE_MAX) {
     char then[160];
     snprintf(then, sizeof then,
@@ -1179,7 +1198,10 @@ static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, 
 static size_t place_body(struct sim *s, const struct body_spec *bs, int b, size_t cnt)
 {
   const size_t first = particles_add(&s->p, cnt);
-  lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
+  if (s->p.axisym)
+    rz_lattice(&bs[b].shape, bs[b].spacing, &s->p, first);
+  else
+    lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
   init_body(s, &bs[b], b, first, cnt);
   struct body_info *bi = &s->body[b];
   bi->count = cnt;
@@ -1231,8 +1253,10 @@ int setup_bodies(struct sim *s, struct cfg *c, struct hv_error *err)
     rc = check_placement(s, c, bs, b, first, cnt, err);
   }
   s->nbody = nb;
-  if (!rc) warn_mass_ratios(s, first_of, nb);
-  if (!rc) warn_lattice_cover(s, bs, nb);
+  /* (not in an axisymmetric domain: ring masses grow with r, and the lattice covers the
+     half-plane, not the volume) */
+  if (!rc && !s->p.axisym) warn_mass_ratios(s, first_of, nb);
+  if (!rc && !s->p.axisym) warn_lattice_cover(s, bs, nb);
   for (int b = 0; b < nb; b++) shape_free(&bs[b].shape);
   free(bs);
   return rc ? -1 : energy_deposit(s, c, err);

@@ -188,7 +188,8 @@ int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err)
   snprintf(s->case_name, sizeof s->case_name, "%s", name);
   if (read_sph(&s->sph, c, err) || read_time(&s->tp, c, err) || read_output(&s->out, c, err) ||
       read_materials(s, c, err) || boundary_read(&s->bnd, c, err) ||
-      cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err))
+      cfg_get_int(c, "sph.reorder_every", &reorder_def, 1, 1000000, &reorder, err) ||
+      sim_axisym_params(s, c, err))
     return -1;
   s->reorder_every = (int)reorder;
   /* a bare interval longer than the run: a number meant in us (`every: 5`); not one

@@ -73,6 +73,9 @@ struct sim {
 
 /* Reads everything but the bodies (sph, time, output, materials, domain). */
 int sim_read_params(struct sim *s, struct cfg *c, struct hv_error *err);
+/* An axisymmetric domain (s->bnd.axisym): marks the particle store, takes the 2D kernel,
+ * refuses the 3D-only sph options (setup/rz.c). 0 for a 3D one. */
+int sim_axisym_params(struct sim *s, struct cfg *c, struct hv_error *err);
 void sim_free(struct sim *s);
 
 #endif

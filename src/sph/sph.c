@@ -14,10 +14,15 @@
 #include "sph/avswitch.h"
 #include "sph/nsearch.h"
 #include "sph/pair.h"
+#include "sph/rz.h"
 
 void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                       struct sph_cache *cache, const struct material *mat, double dt)
 {
+  if (p->axisym == 1) { /* axisymmetric: these loops on area masses (sph_rz.c) */
+    sph_rz_density_rate(p, g, sp, cache, mat, dt);
+    return;
+  }
   if (p->solid) {
     sph_density_rate_solid(p, g, sp, cache, mat, dt);
     return;
@@ -84,6 +89,10 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struc
 void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                 struct sph_cache *cache, const struct material *mat)
 {
+  if (p->axisym == 1) { /* axisymmetric: these loops on area masses (sph_rz.c) */
+    sph_rz_forces(p, g, sp, cache, mat);
+    return;
+  }
   if (p->solid) {
     sph_forces_solid(p, g, sp, cache, mat);
     return;

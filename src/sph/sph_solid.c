@@ -37,6 +37,7 @@
 #include "sph/partner.h"
 #include "sph/recon.h"
 #include "sph/rest.h"
+#include "sph/rz.h"
 #include "sph/sph.h"
 #include "strength/strength.h"
 #include "strength/sym3.h"
@@ -256,6 +257,7 @@ static inline void density_rate_particle(const struct density_pass *dp, const st
         avsw_update(sp, s.Lsw, s.Asw, p->alpha[i], p->divv[i], I.h, p->cs[i], dp->dt, &p->divv[i]);
   density_gradient(dp, i, &I, recon, &s);
   if (I.strong) {
+    if (p->axisym) s.L[8] = I.vy / sph_rz_radius(I.y, I.h); /* the hoop rate v_r/r (rz.h) */
     update_stress(p, i, mi, s.L, dp->dt);
   } else {
     p->de[i] = 0.0;

@@ -12,7 +12,11 @@
  *     tiny dt_max are warned of;
  *   - a misspelt required key, duplicate body names and a body at the speed of light are
  *     refused (exit 2) with file, line and key, an earlier run's files untouched;
- *   - the progress line gives a long remaining time as h:mm:ss.
+ *   - the progress line gives a long remaining time as h:mm:ss;
+ *   - an axisymmetric set-up (a constructed struct sim of rings, p->axisym): a rod of 5
+ *     rows has radius 5Δ (5 particles per radius, not the 2.5 of half its extent in y),
+ *     a plate of 4 ring layers, 30 rows, is a plate along x, 4 layers at the impact
+ *     point (read as 3D its z extent of one spacing would make it a plate along z).
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,8 +24,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "run/plausible.h"
 #include "run/run.h"
+#include "sim/sim.h"
 #include "testlib.h"
+#include "testparticles.h"
 
 /* A 1 mm aluminium sphere at 5 km/s on a 2.52 mm backwall of two 1.26 mm layers, whose
  * perforation is measured: about 400 particles. */
@@ -299,6 +306,36 @@ static void test_progress(void)
         "the progress line gives the remaining time as h:mm:ss (exit %d): %s", rc, out);
 }
 
+static void test_axisym(void)
+{
+  static struct sim s; /* zero: 3D defaults, no half model */
+  const double D = 1e-3;
+  particles_init(&s.p);
+  s.nbody = 2;
+  s.body[0] = (struct body_info){
+      .name = "rod", .spacing = D, .lo = {-10 * D, 0, -0.5 * D}, .hi = {0, 5 * D, 0.5 * D}};
+  s.body[1] = (struct body_info){
+      .name = "plate", .spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
+  for (int i = 0; i < 10; i++)
+    for (int j = 0; j < 5; j++) tp_add(&s.p, (i - 9.5) * D, (j + 0.5) * D, 0, 1e-6, D, 7850, 0);
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 30; j++) tp_add(&s.p, (i + 0.5) * D, (j + 0.5) * D, 0, 1e-6, D, 7850, 1);
+  double ext[3], t = 0.0;
+  s.p.axisym = 0;
+  CHECK(check_plate_axis(&s, 1, &t) == 2, "read as 3D, the plate of rings looks thin along z");
+  s.p.axisym = 1;
+  check_body_extent(&s, 0, ext);
+  CHECK(ext[0] == 10 * D && ext[1] == 10 * D && ext[2] == 10 * D,
+        "RZ: the rod's extent is its diameter across x (%g, %g, %g mm)", ext[0] * 1e3, ext[1] * 1e3,
+        ext[2] * 1e3);
+  CHECK(check_plate_axis(&s, 1, &t) == 0 && fabs(t - 4 * D) < 1e-15 &&
+            check_plate_axis(&s, 0, &t) == -1,
+        "RZ: the plate is thin along x (%g mm), the rod is no plate", t * 1e3);
+  const int one = 1;
+  CHECK(check_plate_layers(&s, &one, 1, 5 * D, 0.0) == 4, "RZ: 4 ring layers at the impact point");
+  particles_free(&s.p);
+}
+
 int main(void)
 {
   char data[4200];
@@ -308,5 +345,6 @@ int main(void)
   test_wrong_units();
   test_refused();
   test_progress();
+  test_axisym();
   return test_finish();
 }

@@ -22,7 +22,8 @@
 #include "particles/particles.h"
 #include "testlib.h"
 
-#define NP 100
+#define NP         100
+#define HV_PI_TEST 3.14159265358979323846
 
 static char dir[4096];
 
@@ -806,6 +807,117 @@ static void test_status_line(void)
         "a warning after the status line starts a line of its own: %zu bytes '%s'", n, got);
 }
 
+/* An axisymmetric run's rings: FieldData GEOMETRY and "# geometry: axisymmetric" written
+ * only for them, read back into p->axisym with every value bit for bit (m the ring mass);
+ * 3D files read as 3D; mixing the two in one store, an unknown geometry, and a ring off
+ * the half-plane (r < 0, z != 0) refused with the file named, the store left as it was. */
+static void test_axisym(void)
+{
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct particles r, q;
+  particles_init(&r);
+  size_t first = particles_add(&r, 40);
+  for (size_t k = 0; k < 40; k++) {
+    const size_t i = first + k;
+    const double rad = (k % 8 + 0.5) * 1e-3; /* rows at r = (j + 1/2) Δ, never on the axis */
+    r.id[i] = (int64_t)k + 1;
+    r.x[0][i] = (double)(k / 8) * 1e-3;
+    r.x[1][i] = rad;
+    r.m[i] = 2.0 * HV_PI_TEST * rad * 7800.0 * 1e-6; /* 2π r ρ A */
+    r.rho[i] = 7800.0;
+    r.h[i] = 1.3e-3;
+    r.v[0][i] = 2370.0;
+  }
+  r.axisym = 1;
+  struct snapshot_meta m = meta();
+  const char *csv = path_in("rz.csv"), *vtu = path_in("rz.vtu"), *vtz = path_in("rz_z.vtu");
+  CHECK(io_write_particles_csv(csv, &r, &m, &err) == 0 && io_write_vtu(vtu, &r, &m, &err) == 0,
+        "RZ snapshots written: %s", err.msg);
+  m.vtu_zlib = 1;
+  CHECK(io_write_vtu(vtz, &r, &m, &err) == 0, "RZ compressed VTU written: %s", err.msg);
+  char *text = test_slurp(csv, NULL);
+  CHECK(text && strstr(text, "\n# geometry: axisymmetric\nid,x,y,z,"),
+        "the CSV's geometry line before its header");
+  free(text);
+  text = test_slurp(vtu, NULL);
+  CHECK(text && strstr(text, "\n      <DataArray type=\"Int32\" Name=\"GEOMETRY\" "
+                             "NumberOfTuples=\"1\" format=\"ascii\">1</DataArray>\n"),
+        "the VTU's FieldData GEOMETRY");
+  free(text);
+  const char *paths[3] = {csv, vtu, vtz};
+  for (int k = 0; k < 3; k++) {
+    particles_init(&q);
+    const char *bad = "";
+    CHECK(io_read_particles(paths[k], &q, NULL, &err) == 0 && q.axisym == 1 && q.n == 40 &&
+              same_out_fields(&r, &q, &bad),
+          "%s read back axisymmetric, bit for bit (%s): %s", paths[k], bad, err.msg);
+    CHECK(io_read_particles(paths[k], &q, NULL, &err) == 0 && q.n == 80 && q.axisym == 1,
+          "a second RZ snapshot appends to an RZ store: %s", err.msg);
+    particles_free(&q);
+  }
+  /* a 3D store: no geometry written, read as 3D; mixing refused */
+  struct particles d;
+  particles_init(&d);
+  fill(&d);
+  const char *csv3 = path_in("d3.csv"), *vtu3 = path_in("d3.vtu");
+  CHECK(io_write_particles_csv(csv3, &d, &m, &err) == 0 && io_write_vtu(vtu3, &d, &m, &err) == 0,
+        "3D snapshots written: %s", err.msg);
+  text = test_slurp(csv3, NULL);
+  CHECK(text && !strstr(text, "geometry"), "a 3D CSV names no geometry");
+  free(text);
+  text = test_slurp(vtu3, NULL);
+  CHECK(text && !strstr(text, "GEOMETRY"), "a 3D VTU has no GEOMETRY");
+  free(text);
+  particles_init(&q);
+  q.axisym = 1; /* an empty store takes the file's geometry */
+  CHECK(io_read_particles(vtu3, &q, NULL, &err) == 0 && q.axisym == 0 && q.n == NP,
+        "a 3D VTU read as 3D: %s", err.msg);
+  CHECK(io_read_particles(csv, &q, NULL, &err) != 0 && err.code == HV_EXIT_INPUT &&
+            strstr(err.msg, "rz.csv") && strstr(err.msg, "cannot mix") && q.n == NP &&
+            q.axisym == 0,
+        "an RZ CSV after a 3D one refused, the store as it was: %s", err.msg);
+  CHECK(io_read_particles(vtu, &q, NULL, &err) != 0 && strstr(err.msg, "cannot mix") && q.n == NP,
+        "an RZ VTU after a 3D one refused: %s", err.msg);
+  particles_free(&q);
+  particles_init(&q);
+  CHECK(io_read_particles(csv3, &q, NULL, &err) == 0 && q.axisym == 0, "a 3D CSV read as 3D");
+  particles_free(&q);
+  /* bad geometry lines and rings off the half-plane */
+  const char *unk = test_write_file("io_geo.csv", "# geometry: cylindrical\nid,x,y,z\n1,0,1,0\n");
+  particles_init(&q);
+  CHECK(io_read_particles_csv(unk, &q, NULL, &err) != 0 && strstr(err.msg, "line 1") &&
+            strstr(err.msg, "cylindrical") && q.n == 0,
+        "unknown geometry: %s", err.msg);
+  const char *neg = test_write_file("io_neg.csv", "# geometry: axisymmetric\nid,x,y,z\n"
+                                                  "1,0,1e-3,0\n7,0,-1e-3,0\n");
+  CHECK(io_read_particles_csv(neg, &q, NULL, &err) != 0 && strstr(err.msg, "io_neg.csv") &&
+            strstr(err.msg, "id 7") && strstr(err.msg, "r = y >= 0") && q.n == 0,
+        "a ring at r < 0 refused: %s", err.msg);
+  const char *offz = test_write_file("io_offz.csv", "# geometry: axisymmetric\nid,x,y,z\n"
+                                                    "3,0,1e-3,1e-3\n");
+  CHECK(io_read_particles_csv(offz, &q, NULL, &err) != 0 && strstr(err.msg, "id 3") && q.n == 0,
+        "a ring off z = 0 refused: %s", err.msg);
+  /* a VTU whose GEOMETRY is neither 0 nor 1 */
+  size_t len = 0;
+  text = test_slurp(vtu, &len);
+  char *g = text ? strstr(text, "Name=\"GEOMETRY\"") : NULL;
+  char *one = g ? strstr(g, ">1<") : NULL;
+  CHECK(one != NULL, "GEOMETRY's value found in the VTU");
+  if (one) {
+    one[1] = '7';
+    FILE *f = fopen(path_in("rz_bad.vtu"), "wb");
+    CHECK(f && fwrite(text, 1, len, f) == len && fclose(f) == 0, "altered VTU written");
+    CHECK(io_read_particles(path_in("rz_bad.vtu"), &q, NULL, &err) != 0 &&
+              strstr(err.msg, "GEOMETRY") && strstr(err.msg, "rz_bad.vtu") && q.n == 0,
+          "GEOMETRY 7 refused: %s", err.msg);
+  }
+  free(text);
+  particles_free(&q);
+  particles_free(&d);
+  particles_free(&r);
+}
+
 int main(void)
 {
   snprintf(dir, sizeof dir, "%s/io.%ld", test_tmpdir(), (long)getpid());
@@ -832,6 +944,7 @@ int main(void)
   test_mkdir();
   test_empty_and_ghosts(&p);
   test_status_line();
+  test_axisym();
   particles_free(&p);
   char cmd[4200];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);

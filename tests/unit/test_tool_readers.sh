@@ -14,6 +14,11 @@
 #     same picture, byte for byte, as of the plain one;
 #  3. docs/output-files.md's mirroring of a half model: vtkReflectionFilter, plane Z,
 #     centre 0, FlipAllInputArrays, doubles the points and negates z, v_z, S_yz, S_xz;
+#  5. an axisymmetric snapshot's FieldData GEOMETRY, in the very line vtu.c writes
+#     (test_io checks the writer's bytes): meshio and vtk read a snapshot holding it, with
+#     GEOMETRY = 1 among the field data and the points and arrays as before; and
+#     docs/output-files.md's Reflect (plane Y, centre 0, flip all arrays) gives both halves
+#     of the meridional plane, negating y, v_y, S_xy, S_yz;
 #  4. docs/output-files.md's numpy recipe for summary.csv (the ```python block of the
 #     page that reads "summary.csv"), run as written in a run's folder, gives the
 #     file's columns by name and its rows.
@@ -270,6 +275,57 @@ sys.exit(0 if "time" not in (s.dtype.names or ()) else 1)
 PY
 )
 check $? "numpy's genfromtxt(names=True) alone takes the comment line for the names (as the page says)"
+
+# 5. GEOMETRY: the line inserted after STEP (before the names, as vtu.c writes it); the
+#    appended data's offsets count from its '_', so the header may grow
+cat > "$T/rz.py" <<'PY'
+import sys
+import numpy as np
+src, dst, reader = sys.argv[1], sys.argv[2], sys.argv[3]
+b = open(src, "rb").read()
+step = b.index(b'Name="STEP"')
+eol = b.index(b"\n", step) + 1
+line = b'      <DataArray type="Int32" Name="GEOMETRY" NumberOfTuples="1" format="ascii">1</DataArray>\n'
+open(dst, "wb").write(b[:eol] + line + b[eol:])
+if reader == "meshio":
+    import meshio
+    m, m0 = meshio.read(dst), meshio.read(src)
+    g = np.asarray(m.field_data["GEOMETRY"]).ravel()[0]
+    ok = g == 1 and np.array_equal(m.points, m0.points) and all(
+        np.array_equal(m.point_data[k], m0.point_data[k]) for k in m0.point_data)
+    print(f"  meshio: GEOMETRY {g}, {len(m.points)} points")
+    sys.exit(0 if ok else 1)
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+r = vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(dst)
+f = vtk.vtkReflectionFilter()
+f.SetInputConnection(r.GetOutputPort())
+f.SetPlaneToY()
+f.SetCenter(0.0)
+f.CopyInputOn()
+f.FlipAllInputArraysOn()
+f.Update()
+g, o = r.GetOutput(), f.GetOutput()
+n = g.GetNumberOfPoints()
+geo = g.GetFieldData().GetArray("GEOMETRY").GetTuple1(0)
+x0, x1 = vtk_to_numpy(g.GetPoints().GetData()), vtk_to_numpy(o.GetPoints().GetData())
+get = lambda ds, a: vtk_to_numpy(ds.GetPointData().GetArray(a))
+flip3, flip6 = np.array([1, -1, 1]), np.array([1, 1, 1, -1, -1, 1])
+ok = (geo == 1 and o.GetNumberOfPoints() == 2 * n
+      and np.allclose(x1[n:], x0 * flip3, rtol=1e-6, atol=0)
+      and np.array_equal(get(o, "v")[n:], get(g, "v") * flip3)
+      and np.array_equal(get(o, "S")[n:], get(g, "S") * flip6))
+print(f"  vtk: GEOMETRY {geo}; Reflect Y at 0: {n} -> {o.GetNumberOfPoints()} points")
+sys.exit(0 if ok else 1)
+PY
+for r in meshio vtk; do
+  py=$MESHIO_PY
+  [ "$r" = vtk ] && py=$VTK_PY
+  [ -n "$py" ] || continue
+  "$py" "$T/rz.py" "$T/bump/particles_00002.vtu" "$T/rz_$r.vtu" "$r"
+  check $? "$r reads a snapshot with FieldData GEOMETRY (an axisymmetric run's)"
+done
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ] || exit 1
