@@ -190,7 +190,9 @@ static int render_picture(const char *path, const struct particles *p,
              "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
              "SI), %zu discs",
              axis,
-             rings      ? ", axisymmetric rings at (x, r) and mirrored at (x, -r)"
+             rings && p->n == 2 * rings->n
+                 ? ", axisymmetric rings at (x, r) and mirrored at (x, -r)"
+             : rings    ? ", axisymmetric rings at (x, r)"
              : v.mirror ? ", mirrored at z = 0"
                         : "",
              color_name(o->color), lo, hi, nd);

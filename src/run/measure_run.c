@@ -124,6 +124,13 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) || plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
+  if (s->p.axisym && mr->axis_y != 0.0) { /* the rings' axis is r = 0 (measure_rz.h) */
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: measure.axis_y: %g m, but an axisymmetric case's impact axis is "
+                        "its axis of symmetry, r = 0: leave it out",
+                        cfg_where(c, "measure.axis_y", where, sizeof where), mr->axis_y);
+  }
   if (body_or_list(s, c, "measure.thick_target", "the target's", mr->target, &mr->ntarget, err) ||
       body_or_list(s, c, "measure.backwall", "the backwall's", mr->backwall, &mr->nbackwall, err))
     return -1;
@@ -366,6 +373,18 @@ static int measure_clouds(struct measure_run *mr, const struct sim *s, double t,
   return 0;
 }
 
+double measure_run_shadow(const struct sim *s, const int *bodies, int nb, double axis_y,
+                          double spacing)
+{
+  double rw = HUGE_VAL;
+  for (int j = 0; j < nb; j++) {
+    const struct body_info *bi = &s->body[bodies[j]];
+    /* rings fill r <= hi[1] about the axis r = 0; 3D: the nearer edge across y */
+    rw = fmin(rw, s->p.axisym ? bi->hi[1] : fmin(axis_y - bi->lo[1], bi->hi[1] - axis_y));
+  }
+  return fmax(rw - 2.0 * spacing, spacing);
+}
+
 /* What went through the backwall (diag/through.h): solid material behind its far face,
  * moving away, not the attached wall, within the wall's shadow (its extent across, less
  * two spacings). */
@@ -384,12 +403,7 @@ static int measure_wall_through(struct measure_run *mr, const struct sim *s,
   tp.solid = solid;
   tp.wall = mask;
   tp.scale = bscale;
-  double rw = HUGE_VAL;
-  for (int j = 0; j < mr->nbackwall; j++) {
-    const struct body_info *bi = &s->body[mr->backwall[j]];
-    rw = fmin(rw, fmin(mr->axis_y - bi->lo[1], bi->hi[1] - mr->axis_y));
-  }
-  tp.r_max = fmax(rw - 2.0 * g->spacing, g->spacing);
+  tp.r_max = measure_run_shadow(s, mr->backwall, mr->nbackwall, mr->axis_y, g->spacing);
   const int rc = measure_through(&s->p, g, &tp, thr, err);
   free(solid);
   return rc;

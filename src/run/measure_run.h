@@ -56,6 +56,13 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
 void measure_run_free(struct measure_run *mr);
 /* Every step: cheap running quantities (the backwall's peak centre pressure). */
 void measure_run_step(struct measure_run *mr, const struct sim *s);
+
+/* The radius about the impact axis within which material behind the wall of bodies[0..nb)
+ * went through it (meas_through_params.r_max): the wall's extent across the axis less two
+ * spacings, at least one spacing. 3D: the nearer of its edges across y from axis_y; in
+ * an axisymmetric run (s->p.axisym), whose rings fill r <= hi[1], that outer radius. */
+double measure_run_shadow(const struct sim *s, const int *bodies, int nb, double axis_y,
+                          double spacing);
 /* At output k: every measurement, appended to the table and written; k < 0: a
  * measurement time between outputs (measure.every): the same rows, no fragments file.
  * Returns 0, MEASURE_FAILED_DATA when a measurement cannot be taken of these particles

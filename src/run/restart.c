@@ -60,8 +60,10 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
   _Static_assert(HV_MAX_MATERIALS <= 64, "name lists hold 64 bodies or materials");
   const char *names[64];
   size_t len;
+  const int64_t geometry = p->axisym; /* 1: axisymmetric; a checkpoint without it is 3D */
   int rc = ckpt_put(&w, "version", CKPT_BYTES, strlen(HVSPH_VERSION), HVSPH_VERSION, err) ||
-           ckpt_put(&w, "case", CKPT_BYTES, strlen(s->case_name), s->case_name, err);
+           ckpt_put(&w, "case", CKPT_BYTES, strlen(s->case_name), s->case_name, err) ||
+           ckpt_put(&w, "geometry", CKPT_I64, 1, &geometry, err);
   if (!rc) {
     for (int b = 0; b < s->nbody; b++) names[b] = s->body[b].name;
     char *j = join(names, (size_t)s->nbody, &len);
@@ -89,6 +91,9 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
          ckpt_put(&w, "step.n.solid", CKPT_I64, 3, ints, err) ||
          ckpt_put(&w, "absorbed", CKPT_F64, 6, ab, err) ||
          ckpt_put(&w, "absorbed.n", CKPT_I64, 1, &abn, err);
+    /* the geometry (domain.geometry): a restart of an axisymmetric run is one */
+    const int64_t geom = p->axisym ? 1 : 0;
+    if (!rc) rc = ckpt_put(&w, "geometry", CKPT_I64, 1, &geom, err);
   }
 
   /* the particles' state */
@@ -407,6 +412,17 @@ static int restart_same_case(struct ckpt_file *c, const struct sim *s, const cha
   if (other) mismatch(c, err, "case name", cname, s->case_name);
   free(cname);
   if (other) return -1;
+  /* the same geometry: an axisymmetric run's rings are no 3D particles (record absent:
+     written before the record existed, 3D) */
+  int64_t geometry = 0;
+  if (ckpt_find(c, "geometry") && ckpt_get(c, "geometry", CKPT_I64, 1, &geometry, err)) return -1;
+  if (geometry != s->p.axisym) {
+    const char *g[2] = {"3d", "axisymmetric"};
+    char what[64] = "geometry (record 'geometry'):";
+    if (geometry == 0 || geometry == 1) return mismatch(c, err, what, g[geometry], g[s->p.axisym]);
+    return hv_error_set(err, HV_EXIT_INPUT, "%s: record 'geometry' holds %lld, not 0 or 1", c->path,
+                        (long long)geometry);
+  }
   for (int b = 0; b < s->nbody; b++) names[b] = s->body[b].name;
   if (check_names(c, "bodies", "bodies", names, s->nbody, err)) return -1;
   int64_t counts[64];
@@ -441,6 +457,14 @@ static int restart_clock(struct ckpt_file *c, struct sim *s, size_t *n, struct h
   if (ints[2] != s->p.solid) {
     mismatch(c, err, "solid fields", ints[2] ? "present" : "absent",
              s->p.solid ? "present" : "absent");
+    return -1;
+  }
+  /* the geometry (absent from checkpoints written before it was recorded: 3D) */
+  int64_t geom = 0;
+  if (ckpt_find(c, "geometry") && ckpt_get(c, "geometry", CKPT_I64, 1, &geom, err)) return -1;
+  if ((geom != 0) != (s->p.axisym != 0)) {
+    mismatch(c, err, "domain.geometry", geom ? "axisymmetric" : "3d",
+             s->p.axisym ? "axisymmetric" : "3d");
     return -1;
   }
   /* the clock: a time, a next step and a proposed one that a run reaches */

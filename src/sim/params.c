@@ -15,7 +15,12 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   static const char *const switches[] = {"none", "cullen-dehnen", NULL};
   int k, dens, form, sw, no = 0, yes = 1;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, decay = 0.05;
+  static const char *const geometries[] = {"3d", "axisymmetric", NULL};
   double as_eps = 0.3, as_n = 4.0, rest_tol = 1e-14;
+  int geometry = 0;
+  /* an axisymmetric case runs without the artificial stress (setup/rz.c) */
+  if (cfg_get_choice(c, "domain.geometry", geometries[0], geometries, &geometry, err)) return -1;
+  if (geometry == 1) as_eps = 0.0;
   if (cfg_get_choice(c, "sph.kernel", "cubic-spline", kernels, &k, err) ||
       cfg_get_choice(c, "sph.density", "continuity", densities, &dens, err) ||
       cfg_get_choice(c, "sph.continuity", "volume", forms, &form, err) ||

@@ -165,6 +165,8 @@ static void test_run_records(void)
       {"p.h", 3, 1, 0, 0.0, "a smoothing length of 0"},
       {"p.m", 7, 1, 0, -1.0, "a negative mass"},
       {"p.e", 2, 1, 0, HUGE_VAL, "an infinite energy"},
+      {"geometry", 0, 0, 1, 0, "an axisymmetric checkpoint for a 3D case"},
+      {"geometry", 0, 0, 7, 0, "geometry 7"},
   };
   snprintf(dir, sizeof dir, "%s/altered", test_tmpdir());
   for (size_t k = 0; k < sizeof alt / sizeof alt[0]; k++) {

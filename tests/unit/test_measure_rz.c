@@ -19,17 +19,26 @@
  *  - through-wall: detached spall rings behind a wall, with the mass and velocity of
  *    the rings; the wall's own rings not;
  *  - a backwall with a crater 2Δ deep within 3Δ of the axis: the crater depth 2Δ
- *    (revolved rings), n_wall counting rings.
+ *    (revolved rings), n_wall counting rings;
+ *  - the run's shadow of a wall of rings 30Δ in radius (what went through is counted
+ *    within it): 28Δ, not the one spacing that the 3D rule (the nearer edge across y,
+ *    here the axis itself) would leave; and measure.axis_y off the axis refused in an RZ
+ *    case (its file, line and key named), accepted in 3D;
+ *  - `hvsph measure` of a 3D run one of whose snapshots says it is axisymmetric: refused
+ *    (exit 2) naming the snapshot and the case's geometry, measurements.csv untouched.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "config/config.h"
 #include "diag/fof.h"
 #include "diag/measure.h"
 #include "diag/through.h"
 #include "particles/particles.h"
+#include "run/measure_run.h"
+#include "sim/sim.h"
 #include "testlib.h"
 #include "testparticles.h"
 
@@ -205,11 +214,91 @@ static void test_backwall(void)
   particles_free(&p);
 }
 
+static void test_shadow(void)
+{
+  static struct sim s;
+  particles_init(&s.p);
+  s.nbody = 1;
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
+  const int b = 0;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - D) < 1e-15, "3D reading: one spacing");
+  s.p.axisym = 1;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 28 * D) < 1e-15,
+        "RZ: the wall's shadow is its radius less two spacings (%g mm)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) * 1e3);
+  struct hv_error err;
+  hv_error_clear(&err);
+  struct cfg *c = cfg_load_string("measure:\n  axis_y: 2 mm\n", "rz.yaml", &err);
+  struct measure_run mr;
+  CHECK(c && measure_run_read(&mr, &s, c, &err) != 0 && err.code == HV_EXIT_INPUT &&
+            strstr(err.msg, "rz.yaml:2") && strstr(err.msg, "measure.axis_y"),
+        "RZ: measure.axis_y off the axis refused: %s", err.msg);
+  measure_run_free(&mr);
+  s.p.axisym = 0;
+  CHECK(measure_run_read(&mr, &s, c, &err) == 0 && mr.axis_y == 2e-3, "3D: measure.axis_y taken");
+  measure_run_free(&mr);
+  cfg_free(c);
+}
+
+static void test_measure_command(void)
+{
+  char dir[4200], casefile[4200], cmd[20000], out[8192], snap[4400], mcsv[4400];
+  snprintf(dir, sizeof dir, "%s/run3d", test_tmpdir());
+  snprintf(casefile, sizeof casefile, "%s/impact.yaml", test_tmpdir());
+  const char *yaml = "name: impact\n"
+                     "domain: {min: [-3 mm, -6 mm, -6 mm], max: [4 mm, 6 mm, 6 mm]}\n"
+                     "bodies:\n"
+                     "  - name: projectile\n"
+                     "    material: al-alloy\n"
+                     "    shape: {type: sphere, center: [-1.5 mm, 0, 0], radius: 1 mm}\n"
+                     "    spacing: 0.25 mm\n"
+                     "    velocity: [5 km/s, 0, 0]\n"
+                     "  - name: backwall\n"
+                     "    material: al-alloy\n"
+                     "    shape: {type: box, min: [0, -5 mm, -5 mm], max: [2.52 mm, 5 mm, 5 mm]}\n"
+                     "    spacing: 0.63 mm\n"
+                     "time: {end: 0.2 us}\n"
+                     "output: {every: 0.1 us, csv: true}\n"
+                     "measure: {backwall: backwall}\n";
+  FILE *f = fopen(casefile, "w");
+  CHECK(f && fputs(yaml, f) >= 0 && fclose(f) == 0, "case written");
+  snprintf(cmd, sizeof cmd, "rm -rf '%s' && '%s' run '%s' -o '%s' --quiet 2>&1", dir, test_bin(),
+           casefile, dir);
+  int rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 0, "a small 3D run (exit %d): %s", rc, out);
+  snprintf(snap, sizeof snap, "%s/particles_00001.csv", dir);
+  snprintf(mcsv, sizeof mcsv, "%s/measurements.csv", dir);
+  char *before = test_slurp(mcsv, NULL);
+  /* marked axisymmetric, its points moved into the half-plane (|y|, z = 0), which the
+     reader asks of rings: the case's geometry is then what refuses it */
+  snprintf(cmd, sizeof cmd,
+           "awk -F, -v OFS=, 'NR == 1 {print; print \"# geometry: axisymmetric\"; next} "
+           "/^#/ || /^id/ {print; next} {if ($3 < 0) $3 = -$3; $4 = 0; print}' '%s' > '%s.tmp' "
+           "&& mv '%s.tmp' '%s'",
+           snap, snap, snap, snap);
+  CHECK(test_run(cmd, NULL, 0) == 0, "snapshot 1 marked axisymmetric");
+  snprintf(cmd, sizeof cmd, "'%s' measure '%s' 2>&1", test_bin(), dir);
+  rc = test_run(cmd, out, sizeof out);
+  CHECK(rc == 2 && strstr(out, "particles_00001.csv is axisymmetric") &&
+            strstr(out, "domain.geometry"),
+        "hvsph measure refuses an axisymmetric snapshot of a 3D case (exit %d): %s", rc, out);
+  char *after = test_slurp(mcsv, NULL);
+  CHECK(before && after && !strcmp(before, after), "measurements.csv left as it was");
+  free(before);
+  free(after);
+}
+
 int main(void)
 {
   test_cavity();
   test_plate();
   test_cloud_fragments();
   test_backwall();
+  test_shadow();
+  char data[4200];
+  snprintf(data, sizeof data, "%s/data", test_source_dir());
+  setenv("HVSPH_DATA", data, 0);
+  test_measure_command();
   return test_finish();
 }
