@@ -136,17 +136,22 @@ def main():
             ax.axhline(exp * 100, color="k", lw=1.2, label="experiment (±%d %%)" % (AIM[col] * 100))
         if not math.isnan(paper):
             ax.axhline(paper * 100, color="0.4", lw=1, ls="--", label="KERNEL (paper)")
+        here = 0
         for kind, (color, marker, label) in STYLE.items():
             ns, fs = series(rows, case, col, kind)
             if not ns:
                 continue
             drawn += 1
+            here += 1
             ax.plot(ns, [f * 100 for f in fs], color=color, marker=marker, label=label)
             r = richardson(ns, fs)
             if r is not None:
                 ax.axhline(r[0] * 100, color=color, lw=1, ls=":",
                            label="extrapolated, p = %s" % (
                                "%.2g observed" % r[1] if r[2] else "1 assumed"))
+        if not here:
+            ax.text(0.5, 0.5, "no run finished", transform=ax.transAxes, ha="center",
+                    va="center", color="0.4")
         ax.set_xscale("log", base=2)
         ax.set_xticks([4, 8, 16, 32])
         ax.set_xticklabels(["4", "8", "16", "32"])
@@ -169,7 +174,7 @@ def main():
     ax.set_xticks([4, 8, 16, 32])
     ax.set_xticklabels(["4", "8", "16", "32"])
     ax.set_xlim(3.4, 38)
-    ax.set_title("wall time [h] (2 cores, shared)", fontsize=10)
+    ax.set_title("wall time [h], as run (shared machine)", fontsize=10)
     ax.set_xlabel("particles per projectile radius", fontsize=9)
     ax.legend(fontsize=6.5, loc="best")
     ax.grid(alpha=0.3, which="both")
