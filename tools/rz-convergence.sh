@@ -26,11 +26,12 @@
 # --collect runs nothing: it writes WORK/convergence.csv from the finished points.
 # convergence.csv, one row per point: case, set, resolution, per_radius (10 sqrt(res)),
 # particles (rings), steps, wall_s (over all its run segments), status (ok, failed, or
-# running for a point without .done: its values are those of its last output),
+# running for a point without .done: its values are those of its last measurement, its
+# steps and wall_s those of its last checkpoint),
 # time (the last measured time [s]), depth and diameter (the thick target's
 # penetration_depth and cavity_diameter [m], at the last time), hole (the bumper's
 # hole_diameter [m], at the last time); nan where the case has no such measurement.
-# tools/figures/rz-convergence.sh draws it.
+# tools/figures/val-rz-convergence.sh draws it.
 set -euo pipefail
 abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -49,7 +50,7 @@ while [ $# -gt 0 ]; do
   --cases) cases=$2; shift ;;
   --resolutions) resolutions=$2; shift ;;
   --sets) sets=$2; shift ;;
-  -h | --help) sed -n '2,33p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h | --help) sed -n '2,34p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) echo "rz-convergence: unknown argument '$1' (--help)" >&2; exit 1 ;;
   esac
   shift

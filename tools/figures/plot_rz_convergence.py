@@ -150,7 +150,7 @@ def main():
                            label="extrapolated, p = %s" % (
                                "%.2g observed" % r[1] if r[2] else "1 assumed"))
         if not here:
-            ax.text(0.5, 0.5, "no run finished", transform=ax.transAxes, ha="center",
+            ax.text(0.5, 0.3, "no run finished", transform=ax.transAxes, ha="center",
                     va="center", color="0.4")
         ax.set_xscale("log", base=2)
         ax.set_xticks([4, 8, 16, 32])
