@@ -38,6 +38,44 @@ int boundary_any(const struct boundary *b)
   return 0;
 }
 
+/* domain.symmetry (none, half, quarter), or its older form domain.half_model: true
+ * (symmetry: half), not both. A half model's z_min face, and a quarter model's z_min and
+ * y_min faces, are symmetry planes through the impact axis y = 0, z = 0: given open (the
+ * default) or symmetry, taken as symmetry; any other kind refused. */
+static int read_symmetry(struct boundary *b, struct cfg *c, struct hv_error *err)
+{
+  static const char *const sym_names[] = {"none", "half", "quarter", NULL};
+  char where[256];
+  int no = 0, sym = 0;
+  const int has_sym = cfg_has(c, "domain.symmetry"), has_half = cfg_has(c, "domain.half_model");
+  if (has_sym && has_half)
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: domain.half_model: give either 'symmetry' or "
+                        "'half_model' (half_model: true is symmetry: half), not both",
+                        cfg_where(c, "domain.half_model", where, sizeof where));
+  if (has_half) {
+    if (cfg_get_bool(c, "domain.half_model", &no, &b->half_model, err)) return -1;
+    sym = b->half_model;
+  } else if (cfg_get_choice(c, "domain.symmetry", "none", sym_names, &sym, err)) {
+    return -1;
+  }
+  const char *key = has_half ? "domain.half_model" : "domain.symmetry";
+  b->half_model = sym >= 1;
+  b->quarter_model = sym == 2;
+  for (int d = 2; d >= 1; d--) {
+    if (d == 1 && !b->quarter_model) break;
+    if (d == 2 && !b->half_model) continue;
+    if (b->kind[d][0] != BND_OPEN && b->kind[d][0] != BND_SYMMETRY)
+      return hv_error_set(err, HV_EXIT_INPUT,
+                          "%s: %s: the %c_min face of a %s model is the symmetry "
+                          "plane %c = 0; it cannot be '%s'",
+                          cfg_where(c, key, where, sizeof where), key, "xyz"[d], sym_names[sym],
+                          "xyz"[d], bnd_kind_names[b->kind[d][0]]);
+    b->kind[d][0] = BND_SYMMETRY;
+  }
+  return 0;
+}
+
 int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
 {
   static const char *face[3][2] = {{"x_min", "x_max"}, {"y_min", "y_max"}, {"z_min", "z_max"}};
@@ -74,17 +112,7 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
                           cfg_where(c, "domain.boundary", where, sizeof where), "xyz"[d],
                           face[d][0], face[d][1]);
   }
-  int no = 0;
-  if (cfg_get_bool(c, "domain.half_model", &no, &b->half_model, err)) return -1;
-  if (b->half_model) {
-    if (b->kind[2][0] != BND_OPEN && b->kind[2][0] != BND_SYMMETRY)
-      return hv_error_set(err, HV_EXIT_INPUT,
-                          "%s: domain.half_model: the z_min face of a half "
-                          "model is the symmetry plane z = 0; it cannot be '%s'",
-                          cfg_where(c, "domain.half_model", where, sizeof where),
-                          bnd_kind_names[b->kind[2][0]]);
-    b->kind[2][0] = BND_SYMMETRY;
-  }
+  if (read_symmetry(b, c, err)) return -1;
   b->has_box = cfg_has(c, "domain.min") || cfg_has(c, "domain.max") || boundary_any(b);
   if (!b->has_box) return 0;
   double lo[3], hi[3];
@@ -93,9 +121,15 @@ int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err)
     return -1;
   if (b->half_model && lo[2] != 0.0)
     return hv_error_set(err, HV_EXIT_INPUT,
-                        "%s: domain.min: a half model starts at z = 0 "
+                        "%s: domain.min: a %s model starts at z = 0 "
                         "(the symmetry plane), not z = %g m",
-                        cfg_where(c, "domain.min", where, sizeof where), lo[2]);
+                        cfg_where(c, "domain.min", where, sizeof where),
+                        b->quarter_model ? "quarter" : "half", lo[2]);
+  if (b->quarter_model && lo[1] != 0.0)
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: domain.min: a quarter model starts at y = 0 "
+                        "(its second symmetry plane), not y = %g m",
+                        cfg_where(c, "domain.min", where, sizeof where), lo[1]);
   for (int d = 0; d < 3; d++) {
     if (!(hi[d] > lo[d]))
       return hv_error_set(err, HV_EXIT_INPUT, "%s: domain.max must exceed domain.min in %c",
@@ -223,7 +257,6 @@ int boundary_make_ghosts(struct boundary *b, struct particles *p, double width, 
         apply_flip(p, g, mflip);
         xd[g] = 2.0 * (s ? hi : lo) - xd[src];
         vd[g] = -vd[src];
-        boundary_axis_ghost_mass(b, p, d, s, g, src);
       }
     }
     p->n_ghost += count;

@@ -9,7 +9,9 @@
  * need no knowledge of boundaries. Dimensions are processed x, y, z in turn and a
  * later dimension also copies earlier ghosts, which fills edges and corners.
  * A symmetry plane is a wall (the mirror is exact for a symmetric flow); it is named
- * separately for clarity, e.g. the z = 0 plane of a half model.
+ * separately for clarity, e.g. the z = 0 plane of a half model, or the y = 0 and
+ * z = 0 planes of a quarter model (whose corner ghosts, a y ghost mirrored again in z,
+ * the order x, y, z makes).
  * Absorbing faces remove the particles that cross them and tally what they carried,
  * so the balances in summary.csv still close.
  */
@@ -37,11 +39,13 @@ struct absorbed {
 
 struct boundary {
   int kind[3][2]; /* [dim][0 = min face, 1 = max face] */
-  int half_model; /* bodies cut at z = 0, z_min a symmetry plane */
+  int half_model; /* bodies cut at z = 0, z_min a symmetry plane (a quarter model too) */
   int axisym;     /* domain.geometry: axisymmetric (particles.h): x the axis, y = r ≥ 0;
                      the axis is the mirror face y_min = 0 (a symmetry plane, made by
                      the code), y_max is the face r_max, z is open */
   int has_box;    /* domain.min/max given */
+  /* bodies cut at y = 0 as well, y_min a symmetry plane: domain.symmetry: quarter */
+  int quarter_model;
   struct absorbed absorbed;
   double lo[3], hi[3]; /* [m] domain box */
   size_t cap;
@@ -54,15 +58,13 @@ struct boundary {
 
 void boundary_init(struct boundary *b);
 void boundary_free(struct boundary *b);
-/* Reads domain.geometry, domain.min, domain.max and domain.boundary.{x,y,z,x_min,...}
- * (in an axisymmetric domain: min/max as (x, r), faces x, x_min, x_max, r, r_max). */
+/* Reads domain.geometry, domain.min, domain.max, domain.boundary.{x,y,z,x_min,...} (in
+ * an axisymmetric domain: min/max as (x, r), faces x, x_min, x_max, r, r_max) and the
+ * symmetry (domain.symmetry: none, half, quarter; domain.half_model: true is symmetry:
+ * half). */
 int boundary_read(struct boundary *b, struct cfg *c, struct hv_error *err);
 /* The axisymmetric domain (axis.c), after domain.geometry: axisymmetric. */
 int boundary_read_axisym(struct boundary *b, struct cfg *c, struct hv_error *err);
-/* An axisymmetric domain's mirror ghost g of src across face (d, side): at r_max its ring
- * mass is scaled to keep the source's area mass (axis.c); nothing elsewhere. */
-void boundary_axis_ghost_mass(const struct boundary *b, struct particles *p, int d, int side,
-                              size_t g, size_t src);
 /* 1 if any face is not open. */
 int boundary_any(const struct boundary *b);
 /* Wraps reals through periodic faces and reflects those that crossed a wall. */

@@ -284,8 +284,11 @@ int cli_check(int argc, char **argv)
   for (int b = 1; b < s.nbody; b++) first[b] = first[b - 1] + s.body[b - 1].count;
   const int threads = omp_get_max_threads();
   printf("case %s (%s): %d bod%s, %zu particles%s, %d thread%s\n", case_path, s.case_name, s.nbody,
-         s.nbody == 1 ? "y" : "ies", s.p.n, s.bnd.half_model ? ", half model" : "", threads,
-         threads == 1 ? "" : "s");
+         s.nbody == 1 ? "y" : "ies", s.p.n,
+         s.bnd.quarter_model ? ", quarter model"
+         : s.bnd.half_model  ? ", half model"
+                             : "",
+         threads, threads == 1 ? "" : "s");
   report_bodies(&s, first);
   if (mr.nplate > 0 || mr.nbackwall > 0) {
     printf("\n");

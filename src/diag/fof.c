@@ -193,7 +193,9 @@ static int fof_link(struct fof_work *w, double b, struct hv_error *err)
 
 /* 3. The fragments labelled in slot order and summed: mass, centre of mass, velocity,
  * mass per material; in a half model one that touches the plane is doubled with its
- * mirror image, the others count twice. */
+ * mirror image, the others count twice; in a quarter model each plane it touches doubles
+ * it (it is one piece with its image there) and each it does not touch doubles its
+ * count (1, 2 or 4 fragments of the full picture). */
 static void fof_sum(const struct particles *p, const struct fof_params *par, struct fof_work *w)
 {
   const size_t ns = w->ns;
@@ -207,7 +209,7 @@ static void fof_sum(const struct particles *p, const struct fof_params *par, str
   w->nf = nf;
   struct fof_fragment *fr = w->fr = hv_calloc(nf + 1, sizeof *fr, "fragments");
   double *mm = w->mm = hv_calloc(nf * (size_t)par->nmat + 1, sizeof *mm, "fragment materials");
-  unsigned char *on_plane = hv_calloc(nf + 1, 1, "fof plane flags");
+  unsigned char *on_plane = hv_calloc(nf + 1, 1, "fof plane flags"); /* bit 0 z, bit 1 y */
   for (size_t k = 0; k < ns; k++) {
     const size_t i = sel[k];
     struct fof_fragment *f = &fr[fid[k]];
@@ -224,7 +226,8 @@ static void fof_sum(const struct particles *p, const struct fof_params *par, str
     }
     const int mat = p->mat[i];
     if (mat >= 0 && mat < par->nmat) mm[fid[k] * (size_t)par->nmat + (size_t)mat] += m;
-    if (par->half_model && p->x[2][i] < w->hs[k]) on_plane[fid[k]] = 1; /* z < b_i/2 */
+    if (par->half_model && p->x[2][i] < w->hs[k]) on_plane[fid[k]] |= 1;    /* z < b_i/2 */
+    if (par->quarter_model && p->x[1][i] < w->hs[k]) on_plane[fid[k]] |= 2; /* y < b_i/2 */
   }
   for (size_t f = 0; f < nf; f++) {
     struct fof_fragment *q = &fr[f];
@@ -232,11 +235,18 @@ static void fof_sum(const struct particles *p, const struct fof_params *par, str
       q->x[d] = q->m > 0 ? q->x[d] / q->m : 0.0;
       q->v[d] = q->m > 0 ? q->v[d] / q->m : 0.0;
     }
-    q->multiplicity = par->half_model && !on_plane[f] ? 2 : 1;
-    if (on_plane[f]) { /* one fragment with its mirror image */
-      q->m *= 2.0;
-      q->x[2] = 0.0;
-      q->v[2] = 0.0;
+    q->multiplicity = 1;
+    for (int d = 2; d >= 1; d--) {
+      const int bit = d == 2 ? 1 : 2;
+      if (!(d == 2 ? par->half_model : par->quarter_model)) continue;
+      if (!(on_plane[f] & bit)) {
+        q->multiplicity *= 2; /* a mirror twin across this plane */
+        continue;
+      }
+      q->m *= 2.0;               /* one fragment with its mirror image across this plane */
+      if (d == 1) q->count *= 2; /* the half model's particles: its image's too */
+      q->x[d] = 0.0;
+      q->v[d] = 0.0;
       for (int k = 0; k < par->nmat; k++) mm[f * (size_t)par->nmat + (size_t)k] *= 2.0;
     }
   }

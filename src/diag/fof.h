@@ -45,16 +45,19 @@ struct fof_params {
                                  NULL: every real particle */
   int nmat;                  /* materials 0 .. nmat-1 get a mass column (others are in m only) */
   int half_model;            /* 1: only z >= 0 is simulated; report the mirrored full picture */
+  int quarter_model;         /* 1: only y >= 0, z >= 0 (half_model set too); the same */
 };
 
 struct fof_fragment {
   double m;         /* [kg] mass of the fragment (full picture; see multiplicity) */
   double x[3];      /* [m] centre of mass */
   double v[3];      /* [m/s] mass-weighted mean velocity (momentum / mass) */
-  size_t count;     /* simulated particles in it (the half model's particles) */
+  size_t count;     /* simulated particles in it (the half model's particles: a quarter
+                       model's fragment on y = 0 counts its image's there too) */
   size_t root;      /* smallest particle slot in it */
   int64_t root_id;  /* id of that particle */
-  int multiplicity; /* fragments of the full picture it stands for: 1, or 2 (mirror twin) */
+  int multiplicity; /* fragments of the full picture it stands for: 1, 2 (mirror twin) or 4
+                       (a quarter model's fragment clear of both planes) */
 };
 
 struct fof_result {

@@ -130,7 +130,7 @@ static int cavity_wall(const struct particles *p, const struct meas_geom *g,
         spread(vol + (size_t)kd * nb, nb, dr, fmax(0.0, r - 0.5 * w), r + 0.5 * w, v * in / w);
     }
   }
-  const double share = g->half_model ? 0.5 : 1.0;
+  const double share = 1.0 / meas_images(g->half_model, g->quarter_model);
   double sum = 0.0;
   for (size_t k = 0; k < ns; k++) {
     double *f = vol + k * nb;
@@ -260,6 +260,7 @@ void meas_debris_defaults(struct meas_debris_params *par, const struct meas_geom
   par->q_angle = 0.90;
   par->front_fraction = 0.5;
   par->half_model = g->half_model;
+  par->quarter_model = g->quarter_model;
   par->mask = NULL;
 }
 
@@ -326,7 +327,7 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
     k++;
   }
   out->count = n;
-  out->m = par->half_model ? 2.0 * m : m;
+  out->m = meas_images(par->half_model, par->quarter_model) * m;
   out->v_mean = m > 0 ? mv / m : (double)NAN;
   out->v_max = vmax;
   out->v_lead = wquantile(vx, n, par->q_lead);
@@ -381,7 +382,8 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
                           .b_particle = b,
                           .mask = sel,
                           .nmat = 0,
-                          .half_model = g->half_model};
+                          .half_model = g->half_model,
+                          .quarter_model = g->quarter_model};
   struct fof_result fr;
   fof_result_init(&fr);
   const int rc = fof_find(p, &fp, &fr, err);
@@ -397,17 +399,22 @@ int meas_keep_largest_piece(const struct particles *p, const struct meas_geom *g
  * those of the body/mask at x >= xlo) within tol of column k's axis, among those whose
  * x − footprint >= xmin; hit[k] (when not NULL) set where a damaged one lies.
  * In a half model a column with centre w >= 0 is never nearer a mirrored particle
- * (u, −z) than the particle itself, so the mirror images add nothing. */
+ * (u, −z) than the particle itself, so the mirror images add nothing. A quarter model's
+ * columns span −u as well, as the half model's do (measure_backwall), and each particle
+ * is taken with its image (−u, w) across the plane y = 0: the half model's columns. */
 static void fill_columns(const struct particles *p, const struct meas_geom *g,
                          const struct meas_backwall_params *par, const unsigned char *col,
                          double xlo, double xmin, const double lo[2], double c, int nu, int nw,
                          double *xf, unsigned char *hit)
 {
   const double fp = par->footprint, tol = par->tol;
-  for (size_t i = 0; i < p->n; i++) {
+  const size_t nimg = g->quarter_model ? 2 : 1; /* the image (−u, w) second */
+  for (size_t q = 0; q < nimg * p->n; q++) {
+    const size_t i = q / nimg;
     if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
     const double si = par->scale ? par->scale[i] : 1.0, ti = si * tol;
-    const double u = p->x[1][i] - g->yc, w = p->x[2][i], x = p->x[0][i] - si * fp;
+    const double u = (q % nimg ? -1.0 : 1.0) * (p->x[1][i] - g->yc), w = p->x[2][i],
+                 x = p->x[0][i] - si * fp;
     if (x < xmin) continue;
     const int dmg = p->solid && (p->damage[i] >= par->damage_min || p->eps_p[i] >= par->eps_p_min);
     int a0 = (int)ceil((u - ti - lo[0]) / c - 0.5), a1 = (int)floor((u + ti - lo[0]) / c - 0.5);
@@ -620,7 +627,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   const double xlo = g->x0 - par->margin_front, tol = par->tol;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   scan_wall(p, g, par, xlo, lo, hi, out);
-  if (g->half_model) out->m_damaged *= 2.0;
+  out->m_damaged *= meas_images(g->half_model, g->quarter_model);
   if (!out->n_wall) return 0;
   /* the columns see the wall's particles, or with attached_only its largest piece */
   unsigned char *col = NULL;
@@ -632,7 +639,8 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
       return -1;
     }
   }
-  if (g->half_model) lo[1] = 0.0; /* columns on the simulated side suffice: see below */
+  if (g->half_model) lo[1] = 0.0;       /* columns on the simulated side suffice: see below */
+  if (g->quarter_model) lo[0] = -hi[0]; /* the half model's columns: see fill_columns */
   double c = par->cell;
   const double span = fmax(hi[0] - lo[0], hi[1] - lo[1]);
   if (span / c > MEAS_MAX_CELLS) c = span / MEAS_MAX_CELLS;

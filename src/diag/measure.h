@@ -43,7 +43,16 @@ struct meas_geom {
   double yc;        /* [m] the impact point is (x0, yc, 0); the axis is y = yc, z = 0 */
   double spacing;   /* [m] initial lattice spacing Δ of the body */
   int half_model;   /* 1: only z >= 0 is simulated (symmetry plane z = 0) */
+  /* 1: only y >= 0, z >= 0 (planes y = 0 and z = 0; yc is 0; half_model is 1 too) */
+  int quarter_model;
 };
+
+/* The copies of the full picture each simulated particle stands for: 1, 2 (a half
+ * model) or 4 (a quarter model). */
+static inline int meas_images(int half_model, int quarter_model)
+{
+  return quarter_model ? 4 : half_model ? 2 : 1;
+}
 
 /* The largest friends-of-friends piece of a plate or wall among the particles with
  * sel[i] != 0 (links FOF_B_FACTOR × g->spacing, × scale[i] per particle when scale is
@@ -213,6 +222,7 @@ struct meas_debris_params {
   double q_angle;        /* spray-cone mass quantile (default 0.90) */
   double front_fraction; /* the front: x − x_rear >= front_fraction x_lead (default 0.5) */
   int half_model;
+  int quarter_model;
   const unsigned char *mask; /* optional [p->n] */
 };
 struct meas_debris {

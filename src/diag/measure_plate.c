@@ -263,26 +263,23 @@ static unsigned char *select_plate(const struct particles *p, const struct meas_
   return sel;
 }
 
-/* Projected plate points (mirrored in a half model): returns their count (pairs in *pts,
- * each point's scale Δ_i/Δ in *sc). */
+/* Projected plate points (mirrored in a half model, at both planes in a quarter model):
+ * returns their count (pairs in *pts, each point's scale Δ_i/Δ in *sc). */
 static size_t project(const struct particles *p, const struct meas_geom *g,
                       const unsigned char *sel, const double *scale, double **pts, double **sc,
                       size_t *nplate)
 {
-  const int mirror = g->half_model ? 1 : 0;
+  const size_t images = (size_t)meas_images(g->half_model, g->quarter_model);
   size_t np = 0, cnt = 0;
-  double *q = hv_malloc((2 * (size_t)(1 + mirror) * p->n + 2) * sizeof *q, "plate points");
-  double *f = hv_malloc(((size_t)(1 + mirror) * p->n + 1) * sizeof *f, "plate point scales");
+  double *q = hv_malloc((2 * images * p->n + 2) * sizeof *q, "plate points");
+  double *f = hv_malloc((images * p->n + 1) * sizeof *f, "plate point scales");
   for (size_t i = 0; i < p->n; i++) {
     if (!sel[i]) continue;
     const double y = p->x[1][i], z = p->x[2][i], si = scale ? scale[i] : 1.0;
     cnt++;
-    q[2 * np] = y - g->yc;
-    q[2 * np + 1] = z;
-    f[np++] = si;
-    if (mirror) {
-      q[2 * np] = y - g->yc;
-      q[2 * np + 1] = -z;
+    for (size_t c = 0; c < images; c++) { /* bit 0: −z, bit 1: −(y − yc) */
+      q[2 * np] = c & 2u ? -(y - g->yc) : y - g->yc;
+      q[2 * np + 1] = c & 1u ? -z : z;
       f[np++] = si;
     }
   }

@@ -39,7 +39,7 @@ int measure_through(const struct particles *p, const struct meas_geom *g,
     return -1;
   }
   const double x_far = g->x0 + g->thickness + par->margin;
-  const double mirror = g->half_model ? 2.0 : 1.0;
+  const double mirror = meas_images(g->half_model, g->quarter_model);
   double m = 0.0, mv = 0.0, mw = 0.0;
   for (size_t i = 0; i < n; i++) {
     if (par->solid && !par->solid[i]) continue;

@@ -139,12 +139,12 @@ static void update_h(struct sim *s)
  * normal speed u, meets its own mirror image (a ghost) once d < h, and no ghost is
  * within its reach before (nor within any real's: a pair i, ghost of j interacts when
  * dᵢ + dⱼ < hᵢ + hⱼ, so only when dᵢ < hᵢ or dⱼ < hⱼ). Its neighbours do not see the
- * face coming: a block that moves as one has vsig = c(1 + 1.2α) whatever its speed, and
- * at Mach 50 crossed 6.8 h per step, into the wall. So it may move at most
+ * face coming: a block that moves as one has vsig = c(1 + 0.6α) whatever its speed, and
+ * at Mach 50 crossed 6.8 h per step (with c(1 + 1.2α)), into the wall. So it may move at most
  * max(d − h, C_CFL h) towards the face per step, Δt ≤ max(d − h, C_CFL h)/u: up to
  * where its image comes within reach, then C_CFL h per step like a particle with no
  * neighbour, until the image's approach sets vsig (≥ 2.4 u for 0.001 h < d < h with
- * β = 2). It binds only when u > vsig, i.e. for an approach faster than c(1 + 1.2α)
+ * β = 2). It binds only when u > vsig, i.e. for an approach faster than c(1 + 0.6α)
  * (a particle with no neighbour has vsig = |v| ≥ u: never), so a
  * run without such an approach has the same steps bit for bit; recorded as the CFL
  * limit (docs/models.md, "Time step"). */

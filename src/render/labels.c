@@ -69,8 +69,9 @@ int render_body_labels(struct canvas *plot, const struct particles *p, const str
   for (size_t i = 0; i < p->n; i++) {
     const int b = p->body[i];
     if (b < 0 || b >= nb || !(p->m[i] > 0.0)) continue;
-    for (int copy = 0; copy <= v->mirror; copy++) {
-      const double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+    for (int copy = 0; copy < RENDER_COPIES; copy++) {
+      double x[3];
+      if (!render_copy_pos(p, i, copy, v, x)) continue;
       if (!(x[v->axis] >= v->d0 && x[v->axis] <= v->d1)) continue;
       const double u = x[v->iu], w = x[v->iv];
       if (!(u >= v->u0 && u <= v->u1 && w >= v->v0 && w <= v->v1)) continue;

@@ -150,8 +150,9 @@ void render_areal_density(const struct particles *p, const struct render_view *v
   struct column_table *ct = hv_malloc(sizeof *ct, "kernel column table");
   column_table_fill(ct);
   for (size_t i = 0; i < p->n; i++)
-    for (int copy = 0; copy <= v->mirror; copy++) {
-      double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+    for (int copy = 0; copy < RENDER_COPIES; copy++) {
+      double x[3];
+      if (!render_copy_pos(p, i, copy, v, x)) continue;
       double d = x[v->axis];
       if (!(d >= v->d0 && d <= v->d1) || !(p->m[i] > 0.0)) continue;
       double fu = (x[v->iu] - v->u0) / v->pix - 0.5, fv = (v->v1 - x[v->iv]) / v->pix - 0.5;
@@ -195,8 +196,9 @@ void render_occupied(const struct particles *p, const struct render_view *v,
 {
   memset(occupied, 0, (size_t)v->nu * (size_t)v->nv);
   for (size_t i = 0; i < p->n; i++)
-    for (int copy = 0; copy <= v->mirror; copy++) {
-      const double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+    for (int copy = 0; copy < RENDER_COPIES; copy++) {
+      double x[3];
+      if (!render_copy_pos(p, i, copy, v, x)) continue;
       if (!(x[v->axis] >= v->d0 && x[v->axis] <= v->d1) || !(p->m[i] > 0.0)) continue;
       const double fu = (x[v->iu] - v->u0) / v->pix, fv = (v->v1 - x[v->iv]) / v->pix;
       if (!(fu >= 0.0 && fv >= 0.0 && fu < v->nu && fv < v->nv)) continue; /* NaN too */

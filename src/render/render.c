@@ -47,6 +47,15 @@ static const char *color_name(enum render_color c)
 }
 
 /* Radiograph into the plot canvas; fills the key and the description; returns μ. */
+/* The mirroring in words, for a picture's description. */
+static const char *mirror_text(const struct render_view *v)
+{
+  return v->mirror && v->mirror_y ? ", mirrored at y = 0 and z = 0"
+         : v->mirror              ? ", mirrored at z = 0"
+         : v->mirror_y            ? ", mirrored at y = 0"
+                                  : "";
+}
+
 static double draw_radiograph(struct canvas *c, const struct particles *p,
                               const struct particles *rings, const struct render_view *v,
                               const struct render_options *o, struct caption_key *key, char *desc,
@@ -94,10 +103,7 @@ static double draw_radiograph(struct canvas *c, const struct particles *p,
            "simulated flash radiograph along %c%s: areal density, film T = "
            "exp(-mu*sigma), mu = %.6g m2/kg%s; mass in picture %.6g kg%s, peak areal density "
            "%.6g kg/m2",
-           "xyz"[v->axis],
-           rings       ? ", the axisymmetric rings revolved about the x axis"
-           : v->mirror ? ", mirrored at z = 0"
-                       : "",
+           "xyz"[v->axis], rings ? ", the axisymmetric rings revolved about the x axis" : mirror_text(v),
            mu, how, mass, lost, smax);
   return mu;
 }
@@ -190,11 +196,9 @@ static int render_picture(const char *path, const struct particles *p,
              "particles seen along +%c%s, coloured by %s (%.6g to %.6g "
              "SI), %zu discs",
              axis,
-             rings && p->n == 2 * rings->n
-                 ? ", axisymmetric rings at (x, r) and mirrored at (x, -r)"
-             : rings    ? ", axisymmetric rings at (x, r)"
-             : v.mirror ? ", mirrored at z = 0"
-                        : "",
+             rings && p->n == 2 * rings->n ? ", axisymmetric rings at (x, r) and mirrored at (x, -r)"
+             : rings                       ? ", axisymmetric rings at (x, r)"
+                                           : mirror_text(&v),
              color_name(o->color), lo, hi, nd);
   }
   if (o->labels && info && !info->body_names && info->source) {

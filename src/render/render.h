@@ -8,7 +8,8 @@
  * Half models are simulated in z >= 0 with the symmetry plane z = 0. Mirroring reflects
  * every particle across z = 0 (a copy at -z), so a picture shows the whole body: along y
  * or x the lower half of the picture is the mirror image; along z every column is counted
- * twice, as an x-ray through the full body would.
+ * twice, as an x-ray through the full body would. Quarter models (y >= 0, z >= 0) are
+ * reflected across y = 0 as well (render_copy_pos: four copies of each particle).
  *
  * Radiograph (docs/rendering.md): each particle's mass is spread over the picture with
  * the cubic-spline kernel integrated along the line of sight,
@@ -84,6 +85,7 @@ void render_options_default(struct render_options *o);
 struct render_view {
   int axis, iu, iv;      /* line of sight; coordinates shown right (iu) and up (iv) */
   int mirror;            /* particles are reflected across z = 0 (copies at -z) */
+  int mirror_y;          /* and across y = 0 (a quarter model: copies at -y) */
   double u0, u1, v0, v1; /* [m] extent of the plot area (square pixels) */
   double ext[4];         /* [m] the extent asked for, u0, u1, v0, v1 before it was grown to
                                 the plot area's aspect: the box's, or the particles' with their
@@ -106,6 +108,22 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
 
 /* 1 when p is a half model (every particle at z >= -h/2): mirroring's automatic choice. */
 int render_half_model(const struct particles *p);
+/* 1 when p is also a quarter model: every particle at y >= -h/2, and one within h of
+ * y = 0 (a body the plane cuts, not a full or half model's body that lies at y > 0). */
+int render_quarter_model(const struct particles *p);
+
+/* Copy `copy` (0..3) of particle i in view v: bit 0 its mirror image across z = 0, bit 1
+ * across y = 0. Returns 0 for a copy the view does not draw (its mirror is off). */
+static inline int render_copy_pos(const struct particles *p, size_t i, int copy,
+                                  const struct render_view *v, double x[3])
+{
+  if (((copy & 1) && !v->mirror) || ((copy & 2) && !v->mirror_y)) return 0;
+  x[0] = p->x[0][i];
+  x[1] = copy & 2 ? -p->x[1][i] : p->x[1][i];
+  x[2] = copy & 1 ? -p->x[2][i] : p->x[2][i];
+  return 1;
+}
+#define RENDER_COPIES 4 /* render_copy_pos's copies, mirrored or not */
 
 /* F(s) of the header: the M4 cubic spline integrated along a line at distance s·h from the
  * particle, times h²; F(0) = 3/(2π), zero for s >= 2. */

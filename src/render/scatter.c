@@ -91,12 +91,14 @@ void render_material_slots(const struct particles *p, int nmat, int *slot)
   free(first);
 }
 
-/* The disc of particle i (copy 1: its mirror image across z = 0) in view v; 0 when it is
- * not drawn (outside the slab, off the picture, or not finite). */
+/* The disc of particle i (copy 1: its mirror image across z = 0; 2, 3: across y = 0 as
+ * well, render_copy_pos) in view v; 0 when it is not drawn (a mirror that is off,
+ * outside the slab, off the picture, or not finite). */
 static int make_disc(const struct particles *p, size_t i, int copy, const struct render_view *v,
                      enum render_color color, struct disc *q)
 {
-  double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+  double x[3];
+  if (!render_copy_pos(p, i, copy, v, x)) return 0;
   double depth = x[v->axis];
   if (!(depth >= v->d0 && depth <= v->d1)) return 0;
   q->depth = depth;
@@ -115,7 +117,7 @@ void render_color_extend(const struct particles *p, const struct render_view *v,
 {
   struct disc q;
   for (size_t i = 0; i < p->n; i++)
-    for (int copy = 0; copy <= v->mirror; copy++)
+    for (int copy = 0; copy < RENDER_COPIES; copy++)
       if (make_disc(p, i, copy, v, o->color, &q) && isfinite(q.value)) {
         *lo = fmin(*lo, q.value);
         *hi = fmax(*hi, q.value);
@@ -141,11 +143,11 @@ size_t render_discs(struct canvas *c, const struct particles *p, const struct re
                     const struct render_options *o, double *lo, double *hi, unsigned char *present,
                     const int *slot, int nmat_present)
 {
-  size_t cap = p->n * (size_t)(v->mirror + 1), n = 0;
+  size_t cap = p->n * (size_t)((v->mirror + 1) * (v->mirror_y + 1)), n = 0;
   struct disc *d = hv_malloc((cap ? cap : 1) * sizeof *d, "particle discs");
   double vmin = HUGE_VAL, vmax = -HUGE_VAL;
   for (size_t i = 0; i < p->n; i++)
-    for (int copy = 0; copy <= v->mirror; copy++) {
+    for (int copy = 0; copy < RENDER_COPIES; copy++) {
       struct disc *q = &d[n];
       if (!make_disc(p, i, copy, v, o->color, q)) continue;
       q->order = n;

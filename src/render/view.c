@@ -4,9 +4,11 @@
  * the left axis; under it lie the band of the bottom axis (mb) and the caption band.
  * Pixels are square: the extent (the --box, or every particle with its kernel support 2h
  * and a 4 % margin) is grown about its centre until its aspect matches the plot area's.
- * Mirroring is automatic for a half model: on when every particle lies at z >= -h/2.
- * In particles mode along z it stays off: the viewer looks at the symmetry plane, where
- * the half model shows its cut through the middle of the body.
+ * Mirroring is automatic for a half model: on when every particle lies at z >= -h/2;
+ * a quarter model (render_quarter_model) is mirrored across y = 0 as well.
+ * In particles mode along z no mirror is drawn, and along y not the one across y = 0:
+ * the viewer looks at a symmetry plane, where the model shows its cut through the middle
+ * of the body.
  */
 #include <math.h>
 
@@ -30,6 +32,16 @@ int render_half_model(const struct particles *p)
   return 1;
 }
 
+int render_quarter_model(const struct particles *p)
+{
+  int near = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->x[1][i] < -0.5 * p->h[i]) return 0;
+    near = near || p->x[1][i] < fabs(p->h[i]);
+  }
+  return near && render_half_model(p);
+}
+
 /* Bounding box (u, v) of the particles in the depth slab with their supports. */
 static int particle_extent(const struct particles *p, const struct render_view *v, double ext[4])
 {
@@ -37,8 +49,9 @@ static int particle_extent(const struct particles *p, const struct render_view *
   ext[1] = ext[3] = -HUGE_VAL;
   int any = 0;
   for (size_t i = 0; i < p->n; i++)
-    for (int copy = 0; copy <= v->mirror; copy++) {
-      double x[3] = {p->x[0][i], p->x[1][i], copy ? -p->x[2][i] : p->x[2][i]};
+    for (int copy = 0; copy < RENDER_COPIES; copy++) {
+      double x[3];
+      if (!render_copy_pos(p, i, copy, v, x)) continue;
       double d = x[v->axis], r = 2.0 * fabs(p->h[i]);
       if (!(d >= v->d0 && d <= v->d1) || !isfinite(x[v->iu]) || !isfinite(x[v->iv])) continue;
       ext[0] = fmin(ext[0], x[v->iu] - r);
@@ -60,7 +73,9 @@ int render_view_setup(const struct particles *p, const struct render_options *o,
   v.iu = o->axis == 0 ? 1 : 0;
   v.iv = o->axis == 2 ? 1 : 2;
   v.mirror = o->mirror < 0 ? render_half_model(p) : o->mirror;
-  if (o->mode == RENDER_PARTICLES && o->axis == 2) v.mirror = 0;
+  v.mirror_y = v.mirror && render_quarter_model(p);
+  if (o->mode == RENDER_PARTICLES && o->axis == 2) v.mirror = v.mirror_y = 0;
+  if (o->mode == RENDER_PARTICLES && o->axis == 1) v.mirror_y = 0;
   v.d0 = -HUGE_VAL;
   v.d1 = HUGE_VAL;
   double ext[4];

@@ -124,6 +124,13 @@ int measure_run_read(struct measure_run *mr, struct sim *s, struct cfg *c, struc
       cfg_get_bool(c, "measure.fragments", &no, &mr->fragments, err) || plate_list(s, c, mr, err) ||
       body_list(s, c, "measure.debris", mr->debris, &mr->ndebris, err))
     return -1;
+  if (s->bnd.quarter_model && mr->axis_y != 0.0) {
+    char where[256];
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: measure.axis_y: a quarter model's impact axis is its planes' "
+                        "line y = 0, z = 0, not y = %g m",
+                        cfg_where(c, "measure.axis_y", where, sizeof where), mr->axis_y);
+  }
   if (s->p.axisym && mr->axis_y != 0.0) { /* the rings' axis is r = 0 (measure_rz.h) */
     char where[256];
     return hv_error_set(err, HV_EXIT_INPUT,
@@ -185,7 +192,8 @@ static struct meas_geom geom(const struct measure_run *mr, const struct sim *s, 
                             .thickness = bi->hi[0] - bi->lo[0],
                             .yc = mr->axis_y,
                             .spacing = bi->spacing,
-                            .half_model = s->bnd.half_model};
+                            .half_model = s->bnd.half_model,
+                            .quarter_model = s->bnd.quarter_model};
 }
 
 /* The geometry of n bodies taken as one (a target or plate refined near the impact
@@ -379,8 +387,10 @@ double measure_run_shadow(const struct sim *s, const int *bodies, int nb, double
   double rw = HUGE_VAL;
   for (int j = 0; j < nb; j++) {
     const struct body_info *bi = &s->body[bodies[j]];
-    /* rings fill r <= hi[1] about the axis r = 0; 3D: the nearer edge across y */
-    rw = fmin(rw, s->p.axisym ? bi->hi[1] : fmin(axis_y - bi->lo[1], bi->hi[1] - axis_y));
+    /* rings fill r <= hi[1] about the axis r = 0; 3D: the nearer edge across y (a
+       quarter model's wall starts at the plane y = 0, its mirror beyond it) */
+    const double below = s->bnd.quarter_model ? HUGE_VAL : axis_y - bi->lo[1];
+    rw = fmin(rw, s->p.axisym ? bi->hi[1] : fmin(below, bi->hi[1] - axis_y));
   }
   return fmax(rw - 2.0 * spacing, spacing);
 }
@@ -519,8 +529,12 @@ int measure_run_output(struct measure_run *mr, const struct sim *s, int k, const
       mask[i] = m->str.enabled || m->frac.kind != FRACTURE_NONE;
       b[i] = FOF_B_FACTOR * s->body[s->p.body[i]].spacing;
     }
-    struct fof_params fp = {
-        .b = b[0], .b_particle = b, .mask = mask, .nmat = s->nmat, .half_model = s->bnd.half_model};
+    struct fof_params fp = {.b = b[0],
+                            .b_particle = b,
+                            .mask = mask,
+                            .nmat = s->nmat,
+                            .half_model = s->bnd.half_model,
+                            .quarter_model = s->bnd.quarter_model};
     struct fof_result fr;
     fof_result_init(&fr);
     int frc = fof_find(&s->p, &fp, &fr, err);

@@ -156,8 +156,12 @@ void check_body_extent(const struct sim *s, int b, double ext[3])
   for (int d = 0; d < 3; d++) ext[d] = bi->hi[d] - bi->lo[d];
   if (s->p.axisym) /* rings filling r <= hi[1]: the revolved body's diameter across x */
     ext[1] = ext[2] = 2.0 * bi->hi[1];
-  else if (s->bnd.half_model && bi->lo[2] >= -0.5 * bi->spacing)
-    ext[2] = 2.0 * bi->hi[2]; /* a half model's body cut at z = 0, counted whole */
+  else {
+    if (s->bnd.half_model && bi->lo[2] >= -0.5 * bi->spacing)
+      ext[2] = 2.0 * bi->hi[2]; /* a half model's body cut at z = 0, counted whole */
+    if (s->bnd.quarter_model && bi->lo[1] >= -0.5 * bi->spacing)
+      ext[1] = 2.0 * bi->hi[1]; /* a quarter model's, cut at y = 0 too */
+  }
 }
 
 int check_plate_axis(const struct sim *s, int b, double *thick)

@@ -91,9 +91,6 @@ int restart_write(const struct sim *s, const struct run_outputs *o, struct hv_er
          ckpt_put(&w, "step.n.solid", CKPT_I64, 3, ints, err) ||
          ckpt_put(&w, "absorbed", CKPT_F64, 6, ab, err) ||
          ckpt_put(&w, "absorbed.n", CKPT_I64, 1, &abn, err);
-    /* the geometry (domain.geometry): a restart of an axisymmetric run is one */
-    const int64_t geom = p->axisym ? 1 : 0;
-    if (!rc) rc = ckpt_put(&w, "geometry", CKPT_I64, 1, &geom, err);
   }
 
   /* the particles' state */
@@ -457,14 +454,6 @@ static int restart_clock(struct ckpt_file *c, struct sim *s, size_t *n, struct h
   if (ints[2] != s->p.solid) {
     mismatch(c, err, "solid fields", ints[2] ? "present" : "absent",
              s->p.solid ? "present" : "absent");
-    return -1;
-  }
-  /* the geometry (absent from checkpoints written before it was recorded: 3D) */
-  int64_t geom = 0;
-  if (ckpt_find(c, "geometry") && ckpt_get(c, "geometry", CKPT_I64, 1, &geom, err)) return -1;
-  if ((geom != 0) != (s->p.axisym != 0)) {
-    mismatch(c, err, "domain.geometry", geom ? "axisymmetric" : "3d",
-             s->p.axisym ? "axisymmetric" : "3d");
     return -1;
   }
   /* the clock: a time, a next step and a proposed one that a run reaches */

@@ -7,9 +7,10 @@
  * The anchor is the box corner, or the centre of a sphere or cylinder — but for a cubic
  * lattice in a cylinder along x, y or z the anchor along its axis is an end face, as a
  * box's corner is, so that a disc whose length is L spacings holds L layers (centred,
- * an odd L put the end layers on the faces); in a half model (domain.half_model) the z
- * anchor is the plane z = 0 and only z > 0 is kept, so the lattice is mirror-symmetric
- * about the symmetry plane. Δ is given (`spacing`) or
+ * an odd L put the end layers on the faces); in a half model (domain.symmetry: half) the
+ * z anchor is the plane z = 0 and only z > 0 is kept, so the lattice is mirror-symmetric
+ * about the symmetry plane; in a quarter model the y anchor is y = 0 as well and only
+ * y > 0 is kept too (points at ±Δ/2 about each plane). Δ is given (`spacing`) or
  * follows from a particle count (`particles`, in the simulated part), both scaled by
  * the case's `resolution` (particle counts × resolution). Particle mass ρV/N with V the
  * exact volume of the shape (so a projectile has its true mass), or ρ × lattice volume
@@ -94,12 +95,23 @@ static double lattice_scan_max(void)
   return fmax(1e9, 64.0 * 0.8 * machine_bytes() / particles_need(1.0, 0));
 }
 
-/* Visits the lattice points of a body inside its shape (and z > 0 in a half model):
+/* The number of symmetry planes through the axis: 0 (a full model), 1 (a half model,
+ * z = 0) or 2 (a quarter model, z = 0 and y = 0). */
+static int sym_planes(const struct sim *s) { return s->bnd.half_model + s->bnd.quarter_model; }
+
+/* 1 when axis k is cut at 0 by a symmetry plane of a model with `planes` planes. */
+static int cut_axis(int planes, int k)
+{
+  return (k == 2 && planes >= 1) || (k == 1 && planes >= 2);
+}
+
+/* Visits the lattice points of a body inside its shape (and z > 0 in a half model, y > 0
+ * and z > 0 in a quarter model, `planes` 1 or 2):
  * counts them, and stores them at p->x[.][first + k] when p is not NULL. SIZE_MAX,
  * without scanning, when its bounding box holds more than lattice_scan_max() points
  * (*scan, when not NULL, gets their number): spacing_for_count's searches take it as
  * "enough" and stop, and setup_bodies reports it. */
-static size_t lattice_points_scan(const struct body_spec *bs, int half, struct particles *p,
+static size_t lattice_points_scan(const struct body_spec *bs, int planes, struct particles *p,
                                   size_t first, double *scan)
 {
   const struct shape *sh = &bs->shape;
@@ -113,20 +125,21 @@ static size_t lattice_points_scan(const struct body_spec *bs, int half, struct p
     anchor[k] = sh->kind == SHAPE_BOX ? sh->min[k] : sh->center[k];
     if (bs->fit[k]) {
       /* a whole number of layers along k, the first and last half a step inside its faces
-         (z from the symmetry plane in a half model); unchanged when it already fits */
-      const double ext = sh->max[k] - (half && k == 2 ? 0.0 : sh->min[k]);
+         (from a symmetry plane that cuts it); unchanged when it already fits */
+      const double ext = sh->max[k] - (cut_axis(planes, k) ? 0.0 : sh->min[k]);
       const double nl = fmax(1.0, round(ext / d));
       if (fabs(ext / d - nl) > 1e-9 * nl) step[k] = ext / nl;
     }
   }
   const int ax = cylinder_axis(sh);
   if (ax >= 0 && bs->lattice == LATTICE_CUBIC) anchor[ax] = sh->center[ax] - 0.5 * sh->length;
-  if (half) anchor[2] = 0.0;
+  for (int k = 1; k < 3; k++)
+    if (cut_axis(planes, k)) anchor[k] = 0.0;
   double dlo[3], dhi[3], npts = 1.0; /* as doubles first: a huge box overflows a long */
   for (int k = 0; k < 3; k++) {
     dlo[k] = floor((sh->min[k] - anchor[k]) / step[k]) - 2.0;
     dhi[k] = ceil((sh->max[k] - anchor[k]) / step[k]) + 1.0;
-    if (half && k == 2 && dlo[2] < 0.0) dlo[2] = 0.0;
+    if (cut_axis(planes, k) && dlo[k] < 0.0) dlo[k] = 0.0;
     npts *= dhi[k] - dlo[k] + 1.0;
   }
   if (scan) *scan = npts;
@@ -150,7 +163,8 @@ static size_t lattice_points_scan(const struct body_spec *bs, int half, struct p
           x[1] = anchor[1] + ((double)j + 0.5) * step[1];
         }
         x[2] = anchor[2] + ((double)k + 0.5) * step[2];
-        if (!shape_contains(sh, x) || (half && x[2] <= 0.0)) continue;
+        if (!shape_contains(sh, x) || (planes >= 1 && x[2] <= 0.0) || (planes >= 2 && x[1] <= 0.0))
+          continue;
         if (p)
           for (int c = 0; c < 3; c++) p->x[c][first + count] = x[c];
         count++;
@@ -158,10 +172,10 @@ static size_t lattice_points_scan(const struct body_spec *bs, int half, struct p
   return count;
 }
 
-static size_t lattice_points(const struct body_spec *bs, int half, struct particles *p,
+static size_t lattice_points(const struct body_spec *bs, int planes, struct particles *p,
                              size_t first)
 {
-  return lattice_points_scan(bs, half, p, first, NULL);
+  return lattice_points_scan(bs, planes, p, first, NULL);
 }
 
 static int read_velocity(struct cfg *c, const char *path, const char *name, struct body_spec *bs,
@@ -405,13 +419,12 @@ static double box_thickness(const struct sim *s, const struct body_spec *bs)
   const struct shape *sh = &bs->shape;
   if (bs->lattice != LATTICE_CUBIC) return 0.0;
   const int ax = cylinder_axis(sh);
-  if (ax >= 0 && sh->length <= 2.0 * sh->radius && !(ax == 2 && s->bnd.half_model))
-    return sh->length;
+  if (ax >= 0 && sh->length <= 2.0 * sh->radius && !cut_axis(sym_planes(s), ax)) return sh->length;
   if (sh->kind != SHAPE_BOX) return 0.0;
   double t = HUGE_VAL;
   for (int d = 0; d < 3; d++) {
     double ext = sh->max[d] - sh->min[d];
-    if (d == 2 && s->bnd.half_model) ext = sh->max[2] > 0 ? fmin(ext, sh->max[2]) : ext;
+    if (cut_axis(sym_planes(s), d)) ext = sh->max[d] > 0 ? fmin(ext, sh->max[d]) : ext;
     t = fmin(t, ext);
   }
   return t;
@@ -427,7 +440,7 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
                              struct body_spec *bs, const char *name, double n, struct hv_error *err)
 {
   const double d0 = bs->spacing, t = box_thickness(s, bs);
-  const int half = s->bnd.half_model;
+  const int planes = sym_planes(s);
   double layers = 0.0;
   if (t > 0) { /* whole layers, rounded up, then a layer more while short */
     layers = fmax(1.0, ceil(t / d0 * (1.0 - 1e-9)));
@@ -451,22 +464,22 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
                           cfg_where(c, key, where, sizeof where), name, n, 1e3 * t,
                           1e3 * bs->spacing, bs->vol, est);
     }
-    for (int it = 0; it < 60 && (double)lattice_points(bs, half, NULL, 0) < n; it++) {
+    for (int it = 0; it < 60 && (double)lattice_points(bs, planes, NULL, 0) < n; it++) {
       layers += 1.0;
       bs->spacing = t / layers;
     }
   } else { /* the coarsest spacing that gives n: bracket, then bisect */
     double hi = bs->spacing, lo = hi;
-    double cnt = (double)lattice_points(bs, half, NULL, 0);
+    double cnt = (double)lattice_points(bs, planes, NULL, 0);
     for (int it = 0; it < 60 && cnt < n; it++) {
       hi = lo;
       lo *= fmin(0.99, cbrt(fmax(cnt, 1.0) / n));
       bs->spacing = lo;
-      cnt = (double)lattice_points(bs, half, NULL, 0);
+      cnt = (double)lattice_points(bs, planes, NULL, 0);
     }
     for (int it = 0; it < 40 && hi > lo * (1.0 + 1e-6); it++) {
       bs->spacing = 0.5 * (lo + hi);
-      if ((double)lattice_points(bs, half, NULL, 0) >= n)
+      if ((double)lattice_points(bs, planes, NULL, 0) >= n)
         lo = bs->spacing;
       else
         hi = bs->spacing;
@@ -480,15 +493,16 @@ static int spacing_for_count(const struct sim *s, struct cfg *c, const char *key
   return 0;
 }
 
-/* The shape (with everything it subtracts) is mirror-symmetric about z = 0: a box
- * spanning it evenly, a sphere centred on it, a cylinder centred on it whose axis lies in
- * it or is its normal. */
-static int symmetric_z(const struct shape *sh)
+/* The shape (with everything it subtracts) is mirror-symmetric about the plane x_d = 0
+ * (d = 1: y, 2: z): a box spanning it evenly, a sphere centred on it, a cylinder centred
+ * on it whose axis lies in it or is its normal. */
+static int symmetric_about(const struct shape *sh, int d)
 {
-  const int axis_ok = sh->axis[2] == 0.0 || (sh->axis[0] == 0.0 && sh->axis[1] == 0.0);
-  int sym = sh->kind == SHAPE_BOX ? sh->min[2] == -sh->max[2]
-                                  : sh->center[2] == 0.0 && (sh->kind == SHAPE_SPHERE || axis_ok);
-  for (int k = 0; k < sh->nminus; k++) sym = sym && symmetric_z(&sh->minus[k]);
+  const int o1 = (d + 1) % 3, o2 = (d + 2) % 3;
+  const int axis_ok = sh->axis[d] == 0.0 || (sh->axis[o1] == 0.0 && sh->axis[o2] == 0.0);
+  int sym = sh->kind == SHAPE_BOX ? sh->min[d] == -sh->max[d]
+                                  : sh->center[d] == 0.0 && (sh->kind == SHAPE_SPHERE || axis_ok);
+  for (int k = 0; k < sh->nminus; k++) sym = sym && symmetric_about(&sh->minus[k], d);
   return sym;
 }
 
@@ -577,7 +591,7 @@ static void fit_to_faces(const struct sim *s, struct body_spec *bs)
         (kl == BND_WALL || kl == BND_SYMMETRY) && fabs(bs->shape.min[k] - s->bnd.lo[k]) <= tol;
     bs->fit[k] = s->bnd.has_box && bs->shape.kind == SHAPE_BOX &&
                  s->mat[bs->mat].eos == EOS_IDEAL_GAS && bs->lattice == LATTICE_CUBIC &&
-                 (on_hi || on_lo) && !(k == 2 && s->bnd.half_model && bs->shape.min[2] > 0.0);
+                 (on_hi || on_lo) && !(cut_axis(sym_planes(s), k) && bs->shape.min[k] > 0.0);
   }
 }
 
@@ -623,6 +637,57 @@ static int read_damage(const struct sim *s, struct cfg *c, const char *path, con
   return 0;
 }
 
+/* A quarter model holds the y > 0, z > 0 quarter of a flow symmetric about both planes
+ * y = 0 and z = 0: every body must be so (mirror-symmetric about both; an off-axis body
+ * or one turned across them would be mirrored into three bodies that are not in the
+ * case), refused otherwise. */
+static int quarter_shape(const struct sim *s, struct cfg *c, const char *path, const char *name,
+                         const struct body_spec *bs, struct hv_error *err)
+{
+  if (!s->bnd.quarter_model) return 0;
+  for (int d = 1; d < 3; d++) {
+    if (symmetric_about(&bs->shape, d)) continue;
+    char key[256], where[256];
+    snprintf(key, sizeof key, "%s.shape", path);
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: %s: body '%s' is not mirror-symmetric about the plane %c = 0, one "
+                        "of the quarter model's two symmetry planes (domain.symmetry: quarter "
+                        "is for normal impacts along x on the axis y = 0, z = 0: every body "
+                        "centred on it; a box spanning -a to a in y and z, a sphere or a "
+                        "cylinder centred on the axis); use symmetry: half or none",
+                        cfg_where(c, key, where, sizeof where), key, name, "xyz"[d]);
+  }
+  return 0;
+}
+
+/* A quarter model's bodies move along x only (the flow stays symmetric about both
+ * planes): a velocity with a y or z component, an oblique impact, is refused. A
+ * component below 1e-12 of the speed (speed with impact_angle 90 deg: cos(pi/2) is
+ * 6e-17, not 0) is taken as zero and set to it, so the lattice stays symmetric. */
+static int quarter_velocity(const struct sim *s, struct cfg *c, const char *path, const char *name,
+                            struct body_spec *bs, struct hv_error *err)
+{
+  if (!s->bnd.quarter_model) return 0;
+  const double speed = fabs(bs->vel[0]) + fabs(bs->vel[1]) + fabs(bs->vel[2]);
+  if (fabs(bs->vel[1]) <= 1e-12 * speed && fabs(bs->vel[2]) <= 1e-12 * speed) {
+    bs->vel[1] = bs->vel[2] = 0.0;
+    return 0;
+  }
+  static const char *const keys[] = {"obliquity", "impact_angle", "speed", "velocity"};
+  char key[256], where[256];
+  for (int k = 0; k < 4; k++) {
+    snprintf(key, sizeof key, "%s.%s", path, keys[k]);
+    if (cfg_has(c, key)) break;
+  }
+  return hv_error_set(err, HV_EXIT_INPUT,
+                      "%s: %s: body '%s': velocity (%g, %g, %g) m/s is not along x; a "
+                      "quarter model (domain.symmetry: quarter) is for normal impacts along x, "
+                      "symmetric about y = 0 and z = 0: use symmetry: half (velocity in the "
+                      "x-y plane) or none",
+                      cfg_where(c, key, where, sizeof where), key, name, bs->vel[0], bs->vel[1],
+                      bs->vel[2]);
+}
+
 /* Body b of the case: name, material, shape, lattice, spacing, state, velocity, damage. */
 static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, double resolution,
                      struct hv_error *err)
@@ -647,20 +712,25 @@ static int read_body(struct sim *s, struct cfg *c, int b, struct body_spec *bs, 
     char where[256];
     return hv_error_set(err, HV_EXIT_INPUT,
                         "%s: %s: body '%s': lattice hcp cannot be cut by the "
-                        "symmetry plane of a half model (its layer next to z = 0 would meet its "
+                        "symmetry plane of a %s model (its layer next to z = 0 would meet its "
                         "mirror images 0.82 spacings away, not 1): use lattice: cubic, or a full "
                         "model",
-                        cfg_where(c, key, where, sizeof where), key, name);
+                        cfg_where(c, key, where, sizeof where), key, name,
+                        s->bnd.quarter_model ? "quarter" : "half");
   }
+  if (quarter_shape(s, c, path, name, bs, err)) return -1;
   fit_to_faces(s, bs);
   bs->vol = shape_volume(&bs->shape);
-  if (s->bnd.half_model && bs->vol > 0) {
+  if (s->bnd.quarter_model && bs->vol > 0) {
+    bs->vol *= 0.25; /* symmetric about both planes (quarter_shape) */
+  } else if (s->bnd.half_model && bs->vol > 0) {
     /* a half model keeps z > 0: exact when the shape is symmetric about z = 0 */
-    bs->vol = symmetric_z(&bs->shape) ? 0.5 * bs->vol : -1.0;
+    bs->vol = symmetric_about(&bs->shape, 2) ? 0.5 * bs->vol : -1.0;
   }
   s->body[b].mat = bs->mat;
   if (read_spacing(s, c, path, name, bs, resolution, err) ||
-      read_state(c, path, name, &s->mat[bs->mat], bs, err) || read_velocity(c, path, name, bs, err))
+      read_state(c, path, name, &s->mat[bs->mat], bs, err) ||
+      read_velocity(c, path, name, bs, err) || quarter_velocity(s, c, path, name, bs, err))
     return -1;
   if (s->p.axisym &&
       rz_check_body(c, path, name, &bs->shape, bs->lattice == LATTICE_HCP, bs->vel, err))
@@ -1004,7 +1074,7 @@ static double lattice_cover(const struct body_spec *bs, size_t n)
 
 static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, int nb)
 {
-  const int half = s->bnd.half_model;
+  const int planes = sym_planes(s);
   for (int b = 0; b < nb; b++) {
     /* a fitted gas box's step is not Δ along its fitted axes */
     if (!(bs[b].vol > 0) || bs[b].fit[0] || bs[b].fit[1] || bs[b].fit[2]) continue;
@@ -1017,7 +1087,7 @@ static void warn_lattice_cover(const struct sim *s, const struct body_spec *bs, 
         int found = 0;
         for (int sgn = -1; sgn <= 1 && !found; sgn += 2) {
           t.spacing = bs[b].spacing * (1.0 + sgn * 0.0025 * k);
-          const double c = lattice_cover(&t, lattice_points(&t, half, NULL, 0));
+          const double c = lattice_cover(&t, lattice_points(&t, planes, NULL, 0));
           if (c >= COVER_LO && c <= 1.0) {
             snprintf(fix, sizeof fix, "spacing %.5g mm (its lattice fills %.3f)", 1e3 * t.spacing,
                      c);
@@ -1156,7 +1226,7 @@ static int count_body(struct sim *s, struct cfg *c, const struct body_spec *bs, 
   double scan = est;
   const size_t cnt =
       s->p.axisym ? (est <= lattice_scan_max() ? rz_lattice(sh, bs[b].spacing, NULL, 0) : SIZE_MAX)
-                  : lattice_points_scan(&bs[b], s->bnd.half_model, NULL, 0, &scan);
+                  : lattice_points_scan(&bs[b], sym_planes(s), NULL, 0, &scan);
   if (cnt == SIZE_MAX) {
     char then[160];
     snprintf(then, sizeof then,
@@ -1201,7 +1271,7 @@ static size_t place_body(struct sim *s, const struct body_spec *bs, int b, size_
   if (s->p.axisym)
     rz_lattice(&bs[b].shape, bs[b].spacing, &s->p, first);
   else
-    lattice_points(&bs[b], s->bnd.half_model, &s->p, first);
+    lattice_points(&bs[b], sym_planes(s), &s->p, first);
   init_body(s, &bs[b], b, first, cnt);
   struct body_info *bi = &s->body[b];
   bi->count = cnt;

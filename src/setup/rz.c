@@ -157,6 +157,8 @@ int sim_axisym_params(struct sim *s, struct cfg *c, struct hv_error *err)
 {
   if (!s->bnd.axisym) return 0;
   s->p.axisym = 1;
+  const int rk = s->bnd.kind[1][1];
+  s->sph.rz_rmax = rk == BND_WALL || rk == BND_SYMMETRY ? s->bnd.hi[1] : HUGE_VAL;
   s->sph.kernel = (enum kernel_kind)((int)s->sph.kernel | KERNEL_2D);
   char where[256];
   /* the options whose 3D matrices or vectors have no RZ form here */

@@ -6,6 +6,9 @@
 #include "core/error.h"
 #include "fracture/fracture.h"
 
+static void partner_pack_density_slot(const struct particles *p, const struct sph_params *sp,
+                                      const struct material *mat, size_t j, double *restrict rec);
+
 /* The partner records and tags for nt slots: the cache's, grown when short, or (a
  * call without a cache) allocated for this call only. */
 void partner_reserve(struct sph_cache *cache, size_t nt, double **rec, int32_t **tag)
@@ -63,7 +66,42 @@ void partner_pack(const struct particles *p, const struct sph_params *sp,
       w[PR_AS + t] = p->R[t][j];
       rany |= p->R[t][j] != 0.0;
     }
-    w[PR_AS + 6] = w[PR_AS + 7] = 0.0;
     tag[j] = 2 * (sph_piece_of(sp->piece, p->body[j])) + rany;
+    w[PR_C] = p->cs[j];
+    w[PR_KIND] = 2.0 * tag[j] + (mat[p->mat[j]].eos == EOS_IDEAL_GAS);
   }
+}
+
+/* Packs the density records of the slots of grid g that the first pass reads: with rest
+ * (sph.skip_resting's marks, else NULL) only those of cells next to a cell it does not
+ * skip (the neighbour-cell lists are symmetric: a slot is read only from its cell's
+ * neighbour cells); an impact's target at rest costs nothing here. */
+void partner_pack_density(const struct particles *p, const struct sph_params *sp,
+                          const struct material *mat, const struct nbr_grid *g, const uint8_t *rest,
+                          double *restrict rec)
+{
+#pragma omp parallel for schedule(static)
+  for (size_t c = 0; c < g->ncells; c++) {
+    int need = !rest;
+    for (uint32_t q = g->nbr_start[c]; !need && q < g->nbr_start[c + 1]; q++)
+      need = !rest[g->nbr_list[q]];
+    if (!need) continue;
+    for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++)
+      partner_pack_density_slot(p, sp, mat, g->order[ii], rec);
+  }
+}
+
+/* The density record of slot j. */
+static void partner_pack_density_slot(const struct particles *p, const struct sph_params *sp,
+                                      const struct material *mat, size_t j, double *restrict rec)
+{
+  double *w = rec + PR_LEN * j;
+  const struct material *mj = &mat[p->mat[j]];
+  for (int a = 0; a < 3; a++) w[DR_V + a] = p->v[a][j];
+  w[DR_VOL] = p->m[j] / p->rho[j];
+  w[DR_RHO] = p->rho[j];
+  w[DR_WREF] = 2.0 * p->m[j] / mj->rho0;
+  w[DR_KIND] = 4.0 * sph_piece_of(sp->piece, p->body[j]) + 2.0 * (p->rho[j] < 0.5 * mj->rho0) +
+               (mj->eos == EOS_IDEAL_GAS);
+  w[DR_MAT] = p->mat[j];
 }

@@ -41,6 +41,14 @@ static inline double sph_rz_radius(double r, double h)
   return a > f ? a : f;
 }
 
+/* The radius particle j weighs with (its ring's): r for a real, |r| for a ghost across
+ * the axis, 2 r_max − r for a ghost across a mirror face at r_max — the radius of its
+ * source, whose ring mass it carries — not below the floor. */
+static inline double sph_rz_weight_radius(double r, double h, double rmax)
+{
+  return sph_rz_radius(r > rmax ? 2.0 * rmax - r : r, h);
+}
+
 /* The passes of sph.h for an axisymmetric store (p->axisym == 1): the 3D loops on area
  * masses, with the hoop terms. */
 void sph_rz_density_rate(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,

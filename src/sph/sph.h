@@ -65,6 +65,9 @@ struct sph_params {
                           whose v, a, e, ė, ρ − ρ₀ and S are all within rest_tol of
                           their scales (c = √(K₀/ρ₀), c², ρ₀, K₀) at the end of a step
                           is set exactly at rest (step.c, clamp_to_rest); 0: never */
+  double rz_rmax;           /* axisymmetric runs: the radius of a mirror face r_max (wall,
+                          symmetry), HUGE_VAL without one: its ghosts weigh as their
+                          sources, at 2 r_max − r (sph_rz.c) */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one
@@ -100,15 +103,21 @@ struct sph_cache {
   long rested; /* reals the last second pass skipped */
 };
 
-/* The signal speed of a real after the force pass: cᵢ + 1.2 (α cᵢ + β μ_max), with α
+/* The signal speed of a real after the force pass: cᵢ(1 + 0.6 α) + 1.2 β μ_max, with α
  * the largest pair α (the switch) and μ_max the largest approach term; a particle with
  * no neighbour carries no signal, and only its own speed limits the step (so it moves at
  * most C_CFL h per step towards what it will meet). One place for both loops and for
- * the particles sph.skip_resting leaves out. */
+ * the particles sph.skip_resting leaves out.
+ * The α term takes Monaghan's (1992) 0.6 rather than his 1989 form's 1.2: the linear
+ * viscosity acts as a diffusion much slower than the sound's crossing of h, and the
+ * larger factor only shortened the step. The β μ term keeps 1.2: it holds the step as a
+ * pair closes (the Mach 50 wall approach of test_timestep needs it), and dropping the α
+ * term altogether breaks the energy bound of test_conservation_solid (figures in
+ * docs/models.md, "Time step"). */
 static inline double sph_signal_speed(int has_neighbour, double ci, double amax, double beta,
                                       double mumax, double speed)
 {
-  return has_neighbour ? ci + 1.2 * (amax * ci + beta * mumax) : speed;
+  return has_neighbour ? ci + 0.6 * amax * ci + 1.2 * beta * mumax : speed;
 }
 
 void sph_cache_free(struct sph_cache *c);

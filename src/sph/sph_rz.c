@@ -23,13 +23,14 @@
 
 /* Replaces p->m by the area masses (into the buffer *mu, returned); the ring masses are
  * returned by area_masses_end. */
-static double *area_masses_begin(struct particles *p)
+static double *area_masses_begin(struct particles *p, double rmax)
 {
   const size_t nall = p->n + p->n_ghost;
   double *mu = hv_malloc((nall + 1) * sizeof *mu, "area masses");
   const double *m = p->m, *r = p->x[1], *h = p->h;
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < nall; i++) mu[i] = m[i] / (2.0 * HV_KERNEL_PI * sph_rz_radius(r[i], h[i]));
+  for (size_t i = 0; i < nall; i++)
+    mu[i] = m[i] / (2.0 * HV_KERNEL_PI * sph_rz_weight_radius(r[i], h[i], rmax));
   double *ring = p->m;
   p->m = mu;
   p->axisym = 2;
@@ -46,7 +47,7 @@ static void area_masses_end(struct particles *p, double *ring)
 void sph_rz_density_rate(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                          struct sph_cache *cache, const struct material *mat, double dt)
 {
-  double *ring = area_masses_begin(p);
+  double *ring = area_masses_begin(p, sp->rz_rmax);
   sph_density_rate(p, g, sp, cache, mat, dt);
   area_masses_end(p, ring);
   /* continuity's hoop term: ∇·v = ∇₂·v + v_r/r */
@@ -64,28 +65,30 @@ void sph_rz_density_rate(struct particles *p, const struct nbr_grid *g, const st
   }
 }
 
-/* The hoop correction cᵢ of every real: 1 + 2 Σⱼ (μⱼ/ρⱼ) |rⱼ| ∂ᵢWᵢⱼ/∂rᵢ over its axis
- * ghosts j (rⱼ < 0). The η-form's pair sum of a uniform pressure p on particle i is
- * −(p/ρ²)[(1/rᵢ) Σⱼ Mⱼ ∇ᵢWᵢⱼ + Σⱼ μⱼ ∇ᵢWᵢⱼ], Mⱼ = μⱼ|rⱼ|: the second sum is the 2D
- * SPH gradient of a constant (0 to the lattice's accuracy), the first (ρ/rᵢ) times the
- * SPH slope of |r|, which is 1 in the bulk (0.99 on a square lattice with η = 1.2) and
- * flatter near the axis, where |r| has its kink: on the first row, 0.47. Its kink part
- * is the sum over the axis ghosts written above (the ghosts stand at −r, where |r| and r
- * differ by 2|r|), so that the hoop force cᵢ p/(ρᵢ rᵢ) balances the pair sum at the
- * axis; away from it cᵢ = 1, also at a free surface, where the truncated slope of the
- * first sum is the ordinary SPH surface force (as in 3D) and no hoop effect. The
- * discrete balance on the first row is then within 0.01 p/(ρ r) (the lattice's own
- * error, 1 − 0.99); the full slope as cᵢ balanced it exactly but turned free surfaces
- * unstable (a Taylor bar's rim: cᵢ ≈ −r/h). This is the correction function f1 of
- * García-Senz et al. (2009), computed from the particles instead of tabulated for a
- * regular lattice. Run while p->m holds the area masses. */
+/* The hoop correction cᵢ of every real: 1 + Σⱼ (μⱼ/ρⱼ)(r̃ⱼ − rⱼ) ∂ᵢWᵢⱼ/∂rᵢ over its ghosts
+ * j that weigh with a radius r̃ⱼ other than their own rⱼ (sph_rz_weight_radius: |r| across
+ * the axis, 2 r_max − r across a mirror at r_max). The η-form's pair sum of a uniform
+ * pressure p on particle i is −(p/ρ²)[(1/rᵢ) Σⱼ Mⱼ ∇ᵢWᵢⱼ + Σⱼ μⱼ ∇ᵢWᵢⱼ], Mⱼ = μⱼ r̃ⱼ: the
+ * second sum is the 2D SPH gradient of a constant (0 to the lattice's accuracy), the
+ * first (ρ/rᵢ) times the SPH slope of r̃, which is 1 in the bulk (0.99 on a square
+ * lattice with η = 1.2) and flatter where the ghosts fold it: at the axis (|r| has its
+ * kink there; 0.48 on the first row) and at a mirror at r_max. The sum above is the
+ * fold's part, so that the hoop force cᵢ p/(ρᵢ rᵢ) balances the pair sum there; away from
+ * them cᵢ = 1, also at a free surface, where the truncated slope of the first sum is the
+ * ordinary SPH surface force (as in 3D) and no hoop effect. The discrete balance on the
+ * first row is then within 0.01 p/(ρ r) (the lattice's own error, 1 − 0.99); the full
+ * slope as cᵢ balanced it exactly but turned free surfaces unstable (a Taylor bar's rim:
+ * cᵢ ≈ −r/h). At the axis this is the correction function f1 of García-Senz et al.
+ * (2009), computed from the particles instead of tabulated for a regular lattice.
+ * Also the deviator's work of the force pass (dev; see sph_rz_forces). Run while p->m
+ * holds the area masses. */
 static void hoop_correction(const struct particles *p, const struct nbr_grid *g,
                             const struct sph_params *sp, const struct sph_cache *cache,
                             const struct material *mat, double *corr, double *dev)
 {
   const enum kernel_kind kk = sp->kernel;
   const double *x = p->x[0], *r = p->x[1], *h = p->h, *mu = p->m, *rho = p->rho;
-  const double *vx = p->v[0], *vr = p->v[1];
+  const double *vx = p->v[0], *vr = p->v[1], rmax = sp->rz_rmax;
   /* the first pass's neighbours, but for the cells it skipped at rest (rest.c) */
   const int skipped = cache && sp->skip_resting && !p->av && cache->rest;
 #pragma omp parallel
@@ -115,11 +118,12 @@ static void hoop_correction(const struct particles *p, const struct nbr_grid *g,
           const double dx = x[i] - x[j], dy = r[i] - r[j];
           const double hij = 0.5 * (h[i] + h[j]);
           const double f = kernel_f(kk, sqrt(dx * dx + dy * dy), hij);
-          if (r[j] < 0.0) /* an axis ghost */
-            sum += mu[j] / rho[j] * fabs(r[j]) * f * dy;
+          /* a ghost that weighs with its source's radius rw ≠ r: its share of the kink */
+          const double rw = r[j] > rmax ? 2.0 * rmax - r[j] : fabs(r[j]);
+          if (rw != r[j]) sum += mu[j] / rho[j] * (rw - r[j]) * f * dy;
           if (strong && sph_piece_of(sp->piece, p->body[j]) == pi) {
             /* Σⱼ Mⱼ vᵢⱼ ⊗ ∇ᵢWᵢⱼ, Mⱼ = μⱼ r̂ⱼ = mⱼ/(2π) */
-            const double w = mu[j] * sph_rz_radius(r[j], h[j]) * f;
+            const double w = mu[j] * sph_rz_weight_radius(r[j], h[j], rmax) * f;
             const double ux = vx[i] - vx[j], uy = vr[i] - vr[j];
             Q[0] += w * ux * dx;
             Q[1] += w * ux * dy;
@@ -127,7 +131,7 @@ static void hoop_correction(const struct particles *p, const struct nbr_grid *g,
             Q[3] += w * uy * dy;
           }
         }
-        corr[i] = 1.0 + 2.0 * sum;
+        corr[i] = 1.0 + sum;
         /* −(Sᵢ/(r̂ᵢ ρᵢ²)):Σⱼ Mⱼ vᵢⱼ ⊗ ∇ᵢWᵢⱼ, in the plane; the hoop part is added with cᵢ */
         const double ri = sph_rz_radius(r[i], h[i]);
         dev[i] = strong ? -(Si[T_XX] * Q[0] + Si[T_XY] * (Q[1] + Q[2]) + Si[T_YY] * Q[3]) /
@@ -141,12 +145,13 @@ static void hoop_correction(const struct particles *p, const struct nbr_grid *g,
 
 /* A scaled copy of array a of n slots: a[i] · r̂ᵢ^e (e = 1 or −1), r̂ᵢ = |rᵢ| not below
  * the floor of rz.h. */
-static double *scaled(const double *a, const double *r, const double *h, size_t n, int e)
+static double *scaled(const double *a, const double *r, const double *h, size_t n, int e,
+                      double rmax)
 {
   double *b = hv_malloc((n + 1) * sizeof *b, "axisymmetric pass");
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
-    const double ar = sph_rz_radius(r[i], h[i]);
+    const double ar = sph_rz_weight_radius(r[i], h[i], rmax);
     b[i] = e > 0 ? a[i] * ar : a[i] / ar;
   }
   return b;
@@ -158,21 +163,21 @@ void sph_rz_forces(struct particles *p, const struct nbr_grid *g, const struct s
   const size_t n = p->n, nall = p->n + p->n_ghost;
   double *corr = hv_malloc((n + 1) * sizeof *corr, "hoop correction");
   double *dev = hv_malloc((n + 1) * sizeof *dev, "deviatoric work");
-  double *ring = area_masses_begin(p);
+  double *ring = area_masses_begin(p, sp->rz_rmax);
   hoop_correction(p, g, sp, cache, mat, corr, dev);
   /* the η-form as 2D SPH of the meridional plane: mass M = m/(2π), density r ρ, stress
      r σ (p, S; the artificial stress R = −ε σ/ρ² as R/r), the viscosity's density r ρ */
   const double *r = p->x[1];
   for (size_t i = 0; i < nall; i++) p->m[i] = ring[i] / (2.0 * HV_KERNEL_PI);
   double *rho = p->rho, *pr = p->p, *S[6] = {0}, *R[6] = {0};
-  p->rho = scaled(rho, r, p->h, nall, 1);
-  p->p = scaled(pr, r, p->h, nall, 1);
+  p->rho = scaled(rho, r, p->h, nall, 1, sp->rz_rmax);
+  p->p = scaled(pr, r, p->h, nall, 1, sp->rz_rmax);
   if (p->solid)
     for (int k = 0; k < 6; k++) {
       S[k] = p->S[k];
       R[k] = p->R[k];
-      p->S[k] = scaled(S[k], r, p->h, nall, 1);
-      p->R[k] = scaled(R[k], r, p->h, nall, -1);
+      p->S[k] = scaled(S[k], r, p->h, nall, 1, sp->rz_rmax);
+      p->R[k] = scaled(R[k], r, p->h, nall, -1, sp->rz_rmax);
     }
   sph_forces(p, g, sp, cache, mat);
   free(p->rho);

@@ -3,6 +3,8 @@
 #ifndef HV_SYM3_H
 #define HV_SYM3_H
 
+#include <math.h>
+
 /* Eigenvalues lam[3] (descending) and, if Q is not NULL, the eigenvectors as the
  * columns of Q (row-major 3×3): A = Q diag(lam) Qᵀ. */
 void sym3_eigen(const double a[6], double lam[3], double Q[9]);
@@ -34,6 +36,24 @@ static inline double sym3_max_bound(const double a[6])
   const double r1 = a[1] + (a[3] < 0 ? -a[3] : a[3]) + (a[4] < 0 ? -a[4] : a[4]);
   const double r2 = a[2] + (a[4] < 0 ? -a[4] : a[4]) + (a[5] < 0 ? -a[5] : a[5]);
   return r0 > r1 ? (r0 > r2 ? r0 : r2) : (r1 > r2 ? r1 : r2);
+}
+
+/* Whether every eigenvalue of a is certainly negative (a negative definite): the leading
+ * minors of −a positive (Sylvester's criterion), each by a margin of 10⁻¹² of its scale
+ * (s, s², s³ with s the largest |aᵢⱼ|), far beyond their rounding errors (~10⁻¹⁵):
+ * then det(−a) > 10⁻¹² s³ puts the largest eigenvalue below −10⁻¹³ s, where the Jacobi
+ * rotations (sym3_eigen, errors ~10⁻¹⁶ s) find it negative too. A cheap test (about 20
+ * operations) that spares the eigen-decomposition of compressed material; 0 when in
+ * doubt (a zero matrix, NaN). */
+static inline int sym3_negative_definite(const double a[6])
+{
+  const double b0 = -a[0], b1 = -a[1], b2 = -a[2], b3 = -a[3], b4 = -a[4], b5 = -a[5];
+  double s = 0.0;
+  for (int k = 0; k < 6; k++) s = fabs(a[k]) > s ? fabs(a[k]) : s;
+  const double eps = 1e-12;
+  const double m2 = b0 * b1 - b3 * b3;
+  const double m3 = b0 * (b1 * b2 - b4 * b4) - b3 * (b3 * b2 - b4 * b5) + b5 * (b3 * b4 - b1 * b5);
+  return b0 > eps * s && m2 > eps * s * s && m3 > eps * s * s * s;
 }
 
 /* Second invariant of a deviator: J2 = ½ S:S. */

@@ -68,8 +68,10 @@ echo "  reference: $steps steps, $absorbed particles absorbed, $(ls "$T/ref" | w
 mtimes=$(grep -v '^#' "$T/ref/measurements.csv" | tail -n +2 | cut -d, -f1 | sort -u | wc -l)
 [ "$mtimes" -eq 13 ] && [ "$(grep -c '^[0-9]' "$T/ref/summary.csv")" -eq 5 ]
 check $? "measure.every = 1 us: measurements at $mtimes times (0, 1, ..., 12 us), outputs at 5"
-[ "$steps" -gt 400 ] && [ "$absorbed" -gt 100 ]
-check $? "the reference takes more than 400 steps ($steps), so step 300 is mid-run; over 100 particles absorbed ($absorbed)"
+# 358 steps since e8a2b2f (the longer step of docs/models.md, "Why this signal speed"),
+# 484 at 20f0a24: step 300 is still before the end, after the absorption began
+[ "$steps" -gt 330 ] && [ "$absorbed" -gt 100 ]
+check $? "the reference takes more than 330 steps ($steps), so step 300 is mid-run; over 100 particles absorbed ($absorbed)"
 
 # 1. stopped between outputs, continued on another thread count
 "$BIN" run "$CASE" -o "$T/a" "${SETS[@]}" --set time.max_steps=300 --threads 2 --quiet 2> "$T/a1.log"

@@ -202,8 +202,8 @@ static void test_wrong_units(void)
   /* bare 20 us-scale values pass */
   rc = hvsph("check impact.yaml --set time.end=2e-6");
   CHECK(rc == 0, "a bare time.end of 2e-6 (s): exit %d: %s", rc, out);
-  /* the step keys against the first stable step (about 4 ns): a dt_min above it would
-     fail the first step (refused), a dt_init 250 times it is an unstable first step and
+  /* the step keys against the first stable step (about 5 ns): a dt_min above it would
+     fail the first step (refused), a dt_init 200 times it is an unstable first step and
      a dt_max far below it makes 2e10 steps (both warned of, not blamed on time.end) */
   rc = hvsph("check impact.yaml --set time.dt_min=1e-6");
   CHECK(rc == 2, "time.dt_min above the first step: exit %d (want 2)", rc);
@@ -211,7 +211,7 @@ static void test_wrong_units(void)
                                               "first stable step",
                                               "would stop as failed", NULL});
   rc = hvsph("check impact.yaml --set time.dt_init=1e-6");
-  CHECK(rc == 0 && has("warning: --set: time.dt_init = 1e-06 s is 2.5e+02 times the first "
+  CHECK(rc == 0 && has("warning: --set: time.dt_init = 1e-06 s is 2e+02 times the first "
                        "stable step"),
         "a large dt_init is warned of (exit %d): %s", rc, out);
   rc = hvsph("check impact.yaml --set time.dt_max=1e-16 --set time.end=2e-6");

@@ -585,6 +585,25 @@ static void test_bad_input(void)
                                   "10000",
                                   "--force", NULL});
 
+  /* a quarter model of a body that is not symmetric about its planes y = 0 and z = 0 */
+  bad_input("quarter_body", variant(7, "  boundary: {x: wall}\n  symmetry: quarter"), NULL,
+            (const char *const[]){"quarter_body.yaml:12: bodies[0].shape: body 'slab' is not "
+                                  "mirror-symmetric about the plane y = 0",
+                                  "use symmetry: half or none", NULL});
+  bad_input("quarter_axis",
+            "name: qa\n"
+            "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+            "domain: {min: [0, 0, 0], max: [0.1, 0.05, 0.05], symmetry: quarter}\n"
+            "bodies:\n"
+            "  - {name: slab, material: gas, density: 1.0, pressure: 1.0, spacing: 12.5 mm,\n"
+            "     shape: {type: box, min: [0, -0.05, -0.05], max: [0.1, 0.05, 0.05]}}\n"
+            "time: {end: 0.01}\n"
+            "measure: {axis_y: 1 mm}\n",
+            NULL,
+            (const char *const[]){"quarter_axis.yaml:8: measure.axis_y: a quarter model's impact "
+                                  "axis is its planes' line y = 0, z = 0",
+                                  NULL});
+
   /* malformed YAML: line and column of the fault */
   bad_input("malformed", variant(7, "  boundary: {x: wall, y: periodic, z: periodic}}"), NULL,
             (const char *const[]){"malformed.yaml:7:", "YAML syntax error", NULL});

@@ -150,6 +150,47 @@ static void test_half_model(void)
   particles_free(&p);
 }
 
+/* A quarter model (planes y = 0 and z = 0): a fragment on both planes is one piece with
+ * its three images (mass x 4, multiplicity 1), one on the plane y = 0 only is one with
+ * its image there and has a twin across z = 0 (mass x 2, multiplicity 2), one clear of
+ * both stands for four (multiplicity 4). */
+static void test_quarter_model(void)
+{
+  struct particles p;
+  particles_init(&p);
+  const double v[3] = {10, 3, 5};
+  const double both[3] = {0, 0.5 * S, 0.5 * S}, ony[3] = {20 * S, 0.5 * S, 10 * S},
+               clear[3] = {40 * S, 10 * S, 10 * S};
+  add_block(&p, both, 3, 3, 3, S, 1e-3, v, 0, 0, 0);
+  add_block(&p, ony, 3, 3, 3, S, 1e-3, v, 0, 0, 0);
+  add_block(&p, clear, 2, 2, 2, S, 1e-3, v, 0, 0, 0);
+  struct fof_params par = {.b = 1.5 * S, .nmat = 1, .half_model = 1, .quarter_model = 1};
+  struct fof_result r;
+  struct hv_error err;
+  CHECK(fof_find(&p, &par, &r, &err) == 0 && r.nfrag == 3, "quarter model: three fragments");
+  if (r.nfrag == 3) {
+    CHECK_CLOSE(r.frag[0].m, 4 * 27e-3, 1e-15, "on both planes: mass x 4");
+    CHECK(r.frag[0].multiplicity == 1, "on both planes: multiplicity 1");
+    CHECK(r.frag[0].x[1] == 0.0 && r.frag[0].x[2] == 0.0 && r.frag[0].v[1] == 0.0 &&
+              r.frag[0].v[2] == 0.0,
+          "on both planes: on the axis, moving along it");
+    CHECK_CLOSE(r.frag[1].m, 2 * 27e-3, 1e-15, "on y = 0 only: mass x 2");
+    CHECK(r.frag[1].multiplicity == 2 && r.frag[1].count == 54,
+          "on y = 0 only: multiplicity 2, the half model's 54 particles (%zu)", r.frag[1].count);
+    CHECK(r.frag[0].count == 54 && r.frag[2].count == 8,
+          "counts: the half model's particles (%zu, %zu)", r.frag[0].count, r.frag[2].count);
+    CHECK(r.frag[1].x[1] == 0.0 && r.frag[1].v[1] == 0.0 && fabs(r.frag[1].v[2] - 5.0) < 1e-12,
+          "on y = 0 only: y = 0, vy = 0, its own vz");
+    CHECK_CLOSE(r.frag[2].m, 8e-3, 1e-15, "clear of both: one image's mass");
+    CHECK(r.frag[2].multiplicity == 4, "clear of both: multiplicity 4");
+    CHECK(r.n_full == 7, "full picture: 7 fragments (%zu)", r.n_full);
+    CHECK_CLOSE(r.m_total, 4 * (27e-3 + 27e-3 + 8e-3), 1e-15, "full mass");
+    CHECK_CLOSE(r.mat_mass[0], 4 * 27e-3, 1e-15, "material mass of the first x 4 too");
+  }
+  fof_result_free(&r);
+  particles_free(&p);
+}
+
 /* O(N²) reference labels: the smallest index of each particle's set. */
 static void brute(const struct particles *p, const double *b, uint32_t *root)
 {
@@ -342,6 +383,7 @@ int main(void)
 {
   test_two_clusters();
   test_half_model();
+  test_quarter_model();
   test_brute_force(0);
   test_brute_force(1);
   test_csv();

@@ -46,7 +46,8 @@ static void add_sphere(struct particles *p, const double c[3], double R, double 
     for (int j = -n; j < n; j++)
       for (int i = -n; i < n; i++) {
         double x = (i + 0.5) * dx, y = (j + 0.5) * dx, z = (k + 0.5) * dx;
-        if (x * x + y * y + z * z > R * R || (half && z < 0)) continue;
+        /* half 1: z > 0 (a half model); 2: y > 0 too (a quarter model) */
+        if (x * x + y * y + z * z > R * R || (half && z < 0) || (half > 1 && y < 0)) continue;
         put(p, c[0] + x, c[1] + y, c[2] + z, rho * dx * dx * dx, 1.2 * dx, rho, mat, vx);
       }
 }
@@ -209,7 +210,8 @@ static void test_sphere(void)
 
   double Mh = total_mass(&half);
   s = areal(&half, &o, 0, 0, &v);
-  CHECK(v.mirror == 1, "a half model (z >= 0) is mirrored by default");
+  CHECK(v.mirror == 1 && v.mirror_y == 0,
+        "a half model (z >= 0) is mirrored by default, across z = 0 only");
   CHECK_CLOSE(s.mass / (2 * Mh), 1.0, 0.01,
               "half sphere along z, mirrored: mass / twice the particle mass");
   CHECK_CLOSE(s.at / peak, 1.0, 0.05, "half sphere along z, mirrored: centre / 2R rho");
@@ -224,6 +226,26 @@ static void test_sphere(void)
   s = areal(&half, &o, 0, 0, &v);
   CHECK_CLOSE(s.mass / Mh, 1.0, 0.01, "half sphere, --no-mirror: mass / particle mass");
   CHECK_CLOSE(s.at / (0.5 * peak), 1.0, 0.05, "half sphere, --no-mirror: centre / R rho");
+  /* a quarter model (y >= 0, z >= 0): mirrored across both planes, the whole sphere */
+  struct particles quarter;
+  particles_init(&quarter);
+  add_sphere(&quarter, c, R, dx, RHO_STEEL, 0, 2, 0);
+  const double Mq = total_mass(&quarter);
+  o.mirror = -1;
+  for (int ax = 0; ax < 3; ax++) {
+    o.axis = ax;
+    s = areal(&quarter, &o, 0, 0, &v);
+    CHECK(v.mirror == 1 && v.mirror_y == 1 && v.u0 < -R && v.v0 < -R,
+          "a quarter model along %c: mirrored across y = 0 and z = 0, the whole picture",
+          "xyz"[ax]);
+    CHECK_CLOSE(s.mass / (4 * Mq), 1.0, 0.01, "quarter sphere, mirrored: mass / 4 x particle mass");
+    CHECK_CLOSE(s.at / peak, 1.0, 0.05, "quarter sphere, mirrored: centre / 2R rho");
+  }
+  o.axis = 2;
+  o.mirror = 0;
+  s = areal(&quarter, &o, 0, 0, &v);
+  CHECK(v.mirror == 0 && v.mirror_y == 0, "quarter sphere, --no-mirror: neither mirror");
+  particles_free(&quarter);
   particles_free(&full);
   particles_free(&half);
 }

@@ -424,10 +424,84 @@ static void test_errors(void)
         r.n, r.msg);
 }
 
+/* domain.symmetry: quarter (planes y = 0 and z = 0 through the impact axis): a quarter of
+ * the particles and the mass of a body symmetric about both; refused (file, line, key)
+ * for a body or velocity that is not, an hcp lattice, a domain not starting at y = 0 and
+ * z = 0, a face on a plane that is not a symmetry plane, and symmetry with half_model. */
+#define SP ", spacing: 0.1"
+static void test_quarter_model(void)
+{
+  static const char *const fmt = "materials: {gas: {eos: ideal-gas, gamma: 1.4}}\n"
+                                 "domain: {min: [-2, %s], max: [2, 2, 2]%s}\n"
+                                 "bodies:\n"
+                                 "  - {name: b, material: gas, density: 1.0, pressure: 1.0%s,\n"
+                                 "     shape: {type: %s}}\n"
+                                 "time: {end: 1}\n";
+  static const char *const sphere = "sphere, center: [0, 0, 0], radius: 1";
+  char f[1024], q[1024];
+  snprintf(f, sizeof f, fmt, "-2, -2", "", SP, sphere);
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP, sphere);
+  struct setup_result rf = setup_case(f), rq = setup_case(q);
+  CHECK(rf.rc == 0 && rq.rc == 0 && rf.n == 4 * rq.n && fabs(rf.mass - 4.0 * rq.mass) < 1e-12,
+        "quarter sphere: %zu particles of %zu, mass %.6f of %.6f (%s%s)", rq.n, rf.n, rq.mass,
+        rf.mass, rf.msg, rq.msg);
+  /* the same by a particle count (the simulated quarter's): a quarter of the exact mass */
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", ", particles: 1000", sphere);
+  rq = setup_case(q);
+  CHECK(rq.rc == 0 && fabs(rq.mass - PI / 3.0) < 1e-9,
+        "quarter sphere by a count: mass %.6f = a quarter of 4/3 pi (%s)", rq.mass, rq.msg);
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP,
+           "sphere, center: [0, 0.5, 0], radius: 1");
+  expect_error("off-axis body in a quarter model", q,
+               "shape.yaml:5: bodies[0].shape: body 'b' is not mirror-symmetric about the plane "
+               "y = 0");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP,
+           "box, min: [-1, -1, -0.5], max: [1, 1, 1]");
+  expect_error("box not symmetric in z", q, "not mirror-symmetric about the plane z = 0");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP,
+           "cylinder, center: [0, 0, 0], axis: [1, 1, 0], radius: 0.3, length: 1");
+  expect_error("cylinder across the planes", q, "not mirror-symmetric about the plane y = 0");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP ", velocity: [100, 0, 1]", sphere);
+  expect_error("velocity with a z component", q,
+               "shape.yaml:4: bodies[0].velocity: body 'b': velocity (100, 0, 1) m/s is not "
+               "along x");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP ", speed: 100, impact_angle: 60 deg",
+           sphere);
+  expect_error("oblique impact", q, "shape.yaml:4: bodies[0].impact_angle: body 'b': velocity");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP ", speed: 100, obliquity: 0",
+           sphere);
+  rq = setup_case(q);
+  CHECK(rq.rc == 0, "a normal impact by speed and obliquity 0 is taken (%s)", rq.msg);
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter", SP ", lattice: hcp", sphere);
+  expect_error("hcp in a quarter model", q,
+               "bodies[0].lattice: body 'b': lattice hcp cannot be cut by the symmetry plane of a "
+               "quarter model");
+  snprintf(q, sizeof q, fmt, "-2, 0", ", symmetry: quarter", SP, sphere);
+  expect_error("domain below y = 0", q,
+               "shape.yaml:2: domain.min: a quarter model starts at y = 0 (its second symmetry "
+               "plane), not y = -2 m");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter, boundary: {y_min: wall}", SP, sphere);
+  expect_error("y_min a wall", q,
+               "domain.symmetry: the y_min face of a quarter model is the symmetry plane y = 0; "
+               "it cannot be 'wall'");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: quarter, half_model: true", SP, sphere);
+  expect_error("symmetry and half_model", q,
+               "domain.half_model: give either 'symmetry' or 'half_model'");
+  snprintf(q, sizeof q, fmt, "0, 0", ", symmetry: eighth", SP, sphere);
+  expect_error("an unknown symmetry", q, "domain.symmetry");
+  /* symmetry: half is half_model: true */
+  snprintf(q, sizeof q, fmt, "-2, 0", ", symmetry: half", SP, sphere);
+  rq = setup_case(q);
+  CHECK(rq.rc == 0 && 2 * rq.n == rf.n, "symmetry: half holds half the sphere (%zu of %zu) %s",
+        rq.n, rf.n, rq.msg);
+}
+#undef SP
+
 int main(void)
 {
   test_volumes();
   test_half_model();
+  test_quarter_model();
   test_errors();
   return test_finish();
 }

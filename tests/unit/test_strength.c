@@ -31,6 +31,53 @@ static void test_eigen(void)
   CHECK_CLOSE(lam[0] + lam[1] + lam[2], 6.0, 1e-13, "trace = sum of eigenvalues");
 }
 
+/* sym3_negative_definite: never says yes where sym3_eigen finds an eigenvalue ≥ 0 (so
+ * the artificial stress that it gates keeps its bits), and says yes for clearly
+ * negative definite tensors (so that it spares the decomposition). Random rotations of
+ * diagonals whose largest entry runs from clearly negative through ±10⁻¹⁸ of the
+ * scale to positive. */
+static void test_negative_definite(void)
+{
+  unsigned long long x = 88172645463325252ull;
+  int wrong = 0, missed = 0, said = 0;
+  for (int n = 0; n < 20000; n++) {
+    double u[4];
+    for (int k = 0; k < 4; k++) { /* xorshift64: fixed, portable */
+      x ^= x << 13;
+      x ^= x >> 7;
+      x ^= x << 17;
+      u[k] = (double)(x >> 11) * (1.0 / 9007199254740992.0);
+    }
+    const double scale = pow(10.0, 12.0 * u[0] - 3.0);
+    const double e[7] = {-0.5, -1e-3, -1e-9, -1e-18, 0.0, 1e-18, 1e-6};
+    const double lmax = e[n % 7] * scale;
+    const double d[3] = {lmax, -scale * (0.2 + u[1]), -scale * (0.1 + u[2])};
+    /* a rotation about a random axis by a random angle (Rodrigues) */
+    const double th = 6.283185307179586 * u[3], c = cos(th), s = sin(th);
+    const double ax[3] = {u[1] - 0.5, u[2] - 0.5, 0.3};
+    const double nn = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+    const double k0 = ax[0] / nn, k1 = ax[1] / nn, k2 = ax[2] / nn;
+    const double Q[9] = {
+        c + k0 * k0 * (1 - c),      k0 * k1 * (1 - c) - k2 * s, k0 * k2 * (1 - c) + k1 * s,
+        k1 * k0 * (1 - c) + k2 * s, c + k1 * k1 * (1 - c),      k1 * k2 * (1 - c) - k0 * s,
+        k2 * k0 * (1 - c) - k1 * s, k2 * k1 * (1 - c) + k0 * s, c + k2 * k2 * (1 - c)};
+    double a[6], lam[3];
+    sym3_from_eigen(Q, d, a);
+    sym3_eigen(a, lam, NULL);
+    const int nd = sym3_negative_definite(a);
+    said += nd;
+    if (nd && !(lam[0] < 0.0)) wrong++;
+    if (!nd && lmax <= -1e-3 * scale) missed++;
+  }
+  CHECK(wrong == 0, "negative definite only where the largest eigenvalue is negative (%d wrong)",
+        wrong);
+  CHECK(missed == 0, "clearly negative definite tensors recognised (%d missed)", missed);
+  CHECK(said > 5000, "the test says yes often (%d of 20000)", said);
+  const double zero[6] = {0, 0, 0, 0, 0, 0}, nan6[6] = {NAN, 0, 0, 0, 0, 0};
+  CHECK(!sym3_negative_definite(zero) && !sym3_negative_definite(nan6),
+        "no for a zero tensor and for NaN");
+}
+
 static void test_rate(void)
 {
   const double G = 80e9, gd = 1e3, S0[6] = {0};
@@ -585,6 +632,7 @@ static void test_states(void)
 int main(void)
 {
   test_eigen();
+  test_negative_definite();
   test_rate();
   test_return();
   test_fracture();
