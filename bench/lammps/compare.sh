@@ -20,8 +20,9 @@ for k in $(seq 1 "$runs"); do
   t1=$(date +%s.%N)
   steps=$(tail -n 1 "$scratch/hv$k/run_segments.csv" | cut -d, -f7)
   echo "hvsph run $k: $(echo "$t1 - $t0" | bc) s wall, $steps steps"
+  # MACHDYN prints its banner on stdout even with -screen none
   (cd "$scratch" && "$lmp" -in "$here/in.sphere_plate" -var tend "$tend" -log "lmp$k.log" \
-    -screen none) || true
+    -screen none >"lmp$k.out" 2>&1) || true
   t2=$(date +%s.%N)
   lsteps=$(awk '/^Loop time/ {print $9}' "$scratch/lmp$k.log")
   echo "lammps run $k: $(echo "$t2 - $t1" | bc) s wall, $lsteps steps"
