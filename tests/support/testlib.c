@@ -158,3 +158,26 @@ char *test_slurp(const char *path, size_t *len)
   if (len) *len = n;
   return b;
 }
+
+int test_summary_energy_span(const char *rundir, double *e0, double *e1)
+{
+  char path[4300], line[4096];
+  snprintf(path, sizeof path, "%s/summary.csv", rundir);
+  FILE *f = fopen(path, "r");
+  if (!f) return -1;
+  int rows = 0;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] < '0' || line[0] > '9') continue; /* the header and comment lines */
+    char *q = line;
+    for (int k = 0; k < 10 && q; k++) {
+      q = strchr(q, ',');
+      if (q) q++;
+    }
+    if (!q) continue;
+    const double e = strtod(q, NULL);
+    if (rows++ == 0) *e0 = e;
+    *e1 = e;
+  }
+  fclose(f);
+  return rows >= 2 ? 0 : -1;
+}

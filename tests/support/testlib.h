@@ -45,5 +45,8 @@ char *test_slurp(const char *path, size_t *len);
 /* Runs a shell command line; returns its exit status (or -1). If `output` is not NULL,
  * stdout+stderr are captured into it (up to len-1 bytes). */
 int test_run(const char *cmdline, char *output, size_t len);
+/* The first and last total energy (e_total, column 11) of a run folder's summary.csv:
+ * 0, or -1 when the file is missing or has fewer than two rows. */
+int test_summary_energy_span(const char *rundir, double *e0, double *e1);
 
 #endif

@@ -38,29 +38,6 @@
 
 #define ENERGY_TOL 1e-3
 
-/* First and last e_total (column 11) of <dir>/summary.csv. */
-static int energy_span(const char *dir, double *e0, double *e1)
-{
-  char path[4300], line[4096];
-  snprintf(path, sizeof path, "%s/summary.csv", dir);
-  FILE *f = fopen(path, "r");
-  if (!f) return -1;
-  int rows = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] < '0' || line[0] > '9') continue;
-    char *q = line;
-    for (int k = 0; k < 10 && q; k++) {
-      q = strchr(q, ',');
-      if (q) q++;
-    }
-    if (!q) continue;
-    const double e = strtod(q, NULL);
-    if (rows++ == 0) *e0 = e;
-    *e1 = e;
-  }
-  fclose(f);
-  return rows >= 2 ? 0 : -1;
-}
 #include "testlib.h"
 
 /* al-alloy, data/materials.yaml (the paper's Tables 5 and 8) */
@@ -170,7 +147,7 @@ int main(void)
     particles_free(&p);
   }
   double e0 = 0.0, e1 = 0.0;
-  const int erc = energy_span(dir, &e0, &e1);
+  const int erc = test_summary_energy_span(dir, &e0, &e1);
   CHECK(erc == 0 && fabs(e1 / e0 - 1) < ENERGY_TOL, "total energy kept within %.0e (%+.2e)",
         ENERGY_TOL, e1 / e0 - 1);
   CHECK(offplane == 0, "every ring keeps z = 0 (%ld off the plane)", offplane);

@@ -49,30 +49,6 @@
 #define INFLOW_TOL  0.03
 #define ENERGY_TOL  1e-3
 
-/* First and last e_total of $HVSPH_TMP/<dir>/summary.csv (column 11). */
-static int energy_span(const char *dir, double *e0, double *e1)
-{
-  char path[4300], line[4096];
-  snprintf(path, sizeof path, "%s/%s/summary.csv", test_tmpdir(), dir);
-  FILE *f = fopen(path, "r");
-  if (!f) return -1;
-  int rows = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] < '0' || line[0] > '9') continue;
-    char *q = line;
-    for (int k = 0; k < 10 && q; k++) {
-      q = strchr(q, ',');
-      if (q) q++;
-    }
-    if (!q) continue;
-    const double e = strtod(q, NULL);
-    if (rows++ == 0) *e0 = e;
-    *e1 = e;
-  }
-  fclose(f);
-  return rows >= 2 ? 0 : -1;
-}
-
 int main(int argc, char **argv)
 {
   double wall;
@@ -125,7 +101,9 @@ int main(int argc, char **argv)
     if (cnt[b] && cnt[b - 1] && mean[b - 1] >= 40.0 && mean[b] < 40.0)
       shock = DR * (b - 0.5 + (mean[b - 1] - 40.0) / (mean[b - 1] - mean[b]));
   double e0 = 0.0, e1 = 0.0;
-  const int erc = energy_span("noh_rz", &e0, &e1);
+  char rundir[4200];
+  snprintf(rundir, sizeof rundir, "%s/noh_rz", test_tmpdir());
+  const int erc = test_summary_energy_span(rundir, &e0, &e1);
   printf("  %zu rings: plateau %.2f (%+.1f %%), near the axis %.2f (%+.1f %%), shock %.4f "
          "(%+.1f %%), inflow %.4f, energy %.9g -> %.9g (%+.2e)\n",
          p.n, plateau, 100 * (plateau / 64 - 1), axis, 100 * (axis / 64 - 1), shock,

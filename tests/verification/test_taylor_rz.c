@@ -60,30 +60,6 @@ static void measure(const struct particles *p, double dx, const unsigned char *f
   s->vx = mv / m;
 }
 
-/* First and last e_total (column 11) of <dir>/summary.csv. */
-static int energy_span(const char *dir, double *e0, double *e1)
-{
-  char path[4300], line[4096];
-  snprintf(path, sizeof path, "%s/summary.csv", dir);
-  FILE *f = fopen(path, "r");
-  if (!f) return -1;
-  int rows = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] < '0' || line[0] > '9') continue;
-    char *q = line;
-    for (int k = 0; k < 10 && q; k++) {
-      q = strchr(q, ',');
-      if (q) q++;
-    }
-    if (!q) continue;
-    const double e = strtod(q, NULL);
-    if (rows++ == 0) *e0 = e;
-    *e1 = e;
-  }
-  fclose(f);
-  return rows >= 2 ? 0 : -1;
-}
-
 int main(void)
 {
   double secs;
@@ -129,7 +105,7 @@ int main(void)
     particles_free(&p);
   }
   double e0 = 0, e1 = 0;
-  const int erc = energy_span(dir, &e0, &e1);
+  const int erc = test_summary_energy_span(dir, &e0, &e1);
   printf("at %.0f us: final length %.3f mm vs %.2f mm (%+.2f%%), mushroom radius %.3f mm vs "
          "%.2f mm (%+.2f%%); energy %+.2e\n",
          t * 1e6, s.L * 1e3, L_REF * 1e3, 100 * (s.L / L_REF - 1), s.R * 1e3, R_REF * 1e3,
