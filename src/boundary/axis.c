@@ -13,7 +13,7 @@
  * (sph_params.rz_rmax, sph_rz_weight_radius), so that its area mass is its source's and
  * the η-form's ghost pairs stay reciprocal (a ring mass scaled to the ghost's own radius
  * kept the area mass but not the energy: +0.75 % in 0.8 µs of a 19 GPa shock along a
- * cylinder against the wall, test_hugoniot_rz).
+ * cylinder against the wall, test_hugoniot --rz).
  */
 #include <math.h>
 #include <stdio.h>
