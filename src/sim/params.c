@@ -89,10 +89,11 @@ static int read_time(struct time_params *tp, struct cfg *c, struct hv_error *err
   double cfl = 0.3, cfla = 0.25, zero = 0.0, dtmin = 1e-30, growth = 1.2;
   long maxs = 0, levels_def = 6, levels = 6;
   int no = 0;
-  /* time.levels read (and recorded in used_parameters.yaml) only with individual steps:
-     a run without them, restarted or measured, is not refused for its own default */
+  /* time.levels read (and its default recorded in used_parameters.yaml) only with
+     individual steps or when given */
   if (cfg_get_bool(c, "time.individual", &no, &tp->individual, err) ||
-      (tp->individual && cfg_get_int(c, "time.levels", &levels_def, 2, 20, &levels, err)))
+      ((tp->individual || cfg_has(c, "time.levels")) &&
+       cfg_get_int(c, "time.levels", &levels_def, 2, 20, &levels, err)))
     return -1;
   tp->levels = (int)levels;
   return cfg_get_quantity(c, "time.end", UNIT_TIME, NULL, 0.0, HUGE_VAL, &tp->end, err) ||
@@ -196,16 +197,17 @@ static int check_name(struct cfg *c, const char *name, struct hv_error *err)
  * time steps"): the viscosity switch (each αᵢ decays over its particle's own step and is
  * read by its neighbours: not predicted for inactive ones) and the axisymmetric loops
  * (sph_rz.c, not written for it). Refused, never run wrong. time.levels without
- * time.individual is refused too: it would do nothing. */
+ * time.individual does nothing: a warning. */
 static int check_individual(const struct sim *s, struct cfg *c, struct hv_error *err)
 {
   char where[256];
   if (!s->tp.individual) {
+    /* a warning, not a refusal: an individual run continued or measured with
+       time.individual: false carries the key in its used_parameters.yaml */
     if (cfg_has(c, "time.levels"))
-      return hv_error_set(err, HV_EXIT_INPUT,
-                          "%s: time.levels: it sets the depth of individual time steps, "
-                          "which are off (give time.individual: true with it)",
-                          cfg_where(c, "time.levels", where, sizeof where));
+      hv_warn("%s: time.levels sets the depth of individual time steps, which are off "
+              "(time.individual: true takes it)",
+              cfg_where(c, "time.levels", where, sizeof where));
     return 0;
   }
   const struct {

@@ -25,10 +25,11 @@
  *   - the individual steps evaluate fewer rates than the global step's n × steps
  *     (measured 1 447 663 against 1 732 620: the case's spread is small, 16 % saved).
  * Bad input, each exit status 2 with the file, the line and the key, nothing written:
- * time.levels 1 and 21 (out of 2..20), 3.5 (not an integer), time.levels without
- * time.individual, time.individual: maybe (not a boolean), individual steps with the
- * viscosity switch and in an axisymmetric domain (not supported: refused, not run
- * wrong).
+ * time.levels 1 and 21 (out of 2..20), 3.5 (not an integer), time.individual: maybe
+ * (not a boolean), individual steps with the viscosity switch and in an axisymmetric
+ * domain (not supported: refused, not run wrong). time.levels without time.individual
+ * does nothing: a warning naming its file and line, and the run goes on (an individual
+ * run's used_parameters.yaml carries it when continued without them).
  */
 #include <math.h>
 #include <stdio.h>
@@ -215,8 +216,19 @@ int main(void)
   refused("time.levels 3.5",
           variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 3.5}"), 16,
           "time.levels", NULL);
-  refused("time.levels alone", variant("time: {end: 3 us}", "time: {end: 3 us, levels: 4}"), 16,
-          "time.levels", "time.individual");
+  { /* time.levels alone does nothing: a warning naming it, and the run goes on */
+    const char *f2 = test_write_file("levels.yaml",
+                                     variant("time: {end: 3 us}", "time: {end: 0 us, levels: 4}"));
+    char cmd[16384], dir[4200];
+    snprintf(dir, sizeof dir, "%s/out_levels", test_tmpdir());
+    snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --overwrite --threads 1", test_bin(), f2, dir);
+    const int st = test_run(cmd, out, sizeof out);
+    CHECK(st == 0 && strstr(out, "levels.yaml:16") && strstr(out, "warning") &&
+              strstr(out, "time.levels"),
+          "time.levels without time.individual: runs (exit %d) with a warning naming "
+          "levels.yaml:16 and the key\n%s",
+          st, out);
+  }
   refused("time.individual maybe",
           variant("time: {end: 3 us}", "time: {end: 3 us, individual: maybe}"), 16,
           "time.individual", NULL);

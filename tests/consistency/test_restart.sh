@@ -37,7 +37,8 @@
 #     up to 64 of its finest steps) and continued on 1 thread, every file identical to
 #     the straight run's on 2 threads — the per-particle last step, own limit, density
 #     rate and velocity gradient are state; a run made without them refuses to take
-#     them up when continued (exit 2, its files untouched).
+#     them up when continued, and one made with them to drop them (exit 2, its files
+#     untouched).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -326,6 +327,13 @@ check $? "individual: the straight run took $nblk blocks (> 25: the stop fell wi
 same_files "$T/ind_ref" "$T/ind"
 check $? "individual: continued run on 1 thread, every file identical to the straight run's on 2"
 refuses_to_take_up nt_ind "individual" "without time.individual" "${IND[@]}"
+# and an individual run is not continued with the global step (its next step is a block)
+cp -r "$T/ind_ref" "$T/ind_g"
+"$BIN" restart "$T/ind_g" --set time.individual=false --set time.end=15us --quiet \
+  > "$T/ind_g.log" 2>&1
+st=$?
+[ $st -eq 2 ] && grep -q "made with time.individual" "$T/ind_g.log" && same_files "$T/ind_ref" "$T/ind_g"
+check $? "individual: continuing it with the global step ends with exit 2 ($st) and a message, files untouched"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
