@@ -421,7 +421,6 @@ static void reorder(struct sim *s)
 
 /* ---- individual (block) time steps: time.individual (step.h) ---------------------- */
 
-enum { TB_NONE = -1 };
 /* The limiter's ratio: a particle's step at most 4 times its neighbours' (two levels).
  * Saitoh & Makino (2009) found 4 the largest that keeps a blast's front right; SWIFT uses
  * the same. In test_sedov (individual) 2 took 9 % more evaluations and moved the energy

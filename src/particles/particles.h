@@ -61,18 +61,18 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, divv, "1/s", PF_STATE | PF_AV, "velocity divergence at the last mid-step")                                    \
   X(double, eps_c, "", PF_OUT | PF_STATE | PF_CRACK,                                                                      \
     "crack opening strain (fracture.split: crack, fracture.energy)")                                                      \
-  X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")   \
-  X(int32_t, tb_start, "", PF_INDIV, "individual steps: tick its step started at")                 \
-  X(int32_t, tb_end, "", PF_INDIV, "individual steps: tick its step ends at")                      \
-  X(int32_t, tb_mid, "", PF_INDIV, "individual steps: tick of its rates (-1: none)")               \
-  X(int32_t, tb_len, "", PF_INDIV, "individual steps: its step in ticks, for the limiter")         \
-  X(int32_t, tb_act, "", PF_INDIV, "individual steps: its rates are evaluated at this tick")       \
-  X(int32_t, tb_wake, "", PF_INDIV, "individual steps: shortest neighbour step (limiter)")         \
-  X(int32_t, tb_cap, "", PF_INDIV, "individual steps: shortest neighbour step (its cap)")          \
-  X(int32_t, tb_done, "", PF_INDIV, "individual steps: its rates of this step are evaluated")      \
-  X(double, tb_dt, "s", PF_INDIV, "individual steps: length of its current step")                 \
-  X(double, dt_prev, "s", PF_STATE | PF_INDIV, "individual steps: length of its last step")       \
-  X(double, dt_own, "s", PF_STATE | PF_INDIV, "individual steps: its own limit at its last end")  \
+  X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")                          \
+  X(int32_t, tb_start, "", PF_INDIV, "individual steps: tick its step started at")                                        \
+  X(int32_t, tb_end, "", PF_INDIV, "individual steps: tick its step ends at")                                             \
+  X(int32_t, tb_mid, "", PF_INDIV, "individual steps: tick of its mid-step (its rates)")                                  \
+  X(int32_t, tb_len, "", PF_INDIV, "individual steps: its step in ticks, for the limiter")                                \
+  X(int32_t, tb_act, "", PF_INDIV, "individual steps: its rates are evaluated at this tick")                              \
+  X(int32_t, tb_wake, "", PF_INDIV, "individual steps: shortest neighbour step (limiter)")                                \
+  X(int32_t, tb_cap, "", PF_INDIV, "individual steps: shortest neighbour step (its cap)")                                 \
+  X(int32_t, tb_done, "", PF_INDIV, "individual steps: its rates of this step are evaluated")                             \
+  X(double, tb_dt, "s", PF_INDIV, "individual steps: length of its current step")                                         \
+  X(double, dt_prev, "s", PF_STATE | PF_INDIV, "individual steps: length of its last step")                               \
+  X(double, dt_own, "s", PF_STATE | PF_INDIV, "individual steps: its own limit at its last end")                          \
   X(double, drho_s, "kg/m3/s", PF_STATE | PF_INDIV, "individual steps: its last density rate")
 
 /* Vectors (3 components: name[0..2]) */
@@ -82,9 +82,12 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, a, "m/s2", PF_STATE, "acceleration (last step)")                                       \
   X(double, v0, "m/s", 0, "velocity at step start")                                                \
   X(double, x0, "m", PF_INDIV, "individual steps: position at its step start")                     \
-  X(double, gvx, "1/s", PF_STATE | PF_INDIV, "individual steps: its last dv_x/dx (reconstruction)")  \
-  X(double, gvy, "1/s", PF_STATE | PF_INDIV, "individual steps: its last dv_y/dx (reconstruction)")  \
-  X(double, gvz, "1/s", PF_STATE | PF_INDIV, "individual steps: its last dv_z/dx (reconstruction)")  \
+  X(double, gvx, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_x/dx (reconstruction)")                                         \
+  X(double, gvy, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_y/dx (reconstruction)")                                         \
+  X(double, gvz, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_z/dx (reconstruction)")                                         \
   X(double, crack, "", PF_OUT | PF_STATE | PF_CRACK,                                               \
     "crack normal (fracture.split: crack, fracture.energy; 0: none)")
 
@@ -98,10 +101,10 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
 enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
 
 struct particles {
-  int solid;      /* the PF_SOLID fields are allocated */
-  int av;         /* the PF_AV fields are allocated */
-  int cracks;     /* the PF_CRACK fields are allocated */
-  int indiv;      /* the PF_INDIV fields are allocated (time.individual) */
+  int solid;  /* the PF_SOLID fields are allocated */
+  int av;     /* the PF_AV fields are allocated */
+  int cracks; /* the PF_CRACK fields are allocated */
+  int indiv;  /* the PF_INDIV fields are allocated (time.individual) */
   /* individual time steps, while a tick evaluates rates (step.c): the SPH passes compute
      the reals with active[i] != 0 only, each over its own step step_dt[i]; NULL (the
      global step): every real, over the pass's dt */
