@@ -107,6 +107,12 @@ long fracture_end_step(struct particles *p, const struct material *mat, double d
   return again;
 }
 
+int fracture_end_particle(struct particles *p, size_t i, const struct material *mat, double dt)
+{
+  const struct material *m = &mat[p->mat[i]];
+  return m->frac.kind != FRACTURE_NONE ? end_particle(p, i, m, dt) : 0;
+}
+
 size_t fracture_check_states(const struct particles *p, const struct material *mat)
 {
   for (size_t i = 0; i < p->n; i++) {

@@ -71,6 +71,9 @@ enum fracture_state {
  * many particles need their pressure evaluated again (a split one in tension loses it,
  * an opening plane changes the density the EOS takes): the caller does so when > 0. */
 long fracture_end_step(struct particles *p, const struct material *mat, double dt);
+/* The same for the real i alone, at the end of its own step dt (individual steps):
+ * nonzero when its pressure must be evaluated again. */
+int fracture_end_particle(struct particles *p, size_t i, const struct material *mat, double dt);
 
 /* ---- what the state means to the rest of the step --------------------------------- */
 

@@ -10,6 +10,14 @@
  *   6. pressure                 pⁿ⁺¹ = EOS(ρⁿ⁺¹, eⁿ⁺¹);  h from ρⁿ⁺¹
  * The rates are evaluated at the mid-step state, so the scheme is second order
  * for smooth flow. The next Δt comes from the CFL and acceleration limits.
+ *
+ * Individual time steps (time.individual, p->indiv): step_advance advances one block of
+ * s->dt, in which each particle takes this scheme on its own power-of-two fraction of
+ * the block, its rates evaluated at its own mid-step with its neighbours drifted there,
+ * neighbours' steps within a factor 4 (the limiter wakes a particle on a long step when
+ * a neighbour starts a short one), and every particle at the block's ends (docs/models.md,
+ * "Individual time steps"). s->dt is then the block, proposed from the particles' own
+ * limits; s->evals counts the particles' rate evaluations.
  */
 #ifndef HV_STEP_H
 #define HV_STEP_H

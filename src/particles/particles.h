@@ -13,6 +13,7 @@
  *   PF_AV      allocated only with the viscosity switch (sph.viscosity.switch)
  *   PF_CRACK   allocated only when a material splits along cracks (fracture.split: crack)
  *   PF_RING    allocated only in an axisymmetric run (domain.geometry: axisymmetric)
+ *   PF_INDIV   allocated only with individual time steps (time.individual, step.h)
  * Tensors are symmetric, 6 components in VTK's order: xx, yy, zz, xy, yz, xz.
  */
 #ifndef HV_PARTICLES_H
@@ -29,6 +30,7 @@ enum {
   PF_AV = 1u << 4,
   PF_CRACK = 1u << 5,
   PF_RING = 1u << 6,
+  PF_INDIV = 1u << 7,
 };
 
 /* Components of a symmetric tensor (VTK order). */
@@ -62,7 +64,19 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, eps_c, "", PF_OUT | PF_STATE | PF_CRACK,                                                                      \
     "crack opening strain (fracture.split: crack, fracture.energy)")                                                      \
   X(double, r0, "m", PF_STATE | PF_RING, "radius the ring was made at (sph.rz_stretch_max)")                              \
-  X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")
+  X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")                          \
+  X(int32_t, tb_start, "", PF_INDIV, "individual steps: tick its step started at")                                        \
+  X(int32_t, tb_end, "", PF_INDIV, "individual steps: tick its step ends at")                                             \
+  X(int32_t, tb_mid, "", PF_INDIV, "individual steps: tick of its mid-step (its rates)")                                  \
+  X(int32_t, tb_len, "", PF_INDIV, "individual steps: its step in ticks, for the limiter")                                \
+  X(int32_t, tb_act, "", PF_INDIV, "individual steps: its rates are evaluated at this tick")                              \
+  X(int32_t, tb_wake, "", PF_INDIV, "individual steps: shortest neighbour step (limiter)")                                \
+  X(int32_t, tb_cap, "", PF_INDIV, "individual steps: shortest neighbour step (its cap)")                                 \
+  X(int32_t, tb_done, "", PF_INDIV, "individual steps: its rates of this step are evaluated")                             \
+  X(double, tb_dt, "s", PF_INDIV, "individual steps: length of its current step")                                         \
+  X(double, dt_prev, "s", PF_STATE | PF_INDIV, "individual steps: length of its last step")                               \
+  X(double, dt_own, "s", PF_STATE | PF_INDIV, "individual steps: its own limit at its last end")                          \
+  X(double, drho_s, "kg/m3/s", PF_STATE | PF_INDIV, "individual steps: its last density rate")
 
 /* Vectors (3 components: name[0..2]) */
 #define HV_PARTICLE_VECTORS(X)                                                                     \
@@ -70,6 +84,13 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, v, "m/s", PF_OUT | PF_GHOST | PF_STATE, "velocity")                                    \
   X(double, a, "m/s2", PF_STATE, "acceleration (last step)")                                       \
   X(double, v0, "m/s", 0, "velocity at step start")                                                \
+  X(double, x0, "m", PF_INDIV, "individual steps: position at its step start")                     \
+  X(double, gvx, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_x/dx (reconstruction)")                                         \
+  X(double, gvy, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_y/dx (reconstruction)")                                         \
+  X(double, gvz, "1/s", PF_STATE | PF_INDIV,                                                       \
+    "individual steps: its last dv_z/dx (reconstruction)")                                         \
   X(double, crack, "", PF_OUT | PF_STATE | PF_CRACK,                                               \
     "crack normal (fracture.split: crack, fracture.energy; 0: none)")
 
@@ -77,15 +98,22 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
 #define HV_PARTICLE_TENSORS(X)                                                                     \
   X(double, S, "Pa", PF_OUT | PF_GHOST | PF_STATE | PF_SOLID, "deviatoric stress")                 \
   X(double, S1, "Pa", PF_SOLID, "deviatoric stress at step end")                                   \
-  X(double, R, "Pa", PF_GHOST | PF_SOLID, "artificial stress (Monaghan 2000)")
+  X(double, R, "Pa", PF_GHOST | PF_SOLID, "artificial stress (Monaghan 2000)")                     \
+  X(double, S0, "Pa", PF_SOLID | PF_INDIV, "individual steps: deviatoric stress at its step start")
 
 enum pf_type { PF_INT32, PF_INT64, PF_DOUBLE };
 
 struct particles {
-  int solid;      /* the PF_SOLID fields are allocated */
-  int av;         /* the PF_AV fields are allocated */
-  int cracks;     /* the PF_CRACK fields are allocated */
-  int rings;      /* the PF_RING fields are allocated */
+  int solid;  /* the PF_SOLID fields are allocated */
+  int av;     /* the PF_AV fields are allocated */
+  int cracks; /* the PF_CRACK fields are allocated */
+  int rings;  /* the PF_RING fields are allocated */
+  int indiv;  /* the PF_INDIV fields are allocated (time.individual) */
+  /* individual time steps, while a tick evaluates rates (step.c): the SPH passes compute
+     the reals with active[i] != 0 only, each over its own step step_dt[i]; NULL (the
+     global step): every real, over the pass's dt */
+  const int32_t *active;
+  const double *step_dt;
   int axisym;     /* axisymmetric (domain.geometry: axisymmetric): x is the axis, y the
                      radius r >= 0, z = 0 and v_z = 0 for every particle; m is the ring's
                      (the true 3D) mass, rho the true density; tensor component zz is
@@ -138,6 +166,8 @@ void particles_enable_av(struct particles *p);
 void particles_enable_crack(struct particles *p);
 /* Allocates the PF_RING fields (zeroed) from now on. */
 void particles_enable_rings(struct particles *p);
+/* Allocates the PF_INDIV fields (zeroed) from now on. */
+void particles_enable_indiv(struct particles *p);
 void particles_free(struct particles *p);
 /* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
 void particles_reserve(struct particles *p, size_t cap);

@@ -510,6 +510,24 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
                  path);
     return -1;
   }
+  if (p->indiv && !ckpt_find(c, "p.dt_prev")) {
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "%s: the run was made without time.individual, whose per-particle steps "
+                 "it does not hold: a run cannot take individual time steps up when "
+                 "continued (start it again, or continue it without them)",
+                 path);
+    return -1;
+  }
+  /* and the other way: its next Δt is a block, up to 2^(levels−2) times the stable
+     step, which the global step would take at once */
+  if (!p->indiv && ckpt_find(c, "p.dt_prev")) {
+    hv_error_set(err, HV_EXIT_INPUT,
+                 "%s: the run was made with time.individual, whose next step is a block of "
+                 "many of its particles' steps: continue it with individual time steps (or "
+                 "start it again without them)",
+                 path);
+    return -1;
+  }
   if (p->cracks && !ckpt_find(c, "p.crack")) {
     hv_error_set(err, HV_EXIT_INPUT,
                  "%s: the run was made without fracture.split: crack "

@@ -624,6 +624,13 @@ static int say_end(const struct run_options *ro, const struct sim *s, const stru
   if (!ro->quiet)
     hv_info("done: %ld steps to t = %g s; results in %s/ (summary.csv, run.pvd)", s->step, s->t,
             o->dir);
+  if (!ro->quiet && s->p.indiv)
+    hv_info("individual time steps: %lld particle rate evaluations at %ld ticks (%.4g per "
+            "particle per block of %d levels)%s",
+            s->evals, s->eval_ticks,
+            s->p.n > 0 && s->step > 0 ? (double)s->evals / ((double)s->p.n * (double)s->step) : 0.0,
+            s->tp.levels,
+            s->over_steps > 0 ? "; some steps wanted less than the finest level" : "");
   return HV_EXIT_OK;
 }
 

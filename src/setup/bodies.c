@@ -1184,6 +1184,7 @@ static int enable_fields(struct sim *s, struct cfg *c, struct hv_error *err)
       particles_enable_solid(&s->p);
   /* each particle's viscosity coefficient and last velocity divergence (the switch) */
   if (s->sph.av_switch) particles_enable_av(&s->p);
+  if (s->tp.individual) particles_enable_indiv(&s->p);
   /* each particle's crack normal (fracture.split: crack) */
   for (int m = 0; m < s->nmat; m++)
     if (s->mat[m].frac.kind != FRACTURE_NONE &&

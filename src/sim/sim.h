@@ -22,6 +22,8 @@ struct time_params {
   double dt_min;  /* [s] a step below this ends the run as failed */
   double growth;  /* [-] largest ratio between consecutive steps */
   long max_steps; /* 0: none */
+  int individual; /* time.individual: block (individual) time steps (step.h) */
+  int levels;     /* time.levels: a block's finest step is its length / 2^levels */
 };
 
 struct output_params {
@@ -69,6 +71,11 @@ struct sim {
   int64_t dt_limit_id; /* id of the particle whose CFL or acceleration limit it was */
   int dt_limit_body;   /* and its body */
   long step;
+  /* individual time steps (time.individual): the reals' rate evaluations so far (a
+     global step makes n per step), the ticks that evaluated some, and the particle
+     steps that wanted less than the block's finest step and took it */
+  long long evals;
+  long eval_ticks, over_steps;
 };
 
 /* Reads everything but the bodies (sph, time, output, materials, domain). */

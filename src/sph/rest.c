@@ -62,11 +62,12 @@ void rest_mark_first(const struct particles *p, const struct nbr_grid *g, struct
 }
 
 /* What the first pass would write for the reals of a resting cell c. */
-void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c, double *gradv)
+void rest_write_first(struct particles *p, const struct nbr_grid *g, size_t c, double *gradv,
+                      const int32_t *act)
 {
   for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
     const uint32_t i = g->order[ii];
-    if (i >= p->n) continue;
+    if (i >= p->n || (act && !act[i])) continue;
     p->drho[i] = 0.0;
     p->de[i] = 0.0;
     for (int k = 0; k < 6; k++) p->S1[k][i] = p->S[k][i];
@@ -98,12 +99,12 @@ void rest_mark_second(const struct particles *p, const struct nbr_grid *g, struc
 /* What the second pass would write for the reals of a resting cell c: a = 0, de
  * unchanged, the signal speed. Returns the number of reals. */
 long rest_write_second(struct particles *p, const struct nbr_grid *g, size_t c,
-                       const struct sph_params *sp)
+                       const struct sph_params *sp, const int32_t *act)
 {
   long rested = 0;
   for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
     const uint32_t i = g->order[ii];
-    if (i >= p->n) continue;
+    if (i >= p->n || (act && !act[i])) continue;
     p->a[0][i] = p->a[1][i] = p->a[2][i] = 0.0;
     p->vsig[i] = sph_signal_speed(nsearch_any(g, c, p, i), p->cs[i], sp->alpha, sp->beta, 0.0, 0.0);
     rested++;

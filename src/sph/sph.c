@@ -7,6 +7,7 @@
 #include "sph/sph.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -42,6 +43,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struc
   const double *m = p->m;
   double *rhow = p->rho; /* summation: written for i only; neighbours read vol */
   const int sw = p->av;  /* the viscosity switch (avswitch.h) */
+  const int32_t *act = p->active;
 
 #pragma omp parallel
   {
@@ -51,7 +53,7 @@ void sph_density_rate(struct particles *p, const struct nbr_grid *g, const struc
       int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= n) continue;
+        if (i >= n || (act && !act[i])) continue; /* a ghost, or inactive (step.h) */
         const size_t nsel = nsearch_neighbours(&cd, &gathered, g, c, ii, p, NULL, cache);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
@@ -109,6 +111,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
   const double alpha = sp->alpha, beta = sp->beta;
   const double *av = p->av ? p->alpha : NULL; /* the switch: αᵢ of every slot */
   const struct pair_visc pv = pair_visc_params(sp, av);
+  const int32_t *act = p->active;
 
 #pragma omp parallel
   {
@@ -118,7 +121,7 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
       int gathered = 0;
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= n) continue;
+        if (i >= n || (act && !act[i])) continue; /* a ghost, or inactive (step.h) */
         const size_t nsel = nsearch_neighbours(&cd, &gathered, g, c, ii, p, cache, NULL);
         const double xi = x[i], yi = y[i], zi = z[i], hi = h[i];
         const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
@@ -147,6 +150,42 @@ void sph_forces(struct particles *p, const struct nbr_grid *g, const struct sph_
            (Noh's first step, every α still 0, crossed particles with it scaled too) */
         vsig[i] = sph_signal_speed(nsel > 0, ci, amax, beta, mumax, /* amax = α without it */
                                    sqrt(vxi * vxi + vyi * vyi + vzi * vzi));
+      }
+    }
+    nsearch_free(&cd);
+  }
+}
+
+/* A minimum that any order of the threads' writes leaves the same. */
+static inline void atomic_min_i32(int32_t *a, int32_t v)
+{
+  int32_t cur = __atomic_load_n(a, __ATOMIC_RELAXED);
+  while (v < cur &&
+         !__atomic_compare_exchange_n(a, &cur, v, 1, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {}
+}
+
+void sph_step_exchange(const struct particles *p, const struct nbr_grid *g, const int32_t *set,
+                       const int32_t *len, int32_t *cap, int32_t *wake)
+{
+  const size_t n = p->n;
+#pragma omp parallel
+  {
+    struct nsearch cd = {0};
+#pragma omp for schedule(dynamic, 8)
+    for (size_t c = 0; c < g->ncells; c++) {
+      int gathered = 0;
+      for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
+        const uint32_t i = g->order[ii];
+        if (i >= n || !set[i]) continue;
+        const size_t nsel = nsearch_neighbours(&cd, &gathered, g, c, ii, p, NULL, NULL);
+        int32_t m = INT32_MAX;
+        for (size_t k = 0; k < nsel; k++) {
+          const uint32_t j = cd.j[cd.sel[k]];
+          if (j >= n || j == i) continue; /* a ghost mirrors a real that is near by itself */
+          if (len[j] < m) m = len[j];
+          atomic_min_i32(&wake[j], len[i]);
+        }
+        cap[i] = m;
       }
     }
     nsearch_free(&cd);

@@ -153,6 +153,12 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
                             const struct material *mat, double dt);
 void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struct sph_params *sp,
                       struct sph_cache *cache, const struct material *mat);
+/* The time-step limiter of individual steps (step.c): for each real i with set[i] != 0,
+ * cap[i] = the smallest len[j] of its real neighbours j (INT32_MAX without any), and
+ * wake[j] lowered to len[i] for each of them. Both are minima, which no order of the
+ * threads changes: the results do not depend on the thread count. */
+void sph_step_exchange(const struct particles *p, const struct nbr_grid *g, const int32_t *set,
+                       const int32_t *len, int32_t *cap, int32_t *wake);
 /* Neighbour count of particle i (diagnostics, tests). */
 int sph_count_neighbours(const struct particles *p, const struct nbr_grid *g, size_t i);
 

@@ -534,7 +534,7 @@ static inline void density_rate_particle(const struct density_pass *dp, const st
   density_gradient(dp, i, &I, recon, &s);
   if (I.strong) {
     if (p->axisym) s.L[8] = I.vy / sph_rz_radius(I.y, I.h); /* the hoop rate v_r/r (rz.h) */
-    update_stress(p, i, mi, s.L, dp->dt);
+    update_stress(p, i, mi, s.L, p->step_dt ? p->step_dt[i] : dp->dt); /* its own step */
   } else {
     p->de[i] = 0.0;
     for (int k = 0; k < 6; k++) p->S[k][i] = p->S1[k][i] = 0.0;
@@ -567,6 +567,16 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
   partner_reserve(cache, p->n + p->n_ghost, &rec, &tag);
   const struct density_pass dp = {p, sp, mat, gradv_reserve(p, sp, cache), dt, rec};
   const int skip = sp->skip_resting && cache && !p->av;
+  /* individual steps (step.h): the velocity gradients of the reals not evaluated now are
+     those of their last evaluation, kept in the particle store (gvx, gvy, gvz: the cache's
+     are per slot, and slots move when the particles are reordered or absorbed) */
+  double *const *gvs[3] = {p->gvx, p->gvy, p->gvz};
+  if (dp.gradv && p->active) {
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n; i++)
+      if (!p->active[i])
+        for (int t = 0; t < 9; t++) dp.gradv[9 * i + (size_t)t] = gvs[t / 3][t % 3][i];
+  }
   if (skip) rest_mark_first(p, g, cache);
   partner_pack_density(p, sp, mat, g, skip ? cache->rest : NULL, rec);
 #pragma omp parallel
@@ -577,14 +587,14 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       if (skip && cache->rest[c]) { /* at rest: what the pass would write */
-        rest_write_first(p, g, c, dp.gradv);
+        rest_write_first(p, g, c, dp.gradv, p->active);
         continue;
       }
       int gathered = 0, have = 0, cur = 0;
       /* one particle behind the search (partners_take) */
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= p->n) continue;
+        if (i >= p->n || (p->active && !p->active[i])) continue; /* inactive: step.h */
         const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, NULL, cache);
         partners_take(rec, 1, 0, &ns, nsel, i, &l[cur ^ 1]);
         if (have) density_rate_particle(&dp, &ns, &l[cur], &t);
@@ -597,6 +607,12 @@ void sph_density_rate_solid(struct particles *p, const struct nbr_grid *g,
     tile_free(&t);
     free(l[0].js);
     free(l[1].js);
+  }
+  if (dp.gradv && p->active) {
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n; i++)
+      if (p->active[i])
+        for (int t = 0; t < 9; t++) gvs[t / 3][t % 3][i] = dp.gradv[9 * i + (size_t)t];
   }
   if (cache) cache->valid = 1;
   if (!cache) {
@@ -1048,7 +1064,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struc
 #pragma omp for schedule(dynamic, 8)
     for (size_t c = 0; c < g->ncells; c++) {
       if (skip && (cache->rest[c] & 2)) {
-        rested += rest_write_second(p, g, c, sp);
+        rested += rest_write_second(p, g, c, sp, p->active);
         continue;
       }
       /* a cell the first pass skipped has no stored neighbours: search */
@@ -1058,7 +1074,7 @@ void sph_forces_solid(struct particles *p, const struct nbr_grid *g, const struc
          one before it was computed */
       for (uint32_t ii = g->cell_start[c]; ii < g->cell_start[c + 1]; ii++) {
         const uint32_t i = g->order[ii];
-        if (i >= p->n) continue;
+        if (i >= p->n || (p->active && !p->active[i])) continue; /* inactive: step.h */
         const size_t nsel = nsearch_neighbours(&ns, &gathered, g, c, ii, p, load, NULL);
         partners_take(rec, 3, 1, &ns, nsel, i, &l[cur ^ 1]);
         if (have) forces_particle(&fp, &l[cur], &t);

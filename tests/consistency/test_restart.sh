@@ -32,7 +32,13 @@
 #     plate), whose crack normals and opening strains are state; a run made without it
 #     refuses to take it up when continued (exit 2, its files untouched);
 #  9. 8. continued from its checkpoint with the record p.fstate dropped (a checkpoint
-#     from before the fracture state was a field): identical again.
+#     from before the fracture state was a field): identical again;
+# 10. individual time steps (time.individual): stopped after 25 blocks (of 55; each of
+#     up to 64 of its finest steps) and continued on 1 thread, every file identical to
+#     the straight run's on 2 threads — the per-particle last step, own limit, density
+#     rate and velocity gradient are state; a run made without them refuses to take
+#     them up when continued, and one made with them to drop them (exit 2, its files
+#     untouched).
 set -u
 BIN=${HVSPH_BIN:-build/hvsph}
 SRC=${HVSPH_SOURCE_DIR:-.}
@@ -304,6 +310,30 @@ check $? "split: crack: a run stopped at step 300, its checkpoint without the re
 "$BIN" restart "$T/cr_old" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null &&
   same_files "$T/cr_ref" "$T/cr_old"
 check $? "split: crack: continued from a checkpoint without p.fstate, every file identical"
+
+# 10. individual time steps: a checkpoint is written between blocks, where every particle
+#     has ended its step; what the next block needs beyond the global step's state (each
+#     particle's last step, its own limit, its last density rate and velocity gradient)
+#     is in it
+IND=(--set time.individual=true)
+"$BIN" run "$CASE" -o "$T/ind_ref" "${SETS[@]}" "${IND[@]}" --threads 2 --quiet 2> /dev/null &&
+  "$BIN" run "$CASE" -o "$T/ind" "${SETS[@]}" "${IND[@]}" --set time.max_steps=25 --threads 2 \
+    --quiet 2> /dev/null &&
+  "$BIN" restart "$T/ind" --set time.max_steps=0 --threads 1 --quiet 2> /dev/null
+check $? "individual: straight run, run stopped after 25 blocks and its continuation"
+nblk=$(awk -F, '$1 ~ /^[0-9]/ {s = $1} END {print s}' "$T/ind_ref/summary.csv")
+[ "${nblk:-0}" -gt 25 ]
+check $? "individual: the straight run took $nblk blocks (> 25: the stop fell within it)"
+same_files "$T/ind_ref" "$T/ind"
+check $? "individual: continued run on 1 thread, every file identical to the straight run's on 2"
+refuses_to_take_up nt_ind "individual" "without time.individual" "${IND[@]}"
+# and an individual run is not continued with the global step (its next step is a block)
+cp -r "$T/ind_ref" "$T/ind_g"
+"$BIN" restart "$T/ind_g" --set time.individual=false --set time.end=15us --quiet \
+  > "$T/ind_g.log" 2>&1
+st=$?
+[ $st -eq 2 ] && grep -q "made with time.individual" "$T/ind_g.log" && same_files "$T/ind_ref" "$T/ind_g"
+check $? "individual: continuing it with the global step ends with exit 2 ($st) and a message, files untouched"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
