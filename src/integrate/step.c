@@ -122,12 +122,20 @@ static void update_h(struct sim *s)
   struct particles *p = &s->p;
   const double eta = s->sph.eta, hmin = s->sph.h_min, hmax = s->sph.h_max;
   const int rz = p->axisym;
+  const double cap = rz && p->rings ? s->sph.rz_stretch_max : 0.0; /* r0 = 0: no cap */
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
-    /* axisymmetric: from the area mass, h = η (m/(2π r ρ))^(1/2), the in-plane spacing */
-    double h = rz ? eta * sqrt(p->m[i] / (2.0 * HV_KERNEL_PI * sph_rz_radius(p->x[1][i], p->h[i]) *
-                                          p->rho[i]))
-                  : eta * cbrt(p->m[i] / p->rho[i]);
+    /* axisymmetric: from the area mass, h = η (m/(2π r ρ))^(1/2), the in-plane spacing,
+       with r no larger than cap × r0 (the ring's axial extent does not follow its hoop
+       stretch) */
+    double h;
+    if (rz) {
+      double r = sph_rz_radius(p->x[1][i], p->h[i]);
+      if (cap > 0.0 && p->r0[i] > 0.0 && r > cap * p->r0[i]) r = cap * p->r0[i];
+      h = eta * sqrt(p->m[i] / (2.0 * HV_KERNEL_PI * r * p->rho[i]));
+    } else {
+      h = eta * cbrt(p->m[i] / p->rho[i]);
+    }
     p->h[i] = h < hmin ? hmin : (h > hmax ? hmax : h);
   }
 }

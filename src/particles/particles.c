@@ -67,7 +67,7 @@ int particles_fields_all(struct particles *p, struct pfield *out) { return all_f
 static int field_allocated(const struct particles *p, const struct pfield *f)
 {
   return (!(f->flags & PF_SOLID) || p->solid) && (!(f->flags & PF_AV) || p->av) &&
-         (!(f->flags & PF_CRACK) || p->cracks);
+         (!(f->flags & PF_CRACK) || p->cracks) && (!(f->flags & PF_RING) || p->rings);
 }
 
 int particles_fields(struct particles *p, struct pfield *out)
@@ -85,7 +85,7 @@ size_t particles_bytes_per_particle(const struct particles *p)
   int nf = all_fields(NULL, f);
   size_t b = 0;
   for (int i = 0; i < nf; i++)
-    if (p ? field_allocated(p, &f[i]) : !(f[i].flags & (PF_SOLID | PF_AV | PF_CRACK)))
+    if (p ? field_allocated(p, &f[i]) : !(f[i].flags & (PF_SOLID | PF_AV | PF_CRACK | PF_RING)))
       b += pf_type_size(f[i].type) * (size_t)f[i].ncomp;
   return b;
 }
@@ -170,6 +170,13 @@ void particles_enable_crack(struct particles *p)
   if (p->cracks) return;
   p->cracks = 1;
   if (p->cap) reserve_to(p, p->cap); /* allocates the crack normals only */
+}
+
+void particles_enable_rings(struct particles *p)
+{
+  if (p->rings) return;
+  p->rings = 1;
+  if (p->cap) reserve_to(p, p->cap); /* allocates the rings' fields only */
 }
 
 size_t particles_add(struct particles *p, size_t count)

@@ -12,6 +12,7 @@
  *   PF_SOLID   allocated only when some material has strength or fracture
  *   PF_AV      allocated only with the viscosity switch (sph.viscosity.switch)
  *   PF_CRACK   allocated only when a material splits along cracks (fracture.split: crack)
+ *   PF_RING    allocated only in an axisymmetric run (domain.geometry: axisymmetric)
  * Tensors are symmetric, 6 components in VTK's order: xx, yy, zz, xy, yz, xz.
  */
 #ifndef HV_PARTICLES_H
@@ -27,6 +28,7 @@ enum {
   PF_SOLID = 1u << 3,
   PF_AV = 1u << 4,
   PF_CRACK = 1u << 5,
+  PF_RING = 1u << 6,
 };
 
 /* Components of a symmetric tensor (VTK order). */
@@ -59,6 +61,7 @@ enum { T_XX = 0, T_YY, T_ZZ, T_XY, T_YZ, T_XZ };
   X(double, divv, "1/s", PF_STATE | PF_AV, "velocity divergence at the last mid-step")                                    \
   X(double, eps_c, "", PF_OUT | PF_STATE | PF_CRACK,                                                                      \
     "crack opening strain (fracture.split: crack, fracture.energy)")                                                      \
+  X(double, r0, "m", PF_STATE | PF_RING, "radius the ring was made at (sph.rz_stretch_max)")                              \
   X(double, dt, "s", PF_OUT, "time step the particle allows (CFL, acceleration, wall approach)")
 
 /* Vectors (3 components: name[0..2]) */
@@ -82,6 +85,7 @@ struct particles {
   int solid;      /* the PF_SOLID fields are allocated */
   int av;         /* the PF_AV fields are allocated */
   int cracks;     /* the PF_CRACK fields are allocated */
+  int rings;      /* the PF_RING fields are allocated */
   int axisym;     /* axisymmetric (domain.geometry: axisymmetric): x is the axis, y the
                      radius r >= 0, z = 0 and v_z = 0 for every particle; m is the ring's
                      (the true 3D) mass, rho the true density; tensor component zz is
@@ -132,6 +136,8 @@ void particles_enable_solid(struct particles *p);
 void particles_enable_av(struct particles *p);
 /* Allocates the PF_CRACK fields (zeroed) from now on. */
 void particles_enable_crack(struct particles *p);
+/* Allocates the PF_RING fields (zeroed) from now on. */
+void particles_enable_rings(struct particles *p);
 void particles_free(struct particles *p);
 /* Ensures capacity for `cap` slots (reals + ghosts); contents kept. */
 void particles_reserve(struct particles *p, size_t cap);

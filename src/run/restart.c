@@ -522,12 +522,18 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
   /* a checkpoint from before the fracture state was a field (no p.fstate): the state
      follows from the damage (fracture_states_from_damage), exactly */
   const int old_states = p->solid && !ckpt_find(c, "p.fstate");
+  /* an axisymmetric checkpoint from before the rings kept their initial radius (no
+     p.r0): r0 stays 0, h follows every stretch, and the run continues as it was made,
+     bit for bit */
+  const int old_rings = p->rings && !ckpt_find(c, "p.r0");
   /* the count against the data the file holds, before the particles are allocated (a
      count of 2^40 asked for 11.7 TB): every state field's record, n elements a part */
   struct pfield f[HV_MAX_FIELDS];
   int nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
-    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate"))) continue;
+    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate")) ||
+        (old_rings && !strcmp(f[i].name, "r0")))
+      continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
     if (want_count(c, rn, ckpt_type_of(f[i].type), (uint64_t)n * (uint64_t)f[i].ncomp,
@@ -539,7 +545,9 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
   p->n = n;
   nf = particles_fields(p, f);
   for (int i = 0; i < nf; i++) {
-    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate"))) continue;
+    if (!(f[i].flags & PF_STATE) || (old_states && !strcmp(f[i].name, "fstate")) ||
+        (old_rings && !strcmp(f[i].name, "r0")))
+      continue;
     char rn[CKPT_NAME_LEN + 1];
     snprintf(rn, sizeof rn, "p.%s", f[i].name);
     if (ckpt_get_parts(c, rn, ckpt_type_of(f[i].type), n, f[i].comp, f[i].ncomp, err)) return -1;
@@ -554,6 +562,7 @@ static int restart_particles(struct ckpt_file *c, struct sim *s, size_t n, const
     }
   if (check_particles(c, p, f, nf, err)) return -1;
   if (old_states) fracture_states_from_damage(p, s->mat);
+  if (old_rings) memset(p->r0, 0, n * sizeof *p->r0);
   if (p->solid) { /* each fracture state one its damage and material allow */
     const size_t k = fracture_check_states(p, s->mat);
     if (k != (size_t)-1) {

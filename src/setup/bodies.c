@@ -1189,6 +1189,8 @@ static int enable_fields(struct sim *s, struct cfg *c, struct hv_error *err)
     if (s->mat[m].frac.kind != FRACTURE_NONE &&
         (s->mat[m].frac.split == SPLIT_CRACK || s->mat[m].frac.energy > 0.0))
       particles_enable_crack(&s->p);
+  /* each ring's initial radius (the stretch its h follows, sph.rz_stretch_max) */
+  if (s->p.axisym) particles_enable_rings(&s->p);
   if (s->p.axisym && rz_check_materials(s, c, err)) return -1;
   if (s->sph.summation && s->p.solid)
     return hv_error_set(err, HV_EXIT_INPUT,

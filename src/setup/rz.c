@@ -149,6 +149,7 @@ void rz_ring_masses(struct particles *p, size_t first, size_t cnt, double rho, d
   for (size_t q = first; q < first + cnt; q++) {
     p->m[q] = 2.0 * HV_KERNEL_PI * p->x[1][q] * rho * d * d * scale;
     p->h[q] = eta * d * sqrt(scale);
+    p->r0[q] = p->x[1][q];
     p->x[2][q] = p->v[2][q] = 0.0;
   }
 }

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "material/material_read.h"
+#include "sph/rz.h"
 #include "sim/sim.h"
 
 static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
@@ -16,7 +17,7 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
   int k, dens, form, sw, no = 0, yes = 1;
   double eta = 1.2, alpha = 1.0, beta = 2.0, eps = 0.01, zero = 0.0, decay = 0.05;
   static const char *const geometries[] = {"3d", "axisymmetric", NULL};
-  double as_eps = 0.3, as_n = 4.0, rest_tol = 1e-14;
+  double as_eps = 0.3, as_n = 4.0, rest_tol = 1e-14, stretch = RZ_STRETCH_MAX;
   int geometry = 0;
   /* an axisymmetric case runs without the artificial stress (setup/rz.c) */
   if (cfg_get_choice(c, "domain.geometry", geometries[0], geometries, &geometry, err)) return -1;
@@ -46,11 +47,26 @@ static int read_sph(struct sph_params *sp, struct cfg *c, struct hv_error *err)
                        err) ||
       cfg_get_quantity(c, "sph.viscosity.decay", UNIT_NONE, &decay, 1e-3, 1.0, &sp->av_decay, err))
     return -1;
+  /* read in RZ only: a 3D run's used_parameters.yaml does not list it */
+  if (geometry == 1 && cfg_get_quantity(c, "sph.rz_stretch_max", UNIT_NONE, &stretch, 0.0, 1e6,
+                                        &sp->rz_stretch_max, err))
+    return -1;
   sp->av_switch = sw;
   sp->kernel = (enum kernel_kind)k;
   sp->summation = dens;
   sp->continuity_mass = form;
   char where[256];
+  if (geometry != 1 && cfg_has(c, "sph.rz_stretch_max"))
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.rz_stretch_max: the hoop stretch of a ring is for "
+                        "axisymmetric runs (domain.geometry: axisymmetric); remove it here",
+                        cfg_where(c, "sph.rz_stretch_max", where, sizeof where));
+  if (sp->rz_stretch_max > 0.0 && sp->rz_stretch_max < 1.0)
+    return hv_error_set(err, HV_EXIT_INPUT,
+                        "%s: sph.rz_stretch_max: %g is below 1: it caps the stretch r/r0 that "
+                        "a ring's h follows (0: no cap)",
+                        cfg_where(c, "sph.rz_stretch_max", where, sizeof where),
+                        sp->rz_stretch_max);
   if (sp->av_switch && !(sp->alpha > 0.0))
     return hv_error_set(err, HV_EXIT_INPUT,
                         "%s: sph.viscosity.switch: cullen-dehnen varies "

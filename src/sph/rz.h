@@ -32,6 +32,17 @@ struct sph_params;
 struct sph_cache;
 
 #define RZ_R_FLOOR 0.1 /* [-] the smallest r of the 1/r terms, in units of h */
+/* [-] the default of sph.rz_stretch_max: a ring's h follows its hoop stretch r/r₀ up to 2.
+ * A ring carried outward keeps its axial extent while its cross-section m/(2π r ρ)
+ * shrinks as 1/r: at constant density the h taken from it (step.c, update_h) fell from
+ * 0.79 to 0.16 mm on rod-5841 at 4 rings per radius by 40 µs, the first rows of the
+ * target pushed from r ≈ Δ/2 to the cavity wall, 10–25 times further out: a support
+ * of 0.4 Δ along the axis, where the neighbours are a Δ apart, and the step fell with it.
+ * Capping the stretch at 2 keeps h ≥ h₀/√2 at a ring's initial density (a support of
+ * 1.7 Δ along the axis with η = 1.2); compression still shrinks h (spherical Noh's
+ * 64-fold), and a ring moving inward is not capped (docs/models.md, "Axisymmetric
+ * (RZ)"). */
+#define RZ_STRETCH_MAX 2.0
 
 /* The radius the 1/r terms of a particle at r (ghost: r < 0) with smoothing length h
  * take: |r|, not below RZ_R_FLOOR h. */

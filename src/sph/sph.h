@@ -68,6 +68,10 @@ struct sph_params {
   double rz_rmax;           /* axisymmetric runs: the radius of a mirror face r_max (wall,
                           symmetry), HUGE_VAL without one: its ghosts weigh as their
                           sources, at 2 r_max − r (sph_rz.c) */
+  double rz_stretch_max;    /* axisymmetric runs: h follows a ring's hoop stretch r/r₀
+                          up to this (p->r0; step.c, update_h; 0: all of it): a ring
+                          carried outward keeps its axial extent while its area, and
+                          the h taken from it, shrink as 1/r */
 };
 
 /* The neighbours found by one pass, kept for the next pass over the same grid: one

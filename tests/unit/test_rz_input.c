@@ -162,5 +162,12 @@ int main(void)
       "energy deposit off the axis",
       variant(NULL, NULL, "energy_deposit: {energy: 1 J, center: [0, 1 mm, 0], radius: 1 mm}\n"),
       19, "energy_deposit.center", "off the axis");
+  refused("stretch cap below 1", variant(NULL, NULL, "sph: {rz_stretch_max: 0.5}\n"), 19,
+          "sph.rz_stretch_max", "below 1");
+  refused("stretch cap in 3D",
+          variant("  geometry: axisymmetric\n  min: [-10 mm, 0]\n  max: [10 mm, 10 mm]\n",
+                  "  geometry: 3d\n  min: [-10 mm, -10 mm, -10 mm]\n  max: [10 mm, 10 mm, 10 mm]\n",
+                  "sph: {rz_stretch_max: 2}\n"),
+          19, "sph.rz_stretch_max", "axisymmetric runs");
   return test_finish();
 }
