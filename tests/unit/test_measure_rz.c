@@ -245,6 +245,22 @@ static void test_shadow(void)
       (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
   const int b = 0;
   CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - D) < 1e-15, "3D reading: one spacing");
+  /* 3D, a wall narrower across z than across y: the shadow is the nearer edge of both,
+     less two spacings (across y alone, 28Δ: debris passing over the z edge counted as
+     through) */
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, -30 * D, 0}, .hi = {4 * D, 30 * D, 20 * D}};
+  s.bnd.half_model = 1;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 18 * D) < 1e-15,
+        "3D half model, wall to 30Δ across y and 20Δ across z: shadow %gΔ (18)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) / D);
+  s.bnd.half_model = 0;
+  s.body[0].lo[2] = -10 * D;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 8 * D) < 1e-15,
+        "3D whole model, the wall from -10Δ to 20Δ across z: shadow %gΔ (8)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) / D);
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
   s.p.axisym = 1;
   CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 28 * D) < 1e-15,
         "RZ: the wall's shadow is its radius less two spacings (%g mm)",
