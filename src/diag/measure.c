@@ -436,14 +436,15 @@ static void fill_columns(const struct particles *p, const struct meas_geom *g,
   }
 }
 
-/* crater_depth_local (measure.h): each column cratered below the far wall against the
- * lower median front of the columns local_inner to local_outer from it. The ring is
+/* crater_depth_local (measure.h): each column within r_read of the axis cratered below
+ * the far wall against the lower median front of the columns local_inner to local_outer
+ * from it. The ring is
  * sampled on every st-th column (st about local_inner / 4 cells, the lattice symmetric
  * about the column), mirrored at z = 0 in a half model (there lo[1] = 0); a column whose ring holds less
  * than a quarter of its samples (the wall's edge, a hole) is skipped. */
 static void crater_local(const struct meas_backwall_params *par, const struct meas_geom *g,
                          const double lo[2], double c, int nu, int nw, const double *xf,
-                         double shift, struct meas_backwall *out)
+                         double shift, double r_read, struct meas_backwall *out)
 {
   out->crater_depth_local = 0.0;
   const int st = par->local_inner / (4.0 * c) > 1.0 ? (int)(par->local_inner / (4.0 * c)) : 1;
@@ -465,6 +466,7 @@ static void crater_local(const struct meas_backwall_params *par, const struct me
     for (int a = 0; a < nu; a++) {
       const double x = xf[(size_t)b * (size_t)nu + (size_t)a];
       if (!isfinite(x) || !(x - g->x0 - shift > 0.0)) continue;
+      if (hypot(lo[0] + ((double)a + 0.5) * c, lo[1] + ((double)b + 0.5) * c) > r_read) continue;
       size_t n = 0;
       for (size_t k = 0; k < noff; k++) {
         const int aa = a + off[2 * k];
@@ -525,6 +527,35 @@ static void scan_wall(const struct particles *p, const struct meas_geom *g,
   }
 }
 
+/* The radius about the axis within which craters are read: the inscribed radius of the
+ * centres of the particles the columns see (col, or those of the body/mask at x >= xlo),
+ * a half or quarter model's planes mirrored, less tol (the coarsest particle's, scale).
+ * At the wall's rim a column lies
+ * within tol of some layers' outermost particles and not of others (a layer's edge a
+ * fraction of Δ further out than the next), and its front is the first layer that
+ * reaches it: the rear layer alone reads as a crater all but the wall's thickness deep
+ * (the RZ Whipple shield's 2.50 mm in a 3 mm wall of six 0.5 mm layers, 60.2 mm from
+ * the axis at its disc's rim; sweep of 2026-12-07 at 5e03719). Below 0 when the wall
+ * does not surround the axis by more than tol: no crater is read. */
+static double crater_read_radius(const struct particles *p, const struct meas_geom *g,
+                                 const struct meas_backwall_params *par, const unsigned char *col,
+                                 double xlo)
+{
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, smax = 1.0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (col ? !col[i] : (!taken(p, i, g->body, par->mask) || p->x[0][i] < xlo)) continue;
+    if (par->scale) smax = fmax(smax, par->scale[i]);
+    const double uw[2] = {p->x[1][i] - g->yc, p->x[2][i]};
+    for (int d = 0; d < 2; d++) {
+      lo[d] = fmin(lo[d], uw[d]);
+      hi[d] = fmax(hi[d], uw[d]);
+    }
+  }
+  double r = fmin(fmin(hi[0], g->quarter_model ? hi[0] : -lo[0]), hi[1]);
+  if (!g->half_model && !g->quarter_model) r = fmin(r, -lo[1]);
+  return r - smax * par->tol;
+}
+
 /* The far wall's front: the median of the column fronts xf at ρ >= far_fraction R_in
  * (0 when no column is that far). */
 static double far_wall_front(const struct meas_geom *g, const struct meas_backwall_params *par,
@@ -559,10 +590,11 @@ static double far_wall_front(const struct meas_geom *g, const struct meas_backwa
 /* Rings around the axis: columns counted, and damaged ones (a hole, damaged material or
  * a crater deeper than crater_min) among them; r_damage the outer edge of the rings,
  * from the axis out, of which at least area_fraction is damaged. Sets the crater's
- * position and radius; returns the deepest column's depth below the far wall. */
+ * position and radius; returns the deepest column's depth below the far wall. Craters
+ * are read within r_read of the axis only (crater_read_radius: the wall's rim). */
 static double ring_damage(const struct meas_geom *g, const struct meas_backwall_params *par,
                           const double lo[2], const double hi[2], double c, int nu, int nw,
-                          const double *xf, const unsigned char *hit, double shift,
+                          const double *xf, const unsigned char *hit, double shift, double r_read,
                           struct meas_backwall *out)
 {
   const double rmax = hypot(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
@@ -577,7 +609,7 @@ static double ring_damage(const struct meas_geom *g, const struct meas_backwall_
       const double r = hypot(u, w);
       const size_t q = (size_t)(r / par->ring);
       int damaged = !isfinite(x) || hit[k]; /* a hole, or damaged material */
-      if (isfinite(x)) {
+      if (isfinite(x) && r <= r_read) {
         const double d = x - g->x0 - shift; /* xf: the particles' front, x − footprint */
         if (d > dmax) {
           dmax = d;
@@ -657,6 +689,7 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
   double shift = 0.0;
   if (par->far_reference) shift = far_wall_front(g, par, lo, hi, c, nu, nw, xf);
   out->wall_shift = shift;
+  const double r_read = crater_read_radius(p, g, par, col, xlo);
   {
     /* the surface a gauge rests on: wall particles at most tol ahead of the far wall's
        face (splash still joined to the wall is not its surface) */
@@ -664,10 +697,10 @@ int measure_backwall(const struct particles *p, const struct meas_geom *g,
     double *xs = hv_malloc(ncol * sizeof *xs, "backwall surface");
     for (size_t k = 0; k < ncol; k++) xs[k] = INFINITY;
     fill_columns(p, g, par, col, xlo, g->x0 + shift - tol, lo, c, nu, nw, xs, NULL);
-    crater_local(par, g, lo, c, nu, nw, xs, shift, out);
+    crater_local(par, g, lo, c, nu, nw, xs, shift, r_read, out);
     free(xs);
   }
-  const double dmax = ring_damage(g, par, lo, hi, c, nu, nw, xf, hit, shift, out);
+  const double dmax = ring_damage(g, par, lo, hi, c, nu, nw, xf, hit, shift, r_read, out);
   free(xf);
   free(hit);
   free(col);

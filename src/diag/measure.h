@@ -256,6 +256,10 @@ int measure_debris(const struct particles *p, const struct meas_debris_params *p
  *    columns of x_f − footprint − x0 − wall_shift (>= 0): measured like a depth gauge
  *    laid across the crater and resting on the wall far from the impact, so a bulge
  *    adds to it and a drift of the whole wall does not; crater_pos its column (y, z).
+ *    Craters (crater_depth, crater_depth_local, r_crater) are read only in the columns
+ *    within the inscribed radius about the axis of the centres of the particles the
+ *    columns see, less tol (the coarsest scale's): at the rim a column within tol of
+ *    only some layers' edges would read the first of them as its front.
  * crater_depth_local: the deepest column below its own surroundings, max over columns of
  *    x_f − the (lower) median x_f of the columns whose centres lie local_inner to
  *    local_outer from its centre (mirrored at z = 0 in a half model): a depth gauge laid

@@ -387,10 +387,19 @@ double measure_run_shadow(const struct sim *s, const int *bodies, int nb, double
   double rw = HUGE_VAL;
   for (int j = 0; j < nb; j++) {
     const struct body_info *bi = &s->body[bodies[j]];
-    /* rings fill r <= hi[1] about the axis r = 0; 3D: the nearer edge across y (a
-       quarter model's wall starts at the plane y = 0, its mirror beyond it) */
+    /* rings fill r <= hi[1] about the axis r = 0; 3D: the nearest edge across y and z
+       (a quarter model's wall starts at the plane y = 0, its mirror beyond it; a half
+       model's at z = 0). Across z too: a wall narrower in z than in y (one made long
+       in −y for an oblique impact, 2026-12-08) let debris passing over its z edge, at
+       z 58–63 mm beside a wall to 55 mm, count as through a 73.5 mm shadow */
     const double below = s->bnd.quarter_model ? HUGE_VAL : axis_y - bi->lo[1];
-    rw = fmin(rw, s->p.axisym ? bi->hi[1] : fmin(below, bi->hi[1] - axis_y));
+    if (s->p.axisym) {
+      rw = fmin(rw, bi->hi[1]);
+      continue;
+    }
+    rw = fmin(rw, fmin(below, bi->hi[1] - axis_y));
+    rw = fmin(rw, bi->hi[2]);
+    if (!s->bnd.half_model) rw = fmin(rw, -bi->lo[2]);
   }
   return fmax(rw - 2.0 * spacing, spacing);
 }

@@ -30,10 +30,16 @@ void nsearch_free(struct nsearch *cd)
   free(cd->hc);
 }
 
-/* Room for the n candidates of a cell. */
+/* Room for the n candidates of a cell, and 16 slots more: the AVX-512 selection
+ * (nsearch_select) stores 16 indices at sel + k whatever their count, k up to n − 1, so
+ * sel needs n + 15. With room for n only, a search state sized by a sparse first cell
+ * (cap 65 after a cell of 1 candidate) overran sel on a later cell of 50 to 65: heap
+ * corruption in the RZ Whipple sweep of 2026-12-08 at d0c2718 ("corrupted size vs.
+ * prev_size", 3 km/s, 3.53 mm sphere, after 50 us) and the "free(): invalid pointer"
+ * in nsearch_free of 2026-12-07 at 5e03719 (3 km/s, 8 mm, 64.6 us). */
 static void nsearch_reserve(struct nsearch *cd, size_t n)
 {
-  if (n > cd->cap) {
+  if (n + 16 > cd->cap) {
     nsearch_free_arrays(cd);
     cd->cap = n + n / 2 + 64;
     cd->x = hv_malloc(cd->cap * sizeof(double), "candidates");

@@ -15,7 +15,10 @@
  * deepest crater and the damaged radius within one spacing; a bulge adds to the depth, a
  * drift of the whole wall does not (wall_shift); below its own surroundings
  * (crater_depth_local) the crater reads 4.4Δ on the flat, moved and bulged wall alike;
- * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken).
+ * spall behind a hole is not wall (no crater; 11.5Δ if every particle were taken); an
+ * intact wall of six layers whose rear layer's edge row lies 0.3Δ further out than the
+ * others reads no crater (its rim's columns are not read: 5Δ with them, the rear layer
+ * alone within tol of the outermost column).
  * Pressure: layers of known pressure at the front face; through a case file, the
  * averaging disc and depth of `measure.pressure_radius` / `pressure_depth` (default 2Δ
  * each), and both refused without a backwall.
@@ -403,6 +406,27 @@ static void test_backwall(void)
   CHECK(measure_backwall(&p, &g, &par, &r, &err) == -1 && err.code == HV_EXIT_INPUT,
         "ring 0: an error");
   meas_backwall_defaults(&par, &g);
+  particles_free(&p);
+
+  /* the rim: an intact half-model wall of six layers (|y| <= 15Δ, 0 <= z <= 15Δ) whose
+     rear layer's edge row at y = 14.5Δ lies 0.3Δ further out (a plate's edge, where the
+     layers do not move alike). The columns (cell Δ/2, from y = -15.5Δ) centred at y =
+     15.75Δ lie within tol = Δ of that row (0.95Δ) and not of the other layers' (1.25Δ):
+     read, their front is the rear layer's, a crater 5Δ deep at the rim. The columns
+     beyond the inscribed radius of the particle centres less tol (14.5Δ − Δ) are not
+     read: no crater, as the wall has none */
+  particles_init(&p);
+  for (int k = 0; k < 15; k++)
+    for (int j = -15; j < 15; j++)
+      for (int i = 0; i < 6; i++)
+        add_particle(&p, x0 + (i + 0.5) * S, (j + 0.5 + (i == 5 && j == 14 ? 0.3 : 0.0)) * S,
+                     (k + 0.5) * S, 1e-6, 4);
+  meas_backwall_defaults(&par, &g);
+  CHECK(measure_backwall(&p, &g, &par, &r, &err) == 0 && r.crater_depth < 1e-12 &&
+            r.crater_depth_local < 1e-12 && r.r_crater == 0.0 && fabs(r.wall_shift) < 1e-12,
+        "a wall's rim, one layer's edge 0.3Δ further out: no crater (depth %.3gΔ, below its "
+        "surroundings %.3gΔ, crater radius %.3gΔ; the rim read: 5Δ at 21.6Δ)",
+        r.crater_depth / S, r.crater_depth_local / S, r.r_crater / S);
   particles_free(&p);
 
   /* an intact wall: no crater, no damage, no solid fields needed */

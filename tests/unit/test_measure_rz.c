@@ -19,7 +19,9 @@
  *  - through-wall: detached spall rings behind a wall, with the mass and velocity of
  *    the rings; the wall's own rings not;
  *  - a backwall with a crater 2Δ deep within 3Δ of the axis: the crater depth 2Δ
- *    (revolved rings), n_wall counting rings;
+ *    (revolved rings), n_wall counting rings; the same crater in a wall of six layers to
+ *    r = 29.5Δ whose rear layer's outermost ring lies 0.1Δ further out: still 2Δ within
+ *    3Δ of the axis, not the rim's 5Δ at 30.5Δ (the RZ Whipple shield's 2.50 mm);
  *  - the run's shadow of a wall of rings 30Δ in radius (what went through is counted
  *    within it): 28Δ, not the one spacing that the 3D rule (the nearer edge across y,
  *    here the axis itself) would leave; and measure.axis_y off the axis refused in an RZ
@@ -212,6 +214,26 @@ static void test_backwall(void)
         "backwall of rings: crater depth %.4g mm (2), %zu rings of %zu", b.crater_depth * 1e3,
         b.n_wall, n);
   particles_free(&p);
+
+  /* the disc's rim (the RZ Whipple sweep of 2026-12-07 at 5e03719 read 2.50 mm, the rear
+     layer of six 0.5 mm ones, at 60.2 mm from the axis, its wall's rim, for a wall
+     barely touched): six layers to r = 29.5Δ with the same crater, the rear layer's
+     outermost ring 0.1Δ further out. Revolved, the columns just beyond 30.5Δ lie within
+     tol = Δ of that ring's points and not of the other layers': read, a crater 5Δ deep
+     there. Not read (beyond the inscribed radius less tol): the crater is the 2Δ one */
+  particles_init(&p);
+  for (int i = 0; i < 6; i++)
+    for (int j = 0; j < 30; j++)
+      if (i >= 2 || j >= 3)
+        ring(&p, (i + 0.5) * D, (j + 0.5 + (i == 5 && j == 29 ? 0.1 : 0.0)) * D, 2, 0.0);
+  g.thickness = 6 * D;
+  meas_backwall_defaults(&bp, &g);
+  CHECK(measure_backwall(&p, &g, &bp, &b, &err) == 0 && fabs(b.crater_depth - 2 * D) < 1e-9 &&
+            b.r_crater < 3 * D && hypot(b.crater_pos[0], b.crater_pos[1]) < 3 * D,
+        "a disc's rim, the rear layer's edge 0.1Δ further out: crater depth %.4g mm (2) at "
+        "%.3g mm from the axis, crater radius %.3g mm (< 3)",
+        b.crater_depth * 1e3, hypot(b.crater_pos[0], b.crater_pos[1]) * 1e3, b.r_crater * 1e3);
+  particles_free(&p);
 }
 
 static void test_shadow(void)
@@ -223,6 +245,22 @@ static void test_shadow(void)
       (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
   const int b = 0;
   CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - D) < 1e-15, "3D reading: one spacing");
+  /* 3D, a wall narrower across z than across y: the shadow is the nearer edge of both,
+     less two spacings (across y alone, 28Δ: debris passing over the z edge counted as
+     through) */
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, -30 * D, 0}, .hi = {4 * D, 30 * D, 20 * D}};
+  s.bnd.half_model = 1;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 18 * D) < 1e-15,
+        "3D half model, wall to 30Δ across y and 20Δ across z: shadow %gΔ (18)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) / D);
+  s.bnd.half_model = 0;
+  s.body[0].lo[2] = -10 * D;
+  CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 8 * D) < 1e-15,
+        "3D whole model, the wall from -10Δ to 20Δ across z: shadow %gΔ (8)",
+        measure_run_shadow(&s, &b, 1, 0.0, D) / D);
+  s.body[0] =
+      (struct body_info){.spacing = D, .lo = {0, 0, -0.5 * D}, .hi = {4 * D, 30 * D, 0.5 * D}};
   s.p.axisym = 1;
   CHECK(fabs(measure_run_shadow(&s, &b, 1, 0.0, D) - 28 * D) < 1e-15,
         "RZ: the wall's shadow is its radius less two spacings (%g mm)",

@@ -14,6 +14,9 @@
  * same gather and selection the SPH loops use) must equal the brute-force count;
  * the selection has no false positives by construction (it keeps only r < hᵢ + hⱼ),
  * so equal counts mean equal sets.
+ * A search state reused from cell to cell, as the SPH loops reuse it (a lone particle's
+ * cell of 1 candidate, then a cluster's of 65): it keeps room for the selection's
+ * 16-wide stores (cap >= n + 16) and selects the cluster's 64 neighbours.
  */
 #include <math.h>
 #include <stdint.h>
@@ -22,6 +25,7 @@
 
 #include "neighbours/grid.h"
 #include "particles/particles.h"
+#include "sph/nsearch.h"
 #include "sph/sph.h"
 #include "testlib.h"
 #include "testparticles.h"
@@ -131,6 +135,42 @@ int main(void)
   for (int k = 0; k < 2000; k++)
     add(&p, 4.0 + 0.8 * uniform(), 2 * uniform() - 1, 2 * uniform() - 1, 0.075);
   compare("sheet beside a fine block", &p);
+  particles_free(&p);
+
+  /* 4. one search state for two cells, as a thread of the SPH loops keeps it: a lone
+     particle's cell first (1 candidate: room made for 65), then a cluster of 65 within
+     one cell (65 candidates, all within reach of each other). The AVX-512 selection
+     stores 16 indices at sel + k, k up to 64: without 16 slots beyond the candidates
+     it wrote past sel (heap corruption in RZ runs, src/sph/nsearch.c) */
+  particles_init(&p);
+  add(&p, 100.0, 100.0, 100.0, 0.5);
+  for (int k = 0; k < 65; k++) add(&p, 0.01 * (k % 4), 0.01 * (k / 4 % 4), 0.01 * (k / 16), 0.5);
+  {
+    struct nbr_grid g;
+    nbr_grid_init(&g);
+    char msg[256];
+    const double *xs[3] = {p.x[0], p.x[1], p.x[2]};
+    CHECK(nbr_grid_build(&g, xs, p.h, p.n, nbr_cell_size(0.5, 0.5), msg, sizeof msg) == 0 &&
+              g.ncells == 2,
+          "a lone particle and a cluster: two cells (%zu)", g.ncells);
+    size_t lone = 0, cluster = 1;
+    if (g.cell_start[1] - g.cell_start[0] != 1) {
+      lone = 1;
+      cluster = 0;
+    }
+    struct nsearch cd = {0};
+    nsearch_gather(&cd, &g, lone, &p);
+    const size_t cap1 = cd.cap;
+    nsearch_gather(&cd, &g, cluster, &p);
+    const uint32_t i = g.order[g.cell_start[cluster]];
+    const size_t k = nsearch_select(&cd, i, p.x[0][i], p.x[1][i], p.x[2][i], p.h[i]);
+    CHECK(cd.n == 65 && cd.cap >= cd.n + 16 && k == 64,
+          "a reused search state: %zu candidates after 1 (room for %zu, then %zu: at least "
+          "n + 16 for the 16-wide stores), %zu neighbours selected (64)",
+          cd.n, cap1, cd.cap, k);
+    nsearch_free(&cd);
+    nbr_grid_free(&g);
+  }
   particles_free(&p);
   return test_finish();
 }
