@@ -63,12 +63,6 @@ static const char *const base =
     "time: {end: 3 us}\n"                             /* 16 */
     "output: {every: 1 us, vtu: false, csv: true}\n"; /* 17 */
 
-static int exists(const char *path)
-{
-  struct stat st;
-  return stat(path, &st) == 0;
-}
-
 /* base with `from` replaced by `to` (first occurrence) */
 static const char *variant(const char *from, const char *to)
 {
@@ -80,28 +74,6 @@ static const char *variant(const char *from, const char *to)
   }
   snprintf(buf, sizeof buf, "%.*s%s%s", (int)(at - base), base, to, at + strlen(from));
   return buf;
-}
-
-/* Runs the case text; expects exit 2, "<file>:<line>", the key and `word`, one line,
- * and no output folder. */
-static void refused(const char *what, const char *text, int line, const char *key, const char *word)
-{
-  static int k = 0;
-  char name[64], out[8192], cmd[16384], dir[4200], where[300];
-  snprintf(name, sizeof name, "bad%02d.yaml", k++);
-  const char *file = test_write_file(name, text);
-  snprintf(dir, sizeof dir, "%s/out_%s", test_tmpdir(), name);
-  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --quiet", test_bin(), file, dir);
-  const int rc = test_run(cmd, out, sizeof out);
-  snprintf(where, sizeof where, "%s:%d", name, line);
-  const int has_where = strstr(out, where) != NULL, has_key = strstr(out, key) != NULL;
-  const int has_word = !word || strstr(out, word) != NULL;
-  const int lines = (int)(strchr(out, '\n') && strchr(out, '\n')[1] == '\0');
-  CHECK(rc == 2 && has_where && has_key && has_word && lines && !exists(dir),
-        "%s: exit %d (2), names %s (%s), the key %s (%s), says '%s' (%s), one line (%s), "
-        "nothing written (%s)\n    message: %s",
-        what, rc, where, has_where ? "yes" : "NO", key, has_key ? "yes" : "NO", word ? word : "",
-        has_word ? "yes" : "NO", lines ? "yes" : "NO", exists(dir) ? "NO" : "yes", out);
 }
 
 /* Runs the base case into dir; returns the exit status, the output in out. */
@@ -207,15 +179,16 @@ int main(void)
           "individual steps evaluate fewer rates than the global step (%lld < %.0f)", evals, full);
   }
 
-  refused("time.levels 1",
-          variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 1}"), 16,
-          "time.levels", NULL);
-  refused("time.levels 21",
-          variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 21}"), 16,
-          "time.levels", NULL);
-  refused("time.levels 3.5",
-          variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 3.5}"), 16,
-          "time.levels", NULL);
+  test_refused_case("time.levels 1",
+                    variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 1}"),
+                    16, "time.levels", NULL);
+  test_refused_case("time.levels 21",
+                    variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 21}"),
+                    16, "time.levels", NULL);
+  test_refused_case(
+      "time.levels 3.5",
+      variant("time: {end: 3 us}", "time: {end: 3 us, individual: true, levels: 3.5}"), 16,
+      "time.levels", NULL);
   { /* time.levels alone does nothing: a warning naming it, and the run goes on */
     const char *f2 = test_write_file("levels.yaml",
                                      variant("time: {end: 3 us}", "time: {end: 0 us, levels: 4}"));
@@ -229,27 +202,28 @@ int main(void)
           "levels.yaml:16 and the key\n%s",
           st, out);
   }
-  refused("time.individual maybe",
-          variant("time: {end: 3 us}", "time: {end: 3 us, individual: maybe}"), 16,
-          "time.individual", NULL);
-  refused("the viscosity switch",
-          variant("time: {end: 3 us}", "time: {end: 3 us, individual: true}\n"
-                                       "sph: {viscosity: {switch: cullen-dehnen}}"),
-          16, "time.individual", "sph.viscosity.switch");
-  refused("axisymmetric",
-          "name: rzind\n"
-          "domain:\n"
-          "  geometry: axisymmetric\n"
-          "  min: [-10 mm, 0]\n"
-          "  max: [10 mm, 10 mm]\n"
-          "bodies:\n"
-          "  - name: rod\n"
-          "    material: copper\n"
-          "    shape: {type: cylinder, center: [-2.1 mm, 0, 0], axis: [1, 0, 0], radius: 1 mm, "
-          "length: 4 mm}\n"
-          "    spacing: 0.25 mm\n"
-          "time: {end: 1 us,\n"
-          "       individual: true}\n",
-          12, "time.individual", "axisymmetric");
+  test_refused_case("time.individual maybe",
+                    variant("time: {end: 3 us}", "time: {end: 3 us, individual: maybe}"), 16,
+                    "time.individual", NULL);
+  test_refused_case("the viscosity switch",
+                    variant("time: {end: 3 us}", "time: {end: 3 us, individual: true}\n"
+                                                 "sph: {viscosity: {switch: cullen-dehnen}}"),
+                    16, "time.individual", "sph.viscosity.switch");
+  test_refused_case(
+      "axisymmetric",
+      "name: rzind\n"
+      "domain:\n"
+      "  geometry: axisymmetric\n"
+      "  min: [-10 mm, 0]\n"
+      "  max: [10 mm, 10 mm]\n"
+      "bodies:\n"
+      "  - name: rod\n"
+      "    material: copper\n"
+      "    shape: {type: cylinder, center: [-2.1 mm, 0, 0], axis: [1, 0, 0], radius: 1 mm, "
+      "length: 4 mm}\n"
+      "    spacing: 0.25 mm\n"
+      "time: {end: 1 us,\n"
+      "       individual: true}\n",
+      12, "time.individual", "axisymmetric");
   return test_finish();
 }

@@ -181,3 +181,27 @@ int test_summary_energy_span(const char *rundir, double *e0, double *e1)
   fclose(f);
   return rows >= 2 ? 0 : -1;
 }
+
+void test_refused_case(const char *what, const char *text, int line, const char *key,
+                       const char *word)
+{
+  static int k = 0;
+  char name[64], out[8192], cmd[16384], dir[4200], where[300];
+  snprintf(name, sizeof name, "bad%02d.yaml", k++);
+  const char *file = test_write_file(name, text);
+  snprintf(dir, sizeof dir, "%s/out_%s", test_tmpdir(), name);
+  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --quiet", test_bin(), file, dir);
+  const int rc = test_run(cmd, out, sizeof out);
+  snprintf(where, sizeof where, "%s:%d", name, line);
+  struct stat st;
+  const int written = stat(dir, &st) == 0;
+  const int has_where = strstr(out, where) != NULL, has_key = strstr(out, key) != NULL;
+  const int has_word = !word || strstr(out, word) != NULL;
+  const int lines = (int)(strchr(out, '\n') && strchr(out, '\n')[1] == '\0');
+  CHECK(rc == 2 && has_where && has_key && has_word && lines && !written,
+        "%s: exit %d (2), names %s (%s), the key %s (%s)%s%s%s, one line (%s), nothing "
+        "written (%s)\n    message: %s",
+        what, rc, where, has_where ? "yes" : "NO", key, has_key ? "yes" : "NO",
+        word ? ", says '" : "", word ? word : "", word ? (has_word ? "' (yes)" : "' (NO)") : "",
+        lines ? "yes" : "NO", written ? "NO" : "yes", out);
+}

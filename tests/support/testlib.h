@@ -45,6 +45,11 @@ char *test_slurp(const char *path, size_t *len);
 /* Runs a shell command line; returns its exit status (or -1). If `output` is not NULL,
  * stdout+stderr are captured into it (up to len-1 bytes). */
 int test_run(const char *cmdline, char *output, size_t len);
+/* Writes the case `text` to bad<NN>.yaml in the test's folder and runs `hvsph run` on
+ * it; CHECKs (labelled `what`) exit status 2, a one-line message naming "<file>:<line>",
+ * `key` and `word` (may be NULL), and no output folder written. */
+void test_refused_case(const char *what, const char *text, int line, const char *key,
+                       const char *word);
 /* The first and last total energy (e_total, column 11) of a run folder's summary.csv:
  * 0, or -1 when the file is missing or has fewer than two rows. */
 int test_summary_energy_span(const char *rundir, double *e0, double *e1);

@@ -74,29 +74,6 @@ static int exists(const char *path)
   return stat(path, &st) == 0;
 }
 
-/* Runs the case text; expects exit 2, a message with "<file>:<line>" and `key`, and
- * `word` (may be NULL), and no output folder. */
-static void refused(const char *what, const char *text, int line, const char *key, const char *word)
-{
-  static int k = 0;
-  char name[64], out[8192], cmd[16384], dir[4200], where[300];
-  snprintf(name, sizeof name, "bad%02d.yaml", k++);
-  const char *file = test_write_file(name, text);
-  snprintf(dir, sizeof dir, "%s/out_%s", test_tmpdir(), name);
-  snprintf(cmd, sizeof cmd, "'%s' run '%s' -o '%s' --quiet", test_bin(), file, dir);
-  const int rc = test_run(cmd, out, sizeof out);
-  snprintf(where, sizeof where, "%s:%d", name, line);
-  const int has_where = strstr(out, where) != NULL, has_key = strstr(out, key) != NULL;
-  const int has_word = !word || strstr(out, word) != NULL;
-  const int lines = (int)(strchr(out, '\n') && strchr(out, '\n')[1] == '\0');
-  CHECK(rc == 2 && has_where && has_key && has_word && lines && !exists(dir),
-        "%s: exit %d (2), names %s (%s), the key %s (%s)%s%s%s, one line (%s), nothing "
-        "written (%s)\n    message: %s",
-        what, rc, where, has_where ? "yes" : "NO", key, has_key ? "yes" : "NO",
-        word ? ", says '" : "", word ? word : "", word ? (has_word ? "' (yes)" : "' (NO)") : "",
-        lines ? "yes" : "NO", exists(dir) ? "NO" : "yes", out);
-}
-
 int main(void)
 {
   char out[8192], cmd[16384], dir[4200];
@@ -110,64 +87,72 @@ int main(void)
   CHECK(rc == 0 && exists(snap), "the base RZ case runs (exit %d) and writes its snapshots\n%s", rc,
         out);
 
-  refused("sphere off the axis",
-          variant("shape: {type: cylinder, center: [-2.1 mm, 0, 0], axis: [1, 0, 0], radius: 1 "
-                  "mm, length: 4 mm}",
-                  "shape: {type: sphere, center: [-2.1 mm, 0.5 mm, 0], radius: 1 mm}", NULL),
-          10, "bodies[0].shape", "off the axis");
-  refused("cylinder off the axis",
-          variant("center: [-2.1 mm, 0, 0]", "center: [-2.1 mm, 0, 1 mm]", NULL), 10,
-          "bodies[0].shape", "off the axis");
-  refused("cylinder not along x",
-          variant("axis: [1, 0, 0], radius: 1", "axis: [0, 1, 0], radius: 1", NULL), 10,
-          "bodies[0].shape", "not the x axis");
-  refused("box",
-          variant("{type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 5 mm, length: "
-                  "2 mm}",
-                  "{type: box, min: [0, 0, -5 mm], max: [2 mm, 5 mm, 5 mm]}", NULL),
-          15, "bodies[1].shape", "cylinder");
-  refused("radial velocity", variant("[500 m/s, 0, 0]", "[500 m/s, 10 m/s, 0]", NULL), 12,
-          "bodies[0].velocity", "not along the axis");
-  refused("impact angle",
-          variant("velocity: [500 m/s, 0, 0]", "speed: 500 m/s\n    impact_angle: 60 deg", NULL),
-          13, "bodies[0].impact_angle", "not along the axis");
-  refused("obliquity",
-          variant("velocity: [500 m/s, 0, 0]", "speed: 500 m/s\n    obliquity: 30 deg", NULL), 13,
-          "bodies[0].obliquity", "not along the axis");
-  refused(
+  test_refused_case(
+      "sphere off the axis",
+      variant("shape: {type: cylinder, center: [-2.1 mm, 0, 0], axis: [1, 0, 0], radius: 1 "
+              "mm, length: 4 mm}",
+              "shape: {type: sphere, center: [-2.1 mm, 0.5 mm, 0], radius: 1 mm}", NULL),
+      10, "bodies[0].shape", "off the axis");
+  test_refused_case("cylinder off the axis",
+                    variant("center: [-2.1 mm, 0, 0]", "center: [-2.1 mm, 0, 1 mm]", NULL), 10,
+                    "bodies[0].shape", "off the axis");
+  test_refused_case("cylinder not along x",
+                    variant("axis: [1, 0, 0], radius: 1", "axis: [0, 1, 0], radius: 1", NULL), 10,
+                    "bodies[0].shape", "not the x axis");
+  test_refused_case(
+      "box",
+      variant("{type: cylinder, center: [1 mm, 0, 0], axis: [1, 0, 0], radius: 5 mm, length: "
+              "2 mm}",
+              "{type: box, min: [0, 0, -5 mm], max: [2 mm, 5 mm, 5 mm]}", NULL),
+      15, "bodies[1].shape", "cylinder");
+  test_refused_case("radial velocity", variant("[500 m/s, 0, 0]", "[500 m/s, 10 m/s, 0]", NULL), 12,
+                    "bodies[0].velocity", "not along the axis");
+  test_refused_case(
+      "impact angle",
+      variant("velocity: [500 m/s, 0, 0]", "speed: 500 m/s\n    impact_angle: 60 deg", NULL), 13,
+      "bodies[0].impact_angle", "not along the axis");
+  test_refused_case(
+      "obliquity",
+      variant("velocity: [500 m/s, 0, 0]", "speed: 500 m/s\n    obliquity: 30 deg", NULL), 13,
+      "bodies[0].obliquity", "not along the axis");
+  test_refused_case(
       "half model",
       variant("  geometry: axisymmetric\n", "  geometry: axisymmetric\n  half_model: true\n", NULL),
       4, "domain.half_model", "3D option");
-  refused("y_min face", variant("{x_max: wall}", "{x_max: wall, y_min: wall}", NULL), 6,
-          "domain.boundary.y_min", "across the axis");
-  refused("r_min face", variant("{x_max: wall}", "{x_max: wall, r_min: wall}", NULL), 6,
-          "domain.boundary.r_min", "across the axis");
-  refused("z face", variant("{x_max: wall}", "{x_max: wall, z_max: wall}", NULL), 6,
-          "domain.boundary.z_max", NULL);
-  refused("3 components", variant("min: [-10 mm, 0]", "min: [-10 mm, 0, 0]", NULL), 4, "domain.min",
-          "two components");
-  refused("r_min not 0", variant("min: [-10 mm, 0]", "min: [-10 mm, 1 mm]", NULL), 4, "domain.min",
-          "r = 0");
-  refused("gradient correction", variant(NULL, NULL, "sph: {gradient_correction: true}\n"), 19,
-          "sph.gradient_correction", "3D-only");
-  refused("viscosity switch", variant(NULL, NULL, "sph: {viscosity: {switch: cullen-dehnen}}\n"),
-          19, "sph.viscosity.switch", "3D-only");
-  refused("artificial stress", variant(NULL, NULL, "sph: {artificial_stress: {epsilon: 0.3}}\n"),
-          19, "sph.artificial_stress.epsilon", "3D-only");
-  refused("hcp lattice",
-          variant("    spacing: 0.25 mm\n    velocity",
-                  "    lattice: hcp\n    spacing: 0.25 mm\n    velocity", NULL),
-          11, "bodies[0].lattice", "3D lattice");
-  refused(
+  test_refused_case("y_min face", variant("{x_max: wall}", "{x_max: wall, y_min: wall}", NULL), 6,
+                    "domain.boundary.y_min", "across the axis");
+  test_refused_case("r_min face", variant("{x_max: wall}", "{x_max: wall, r_min: wall}", NULL), 6,
+                    "domain.boundary.r_min", "across the axis");
+  test_refused_case("z face", variant("{x_max: wall}", "{x_max: wall, z_max: wall}", NULL), 6,
+                    "domain.boundary.z_max", NULL);
+  test_refused_case("3 components", variant("min: [-10 mm, 0]", "min: [-10 mm, 0, 0]", NULL), 4,
+                    "domain.min", "two components");
+  test_refused_case("r_min not 0", variant("min: [-10 mm, 0]", "min: [-10 mm, 1 mm]", NULL), 4,
+                    "domain.min", "r = 0");
+  test_refused_case("gradient correction",
+                    variant(NULL, NULL, "sph: {gradient_correction: true}\n"), 19,
+                    "sph.gradient_correction", "3D-only");
+  test_refused_case("viscosity switch",
+                    variant(NULL, NULL, "sph: {viscosity: {switch: cullen-dehnen}}\n"), 19,
+                    "sph.viscosity.switch", "3D-only");
+  test_refused_case("artificial stress",
+                    variant(NULL, NULL, "sph: {artificial_stress: {epsilon: 0.3}}\n"), 19,
+                    "sph.artificial_stress.epsilon", "3D-only");
+  test_refused_case("hcp lattice",
+                    variant("    spacing: 0.25 mm\n    velocity",
+                            "    lattice: hcp\n    spacing: 0.25 mm\n    velocity", NULL),
+                    11, "bodies[0].lattice", "3D lattice");
+  test_refused_case(
       "energy deposit off the axis",
       variant(NULL, NULL, "energy_deposit: {energy: 1 J, center: [0, 1 mm, 0], radius: 1 mm}\n"),
       19, "energy_deposit.center", "off the axis");
-  refused("stretch cap below 1", variant(NULL, NULL, "sph: {rz_stretch_max: 0.5}\n"), 19,
-          "sph.rz_stretch_max", "below 1");
-  refused("stretch cap in 3D",
-          variant("  geometry: axisymmetric\n  min: [-10 mm, 0]\n  max: [10 mm, 10 mm]\n",
-                  "  geometry: 3d\n  min: [-10 mm, -10 mm, -10 mm]\n  max: [10 mm, 10 mm, 10 mm]\n",
-                  "sph: {rz_stretch_max: 2}\n"),
-          19, "sph.rz_stretch_max", "axisymmetric runs");
+  test_refused_case("stretch cap below 1", variant(NULL, NULL, "sph: {rz_stretch_max: 0.5}\n"), 19,
+                    "sph.rz_stretch_max", "below 1");
+  test_refused_case(
+      "stretch cap in 3D",
+      variant("  geometry: axisymmetric\n  min: [-10 mm, 0]\n  max: [10 mm, 10 mm]\n",
+              "  geometry: 3d\n  min: [-10 mm, -10 mm, -10 mm]\n  max: [10 mm, 10 mm, 10 mm]\n",
+              "sph: {rz_stretch_max: 2}\n"),
+      19, "sph.rz_stretch_max", "axisymmetric runs");
   return test_finish();
 }
