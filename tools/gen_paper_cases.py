@@ -616,13 +616,15 @@ measure:
 OUT_RZ = "examples/paper/rz"
 RZ_PER_RADIUS = 10
 RZ_PLATE_LAYERS = 5
-# The rod targets: the rod's spacing within about RZ_ROD_CORE[0] mm of the axis (the
-# cavities of Table 3 are at most 27 mm across), RZ_ROD_CORE[1] times coarser out to the
-# 50 mm wall (issue 74, item 6: refine near the axis, coarsen away from it). The core's
-# radius is a whole multiple of five outer spacings, so that the two lattices (rows at
-# odd multiples of half their spacing) meet with the mean of their spacings between
-# them at resolution 1, 4, 16 and 0.16.
-RZ_ROD_CORE = (25, 2)
+# The rod targets, refined near the axis and coarsened away from it (issue 74, item 6):
+# the rod's spacing within about RZ_ROD_LEVELS[0] mm of the axis (the cavities of Table 3
+# are at most 27 mm across, 13.6 mm in radius), twice it out to about RZ_ROD_LEVELS[1] mm,
+# four times it beyond, to the 50 mm wall. Each level's outer radius is a whole multiple
+# of five spacings of the level outside it, so that two lattices (rows at odd multiples
+# of half their spacing) meet with the mean of their spacings between them at
+# resolution 1, 4, 16 and 0.16. Until 2026-12-08 the targets had two levels (the rod's
+# spacing to 25 mm, twice it beyond): 1.5 times the rings of these three at resolution 1.
+RZ_ROD_LEVELS = (16, 26)
 # The viscosity's reconstruction (sph.viscosity.reconstruct, the 3D cases' since 074b587)
 # has no axisymmetric form in hvsph (its 3x3 correction matrix): the RZ cases run the
 # standard viscosity, with the same alpha and beta (RZ_SPH; said in each header).
@@ -700,9 +702,8 @@ def rz_rods():
         u = v0 / (1 + math.sqrt(7.81 / 17.78))      # as the 3D case: the same end time
         t_end = lmm / (v0 - u) + 50
         dp = rz_spacing(rmm)
-        k = RZ_ROD_CORE[1]
-        step = 5 * k * dp                           # five outer spacings
-        rc = step * max(1, round(RZ_ROD_CORE[0] / step))
+        r1, r2 = (5 * f * dp * max(1, round(R / (5 * f * dp)))
+                  for R, f in zip(RZ_ROD_LEVELS, (2, 4)))
         notes = [
             "Table 1 test %s: tungsten-alloy rod l = %g cm, r = %g cm (m = %g g) at %g km/s,"
             % (test, l, r, m, v0),
@@ -713,15 +714,16 @@ def rz_rods():
             "y = +-%g mm, z = %g mm) is a cylinder of radius %g mm, its half-width, 300 mm deep,"
             % (W, W, W),
             "with a rigid wall at r = %g mm; the target has the rod's spacing within %g mm of"
-            % (W, round(rc, 4)),
-            "the axis (body target) and %g times it beyond (body target-outer, part_of target)."
-            % k,
+            % (W, round(r1, 4)),
+            "the axis (body target), twice it to %g mm (target-mid) and four times it beyond"
+            % round(r2, 4),
+            "(target-outer; both part_of target).",
             "The sourced material set (issue 74; docs/models.md, Material library):",
             "  hvsph run %s rod-%s.yaml" % (sourced_options(), test),
             "(hvsph validate --rz takes the same two options).",
             "End time: erosion time l/(v - u), u = v/(1 + sqrt(rho_t/rho_p)), plus 50 us.",
         ]
-        core = rz_cyl(0, 300, rc)
+        core, mid = rz_cyl(0, 300, r1), rz_cyl(0, 300, r2)
         body = f"""name: rod-{test}-rz
 {RZ_RESOLUTION.format(n=RZ_PER_RADIUS)}{RZ_DOMAIN.format(x0=-200, x1=300, r1=W,
                         bnd="x_min: open, x_max: wall, r_max: wall")}bodies:
@@ -734,11 +736,17 @@ def rz_rods():
     material: steel-target
     shape: {{{core}}}
     spacing: {fmt(round(dp, 6))} mm
-  - name: target-outer    # {k} times coarser out to the wall
+  - name: target-mid      # 2 times coarser
+    material: steel-target
+    shape: {{{mid},
+            minus: [{{{core}}}]}}
+    spacing: {fmt(round(2 * dp, 6))} mm
+    part_of: target
+  - name: target-outer    # 4 times coarser out to the wall
     material: steel-target
     shape: {{{rz_cyl(0, 300, W)},
-            minus: [{{{core}}}]}}
-    spacing: {fmt(round(k * dp, 6))} mm
+            minus: [{{{mid}}}]}}
+    spacing: {fmt(round(4 * dp, 6))} mm
     part_of: target
 {RZ_SPH}time:
   end: {t_end:.0f} us

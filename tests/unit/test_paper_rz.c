@@ -7,7 +7,7 @@
  *   - domain.geometry is axisymmetric, min and max are (x, r) with r_min = 0, the x range
  *     is the 3D case's and r_max the 3D case's half-width (y max);
  *   - the same bodies (less the 3D plates' refined "-core" discs and the RZ rod targets'
- *     coarse "-outer" ring), in order, of the same materials; the projectile of the same
+ *     coarser "-mid" and "-outer" rings), in order, of the same materials; the projectile of the same
  *     shape and size at the same velocity (a 3D speed at impact_angle 90 deg is along x);
  *     every body a cylinder about the x axis or a sphere centred on it, given by its
  *     spacing (not a count);
@@ -88,7 +88,8 @@ static double qty(struct cfg *c, const char *path, enum unit_dim d)
   return cfg_get_quantity(c, path, d, NULL, -HUGE_VAL, HUGE_VAL, &v, &err) ? (double)NAN : v;
 }
 
-/* The bodies other than the refinements: 3D "-core" discs and "-shell"s, RZ "-outer"s. */
+/* The bodies other than the refinements: 3D "-core" discs and "-shell"s, RZ "-mid" and
+ * "-outer" rings. */
 static int main_bodies(struct cfg *c, int *idx, int max)
 {
   int n = 0;
@@ -97,7 +98,8 @@ static int main_bodies(struct cfg *c, int *idx, int max)
     char p[64], buf[128];
     snprintf(p, sizeof p, "bodies[%d].name", b);
     first_name(c, p, buf, sizeof buf);
-    if (!ends_with(buf, "-core") && !ends_with(buf, "-shell") && !ends_with(buf, "-outer"))
+    if (!ends_with(buf, "-core") && !ends_with(buf, "-shell") && !ends_with(buf, "-mid") &&
+        !ends_with(buf, "-outer"))
       idx[n++] = b;
   }
   return n;
