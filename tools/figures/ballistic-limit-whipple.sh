@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # docs/ballistic-limit.md, "Oblique impacts (45°)": the 3D half model's points at 5 km/s
 # and 45° beside Christiansen's equation at 45°, as `hvsph sweep` draws them (its
-# ballistic_limit.png). Made from the sweep of examples/sweeps/whipple-ble.yaml in SWEEP
-# (default out/whipple-ble-45: the command is in docs/ballistic-limit.md; about half an
-# hour a point on one core, which `make figures` does not make), collected again from
-# its finished points (`hvsph sweep --collect`, which also rewrites its sweep.csv and
-# ballistic_limit.csv). Environment: HVSPH, SWEEP, OUT (default docs/img). Writes
-# $OUT/ballistic-limit-whipple.png; without the sweep's sweep_args.txt it says
-# "skip: ..." and exits 0.
+# ballistic_limit.png). Made from the sweep of examples/sweeps/whipple-ble-45.yaml in
+# SWEEP (default out/whipple-ble-45:
+#   build/hvsph sweep examples/sweeps/whipple-ble-45.yaml -o out/whipple-ble-45 --threads 2
+# about half an hour to three quarters of an hour a point on 2 threads, which `make
+# figures` does not make), collected again from its finished points (`hvsph sweep
+# --collect`, which also rewrites its sweep.csv and ballistic_limit.csv). Environment:
+# HVSPH, SWEEP, OUT (default docs/img). Writes $OUT/ballistic-limit-whipple.png; without
+# the sweep's sweep_args.txt it says "skip: ..." and exits 0.
 . "$(dirname "$0")/lib/common.sh"
 SWEEP=$(fig_abs "${SWEEP:-$ROOT/out/whipple-ble-45}")
 [ -f "$SWEEP/sweep_args.txt" ] ||
-  fig_skip "no sweep in $SWEEP (its command: docs/ballistic-limit.md, \"Oblique impacts\")"
+  fig_skip "no sweep in $SWEEP (run: $HVSPH sweep examples/sweeps/whipple-ble-45.yaml -o $SWEEP)"
 fig_need_hvsph
 "$HVSPH" sweep --collect "$SWEEP" > /dev/null
 cp "$SWEEP/ballistic_limit.png" "$FIG_TMP"
