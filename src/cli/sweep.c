@@ -12,7 +12,8 @@
  * to DIR/points/<name>.log.
  *
  * Bisection. The key's critical value between LO and HI, where the yes/no measurement
- * (`perforated` of the case's measure.backwall by default) changes, to the tolerance:
+ * (`perforated` of the case's measure.backwall by default; yes when any output of the
+ * run read yes) changes, to the tolerance:
  * LO and HI are run first; if they agree, the limit lies outside the range and the sweep
  * says so; else the midpoint of the bracket is run and replaces the end it agrees with,
  * until the bracket is no wider than the tolerance. The limit is the bracket's midpoint
@@ -517,8 +518,8 @@ static void default_object(struct sweep *w, struct cfg *c)
   }
 }
 
-/* A finished point's measurements: the answer at the last time, the largest crater
- * depth, the hole diameters, what went through the wall. */
+/* A finished point's measurements: the answer (yes if yes at any output), the largest
+ * crater depth, the hole diameters at the last time, what went through the wall. */
 static void read_point(const struct sweep *w, struct point *p)
 {
   char path[5200];
@@ -552,8 +553,12 @@ static void read_point(const struct sweep *w, struct point *p)
             !strcmp(t.rows[j].object, r->object))
           p->through_v = t.rows[j].value;
     }
+    /* the answer: yes when the quantity read yes at any output, not only the last
+       (spall or debris that went through may leave by an absorbing face before the
+       end, and a line of sight once opened is a perforation); no when it never did */
+    if (!strcmp(r->quantity, w->measure) && mine && !isnan(r->value))
+      p->answer = p->answer == 1 || r->value > 0.5;
     if (r->time != tend) continue;
-    if (!strcmp(r->quantity, w->measure) && mine && !isnan(r->value)) p->answer = r->value > 0.5;
     if (!strcmp(r->quantity, "hole_diameter"))
       nh += (size_t)snprintf(p->holes + nh, nh < sizeof p->holes ? sizeof p->holes - nh : 0,
                              "%s%s:%.6g", nh ? ";" : "", r->object, r->value);
@@ -1419,7 +1424,7 @@ static void print_limits(const struct sweep *w)
       printf("  %s: %s at both ends: the limit lies outside %s..%s\n", nm, co->alo ? "yes" : "no",
              w->b.lo.text, w->b.hi.text);
     else if (co->failed == 2)
-      printf("  %s: a point's measurements.csv has no %s%s%s at its last time\n", nm, w->measure,
+      printf("  %s: a point's measurements.csv has no %s%s%s\n", nm, w->measure,
              w->object[0] ? " of " : "", w->object);
     else if (co->failed)
       printf("  %s: a point failed\n", nm);
