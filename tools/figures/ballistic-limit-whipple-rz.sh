@@ -12,11 +12,4 @@
 # (default docs/img). Writes $OUT/ballistic-limit-whipple-rz.png; without the sweep's
 # sweep_args.txt it says "skip: ..." and exits 0.
 . "$(dirname "$0")/lib/common.sh"
-SWEEP=$(fig_abs "${SWEEP:-$ROOT/out/whipple-ble-rz}")
-[ -f "$SWEEP/sweep_args.txt" ] ||
-  fig_skip "no sweep in $SWEEP (run: $HVSPH sweep examples/sweeps/whipple-ble-rz.yaml -o $SWEEP)"
-fig_need_hvsph
-"$HVSPH" sweep --collect "$SWEEP" > /dev/null
-cp "$SWEEP/ballistic_limit.png" "$FIG_TMP"
-echo "$FIG_NAME: from $SWEEP"
-fig_done
+fig_sweep_png examples/sweeps/whipple-ble-rz.yaml out/whipple-ble-rz

@@ -4,17 +4,10 @@
 # ballistic_limit.png). Made from the sweep of examples/sweeps/whipple-ble-45.yaml in
 # SWEEP (default out/whipple-ble-45:
 #   build/hvsph sweep examples/sweeps/whipple-ble-45.yaml -o out/whipple-ble-45 --threads 2
-# about half an hour to three quarters of an hour a point on 2 threads, which `make
-# figures` does not make), collected again from its finished points (`hvsph sweep
+# 29 to 44 minutes a point on 2 threads, 2026-12-08, which `make figures` does not
+# make), collected again from its finished points (`hvsph sweep
 # --collect`, which also rewrites its sweep.csv and ballistic_limit.csv). Environment:
 # HVSPH, SWEEP, OUT (default docs/img). Writes $OUT/ballistic-limit-whipple.png; without
 # the sweep's sweep_args.txt it says "skip: ..." and exits 0.
 . "$(dirname "$0")/lib/common.sh"
-SWEEP=$(fig_abs "${SWEEP:-$ROOT/out/whipple-ble-45}")
-[ -f "$SWEEP/sweep_args.txt" ] ||
-  fig_skip "no sweep in $SWEEP (run: $HVSPH sweep examples/sweeps/whipple-ble-45.yaml -o $SWEEP)"
-fig_need_hvsph
-"$HVSPH" sweep --collect "$SWEEP" > /dev/null
-cp "$SWEEP/ballistic_limit.png" "$FIG_TMP"
-echo "$FIG_NAME: from $SWEEP"
-fig_done
+fig_sweep_png examples/sweeps/whipple-ble-45.yaml out/whipple-ble-45

@@ -90,6 +90,22 @@ fig_render_last() {
   fig_done
 }
 
+# fig_sweep_png CASE DEFAULT-DIR: the picture is the ballistic_limit.png of the `hvsph
+# sweep` of CASE in SWEEP (default DEFAULT-DIR under the repository), collected again
+# from its finished points (`hvsph sweep --collect` also rewrites its sweep.csv and
+# ballistic_limit.csv); skipped without the sweep's sweep_args.txt.
+fig_sweep_png() {
+  local sweep
+  sweep=$(fig_abs "${SWEEP:-$ROOT/$2}")
+  [ -f "$sweep/sweep_args.txt" ] ||
+    fig_skip "no sweep in $sweep (run: $HVSPH sweep $1 -o $sweep)"
+  fig_need_hvsph
+  "$HVSPH" sweep --collect "$sweep" > /dev/null
+  cp "$sweep/ballistic_limit.png" "$FIG_TMP"
+  echo "$FIG_NAME: from $sweep"
+  fig_done
+}
+
 # fig_fresh_work: an empty scratch folder FIG_WORK (the script's own; nothing else).
 fig_fresh_work() {
   rm -rf "$FIG_WORK"
